@@ -1,0 +1,244 @@
+// sphereset: command-line front end. Library errors become one line on stderr and an exit
+// code (see --help and the README):
+//   0 success, 1 internal error, 2 bad options, 3 unreadable input, 4 invalid data,
+//   5 the mesh is not a closed solid, 6 the output could not be written.
+#include <tbb/global_control.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "sphereset/evaluate.hpp"
+#include "sphereset/mesh.hpp"
+#include "sphereset/solid_index.hpp"
+#include "sphereset/sphere.hpp"
+
+namespace {
+
+using namespace sphereset;
+
+enum Exit { kOk = 0, kInternal = 1, kUsage = 2, kUnreadable = 3, kInvalid = 4, kNotSolid = 5,
+            kWrite = 6 };
+
+int exitFor(const Error& e) {
+  switch (e.code) {
+    case ErrorCode::kInvalidArgument: return kUsage;
+    case ErrorCode::kUnreadable: return kUnreadable;
+    case ErrorCode::kInvalidData: return kInvalid;
+    case ErrorCode::kNotSolid: return kNotSolid;
+    case ErrorCode::kWriteFailed: return kWrite;
+  }
+  return kInternal;
+}
+
+int fail(const Error& e) {
+  std::cerr << "sphereset: " << e.message << '\n';
+  return exitFor(e);
+}
+
+nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+nlohmann::json checkJson(const LoadedMesh& m, const MeshDiagnosis& d) {
+  const LoadReport& r = m.report;
+  return {{"file", r.path},
+          {"format", r.format},
+          {"vertices", d.vertices},
+          {"triangles", d.triangles},
+          {"edges", d.edges},
+          {"closed", d.closed},
+          {"manifold", d.manifold},
+          {"oriented", d.oriented},
+          {"solid", d.isSolid()},
+          {"components", d.components},
+          {"boundary_edges", d.boundary_edges},
+          {"nonmanifold_edges", d.nonmanifold_edges},
+          {"nonmanifold_vertices", d.nonmanifold_vertices},
+          {"misoriented_edges", d.misoriented_edges},
+          {"volume", d.volume},
+          {"area", d.area},
+          {"bbox_min", vec(d.bbox.min)},
+          {"bbox_max", vec(d.bbox.max)},
+          {"bbox_diagonal", d.bbox.diagonal()},
+          {"min_edge", d.min_edge},
+          {"max_edge", d.max_edge},
+          {"load",
+           {{"scene_meshes", r.scene_meshes},
+            {"file_vertices", r.file_vertices},
+            {"file_triangles", r.file_faces},
+            {"welded_vertices", r.welded_vertices},
+            {"unused_vertices", r.unused_vertices},
+            {"degenerate_dropped", r.degenerate_dropped},
+            {"duplicate_dropped", r.duplicate_dropped},
+            {"flipped", r.flipped}}}};
+}
+
+void printCheck(const LoadedMesh& m, const MeshDiagnosis& d) {
+  const LoadReport& r = m.report;
+  auto yes = [](bool b) { return b ? "yes" : "no"; };
+  std::printf("%s (%s, %lld scene mesh%s)\n", r.path.c_str(), r.format.c_str(),
+              static_cast<long long>(r.scene_meshes), r.scene_meshes == 1 ? "" : "es");
+  std::printf("  loaded      %lld vertices, %lld triangles in the file\n",
+              static_cast<long long>(r.file_vertices), static_cast<long long>(r.file_faces));
+  std::printf("  clean-up    %lld vertices welded, %lld unused removed, %lld degenerate and %lld "
+              "duplicate triangles dropped%s\n",
+              static_cast<long long>(r.welded_vertices), static_cast<long long>(r.unused_vertices),
+              static_cast<long long>(r.degenerate_dropped),
+              static_cast<long long>(r.duplicate_dropped),
+              r.flipped ? ", orientation flipped outward" : "");
+  std::printf("  mesh        %lld vertices, %lld triangles, %lld edges, %lld component%s\n",
+              static_cast<long long>(d.vertices), static_cast<long long>(d.triangles),
+              static_cast<long long>(d.edges), static_cast<long long>(d.components),
+              d.components == 1 ? "" : "s");
+  std::printf("  closed      %s (%lld boundary edges)\n", yes(d.closed),
+              static_cast<long long>(d.boundary_edges));
+  std::printf("  manifold    %s (%lld non-manifold edges, %lld non-manifold vertices)\n",
+              yes(d.manifold), static_cast<long long>(d.nonmanifold_edges),
+              static_cast<long long>(d.nonmanifold_vertices));
+  std::printf("  oriented    %s (%lld inconsistent edges)\n", yes(d.oriented),
+              static_cast<long long>(d.misoriented_edges));
+  std::printf("  volume      %.9g\n  area        %.9g\n", d.volume, d.area);
+  std::printf("  bbox        [%.6g %.6g %.6g] .. [%.6g %.6g %.6g], diagonal %.6g\n",
+              d.bbox.min.x(), d.bbox.min.y(), d.bbox.min.z(), d.bbox.max.x(), d.bbox.max.y(),
+              d.bbox.max.z(), d.bbox.diagonal());
+  std::printf("  edges       %.6g .. %.6g\n", d.min_edge, d.max_edge);
+  std::printf("  solid       %s\n", d.isSolid() ? "yes: ready for fitting"
+                                                 : "no: fitting needs a closed manifold solid");
+}
+
+struct MeshArgs {
+  std::string path;
+  double weld = 0.0;
+};
+
+void addMeshArgs(CLI::App* cmd, MeshArgs* a) {
+  cmd->add_option("mesh", a->path, "Mesh file (OBJ, PLY, STL, OFF, DAE, glTF/GLB, ...)")
+      ->required();
+  cmd->add_option("--weld-tolerance", a->weld,
+                  "Merge vertices closer than this distance (default 0: exact duplicates only)")
+      ->check(CLI::NonNegativeNumber);
+}
+
+// Loads and requires a closed solid.
+Expected<LoadedMesh> loadSolid(const MeshArgs& a) {
+  LoadOptions lo;
+  lo.weld_tolerance = a.weld;
+  auto m = loadMesh(a.path, lo);
+  if (!m) return m.error();
+  const MeshDiagnosis d = diagnoseMesh(m->mesh);
+  if (!d.isSolid()) return notSolidError(a.path, d);
+  return m;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"sphereset: tight bounding sphere sets for solid triangle meshes"};
+  app.require_subcommand(1);
+  app.footer(
+      "Exit codes: 0 success, 1 internal error, 2 bad options, 3 unreadable input,\n"
+      "4 invalid data, 5 mesh is not a closed solid, 6 output could not be written.");
+  int threads = 0;
+  app.add_option("--threads", threads, "Worker threads (default 0: all cores)")
+      ->check(CLI::Range(0, 4096));
+
+  bool json = false;
+  MeshArgs check_args;
+  CLI::App* check = app.add_subcommand("check", "Load a mesh and diagnose it as a solid");
+  addMeshArgs(check, &check_args);
+  check->add_flag("--json", json, "Print one JSON object");
+
+  MeshArgs eval_args;
+  std::string spheres_path;
+  EvalOptions eo;
+  CLI::App* eval = app.add_subcommand("eval", "Measure how tightly a sphere set bounds a mesh");
+  addMeshArgs(eval, &eval_args);
+  eval->add_option("spheres", spheres_path, "Sphere set (.txt, .json, .sph, .yaml)")->required();
+  eval->add_flag("--json", json, "Print one JSON object");
+  eval->add_option("--seed", eo.seed, "Seed for all sampling")->capture_default_str();
+  eval->add_option("--samples", eo.union_samples, "Monte Carlo samples for the union's E_r")
+      ->capture_default_str()
+      ->check(CLI::Range(int64_t{0}, int64_t{1} << 34));
+  eval->add_option("--segments", eo.proximity_segments, "Segments for the proximity error")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 10000000));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kOk : kUsage;
+  }
+  std::unique_ptr<tbb::global_control> limit;
+  if (threads > 0)
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                  threads);
+
+  try {
+    if (*check) {
+      LoadOptions lo;
+      lo.weld_tolerance = check_args.weld;
+      auto m = loadMesh(check_args.path, lo);
+      if (!m) return fail(m.error());
+      const MeshDiagnosis d = diagnoseMesh(m->mesh);
+      if (json)
+        std::cout << checkJson(*m, d).dump() << '\n';
+      else
+        printCheck(*m, d);
+      return d.isSolid() ? kOk : kNotSolid;
+    }
+    if (*eval) {
+      auto m = loadSolid(eval_args);
+      if (!m) return fail(m.error());
+      auto spheres = readSpheres(spheres_path);
+      if (!spheres) return fail(spheres.error());
+      if (spheres->empty())
+        return fail(Error{ErrorCode::kInvalidData, spheres_path + ": no spheres"});
+      const SolidIndex index(m->mesh);
+      const EvalResult r = evaluateSpheres(index, *spheres, eo);
+      if (json) {
+        nlohmann::json j = {{"mesh", eval_args.path},
+                            {"spheres_file", spheres_path},
+                            {"spheres", spheres->size()},
+                            {"mesh_volume", r.mesh_volume},
+                            {"bbox_diagonal", r.bbox_diagonal},
+                            {"er_sum", r.er_sum},
+                            {"er_union", r.er_union},
+                            {"er_union_stderr", r.er_union_stderr},
+                            {"surface_covered", r.surface_covered},
+                            {"max_surface_gap", r.max_surface_gap},
+                            {"uncovered_triangles", r.uncovered_triangles},
+                            {"surface_uncertified_area", r.surface_uncertified_area},
+                            {"interior_covered", r.interior_covered},
+                            {"max_interior_gap", r.max_interior_gap},
+                            {"proximity_error", r.proximity_error},
+                            {"seed", eo.seed},
+                            {"seconds", r.seconds}};
+        std::cout << j.dump() << '\n';
+      } else {
+        std::printf("%s with %zu spheres from %s\n", eval_args.path.c_str(), spheres->size(),
+                    spheres_path.c_str());
+        std::printf("  E_r summed       %.6f   (exact: sum of outside volumes / mesh volume)\n",
+                    r.er_sum);
+        std::printf("  E_r union        %.6f +- %.6f (Monte Carlo, %lld samples)\n", r.er_union,
+                    r.er_union_stderr, static_cast<long long>(eo.union_samples));
+        std::printf("  surface covered  %s (max gap %.3g of the diagonal, %lld triangles not "
+                    "covered)\n",
+                    r.surface_covered ? "yes" : "no", r.max_surface_gap,
+                    static_cast<long long>(r.uncovered_triangles));
+        std::printf("  interior covered %s (max gap %.3g of the diagonal)\n",
+                    r.interior_covered ? "yes" : "no", r.max_interior_gap);
+        std::printf("  proximity error  %.6f of the diagonal (%d segments)\n", r.proximity_error,
+                    eo.proximity_segments);
+        std::printf("  time             %.2f s\n", r.seconds);
+      }
+      return kOk;
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "sphereset: internal error: " << e.what() << '\n';
+    return kInternal;
+  }
+  return kUsage;
+}

@@ -1,0 +1,52 @@
+// Evaluation of a sphere set against the solid it should bound (paper Sec. 7, and more).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sphereset/solid_index.hpp"
+#include "sphereset/sphere.hpp"
+
+namespace sphereset {
+
+struct EvalOptions {
+  uint64_t seed = 1;                  // all sampling is seeded; results do not depend on threads
+  int64_t union_samples = 200000;     // Monte Carlo samples for the union's outside volume
+  int proximity_segments = 3000;      // random surface-to-surface segments (paper Sec. 7)
+  int surface_max_depth = 8;          // 4^depth sub-triangles at most per triangle
+  int interior_max_depth = 5;         // octree refinement below an 8³ grid of the bounds
+};
+
+struct EvalResult {
+  double mesh_volume = 0.0;
+  double bbox_diagonal = 0.0;
+  // E_r of the paper (eq. 4 / volume): Σ_i SOV(S_i) / vol(mesh), exact.
+  double er_sum = 0.0;
+  // Outside volume of the union of the spheres (overlaps counted once) / vol(mesh), Monte
+  // Carlo, with its standard error.
+  double er_union = 0.0;
+  double er_union_stderr = 0.0;
+  std::vector<double> outside_volume;  // per sphere, exact
+  // Surface coverage: certified by subdivision (every sub-triangle inside one sphere).
+  bool surface_covered = false;
+  double max_surface_gap = 0.0;        // largest distance found from surface to the union / diag
+  double surface_uncertified_area = 0.0;  // area that could be neither certified nor refuted
+  int64_t uncovered_triangles = 0;
+  // Interior coverage: certified on an adaptive octree of cells.
+  bool interior_covered = false;
+  double max_interior_gap = 0.0;       // / diag
+  int64_t interior_uncertified_cells = 0;  // finest cells at the surface left undecided
+  // Proximity (paper Sec. 7): mean |outside length vs mesh - outside length vs spheres| over
+  // random surface-to-surface segments, / diag.
+  double proximity_error = 0.0;
+  double seconds = 0.0;
+};
+
+// Needs a closed solid (callers check with diagnoseMesh first) and at least one sphere.
+EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& spheres,
+                           const EvalOptions& options = {});
+
+// Length of segment [a, b] outside the union of the spheres (1D interval union).
+double outsideLengthSpheres(const std::vector<Sphere>& spheres, const Vec3& a, const Vec3& b);
+
+}  // namespace sphereset

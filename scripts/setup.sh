@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs every build and test dependency of sphereset from Debian 12 packages.
+# Idempotent: packages already present are left as they are.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libassimp-dev        # mesh import (OBJ, PLY, STL, OFF, DAE, glTF/GLB)
+  libeigen3-dev        # small dense linear algebra
+  libtbb-dev           # parallel loops
+  libcli11-dev         # command-line parsing
+  nlohmann-json3-dev   # JSON input and output
+  libnlopt-cxx-dev     # derivative-free and gradient optimisers
+  libgtest-dev         # unit tests
+  libbenchmark-dev     # micro-benchmarks
+  libpng-dev           # PNG pictures
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,59 @@
+// Private: bounding-volume hierarchy over triangles, stored with the triangle data it needs in
+// traversal order so that queries touch contiguous memory.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sphereset/mesh.hpp"
+
+namespace sphereset::detail {
+
+struct BvhNode {
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+  int32_t first = 0;  // leaf: first triangle; inner: index of left child (right = first + 1)
+  int32_t count = 0;  // leaf: number of triangles; inner: 0
+  bool leaf() const { return count > 0; }
+};
+
+// One triangle as the kernels need it.
+struct TriRecord {
+  Vec3 a, b, c;
+  Vec3 n;       // outward unit normal
+  double area;  // full triangle area
+};
+
+struct Bvh {
+  std::vector<BvhNode> nodes;
+  std::vector<TriRecord> tris;   // in leaf order
+  std::vector<int32_t> original;  // original triangle index of tris[i]
+
+  void build(const Mesh& mesh, int leaf_size = 4);
+
+  // Visits every leaf triangle whose node box passes `overlaps(min, max)`; `visit(i)` gets the
+  // index into tris. Iterative with a fixed stack (depth is bounded by the build).
+  template <class Overlaps, class Visit>
+  void traverse(Overlaps&& overlaps, Visit&& visit) const {
+    if (nodes.empty()) return;
+    int32_t stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const BvhNode& node = nodes[stack[--top]];
+      if (!overlaps(node.min, node.max)) continue;
+      if (node.leaf()) {
+        for (int32_t i = node.first; i < node.first + node.count; ++i) visit(i);
+      } else {
+        stack[top++] = node.first + 1;
+        stack[top++] = node.first;
+      }
+    }
+  }
+};
+
+inline double boxPointSquaredDistance(const Vec3& mn, const Vec3& mx, const Vec3& p) {
+  const Vec3 d = (mn - p).cwiseMax(p - mx).cwiseMax(0.0);
+  return d.squaredNorm();
+}
+
+}  // namespace sphereset::detail

@@ -1,0 +1,361 @@
+// Mesh input through assimp, and the clean-up that turns a file's triangles into an indexed
+// mesh: weld coincident vertices, drop degenerate and duplicate triangles, remove unused
+// vertices, orient outward. Every step is counted in the LoadReport.
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+#include <unordered_map>
+
+#include "sphereset/mesh.hpp"
+
+namespace sphereset {
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  if (!ext.empty() && ext[0] == '.') ext.erase(0, 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+struct KeyHash {
+  size_t operator()(const std::array<int64_t, 3>& k) const {
+    size_t h = 1469598103934665603ull;
+    for (int64_t v : k) h = (h ^ static_cast<size_t>(v)) * 1099511628211ull;
+    return h;
+  }
+};
+
+// Welds vertices. Exact mode merges bit-identical positions (after -0 → +0). Tolerance mode
+// snaps to a grid of cell `tol` and merges each vertex into the first vertex within `tol` in
+// its own or a neighbouring cell (deterministic: in input order).
+std::vector<int32_t> weldVertices(const std::vector<Vec3>& v, double tol,
+                                  std::vector<Vec3>* out) {
+  std::vector<int32_t> remap(v.size());
+  out->clear();
+  if (tol <= 0.0) {
+    struct ExactHash {
+      size_t operator()(const Vec3& p) const {
+        size_t h = 0;
+        for (int k = 0; k < 3; ++k) h = h * 1000003u ^ std::hash<double>()(p[k] + 0.0);
+        return h;
+      }
+    };
+    struct ExactEq {
+      bool operator()(const Vec3& a, const Vec3& b) const { return a == b; }
+    };
+    std::unordered_map<Vec3, int32_t, ExactHash, ExactEq> seen;
+    seen.reserve(v.size());
+    for (size_t i = 0; i < v.size(); ++i) {
+      auto [it, inserted] = seen.emplace(v[i], static_cast<int32_t>(out->size()));
+      if (inserted) out->push_back(v[i]);
+      remap[i] = it->second;
+    }
+    return remap;
+  }
+  std::unordered_map<std::array<int64_t, 3>, std::vector<int32_t>, KeyHash> grid;
+  const double tol2 = tol * tol;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const std::array<int64_t, 3> key = {static_cast<int64_t>(std::floor(v[i].x() / tol)),
+                                        static_cast<int64_t>(std::floor(v[i].y() / tol)),
+                                        static_cast<int64_t>(std::floor(v[i].z() / tol))};
+    int32_t found = -1;
+    for (int dx = -1; dx <= 1 && found < 0; ++dx)
+      for (int dy = -1; dy <= 1 && found < 0; ++dy)
+        for (int dz = -1; dz <= 1 && found < 0; ++dz) {
+          auto it = grid.find({key[0] + dx, key[1] + dy, key[2] + dz});
+          if (it == grid.end()) continue;
+          for (int32_t j : it->second)
+            if (((*out)[j] - v[i]).squaredNorm() <= tol2) {
+              found = j;
+              break;
+            }
+        }
+    if (found < 0) {
+      found = static_cast<int32_t>(out->size());
+      out->push_back(v[i]);
+      grid[key].push_back(found);
+    }
+    remap[i] = found;
+  }
+  return remap;
+}
+
+void collectNode(const aiScene* scene, const aiNode* node, const aiMatrix4x4& parent,
+                 std::vector<Vec3>* verts, std::vector<Triangle>* tris, int64_t* meshes,
+                 int64_t* file_vertices, int64_t* file_faces, bool* bad_index) {
+  const aiMatrix4x4 xf = parent * node->mTransformation;
+  for (unsigned m = 0; m < node->mNumMeshes; ++m) {
+    const aiMesh* mesh = scene->mMeshes[node->mMeshes[m]];
+    ++*meshes;
+    const int64_t base = static_cast<int64_t>(verts->size());
+    *file_vertices += mesh->mNumVertices;
+    for (unsigned i = 0; i < mesh->mNumVertices; ++i) {
+      const aiVector3D p = xf * mesh->mVertices[i];
+      verts->emplace_back(p.x, p.y, p.z);
+    }
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const aiFace& face = mesh->mFaces[f];
+      if (face.mNumIndices < 3) continue;  // points and lines are not part of a solid
+      // Faces are triangulated by assimp; a remaining polygon is fanned as a safeguard.
+      for (unsigned k = 1; k + 1 < face.mNumIndices; ++k) {
+        const unsigned idx[3] = {face.mIndices[0], face.mIndices[k], face.mIndices[k + 1]};
+        Triangle t;
+        for (int c = 0; c < 3; ++c) {
+          if (idx[c] >= mesh->mNumVertices) {
+            *bad_index = true;
+            t[c] = 0;
+          } else {
+            t[c] = static_cast<int32_t>(base + idx[c]);
+          }
+        }
+        tris->push_back(t);
+        ++*file_faces;
+      }
+    }
+  }
+  for (unsigned c = 0; c < node->mNumChildren; ++c)
+    collectNode(scene, node->mChildren[c], xf, verts, tris, meshes, file_vertices, file_faces,
+                bad_index);
+}
+
+// OFF reader. assimp's OFF importer miscounts faces when comment lines follow the header
+// (as in files written by CGAL), so OFF is parsed here: header OFF/COFF/NOFF/CNOFF, counts,
+// vertices, polygons (fanned into triangles); '#' starts a comment anywhere.
+Expected<LoadedMesh> readOff(const std::string& path, const LoadOptions& options) {
+  std::ifstream in(path);
+  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+  std::string line;
+  int64_t lineno = 0;
+  // Next non-empty line with comments removed, split into tokens.
+  auto next = [&](std::vector<std::string>* tok) {
+    while (std::getline(in, line)) {
+      ++lineno;
+      const auto hash = line.find('#');
+      if (hash != std::string::npos) line.erase(hash);
+      std::istringstream is(line);
+      tok->clear();
+      std::string t;
+      while (is >> t) tok->push_back(t);
+      if (!tok->empty()) return true;
+    }
+    return false;
+  };
+  auto bad = [&](const std::string& what) {
+    return Error{ErrorCode::kUnreadable, path + ":" + std::to_string(lineno) + ": " + what};
+  };
+  std::vector<std::string> tok;
+  if (!next(&tok) || tok[0].find("OFF") == std::string::npos)
+    return bad("not an OFF file (no OFF header)");
+  const bool has_color = tok[0].find('C') != std::string::npos;
+  tok.erase(tok.begin());
+  if (tok.empty() && !next(&tok)) return bad("missing vertex and face counts");
+  int64_t nv = 0, nf = 0;
+  try {
+    nv = std::stoll(tok.at(0));
+    nf = std::stoll(tok.at(1));
+  } catch (...) {
+    return bad("malformed vertex and face counts");
+  }
+  if (nv < 0 || nf < 0 || nv > (int64_t{1} << 31) - 1 || nf > (int64_t{1} << 31) - 1)
+    return bad("vertex or face count out of range");
+  std::vector<Vec3> verts;
+  verts.reserve(nv);
+  for (int64_t i = 0; i < nv; ++i) {
+    if (!next(&tok) || tok.size() < 3) return bad("expected a vertex \"x y z\"");
+    Vec3 p;
+    for (int k = 0; k < 3; ++k) {
+      char* end = nullptr;
+      p[k] = std::strtod(tok[k].c_str(), &end);
+      if (end == tok[k].c_str() || *end != '\0') return bad("malformed vertex coordinate");
+    }
+    verts.push_back(p);
+  }
+  (void)has_color;
+  std::vector<Triangle> tris;
+  tris.reserve(nf);
+  for (int64_t f = 0; f < nf; ++f) {
+    if (!next(&tok)) return bad("expected " + std::to_string(nf) + " faces, found " + std::to_string(f));
+    int64_t k = 0;
+    std::vector<int64_t> idx;
+    try {
+      k = std::stoll(tok[0]);
+      if (k < 0 || static_cast<size_t>(k) + 1 > tok.size()) return bad("malformed face");
+      for (int64_t j = 0; j < k; ++j) idx.push_back(std::stoll(tok[1 + j]));
+    } catch (...) {
+      return bad("malformed face");
+    }
+    for (int64_t v : idx)
+      if (v < 0 || v >= nv)
+        return Error{ErrorCode::kInvalidData, path + ":" + std::to_string(lineno) + ": face references vertex " +
+                                                  std::to_string(v) + " of " + std::to_string(nv)};
+    for (int64_t j = 1; j + 1 < k; ++j)
+      tris.push_back({static_cast<int32_t>(idx[0]), static_cast<int32_t>(idx[j]),
+                      static_cast<int32_t>(idx[j + 1])});
+  }
+  if (tris.empty()) return Error{ErrorCode::kInvalidData, path + ": the file contains no triangles"};
+  const int64_t file_faces = static_cast<int64_t>(tris.size());
+  auto cleaned = cleanMesh(std::move(verts), std::move(tris), options, path);
+  if (!cleaned) return cleaned.error();
+  LoadedMesh out = std::move(cleaned).value();
+  out.report.format = "off";
+  out.report.scene_meshes = 1;
+  out.report.file_vertices = nv;
+  out.report.file_faces = file_faces;
+  return out;
+}
+
+}  // namespace
+
+Aabb boundingBox(const Mesh& mesh) {
+  Aabb b;
+  for (const Vec3& v : mesh.vertices) b.extend(v);
+  return b;
+}
+
+double signedVolume(const Mesh& mesh) {
+  // Σ det(a, b, c) / 6 about the bounding-box centre (reduces cancellation far from origin).
+  const Vec3 o = boundingBox(mesh).center();
+  double vol = 0.0;
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 a = mesh.vertices[t[0]] - o, b = mesh.vertices[t[1]] - o,
+               c = mesh.vertices[t[2]] - o;
+    vol += a.dot(b.cross(c));
+  }
+  return vol / 6.0;
+}
+
+double surfaceArea(const Mesh& mesh) {
+  double area = 0.0;
+  for (const Triangle& t : mesh.triangles)
+    area += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                      .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
+                      .norm();
+  return area;
+}
+
+Expected<LoadedMesh> cleanMesh(std::vector<Vec3> vertices, std::vector<Triangle> triangles,
+                               const LoadOptions& options, std::string name) {
+  LoadedMesh out;
+  LoadReport& rep = out.report;
+  rep.path = name;
+  if (rep.file_vertices == 0) rep.file_vertices = static_cast<int64_t>(vertices.size());
+  if (rep.file_faces == 0) rep.file_faces = static_cast<int64_t>(triangles.size());
+  if (!(options.weld_tolerance >= 0.0) || !std::isfinite(options.weld_tolerance))
+    return Error{ErrorCode::kInvalidArgument,
+                 name + ": weld tolerance must be a finite number >= 0"};
+  for (size_t i = 0; i < vertices.size(); ++i)
+    if (!vertices[i].allFinite())
+      return Error{ErrorCode::kInvalidData,
+                   name + ": vertex " + std::to_string(i) + " has a NaN or infinite coordinate"};
+  for (size_t t = 0; t < triangles.size(); ++t)
+    for (int32_t k : triangles[t])
+      if (k < 0 || static_cast<size_t>(k) >= vertices.size())
+        return Error{ErrorCode::kInvalidData, name + ": triangle " + std::to_string(t) +
+                                                  " references vertex " + std::to_string(k) +
+                                                  " of " + std::to_string(vertices.size())};
+  if (triangles.empty())
+    return Error{ErrorCode::kInvalidData, name + ": the file contains no triangles"};
+
+  std::vector<Vec3> welded;
+  const std::vector<int32_t> remap = weldVertices(vertices, options.weld_tolerance, &welded);
+  rep.welded_vertices = static_cast<int64_t>(vertices.size() - welded.size());
+
+  // Drop triangles with repeated vertices or zero area, and exact duplicates (same vertex
+  // set in any order: a doubled face is never part of a manifold solid's boundary).
+  std::vector<Triangle> kept;
+  kept.reserve(triangles.size());
+  std::unordered_map<std::array<int64_t, 3>, int, KeyHash> seen;
+  for (const Triangle& t0 : triangles) {
+    const Triangle t = {remap[t0[0]], remap[t0[1]], remap[t0[2]]};
+    const Vec3 nrm = (welded[t[1]] - welded[t[0]]).cross(welded[t[2]] - welded[t[0]]);
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || !(nrm.squaredNorm() > 0.0)) {
+      ++rep.degenerate_dropped;
+      continue;
+    }
+    std::array<int64_t, 3> key = {t[0], t[1], t[2]};
+    std::sort(key.begin(), key.end());
+    if (!seen.emplace(key, 1).second) {
+      ++rep.duplicate_dropped;
+      continue;
+    }
+    kept.push_back(t);
+  }
+  if (kept.empty())
+    return Error{ErrorCode::kInvalidData,
+                 name + ": every triangle is degenerate (zero area or repeated vertices)"};
+
+  // Remove unused vertices, keeping first-use order stable by original index.
+  std::vector<int32_t> used(welded.size(), -1);
+  for (const Triangle& t : kept)
+    for (int32_t k : t) used[k] = 0;
+  int32_t next = 0;
+  for (size_t i = 0; i < welded.size(); ++i)
+    if (used[i] == 0) {
+      used[i] = next++;
+      out.mesh.vertices.push_back(welded[i]);
+    }
+  rep.unused_vertices = static_cast<int64_t>(welded.size()) - next;
+  for (Triangle& t : kept)
+    for (int32_t& k : t) k = used[k];
+  out.mesh.triangles = std::move(kept);
+
+  if (options.orient_outward && signedVolume(out.mesh) < 0.0) {
+    for (Triangle& t : out.mesh.triangles) std::swap(t[1], t[2]);
+    rep.flipped = true;
+  }
+  return out;
+}
+
+Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& options) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    return Error{ErrorCode::kUnreadable, path + ": no such file"};
+  if (std::filesystem::is_directory(path, ec))
+    return Error{ErrorCode::kUnreadable, path + ": is a directory, not a mesh file"};
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+    if (probe.peek() == std::ifstream::traits_type::eof())
+      return Error{ErrorCode::kUnreadable, path + ": the file is empty"};
+  }
+  if (lowerExtension(path) == "off") return readOff(path, options);
+  Assimp::Importer importer;
+  // Keep only triangles and polygons; no normals, no vertex joining (we weld positions
+  // ourselves, since assimp joins only vertices whose every attribute matches).
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
+  if (!scene || !scene->mRootNode) {
+    std::string why = importer.GetErrorString();
+    if (why.empty()) why = "unknown format";
+    return Error{ErrorCode::kUnreadable, path + ": cannot be read as a mesh (" + why + ")"};
+  }
+  std::vector<Vec3> verts;
+  std::vector<Triangle> tris;
+  int64_t meshes = 0, file_vertices = 0, file_faces = 0;
+  bool bad_index = false;
+  collectNode(scene, scene->mRootNode, aiMatrix4x4(), &verts, &tris, &meshes, &file_vertices,
+              &file_faces, &bad_index);
+  if (bad_index)
+    return Error{ErrorCode::kInvalidData, path + ": a face references a vertex out of range"};
+  if (tris.empty())
+    return Error{ErrorCode::kInvalidData, path + ": the file contains no triangles"};
+  auto cleaned = cleanMesh(std::move(verts), std::move(tris), options, path);
+  if (!cleaned) return cleaned.error();
+  LoadedMesh out = std::move(cleaned).value();
+  out.report.format = lowerExtension(path);
+  out.report.scene_meshes = meshes;
+  out.report.file_vertices = file_vertices;
+  out.report.file_faces = file_faces;
+  return out;
+}
+
+}  // namespace sphereset

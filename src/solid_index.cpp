@@ -1,0 +1,274 @@
+// Spatial queries on a closed triangle mesh: point-in-solid, distance, segment crossings.
+//
+// Point in solid: signed ray crossings (each crossing counts +1 where the ray leaves the solid
+// and -1 where it enters; non-zero total means inside). The ray-triangle test uses the three
+// orientation determinants of the ray against the triangle's edges, so a ray passing exactly
+// through an edge or vertex is detected (a determinant within kRayDegenerateRelTol of zero)
+// and the query is repeated along another fixed direction instead of miscounting. Points
+// within boundaryTolerance() of the surface are reported as on the boundary first, by a
+// nearest-triangle query.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "bvh.hpp"
+#include "solid_index_impl.hpp"
+
+namespace sphereset {
+namespace {
+
+using detail::Bvh;
+using detail::BvhNode;
+using detail::TriRecord;
+
+// Points closer than this fraction of the bounding-box diagonal to the surface are on it.
+constexpr double kBoundaryRelTol = 1e-11;
+// Orientation determinants smaller than this fraction of their magnitude bound are treated
+// as zero: the ray grazes an edge or vertex and another direction is tried.
+constexpr double kRayDegenerateRelTol = 1e-12;
+
+// Fixed, irregular ray directions (unit vectors from a golden-angle spiral), tried in order.
+const std::array<Vec3, 16>& rayDirections() {
+  static const std::array<Vec3, 16> dirs = [] {
+    std::array<Vec3, 16> d;
+    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+    for (int i = 0; i < 16; ++i) {
+      const double z = 1.0 - (2.0 * i + 1.0) / 16.0 + 0.0123;
+      const double rr = std::sqrt(std::max(0.0, 1.0 - z * z));
+      const double phi = golden * i + 0.377;
+      d[i] = Vec3(rr * std::cos(phi), rr * std::sin(phi), z).normalized();
+    }
+    return d;
+  }();
+  return dirs;
+}
+
+// Slab test of the ray p + t d, t in [0, tmax], against a box.
+inline bool rayHitsBox(const Vec3& p, const Vec3& inv_d, double tmax, const Vec3& mn,
+                       const Vec3& mx) {
+  double t0 = 0.0, t1 = tmax;
+  for (int k = 0; k < 3; ++k) {
+    double ta = (mn[k] - p[k]) * inv_d[k];
+    double tb = (mx[k] - p[k]) * inv_d[k];
+    if (std::isnan(ta) || std::isnan(tb)) {  // d[k] == 0 and p on the slab plane
+      if (p[k] < mn[k] || p[k] > mx[k]) return false;
+      continue;
+    }
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+// Closest point on triangle (a, b, c) to p (Ericson, Real-Time Collision Detection, 5.1.5).
+Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  const double denom = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+// Orientation of the line p + t d against the triangle: u, v, w are d·(e1×e2), d·(e2×e0),
+// d·(e0×e1) with e_i the vertices relative to p. The line meets the interior iff all three
+// share a sign; det(e0, e1, e2) / (u + v + w) is the crossing parameter t.
+struct LineTriangle {
+  double u, v, w, det;
+  double tol_u, tol_v, tol_w;
+};
+inline LineTriangle lineTriangle(const Vec3& p, const Vec3& d, const TriRecord& tri) {
+  const Vec3 e0 = tri.a - p, e1 = tri.b - p, e2 = tri.c - p;
+  const Vec3 c12 = e1.cross(e2), c20 = e2.cross(e0), c01 = e0.cross(e1);
+  LineTriangle lt;
+  lt.u = d.dot(c12);
+  lt.v = d.dot(c20);
+  lt.w = d.dot(c01);
+  lt.det = e0.dot(c12);
+  const double dn = d.norm();
+  const double l0 = e0.norm(), l1 = e1.norm(), l2 = e2.norm();
+  lt.tol_u = kRayDegenerateRelTol * dn * l1 * l2;
+  lt.tol_v = kRayDegenerateRelTol * dn * l2 * l0;
+  lt.tol_w = kRayDegenerateRelTol * dn * l0 * l1;
+  return lt;
+}
+
+}  // namespace
+
+SolidIndex::SolidIndex(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
+  impl_->mesh = mesh;
+  impl_->bvh.build(mesh);
+  impl_->bounds = boundingBox(mesh);
+  impl_->tolerance = kBoundaryRelTol * std::max(impl_->bounds.diagonal(), 1e-300);
+}
+SolidIndex::~SolidIndex() = default;
+SolidIndex::SolidIndex(SolidIndex&&) noexcept = default;
+SolidIndex& SolidIndex::operator=(SolidIndex&&) noexcept = default;
+
+const Mesh& SolidIndex::mesh() const { return impl_->mesh; }
+const Aabb& SolidIndex::bounds() const { return impl_->bounds; }
+double SolidIndex::boundaryTolerance() const { return impl_->tolerance; }
+int64_t SolidIndex::nodeCount() const { return static_cast<int64_t>(impl_->bvh.nodes.size()); }
+
+double SolidIndex::distance(const Vec3& p, int32_t* closest_triangle) const {
+  const Bvh& bvh = impl_->bvh;
+  double best2 = std::numeric_limits<double>::infinity();
+  int32_t best = -1;
+  if (bvh.nodes.empty()) return best2;
+  // Depth-first, nearer child first, pruned by the best distance so far.
+  int32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const BvhNode& node = bvh.nodes[stack[--top]];
+    if (detail::boxPointSquaredDistance(node.min, node.max, p) > best2) continue;
+    if (node.leaf()) {
+      for (int32_t i = node.first; i < node.first + node.count; ++i) {
+        const TriRecord& t = bvh.tris[i];
+        const double d2 = (closestPointOnTriangle(p, t.a, t.b, t.c) - p).squaredNorm();
+        if (d2 < best2) {
+          best2 = d2;
+          best = i;
+        }
+      }
+      continue;
+    }
+    const int32_t l = node.first, r = node.first + 1;
+    const double dl = detail::boxPointSquaredDistance(bvh.nodes[l].min, bvh.nodes[l].max, p);
+    const double dr = detail::boxPointSquaredDistance(bvh.nodes[r].min, bvh.nodes[r].max, p);
+    if (dl <= dr) {
+      stack[top++] = r;
+      stack[top++] = l;
+    } else {
+      stack[top++] = l;
+      stack[top++] = r;
+    }
+  }
+  if (closest_triangle) *closest_triangle = best >= 0 ? bvh.original[best] : -1;
+  return std::sqrt(best2);
+}
+
+Containment SolidIndex::classify(const Vec3& p) const {
+  const Impl& im = *impl_;
+  const double tol = im.tolerance;
+  if ((p.array() < im.bounds.min.array() - tol).any() ||
+      (p.array() > im.bounds.max.array() + tol).any())
+    return Containment::kOutside;
+  if (distance(p) <= tol) return Containment::kBoundary;
+
+  const double reach = 2.0 * im.bounds.diagonal() + (p - im.bounds.center()).norm();
+  for (const Vec3& d : rayDirections()) {
+    const Vec3 inv_d = d.cwiseInverse();
+    int winding = 0;
+    bool degenerate = false;
+    im.bvh.traverse(
+        [&](const Vec3& mn, const Vec3& mx) {
+          return !degenerate && rayHitsBox(p, inv_d, reach, mn, mx);
+        },
+        [&](int32_t i) {
+          if (degenerate) return;
+          const LineTriangle lt = lineTriangle(p, d, im.bvh.tris[i]);
+          const bool pos = lt.u > lt.tol_u && lt.v > lt.tol_v && lt.w > lt.tol_w;
+          const bool neg = lt.u < -lt.tol_u && lt.v < -lt.tol_v && lt.w < -lt.tol_w;
+          const bool maybe_pos = lt.u >= -lt.tol_u && lt.v >= -lt.tol_v && lt.w >= -lt.tol_w;
+          const bool maybe_neg = lt.u <= lt.tol_u && lt.v <= lt.tol_v && lt.w <= lt.tol_w;
+          if (!pos && !neg) {
+            // Line misses, or grazes an edge/vertex: only the latter matters, and only when
+            // the graze lies ahead of p.
+            if (maybe_pos || maybe_neg) {
+              const double sum = lt.u + lt.v + lt.w;
+              if (sum == 0.0 || lt.det / sum > 0.0) degenerate = true;
+            }
+            return;
+          }
+          const double sum = lt.u + lt.v + lt.w;
+          const double t = lt.det / sum;
+          if (t <= 0.0) return;
+          winding += pos ? 1 : -1;  // sign of d·N: +1 leaving the solid, -1 entering
+        });
+    if (!degenerate) return winding != 0 ? Containment::kInside : Containment::kOutside;
+  }
+  // Every direction grazed an edge: fall back to the exact winding number (p is off the
+  // surface here, so it is an integer up to rounding).
+  return windingNumber(p) > 0.5 ? Containment::kInside : Containment::kOutside;
+}
+
+double SolidIndex::windingNumber(const Vec3& p) const {
+  double total = 0.0;
+  for (const TriRecord& t : impl_->bvh.tris) total += triangleSolidAngle(t.a, t.b, t.c, p);
+  return total / (4.0 * std::numbers::pi);
+}
+
+std::vector<double> SolidIndex::segmentCrossings(const Vec3& a, const Vec3& b) const {
+  const Impl& im = *impl_;
+  const Vec3 d = b - a;
+  const Vec3 inv_d = d.cwiseInverse();
+  std::vector<double> ts;
+  im.bvh.traverse([&](const Vec3& mn, const Vec3& mx) { return rayHitsBox(a, inv_d, 1.0, mn, mx); },
+                  [&](int32_t i) {
+                    const LineTriangle lt = lineTriangle(a, d, im.bvh.tris[i]);
+                    const bool maybe_pos =
+                        lt.u >= -lt.tol_u && lt.v >= -lt.tol_v && lt.w >= -lt.tol_w;
+                    const bool maybe_neg =
+                        lt.u <= lt.tol_u && lt.v <= lt.tol_v && lt.w <= lt.tol_w;
+                    if (!maybe_pos && !maybe_neg) return;
+                    const double sum = lt.u + lt.v + lt.w;
+                    if (sum == 0.0) return;
+                    const double t = lt.det / sum;
+                    if (t > 0.0 && t < 1.0) ts.push_back(t);
+                  });
+  std::sort(ts.begin(), ts.end());
+  ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+  return ts;
+}
+
+double SolidIndex::outsideLength(const Vec3& a, const Vec3& b) const {
+  const std::vector<double> ts = segmentCrossings(a, b);
+  const double len = (b - a).norm();
+  double outside = 0.0;
+  double prev = 0.0;
+  for (size_t k = 0; k <= ts.size(); ++k) {
+    const double next = k < ts.size() ? ts[k] : 1.0;
+    if (next > prev) {
+      const Vec3 mid = a + (0.5 * (prev + next)) * (b - a);
+      if (classify(mid) == Containment::kOutside) outside += (next - prev) * len;
+    }
+    prev = next;
+  }
+  return outside;
+}
+
+std::vector<int32_t> SolidIndex::trianglesNearBall(const Sphere& ball) const {
+  const Impl& im = *impl_;
+  const double r2 = ball.radius * ball.radius;
+  std::vector<int32_t> out;
+  im.bvh.traverse(
+      [&](const Vec3& mn, const Vec3& mx) {
+        return detail::boxPointSquaredDistance(mn, mx, ball.center) <= r2;
+      },
+      [&](int32_t i) {
+        const TriRecord& t = im.bvh.tris[i];
+        const Vec3 mn = t.a.cwiseMin(t.b).cwiseMin(t.c), mx = t.a.cwiseMax(t.b).cwiseMax(t.c);
+        if (detail::boxPointSquaredDistance(mn, mx, ball.center) <= r2)
+          out.push_back(im.bvh.original[i]);
+      });
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace sphereset

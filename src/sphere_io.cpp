@@ -1,0 +1,282 @@
+// Sphere-set files: plain text, JSON, Bradshaw's .sph and cuRobo-style YAML. Writes are
+// atomic (temporary file in the same directory, then rename).
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "sphereset/sphere.hpp"
+
+namespace sphereset {
+namespace {
+
+std::string extensionOf(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+Status checkSphere(const std::string& where, const Sphere& s) {
+  if (!s.center.allFinite() || !std::isfinite(s.radius))
+    return Error{ErrorCode::kInvalidData, where + ": NaN or infinite value"};
+  if (s.radius < 0.0) return Error{ErrorCode::kInvalidData, where + ": negative radius"};
+  return {};
+}
+
+std::string num(double x) {
+  std::ostringstream os;
+  os << std::setprecision(17) << x;
+  return os.str();
+}
+
+Sphere enclosingSphere(const std::vector<Sphere>& spheres) {
+  // A simple (not minimal) bound of the set for the .sph root node.
+  Aabb box;
+  for (const Sphere& s : spheres) {
+    box.extend(Vec3(s.center.array() - s.radius));
+    box.extend(Vec3(s.center.array() + s.radius));
+  }
+  Sphere root{box.empty() ? Vec3::Zero() : box.center(), 0.0};
+  for (const Sphere& s : spheres)
+    root.radius = std::max(root.radius, (s.center - root.center).norm() + s.radius);
+  return root;
+}
+
+}  // namespace
+
+Expected<SphereFormat> sphereFormatFromPath(const std::string& path) {
+  const std::string ext = extensionOf(path);
+  if (ext == ".txt" || ext == ".xyzr") return SphereFormat::kText;
+  if (ext == ".json") return SphereFormat::kJson;
+  if (ext == ".sph") return SphereFormat::kSph;
+  if (ext == ".yaml" || ext == ".yml") return SphereFormat::kYaml;
+  return Error{ErrorCode::kInvalidArgument,
+               path + ": unknown sphere-set extension '" + ext +
+                   "' (use .txt, .json, .sph or .yaml)"};
+}
+
+std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& spheres,
+                          const SphereFileMeta& meta) {
+  std::ostringstream os;
+  switch (format) {
+    case SphereFormat::kText:
+      os << "# " << meta.generator << ": " << spheres.size() << " spheres, x y z r\n";
+      for (const Sphere& s : spheres)
+        os << num(s.center.x()) << ' ' << num(s.center.y()) << ' ' << num(s.center.z()) << ' '
+           << num(s.radius) << '\n';
+      break;
+    case SphereFormat::kJson: {
+      nlohmann::json j;
+      j["generator"] = meta.generator;
+      if (!meta.source_mesh.empty()) j["mesh"] = meta.source_mesh;
+      j["count"] = spheres.size();
+      j["spheres"] = nlohmann::json::array();
+      for (const Sphere& s : spheres)
+        j["spheres"].push_back(
+            {{"center", {s.center.x(), s.center.y(), s.center.z()}}, {"radius", s.radius}});
+      os << j.dump(2) << '\n';
+      break;
+    }
+    case SphereFormat::kSph: {
+      // Two levels (root + leaves), branching factor = number of spheres. Each node line is
+      // "x y z r error"; the error column is not used and written as 0.
+      const Sphere root = enclosingSphere(spheres);
+      os << 2 << ' ' << std::max<size_t>(spheres.size(), 1) << '\n';
+      os << num(root.center.x()) << ' ' << num(root.center.y()) << ' ' << num(root.center.z())
+         << ' ' << num(root.radius) << " 0\n";
+      for (const Sphere& s : spheres)
+        os << num(s.center.x()) << ' ' << num(s.center.y()) << ' ' << num(s.center.z()) << ' '
+           << num(s.radius) << " 0\n";
+      break;
+    }
+    case SphereFormat::kYaml:
+      os << "# " << meta.generator << ": " << spheres.size() << " spheres\n";
+      os << "collision_spheres:\n  " << meta.name << ":\n";
+      for (const Sphere& s : spheres)
+        os << "    - \"center\": [" << num(s.center.x()) << ", " << num(s.center.y()) << ", "
+           << num(s.center.z()) << "]\n      \"radius\": " << num(s.radius) << '\n';
+      break;
+  }
+  return os.str();
+}
+
+Status writeFileAtomically(const std::string& path, const std::string& contents) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  fs::path dir = target.parent_path();
+  if (dir.empty()) dir = ".";
+  std::string tmpl = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
+  std::vector<char> buf(tmpl.begin(), tmpl.end());
+  buf.push_back('\0');
+  const int fd = mkstemp(buf.data());
+  if (fd < 0)
+    return Error{ErrorCode::kWriteFailed, path + ": cannot create a file in '" + dir.string() +
+                                              "' (" + std::strerror(errno) + ")"};
+  const std::string tmp(buf.data());
+  size_t done = 0;
+  while (done < contents.size()) {
+    const ssize_t w = ::write(fd, contents.data() + done, contents.size() - done);
+    if (w <= 0) {
+      const std::string why = std::strerror(errno);
+      ::close(fd);
+      std::remove(tmp.c_str());
+      return Error{ErrorCode::kWriteFailed, path + ": write failed (" + why + ")"};
+    }
+    done += static_cast<size_t>(w);
+  }
+  fchmod(fd, 0644);
+  if (::close(fd) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    std::remove(tmp.c_str());
+    return Error{ErrorCode::kWriteFailed, path + ": cannot write (" + why + ")"};
+  }
+  return {};
+}
+
+Status writeSpheres(const std::string& path, const std::vector<Sphere>& spheres,
+                    const SphereFileMeta& meta) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  for (size_t i = 0; i < spheres.size(); ++i) {
+    Status st = checkSphere(path + ": sphere " + std::to_string(i), spheres[i]);
+    if (!st) return st;
+  }
+  return writeFileAtomically(path, formatSpheres(*format, spheres, meta));
+}
+
+Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  std::ifstream in(path);
+  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+  std::vector<Sphere> out;
+
+  if (*format == SphereFormat::kJson) {
+    nlohmann::json j;
+    try {
+      in >> j;
+    } catch (const std::exception& e) {
+      return Error{ErrorCode::kUnreadable, path + ": invalid JSON (" + e.what() + ")"};
+    }
+    const nlohmann::json* list = &j;
+    if (j.is_object()) {
+      if (!j.contains("spheres"))
+        return Error{ErrorCode::kInvalidData, path + ": no \"spheres\" array"};
+      list = &j["spheres"];
+    }
+    if (!list->is_array()) return Error{ErrorCode::kInvalidData, path + ": \"spheres\" is not an array"};
+    for (size_t i = 0; i < list->size(); ++i) {
+      const auto& e = (*list)[i];
+      const std::string where = path + ": sphere " + std::to_string(i);
+      if (!e.is_object() || !e.contains("center") || !e.contains("radius") ||
+          !e["center"].is_array() || e["center"].size() != 3 || !e["radius"].is_number())
+        return Error{ErrorCode::kInvalidData, where + ": needs \"center\": [x, y, z] and \"radius\""};
+      Sphere s;
+      for (int k = 0; k < 3; ++k) {
+        if (!e["center"][k].is_number())
+          return Error{ErrorCode::kInvalidData, where + ": center is not numeric"};
+        s.center[k] = e["center"][k].get<double>();
+      }
+      s.radius = e["radius"].get<double>();
+      Status st = checkSphere(where, s);
+      if (!st) return st.error();
+      out.push_back(s);
+    }
+    return out;
+  }
+
+  std::string line;
+  int lineno = 0;
+  if (*format == SphereFormat::kYaml) {
+    // The subset this project writes: "center": [x, y, z] then "radius": r.
+    Sphere s;
+    bool have_center = false;
+    while (std::getline(in, line)) {
+      ++lineno;
+      const std::string where = path + ":" + std::to_string(lineno);
+      const auto c = line.find("center");
+      const auto r = line.find("radius");
+      if (c != std::string::npos) {
+        const auto lb = line.find('['), rb = line.find(']');
+        if (lb == std::string::npos || rb == std::string::npos)
+          return Error{ErrorCode::kInvalidData, where + ": malformed center"};
+        std::string inner = line.substr(lb + 1, rb - lb - 1);
+        std::replace(inner.begin(), inner.end(), ',', ' ');
+        std::istringstream is(inner);
+        if (!(is >> s.center.x() >> s.center.y() >> s.center.z()))
+          return Error{ErrorCode::kInvalidData, where + ": malformed center"};
+        have_center = true;
+      } else if (r != std::string::npos) {
+        const auto colon = line.find(':', r);
+        std::istringstream is(line.substr(colon + 1));
+        if (!have_center || !(is >> s.radius))
+          return Error{ErrorCode::kInvalidData, where + ": malformed radius"};
+        Status st = checkSphere(where, s);
+        if (!st) return st.error();
+        out.push_back(s);
+        have_center = false;
+      }
+    }
+    return out;
+  }
+
+  if (*format == SphereFormat::kSph) {
+    int levels = 0, branch = 0;
+    if (!std::getline(in, line) || !(std::istringstream(line) >> levels >> branch) ||
+        levels < 1 || branch < 1)
+      return Error{ErrorCode::kInvalidData, path + ":1: expected \"levels branching\""};
+    // Node counts per level: 1, B, B², ...; keep the deepest level that has spheres.
+    std::vector<std::vector<Sphere>> by_level(levels);
+    int64_t level_size = 1;
+    lineno = 1;
+    for (int lev = 0; lev < levels; ++lev) {
+      for (int64_t i = 0; i < level_size; ++i) {
+        if (!std::getline(in, line))
+          return Error{ErrorCode::kInvalidData, path + ": truncated at level " + std::to_string(lev)};
+        ++lineno;
+        Sphere s;
+        if (!(std::istringstream(line) >> s.center.x() >> s.center.y() >> s.center.z() >> s.radius))
+          return Error{ErrorCode::kInvalidData, path + ":" + std::to_string(lineno) + ": expected x y z r"};
+        if (s.radius <= 0.0) continue;  // unused node
+        Status st = checkSphere(path + ":" + std::to_string(lineno), s);
+        if (!st) return st.error();
+        by_level[lev].push_back(s);
+      }
+      level_size *= branch;
+      if (level_size > (int64_t{1} << 40))
+        return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
+    }
+    for (int lev = levels - 1; lev >= 0; --lev)
+      if (!by_level[lev].empty()) return by_level[lev];
+    return out;
+  }
+
+  while (std::getline(in, line)) {
+    ++lineno;
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream is(line);
+    Sphere s;
+    if (!(is >> s.center.x())) continue;  // blank line
+    std::string extra;
+    if (!(is >> s.center.y() >> s.center.z() >> s.radius) || (is >> extra))
+      return Error{ErrorCode::kInvalidData,
+                   path + ":" + std::to_string(lineno) + ": expected four numbers x y z r"};
+    Status st = checkSphere(path + ":" + std::to_string(lineno), s);
+    if (!st) return st.error();
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace sphereset
