@@ -168,8 +168,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? kOk : kUsage;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    std::cerr << "sphereset: " << e.what() << " (see sphereset --help)\n";
+    return kUsage;
   }
   std::unique_ptr<tbb::global_control> limit;
   if (threads > 0)

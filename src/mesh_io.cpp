@@ -13,6 +13,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "mesh_formats.hpp"
 #include "sphereset/mesh.hpp"
 
 namespace sphereset {
@@ -124,92 +125,6 @@ void collectNode(const aiScene* scene, const aiNode* node, const aiMatrix4x4& pa
   for (unsigned c = 0; c < node->mNumChildren; ++c)
     collectNode(scene, node->mChildren[c], xf, verts, tris, meshes, file_vertices, file_faces,
                 bad_index);
-}
-
-// OFF reader. assimp's OFF importer miscounts faces when comment lines follow the header
-// (as in files written by CGAL), so OFF is parsed here: header OFF/COFF/NOFF/CNOFF, counts,
-// vertices, polygons (fanned into triangles); '#' starts a comment anywhere.
-Expected<LoadedMesh> readOff(const std::string& path, const LoadOptions& options) {
-  std::ifstream in(path);
-  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
-  std::string line;
-  int64_t lineno = 0;
-  // Next non-empty line with comments removed, split into tokens.
-  auto next = [&](std::vector<std::string>* tok) {
-    while (std::getline(in, line)) {
-      ++lineno;
-      const auto hash = line.find('#');
-      if (hash != std::string::npos) line.erase(hash);
-      std::istringstream is(line);
-      tok->clear();
-      std::string t;
-      while (is >> t) tok->push_back(t);
-      if (!tok->empty()) return true;
-    }
-    return false;
-  };
-  auto bad = [&](const std::string& what) {
-    return Error{ErrorCode::kUnreadable, path + ":" + std::to_string(lineno) + ": " + what};
-  };
-  std::vector<std::string> tok;
-  if (!next(&tok) || tok[0].find("OFF") == std::string::npos)
-    return bad("not an OFF file (no OFF header)");
-  const bool has_color = tok[0].find('C') != std::string::npos;
-  tok.erase(tok.begin());
-  if (tok.empty() && !next(&tok)) return bad("missing vertex and face counts");
-  int64_t nv = 0, nf = 0;
-  try {
-    nv = std::stoll(tok.at(0));
-    nf = std::stoll(tok.at(1));
-  } catch (...) {
-    return bad("malformed vertex and face counts");
-  }
-  if (nv < 0 || nf < 0 || nv > (int64_t{1} << 31) - 1 || nf > (int64_t{1} << 31) - 1)
-    return bad("vertex or face count out of range");
-  std::vector<Vec3> verts;
-  verts.reserve(nv);
-  for (int64_t i = 0; i < nv; ++i) {
-    if (!next(&tok) || tok.size() < 3) return bad("expected a vertex \"x y z\"");
-    Vec3 p;
-    for (int k = 0; k < 3; ++k) {
-      char* end = nullptr;
-      p[k] = std::strtod(tok[k].c_str(), &end);
-      if (end == tok[k].c_str() || *end != '\0') return bad("malformed vertex coordinate");
-    }
-    verts.push_back(p);
-  }
-  (void)has_color;
-  std::vector<Triangle> tris;
-  tris.reserve(nf);
-  for (int64_t f = 0; f < nf; ++f) {
-    if (!next(&tok)) return bad("expected " + std::to_string(nf) + " faces, found " + std::to_string(f));
-    int64_t k = 0;
-    std::vector<int64_t> idx;
-    try {
-      k = std::stoll(tok[0]);
-      if (k < 0 || static_cast<size_t>(k) + 1 > tok.size()) return bad("malformed face");
-      for (int64_t j = 0; j < k; ++j) idx.push_back(std::stoll(tok[1 + j]));
-    } catch (...) {
-      return bad("malformed face");
-    }
-    for (int64_t v : idx)
-      if (v < 0 || v >= nv)
-        return Error{ErrorCode::kInvalidData, path + ":" + std::to_string(lineno) + ": face references vertex " +
-                                                  std::to_string(v) + " of " + std::to_string(nv)};
-    for (int64_t j = 1; j + 1 < k; ++j)
-      tris.push_back({static_cast<int32_t>(idx[0]), static_cast<int32_t>(idx[j]),
-                      static_cast<int32_t>(idx[j + 1])});
-  }
-  if (tris.empty()) return Error{ErrorCode::kInvalidData, path + ": the file contains no triangles"};
-  const int64_t file_faces = static_cast<int64_t>(tris.size());
-  auto cleaned = cleanMesh(std::move(verts), std::move(tris), options, path);
-  if (!cleaned) return cleaned.error();
-  LoadedMesh out = std::move(cleaned).value();
-  out.report.format = "off";
-  out.report.scene_meshes = 1;
-  out.report.file_vertices = nv;
-  out.report.file_faces = file_faces;
-  return out;
 }
 
 }  // namespace
@@ -326,7 +241,23 @@ Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& option
     if (probe.peek() == std::ifstream::traits_type::eof())
       return Error{ErrorCode::kUnreadable, path + ": the file is empty"};
   }
-  if (lowerExtension(path) == "off") return readOff(path, options);
+  // OFF and PLY are parsed here: assimp 5.2 miscounts OFF faces after comment lines and
+  // drops the first triangle of every PLY triangle strip.
+  const std::string ext = lowerExtension(path);
+  if (ext == "off" || ext == "ply") {
+    auto raw = ext == "off" ? detail::readOff(path) : detail::readPly(path);
+    if (!raw) return raw.error();
+    const int64_t nv = static_cast<int64_t>(raw->vertices.size());
+    const int64_t nf = static_cast<int64_t>(raw->triangles.size());
+    auto cleaned = cleanMesh(std::move(raw->vertices), std::move(raw->triangles), options, path);
+    if (!cleaned) return cleaned.error();
+    LoadedMesh out = std::move(cleaned).value();
+    out.report.format = ext;
+    out.report.scene_meshes = 1;
+    out.report.file_vertices = nv;
+    out.report.file_faces = nf;
+    return out;
+  }
   Assimp::Importer importer;
   // Keep only triangles and polygons; no normals, no vertex joining (we weld positions
   // ourselves, since assimp joins only vertices whose every attribute matches).

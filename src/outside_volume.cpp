@@ -10,9 +10,10 @@
 //   ∇_o SOV   = Σ_t A_t n_t                             (vector area of the surface in B).
 //
 // Centre on the surface: there the indicator and the triangles through o are discontinuous
-// while SOV itself is continuously differentiable in o. We evaluate at o ± δ n (n the normal
-// of the nearest triangle) and average, which is exact to O(δ²); δ is kNudgeRel of the
-// smaller of r and the mesh size, and far above the boundary tolerance.
+// while SOV itself is continuously differentiable in o. We evaluate at o ± δ d and average,
+// which is exact to O(δ²); δ is kNudgeRel of the smaller of r and the mesh size, and far above the boundary tolerance. The direction is a
+// fixed irregular one rather than a face normal, because a normal at an edge or corner can
+// slide the centre along another face.
 #include <cmath>
 #include <numbers>
 
@@ -24,7 +25,13 @@ namespace {
 
 using detail::TriRecord;
 
-constexpr double kNudgeRel = 1e-7;
+constexpr double kNudgeRel = 1e-5;
+// Nudge directions: irregular unit vectors, so that o ± δ d leaves the surface even at
+// edges and corners of axis-aligned CAD meshes; the next one is tried if a side still
+// lands on the surface.
+const Vec3 kNudgeDirections[] = {Vec3(0.5377, 0.8183, 0.2031).normalized(),
+                                 Vec3(-0.3122, 0.2450, 0.9179).normalized(),
+                                 Vec3(0.7071, -0.5803, 0.4040).normalized()};
 
 struct Accumulator {
   double volume3 = 0.0;  // 3 × Σ sign(h) SOTV
@@ -69,19 +76,14 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
   }
   Containment where = acc.center_on_surface ? Containment::kBoundary : index.classify(o);
   if (where == Containment::kBoundary && depth == 0) {
-    int32_t nearest = -1;
-    index.distance(o, &nearest);
-    Vec3 n = Vec3::UnitZ();
-    if (nearest >= 0) {
-      const auto& tri = im.mesh.triangles[nearest];
-      const Vec3 nn = (im.mesh.vertices[tri[1]] - im.mesh.vertices[tri[0]])
-                          .cross(im.mesh.vertices[tri[2]] - im.mesh.vertices[tri[0]]);
-      if (nn.norm() > 0.0) n = nn.normalized();
-    }
     const double delta =
         std::max(kNudgeRel * std::min(r, im.bounds.diagonal()), 100.0 * im.tolerance);
-    const OutsideVolume up = evaluate<kBrute>(index, im, o + delta * n, r, depth + 1);
-    const OutsideVolume down = evaluate<kBrute>(index, im, o - delta * n, r, depth + 1);
+    OutsideVolume up, down;
+    for (const Vec3& d : kNudgeDirections) {
+      up = evaluate<kBrute>(index, im, o + delta * d, r, depth + 1);
+      down = evaluate<kBrute>(index, im, o - delta * d, r, depth + 1);
+      if (up.center != Containment::kBoundary && down.center != Containment::kBoundary) break;
+    }
     out.volume = 0.5 * (up.volume + down.volume);
     out.d_radius = 0.5 * (up.d_radius + down.d_radius);
     out.gradient = 0.5 * (up.gradient + down.gradient);

@@ -46,13 +46,27 @@ inline double dot(P2 a, P2 b) { return a.x * b.x + a.y * b.y; }
 // Signed solid angle at o of the planar triangle (c, p, q) where c is the foot of o on the
 // plane at distance |h|; p, q are 2D coordinates about c. Positive for counter-clockwise
 // (p, q). Van Oosterom–Strackee with a = c - o, b = c + p - o, d = c + q - o, using the
-// plane's geometry: a·b = a·d = h², b·d = h² + p·q, det(a, b, d) = |h| cross(p, q).
+// plane's geometry: a·b = a·d = h², det(a, b, d) = |h| cross(p, q), and
+//   den = |h| (|b||d| + b·d) + h² (|b| + |d|).
+// When the angle at c approaches π (c close to the segment pq, which happens for every centre
+// near a mesh edge) |b||d| + b·d cancels catastrophically; it is then evaluated as
+// |b × d|² / (|b||d| - b·d), with b × d = (h (p_y - q_y), h (q_x - p_x), cross(p, q)).
 inline double fanSolidAngle(double abs_h, P2 p, P2 q) {
   const double h2 = abs_h * abs_h;
   const double lb = std::sqrt(h2 + dot(p, p));
   const double lq = std::sqrt(h2 + dot(q, q));
-  const double num = abs_h * cross(p, q);
-  const double den = abs_h * lb * lq + h2 * (lb + lq) + (h2 + dot(p, q)) * abs_h;
+  const double cr = cross(p, q);
+  const double bd = h2 + dot(p, q);
+  double sum;  // |b||d| + b·d
+  if (bd >= 0.0) {
+    sum = lb * lq + bd;
+  } else {
+    const double dx = p.x - q.x, dy = p.y - q.y;
+    const double cross2 = h2 * (dx * dx + dy * dy) + cr * cr;
+    sum = cross2 / (lb * lq - bd);
+  }
+  const double num = abs_h * cr;
+  const double den = abs_h * sum + h2 * (lb + lq);
   return 2.0 * std::atan2(num, den);
 }
 

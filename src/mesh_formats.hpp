@@ -1,0 +1,24 @@
+// Private: readers for the formats parsed without assimp (see mesh_io.cpp for why).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sphereset/mesh.hpp"
+
+namespace sphereset::detail {
+
+struct RawMesh {
+  std::vector<Vec3> vertices;
+  std::vector<Triangle> triangles;  // indices checked against the vertex count
+};
+
+// OFF / COFF / NOFF with '#' comments anywhere; polygons are fanned into triangles.
+Expected<RawMesh> readOff(const std::string& path);
+
+// PLY 1.0, ascii and binary (little and big endian): vertex x/y/z of any scalar type, faces
+// as index lists (fanned), triangle strips ("tristrips", -1 restarts, alternating winding).
+// Other elements and properties are skipped.
+Expected<RawMesh> readPly(const std::string& path);
+
+}  // namespace sphereset::detail

@@ -1,0 +1,38 @@
+# Command-line behaviour: exit codes and one-line messages for bad input.
+set(cli $<TARGET_FILE:sphereset_cli>)
+set(work ${CMAKE_CURRENT_BINARY_DIR}/cli)
+file(MAKE_DIRECTORY ${work})
+file(WRITE ${work}/open.off "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+file(WRITE ${work}/nan.off "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n")
+file(WRITE ${work}/garbage.stl "not a mesh at all")
+file(WRITE ${work}/bound.txt "# one sphere around the link\n0.0 -0.037 -0.068 0.17\n")
+file(WRITE ${work}/bad.txt "0 0 0\n")
+set(link ${CMAKE_CURRENT_SOURCE_DIR}/data/fr3_link1_collision.stl)
+
+function(cli_test name expect)
+  cmake_parse_arguments(A "" "STDERR;STDOUT" "ARGS" ${ARGN})
+  set(defs -DEXPECT_EXIT=${expect})
+  if(A_STDERR)
+    list(APPEND defs "-DEXPECT_STDERR=${A_STDERR}")
+  endif()
+  if(A_STDOUT)
+    list(APPEND defs "-DEXPECT_STDOUT=${A_STDOUT}")
+  endif()
+  string(REPLACE ";" "|" cmd "${cli};${A_ARGS}")
+  add_test(NAME cli.${name}
+           COMMAND ${CMAKE_COMMAND} "-DCMD=${cmd}" ${defs} -P ${CMAKE_CURRENT_SOURCE_DIR}/run_cli.cmake)
+endfunction()
+
+cli_test(check_solid 0 ARGS check ${link} STDOUT "solid +yes")
+cli_test(check_json 0 ARGS check ${link} --json
+         STDOUT "\"vertices\":152.*\"triangles\":300|\"triangles\":300.*\"vertices\":152")
+cli_test(check_open 5 ARGS check ${work}/open.off STDOUT "closed +no")
+cli_test(check_missing 3 ARGS check ${work}/missing.obj STDERR "missing.obj: no such file")
+cli_test(check_garbage 3 ARGS check ${work}/garbage.stl STDERR "garbage.stl: ")
+cli_test(check_nan 4 ARGS check ${work}/nan.off STDERR "nan.off: vertex 1 has a NaN")
+cli_test(eval_open 5 ARGS eval ${work}/open.off ${work}/bound.txt STDERR "open.off: not a closed solid: 3 boundary edges")
+cli_test(eval_bad_spheres 4 ARGS eval ${link} ${work}/bad.txt STDERR "bad.txt:1: expected four numbers")
+cli_test(eval_json 0 ARGS eval ${link} ${work}/bound.txt --json --samples 20000 --segments 100
+         STDOUT "\"er_sum\":.*\"surface_covered\":true")
+cli_test(bad_option 2 ARGS eval ${link} ${work}/bound.txt --samples -5)
+cli_test(no_command 2 ARGS)

@@ -1,0 +1,23 @@
+# Runs one CLI invocation and checks its exit code and output.
+#   -DCMD="prog|arg|..." -DEXPECT_EXIT=N [-DEXPECT_STDERR=regex] [-DEXPECT_STDOUT=regex]
+#   [-DFORBID_FILE=path]  (a file that must not exist afterwards)
+string(REPLACE "|" ";" CMD "${CMD}")
+execute_process(COMMAND ${CMD} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
+                TIMEOUT 120)
+if(NOT rc STREQUAL "${EXPECT_EXIT}")
+  message(FATAL_ERROR "exit ${rc}, expected ${EXPECT_EXIT}\nstdout: ${out}\nstderr: ${err}")
+endif()
+if(DEFINED EXPECT_STDERR AND NOT err MATCHES "${EXPECT_STDERR}")
+  message(FATAL_ERROR "stderr does not match '${EXPECT_STDERR}': ${err}")
+endif()
+if(DEFINED EXPECT_STDOUT AND NOT out MATCHES "${EXPECT_STDOUT}")
+  message(FATAL_ERROR "stdout does not match '${EXPECT_STDOUT}': ${out}")
+endif()
+if(DEFINED FORBID_FILE AND EXISTS "${FORBID_FILE}")
+  message(FATAL_ERROR "${FORBID_FILE} exists but should not")
+endif()
+string(REGEX MATCHALL "\n" lines "${err}")
+list(LENGTH lines nlines)
+if(rc GREATER 0 AND nlines GREATER 1)
+  message(FATAL_ERROR "an error must be one line on stderr, got ${nlines}: ${err}")
+endif()
