@@ -121,6 +121,23 @@ void addMeshArgs(CLI::App* cmd, MeshArgs* a) {
       ->check(CLI::NonNegativeNumber);
 }
 
+// Relative weld tolerance tried when an exactly welded mesh is open: files that store each
+// triangle's corners separately in float (STL, some DAE exports) often differ in the last bits.
+constexpr double kSuggestedWeldRel = 1e-7;
+
+// If the mesh is open and welding within kSuggestedWeldRel of the diagonal makes it a solid,
+// the option to pass; empty otherwise.
+std::string weldHint(const MeshArgs& a, const MeshDiagnosis& d) {
+  if (a.weld > 0.0 || d.boundary_edges == 0) return {};
+  LoadOptions lo;
+  lo.weld_tolerance = kSuggestedWeldRel * d.bbox.diagonal();
+  auto m = loadMesh(a.path, lo);
+  if (!m || !diagnoseMesh(m->mesh).isSolid()) return {};
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "--weld-tolerance %.2g", lo.weld_tolerance);
+  return buf;
+}
+
 // Loads and requires a closed solid.
 Expected<LoadedMesh> loadSolid(const MeshArgs& a) {
   LoadOptions lo;
@@ -128,7 +145,12 @@ Expected<LoadedMesh> loadSolid(const MeshArgs& a) {
   auto m = loadMesh(a.path, lo);
   if (!m) return m.error();
   const MeshDiagnosis d = diagnoseMesh(m->mesh);
-  if (!d.isSolid()) return notSolidError(a.path, d);
+  if (!d.isSolid()) {
+    Error e = notSolidError(a.path, d);
+    const std::string hint = weldHint(a, d);
+    if (!hint.empty()) e.message += " (it closes with " + hint + ")";
+    return e;
+  }
   return m;
 }
 
@@ -184,10 +206,15 @@ int main(int argc, char** argv) {
       auto m = loadMesh(check_args.path, lo);
       if (!m) return fail(m.error());
       const MeshDiagnosis d = diagnoseMesh(m->mesh);
-      if (json)
-        std::cout << checkJson(*m, d).dump() << '\n';
-      else
+      const std::string hint = d.isSolid() ? std::string() : weldHint(check_args, d);
+      if (json) {
+        nlohmann::json j = checkJson(*m, d);
+        if (!hint.empty()) j["hint"] = "closes with " + hint;
+        std::cout << j.dump() << '\n';
+      } else {
         printCheck(*m, d);
+        if (!hint.empty()) std::printf("  hint        the mesh closes with %s\n", hint.c_str());
+      }
       return d.isSolid() ? kOk : kNotSolid;
     }
     if (*eval) {

@@ -40,6 +40,8 @@ void Bvh::build(const Mesh& mesh, int leaf_size) {
     }
     nodes[task.node].min = bounds.min;
     nodes[task.node].max = bounds.max;
+    nodes[task.node].begin = task.begin;
+    nodes[task.node].total = task.end - task.begin;
     const int32_t count = task.end - task.begin;
     int axis = 0;
     const Vec3 extent = cbounds.max - cbounds.min;
@@ -76,6 +78,85 @@ void Bvh::build(const Mesh& mesh, int leaf_size) {
     const double len = nn.norm();
     r.area = 0.5 * len;
     r.n = len > 0.0 ? Vec3(nn / len) : Vec3::Zero();
+  }
+  buildPatches(mesh);
+}
+
+void Bvh::buildPatches(const Mesh& mesh) {
+  const int32_t n = static_cast<int32_t>(tris.size());
+  patches.assign(nodes.size(), NodePatch{});
+  patch_edges.clear();
+  // Position in `tris` of the neighbour across each directed edge, -1 where the edge is not
+  // shared by exactly one oppositely oriented triangle (open or non-manifold meshes: the
+  // nodes touching such edges get no patch and are always evaluated triangle by triangle).
+  std::vector<int32_t> pos_of(n);
+  for (int32_t i = 0; i < n; ++i) pos_of[original[i]] = i;
+  struct DirEdge {
+    int64_t key;
+    int32_t tri;
+  };
+  const int64_t nv = static_cast<int64_t>(mesh.vertices.size());
+  std::vector<DirEdge> edges;
+  edges.reserve(3 * static_cast<size_t>(n));
+  for (int32_t t = 0; t < n; ++t)
+    for (int k = 0; k < 3; ++k)
+      edges.push_back({mesh.triangles[t][k] * nv + mesh.triangles[t][(k + 1) % 3], t});
+  std::sort(edges.begin(), edges.end(),
+            [](const DirEdge& a, const DirEdge& b) { return a.key < b.key || (a.key == b.key && a.tri < b.tri); });
+  auto twinOf = [&](int64_t u, int64_t v) -> int32_t {
+    const int64_t key = v * nv + u;
+    auto it = std::lower_bound(edges.begin(), edges.end(), key,
+                               [](const DirEdge& e, int64_t k) { return e.key < k; });
+    if (it == edges.end() || it->key != key) return -1;
+    if (it + 1 != edges.end() && (it + 1)->key == key) return -1;  // non-manifold
+    return pos_of[it->tri];
+  };
+  std::vector<int32_t> twin(3 * static_cast<size_t>(n));
+  for (int32_t i = 0; i < n; ++i) {
+    const Triangle& t = mesh.triangles[original[i]];
+    for (int k = 0; k < 3; ++k) {
+      // The directed edge must also be unique, or its twin is ambiguous.
+      const int64_t u = t[k], v = t[(k + 1) % 3];
+      const auto lo = std::lower_bound(edges.begin(), edges.end(), u * nv + v,
+                                       [](const DirEdge& e, int64_t key) { return e.key < key; });
+      const bool unique = lo + 1 == edges.end() || (lo + 1)->key != u * nv + v;
+      twin[3 * i + k] = unique ? twinOf(u, v) : -1;
+    }
+  }
+  for (size_t ni = 0; ni < nodes.size(); ++ni) {
+    const BvhNode& node = nodes[ni];
+    if (node.total < kMinPatch) continue;
+    NodePatch p;
+    p.q = 0.5 * (node.min + node.max);
+    p.edge_begin = static_cast<int32_t>(patch_edges.size());
+    bool ok = true;
+    for (int32_t i = node.begin; i < node.begin + node.total && ok; ++i) {
+      const TriRecord& tr = tris[i];
+      p.det_q += (tr.a - p.q).dot((tr.b - p.q).cross(tr.c - p.q));
+      p.cross += (tr.b - tr.a).cross(tr.c - tr.a);
+      const Vec3* v[3] = {&tr.a, &tr.b, &tr.c};
+      for (int k = 0; k < 3; ++k) {
+        const int32_t tw = twin[3 * i + k];
+        if (tw < 0) {
+          ok = false;
+          break;
+        }
+        if (tw < node.begin || tw >= node.begin + node.total)
+          patch_edges.push_back({*v[k], *v[(k + 1) % 3]});
+      }
+    }
+    if (!ok) {
+      patch_edges.resize(p.edge_begin);
+      continue;
+    }
+    p.edge_end = static_cast<int32_t>(patch_edges.size());
+    // A patch pays off only when its boundary is shorter than its triangle list.
+    if (p.edge_end - p.edge_begin >= node.total) {
+      patch_edges.resize(p.edge_begin);
+      continue;
+    }
+    p.valid = true;
+    patches[ni] = p;
   }
 }
 

@@ -2,6 +2,7 @@
 // traversal order so that queries touch contiguous memory.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -13,7 +14,19 @@ struct BvhNode {
   Vec3 min = Vec3::Zero(), max = Vec3::Zero();
   int32_t first = 0;  // leaf: first triangle; inner: index of left child (right = first + 1)
   int32_t count = 0;  // leaf: number of triangles; inner: 0
+  int32_t begin = 0;  // all triangles below the node: tris[begin, begin + total)
+  int32_t total = 0;
   bool leaf() const { return count > 0; }
+};
+
+// Sums over a node's triangles that make a ball containing the whole node cheap to
+// evaluate (see outside_volume.cpp). Only for nodes with at least kMinPatch triangles.
+struct NodePatch {
+  bool valid = false;
+  Vec3 q = Vec3::Zero();          // reference point: the node's box centre
+  double det_q = 0.0;             // Σ det(a - q, b - q, c - q)
+  Vec3 cross = Vec3::Zero();      // Σ (b - a) × (c - a)  (twice the vector area)
+  int32_t edge_begin = 0, edge_end = 0;  // boundary edges in Bvh::patch_edges
 };
 
 // One triangle as the kernels need it.
@@ -27,8 +40,18 @@ struct Bvh {
   std::vector<BvhNode> nodes;
   std::vector<TriRecord> tris;   // in leaf order
   std::vector<int32_t> original;  // original triangle index of tris[i]
+  std::vector<NodePatch> patches;  // per node
+  // Directed boundary edges of node patches (each edge of a node triangle whose neighbour
+  // across it lies outside the node), as vertex positions.
+  std::vector<std::array<Vec3, 2>> patch_edges;
+  static constexpr int32_t kMinPatch = 32;
 
   void build(const Mesh& mesh, int leaf_size = 4);
+
+ private:
+  void buildPatches(const Mesh& mesh);
+
+ public:
 
   // Visits every leaf triangle whose node box passes `overlaps(min, max)`; `visit(i)` gets the
   // index into tris. Iterative with a fixed stack (depth is bounded by the build).

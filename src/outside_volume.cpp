@@ -53,7 +53,28 @@ struct Accumulator {
     omega += s * k.solid_angle;
     gradient += k.area * t.n;
   }
+
+  // A BVH node entirely inside the ball, with o outside the node's box: every triangle is in
+  // case (a), so Σ sign(h) Ω_t is the solid angle of the node's surface patch and Σ h_t A_t is
+  // half of Σ det(a - o, b - o, c - o), which is linear in o. The patch's solid angle equals
+  // that of the fan from the box centre q over its boundary edges, because the patch and the
+  // fan bound a closed surface inside the box, whose winding number about o is 0.
+  void addPatch(const detail::Bvh& bvh, const detail::NodePatch& p, const Vec3& o, double r,
+                double r2) {
+    double om = 0.0;
+    for (int32_t e = p.edge_begin; e < p.edge_end; ++e)
+      om += triangleSolidAngle(p.q, bvh.patch_edges[e][0], bvh.patch_edges[e][1], o);
+    const double det = p.det_q - (o - p.q).dot(p.cross);  // Σ 2 h_t A_t
+    volume3 += r * r2 * om - 0.5 * det;
+    omega += om;
+    gradient += 0.5 * p.cross;
+    tested += p.edge_end - p.edge_begin;
+  }
 };
+
+inline double farthestCornerSquaredDistance(const Vec3& mn, const Vec3& mx, const Vec3& p) {
+  return (mn - p).cwiseAbs().cwiseMax((mx - p).cwiseAbs()).squaredNorm();
+}
 
 template <bool kBrute>
 OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, const Vec3& o,
@@ -68,11 +89,29 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
   if constexpr (kBrute) {
     for (const TriRecord& t : im.bvh.tris) acc.add(t, o, r, r2);
   } else {
-    im.bvh.traverse(
-        [&](const Vec3& mn, const Vec3& mx) {
-          return detail::boxPointSquaredDistance(mn, mx, o) < r2;
-        },
-        [&](int32_t i) { acc.add(im.bvh.tris[i], o, r, r2); });
+    const detail::Bvh& bvh = im.bvh;
+    int32_t stack[128];
+    int top = 0;
+    if (!bvh.nodes.empty()) stack[top++] = 0;
+    while (top > 0) {
+      const int32_t ni = stack[--top];
+      const detail::BvhNode& node = bvh.nodes[ni];
+      const double near2 = detail::boxPointSquaredDistance(node.min, node.max, o);
+      if (near2 >= r2) continue;
+      const detail::NodePatch& patch = bvh.patches[ni];
+      if (patch.valid && near2 > 0.0 &&
+          farthestCornerSquaredDistance(node.min, node.max, o) <= r2) {
+        acc.addPatch(bvh, patch, o, r, r2);
+        continue;
+      }
+      if (node.leaf()) {
+        for (int32_t i = node.first; i < node.first + node.count; ++i)
+          acc.add(bvh.tris[i], o, r, r2);
+      } else {
+        stack[top++] = node.first + 1;
+        stack[top++] = node.first;
+      }
+    }
   }
   Containment where = acc.center_on_surface ? Containment::kBoundary : index.classify(o);
   if (where == Containment::kBoundary && depth == 0) {

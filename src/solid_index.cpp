@@ -169,7 +169,19 @@ Containment SolidIndex::classify(const Vec3& p) const {
   if ((p.array() < im.bounds.min.array() - tol).any() ||
       (p.array() > im.bounds.max.array() + tol).any())
     return Containment::kOutside;
-  if (distance(p) <= tol) return Containment::kBoundary;
+  // On the surface: some triangle within tol (a ball query, far cheaper than the distance).
+  bool near_surface = false;
+  const double tol2 = tol * tol;
+  im.bvh.traverse(
+      [&](const Vec3& mn, const Vec3& mx) {
+        return !near_surface && detail::boxPointSquaredDistance(mn, mx, p) <= tol2;
+      },
+      [&](int32_t i) {
+        const TriRecord& t = im.bvh.tris[i];
+        if (!near_surface && (closestPointOnTriangle(p, t.a, t.b, t.c) - p).squaredNorm() <= tol2)
+          near_surface = true;
+      });
+  if (near_surface) return Containment::kBoundary;
 
   const double reach = 2.0 * im.bounds.diagonal() + (p - im.bounds.center()).norm();
   for (const Vec3& d : rayDirections()) {

@@ -27,7 +27,9 @@ struct OutsideVolume {
   double volume = 0.0;          // SOV(o, r): volume of the ball outside the solid
   double d_radius = 0.0;        // dSOV/dr: area of the sphere's surface outside the solid
   Vec3 gradient = Vec3::Zero();  // dSOV/do at fixed r: Σ area(t ∩ B) n_t
-  int64_t triangles_tested = 0;  // triangles whose SOTV was evaluated
+  // Closed-form kernel evaluations: triangles met by the ball, plus the boundary fans of
+  // hierarchy nodes wholly inside it (whose triangles are summed in one go).
+  int64_t triangles_tested = 0;
   Containment center = Containment::kOutside;
 };
 
