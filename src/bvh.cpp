@@ -26,6 +26,7 @@ void Bvh::build(const Mesh& mesh, int leaf_size) {
 
   nodes.reserve(2 * (n / std::max(1, leaf_size)) + 8);
   nodes.push_back({});
+  std::vector<std::array<int32_t, 2>> ranges;
   struct Task {
     int32_t node, begin, end;
   };
@@ -40,8 +41,8 @@ void Bvh::build(const Mesh& mesh, int leaf_size) {
     }
     nodes[task.node].min = bounds.min;
     nodes[task.node].max = bounds.max;
-    nodes[task.node].begin = task.begin;
-    nodes[task.node].total = task.end - task.begin;
+    if (ranges.size() < nodes.size()) ranges.resize(nodes.size());
+    ranges[task.node] = {task.begin, task.end - task.begin};
     const int32_t count = task.end - task.begin;
     int axis = 0;
     const Vec3 extent = cbounds.max - cbounds.min;
@@ -79,12 +80,12 @@ void Bvh::build(const Mesh& mesh, int leaf_size) {
     r.area = 0.5 * len;
     r.n = len > 0.0 ? Vec3(nn / len) : Vec3::Zero();
   }
-  buildPatches(mesh);
+  buildPatches(mesh, ranges);
 }
 
-void Bvh::buildPatches(const Mesh& mesh) {
+void Bvh::buildPatches(const Mesh& mesh, const std::vector<std::array<int32_t, 2>>& ranges) {
   const int32_t n = static_cast<int32_t>(tris.size());
-  patches.assign(nodes.size(), NodePatch{});
+  patches.clear();
   patch_edges.clear();
   // Position in `tris` of the neighbour across each directed edge, -1 where the edge is not
   // shared by exactly one oppositely oriented triangle (open or non-manifold meshes: the
@@ -124,13 +125,14 @@ void Bvh::buildPatches(const Mesh& mesh) {
     }
   }
   for (size_t ni = 0; ni < nodes.size(); ++ni) {
-    const BvhNode& node = nodes[ni];
-    if (node.total < kMinPatch) continue;
+    BvhNode& node = nodes[ni];
+    const int32_t begin = ranges[ni][0], total = ranges[ni][1];
+    if (total < kMinPatch) continue;
     NodePatch p;
     p.q = 0.5 * (node.min + node.max);
     p.edge_begin = static_cast<int32_t>(patch_edges.size());
     bool ok = true;
-    for (int32_t i = node.begin; i < node.begin + node.total && ok; ++i) {
+    for (int32_t i = begin; i < begin + total && ok; ++i) {
       const TriRecord& tr = tris[i];
       p.det_q += (tr.a - p.q).dot((tr.b - p.q).cross(tr.c - p.q));
       p.cross += (tr.b - tr.a).cross(tr.c - tr.a);
@@ -141,7 +143,7 @@ void Bvh::buildPatches(const Mesh& mesh) {
           ok = false;
           break;
         }
-        if (tw < node.begin || tw >= node.begin + node.total)
+        if (tw < begin || tw >= begin + total)
           patch_edges.push_back({*v[k], *v[(k + 1) % 3]});
       }
     }
@@ -151,12 +153,12 @@ void Bvh::buildPatches(const Mesh& mesh) {
     }
     p.edge_end = static_cast<int32_t>(patch_edges.size());
     // A patch pays off only when its boundary is shorter than its triangle list.
-    if (p.edge_end - p.edge_begin >= node.total) {
+    if (p.edge_end - p.edge_begin >= total) {
       patch_edges.resize(p.edge_begin);
       continue;
     }
-    p.valid = true;
-    patches[ni] = p;
+    node.patch = static_cast<int32_t>(patches.size());
+    patches.push_back(p);
   }
 }
 

@@ -10,19 +10,19 @@
 
 namespace sphereset::detail {
 
+// One cache line per node: the box, the children or triangles, and the node's patch.
 struct BvhNode {
   Vec3 min = Vec3::Zero(), max = Vec3::Zero();
-  int32_t first = 0;  // leaf: first triangle; inner: index of left child (right = first + 1)
-  int32_t count = 0;  // leaf: number of triangles; inner: 0
-  int32_t begin = 0;  // all triangles below the node: tris[begin, begin + total)
-  int32_t total = 0;
+  int32_t first = 0;   // leaf: first triangle; inner: index of left child (right = first + 1)
+  int32_t count = 0;   // leaf: number of triangles; inner: 0
+  int32_t patch = -1;  // index into Bvh::patches, or -1
+  int32_t unused = 0;
   bool leaf() const { return count > 0; }
 };
 
 // Sums over a node's triangles that make a ball containing the whole node cheap to
 // evaluate (see outside_volume.cpp). Only for nodes with at least kMinPatch triangles.
 struct NodePatch {
-  bool valid = false;
   Vec3 q = Vec3::Zero();          // reference point: the node's box centre
   double det_q = 0.0;             // Σ det(a - q, b - q, c - q)
   Vec3 cross = Vec3::Zero();      // Σ (b - a) × (c - a)  (twice the vector area)
@@ -40,16 +40,17 @@ struct Bvh {
   std::vector<BvhNode> nodes;
   std::vector<TriRecord> tris;   // in leaf order
   std::vector<int32_t> original;  // original triangle index of tris[i]
-  std::vector<NodePatch> patches;  // per node
+  std::vector<NodePatch> patches;  // referenced by BvhNode::patch
   // Directed boundary edges of node patches (each edge of a node triangle whose neighbour
   // across it lies outside the node), as vertex positions.
   std::vector<std::array<Vec3, 2>> patch_edges;
-  static constexpr int32_t kMinPatch = 32;
+  static constexpr int32_t kMinPatch = 8;
 
   void build(const Mesh& mesh, int leaf_size = 4);
 
  private:
-  void buildPatches(const Mesh& mesh);
+  // ranges[i]: the triangles below node i are tris[first, first + count) (build time only).
+  void buildPatches(const Mesh& mesh, const std::vector<std::array<int32_t, 2>>& ranges);
 
  public:
 

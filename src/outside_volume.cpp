@@ -17,6 +17,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "angle_sum.hpp"
 #include "bvh.hpp"
 #include "solid_index_impl.hpp"
 
@@ -26,6 +27,8 @@ namespace {
 using detail::TriRecord;
 
 constexpr double kNudgeRel = 1e-5;
+// Same meaning as in sphere_triangle.cpp: |h| below this fraction of r is "in the plane".
+constexpr double kOnPlaneRelTol = 1e-13;
 // Nudge directions: irregular unit vectors, so that o ± δ d leaves the surface even at
 // edges and corners of axis-aligned CAD meshes; the next one is tried if a side still
 // lands on the surface.
@@ -33,24 +36,52 @@ const Vec3 kNudgeDirections[] = {Vec3(0.5377, 0.8183, 0.2031).normalized(),
                                  Vec3(-0.3122, 0.2450, 0.9179).normalized(),
                                  Vec3(0.7071, -0.5803, 0.4040).normalized()};
 
+// Van Oosterom–Strackee numerator and denominator of triangle (a, b, c) seen from o: the
+// signed solid angle is 2 atan2(num, den) and num = det(a - o, b - o, c - o) = 2 h A.
+struct SolidAngleTerms {
+  double num, den;
+};
+inline SolidAngleTerms solidAngleTerms(const Vec3& x, const Vec3& y, const Vec3& z, double lx,
+                                       double ly, double lz) {
+  return {x.dot(y.cross(z)), lx * ly * lz + x.dot(y) * lz + x.dot(z) * ly + y.dot(z) * lx};
+}
+
 struct Accumulator {
-  double volume3 = 0.0;  // 3 × Σ sign(h) SOTV
-  double omega = 0.0;    // Σ sign(h) Ω
+  detail::AngleSum half_omega;  // Σ sign(h) Ω / 2 over terms given as atan2 pairs
+  double omega = 0.0;           // Σ sign(h) Ω over terms given as numbers
+  double h_area = 0.0;          // Σ h A
   Vec3 gradient = Vec3::Zero();
   int64_t tested = 0;
   bool center_on_surface = false;
 
+  // Σ sign(h) Ω, the signed solid angle of the surface inside the ball.
+  double signedOmega() const { return omega + 2.0 * half_omega.value(); }
+
   void add(const TriRecord& t, const Vec3& o, double r, double r2) {
-    // Cheap rejection by the triangle's bounding box, then by its plane (inside the kernel).
+    // Cheap rejection by the triangle's bounding box, then by its plane.
     const Vec3 mn = t.a.cwiseMin(t.b).cwiseMin(t.c), mx = t.a.cwiseMax(t.b).cwiseMax(t.c);
     if (detail::boxPointSquaredDistance(mn, mx, o) >= r2) return;
+    const double h = t.n.dot(t.a - o);
+    if (std::abs(h) >= r) return;
     ++tested;
+    // Case (a), the whole triangle in the ball, inline: the same closed form as
+    // triangleBallTerms (Ω of the triangle, A its area), with the solid angle accumulated as
+    // an atan2 pair. A centre in the triangle's plane goes to the general kernel.
+    const Vec3 x = t.a - o, y = t.b - o, z = t.c - o;
+    const double dx = x.squaredNorm(), dy = y.squaredNorm(), dz = z.squaredNorm();
+    if (dx <= r2 && dy <= r2 && dz <= r2 && std::abs(h) > kOnPlaneRelTol * r) {
+      const SolidAngleTerms sa = solidAngleTerms(x, y, z, std::sqrt(dx), std::sqrt(dy), std::sqrt(dz));
+      half_omega.add(sa.num, sa.den);
+      h_area += h * t.area;
+      gradient += t.area * t.n;
+      return;
+    }
     const TriangleBallTerms k = triangleBallTerms(t.a, t.b, t.c, t.n, o, r);
     if (k.center_on_triangle) center_on_surface = true;
     if (k.area <= 0.0) return;
     const double s = k.h > 0.0 ? 1.0 : (k.h < 0.0 ? -1.0 : 0.0);
-    volume3 += s * r * r2 * k.solid_angle - k.h * k.area;
     omega += s * k.solid_angle;
+    h_area += k.h * k.area;
     gradient += k.area * t.n;
   }
 
@@ -59,14 +90,15 @@ struct Accumulator {
   // half of Σ det(a - o, b - o, c - o), which is linear in o. The patch's solid angle equals
   // that of the fan from the box centre q over its boundary edges, because the patch and the
   // fan bound a closed surface inside the box, whose winding number about o is 0.
-  void addPatch(const detail::Bvh& bvh, const detail::NodePatch& p, const Vec3& o, double r,
-                double r2) {
-    double om = 0.0;
-    for (int32_t e = p.edge_begin; e < p.edge_end; ++e)
-      om += triangleSolidAngle(p.q, bvh.patch_edges[e][0], bvh.patch_edges[e][1], o);
-    const double det = p.det_q - (o - p.q).dot(p.cross);  // Σ 2 h_t A_t
-    volume3 += r * r2 * om - 0.5 * det;
-    omega += om;
+  void addPatch(const detail::Bvh& bvh, const detail::NodePatch& p, const Vec3& o) {
+    const Vec3 x = p.q - o;
+    const double lx = x.norm();
+    for (int32_t e = p.edge_begin; e < p.edge_end; ++e) {
+      const Vec3 y = bvh.patch_edges[e][0] - o, z = bvh.patch_edges[e][1] - o;
+      const SolidAngleTerms sa = solidAngleTerms(x, y, z, lx, y.norm(), z.norm());
+      half_omega.add(sa.num, sa.den);
+    }
+    h_area += 0.5 * (p.det_q - (o - p.q).dot(p.cross));  // Σ det(a - o, ...) / 2
     gradient += 0.5 * p.cross;
     tested += p.edge_end - p.edge_begin;
   }
@@ -98,16 +130,17 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
       const detail::BvhNode& node = bvh.nodes[ni];
       const double near2 = detail::boxPointSquaredDistance(node.min, node.max, o);
       if (near2 >= r2) continue;
-      const detail::NodePatch& patch = bvh.patches[ni];
-      if (patch.valid && near2 > 0.0 &&
+      if (node.patch >= 0 && near2 > 0.0 &&
           farthestCornerSquaredDistance(node.min, node.max, o) <= r2) {
-        acc.addPatch(bvh, patch, o, r, r2);
+        acc.addPatch(bvh, bvh.patches[node.patch], o);
         continue;
       }
       if (node.leaf()) {
         for (int32_t i = node.first; i < node.first + node.count; ++i)
           acc.add(bvh.tris[i], o, r, r2);
       } else {
+        // The children are adjacent; fetching them now hides the latency of the next pop.
+        __builtin_prefetch(&bvh.nodes[node.first]);
         stack[top++] = node.first + 1;
         stack[top++] = node.first;
       }
@@ -136,8 +169,9 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
                                                            : 0.0;
   const double four_pi = 4.0 * std::numbers::pi;
   const double ball = four_pi / 3.0 * r * r2;
-  out.volume = std::clamp(outside * ball + acc.volume3 / 3.0, 0.0, ball);
-  out.d_radius = std::clamp(r2 * (four_pi * outside + acc.omega), 0.0, four_pi * r2);
+  const double omega = acc.signedOmega();
+  out.volume = std::clamp(outside * ball + (r * r2 * omega - acc.h_area) / 3.0, 0.0, ball);
+  out.d_radius = std::clamp(r2 * (four_pi * outside + omega), 0.0, four_pi * r2);
   out.gradient = acc.gradient;
   out.triangles_tested = acc.tested;
   out.center = where;

@@ -9,17 +9,18 @@
 // subtends at o. The paper splits this into four cases (a)-(d) and tabulates the "swing
 // volume" of cases (c) and (d); here every case is one formula.
 //
-// Deviation from the note: the note walks the boundary of R and sums arcs one by one. The
-// angle of a single arc from two nearly coincident end points is ambiguous (≈0 or ≈2π) in
-// floating point, and near-tangent configurations produce exactly such arcs. We instead
-// compute the straight boundary pieces by clipping each edge to D, and the total angle Θ of
-// the circle ∂D that lies inside t as the measure of the intersection of three circular arcs
-// (one per edge half-plane), each given in closed form by its edge's distance from c. Both
-// parts are continuous in the input, so tangencies and vertices exactly on the sphere need
-// no special case:
+// Following the note, A and Ω are sums over the boundary of R seen from c0: each straight
+// piece (p, q) of a triangle edge clipped to D contributes the planar triangle (c0, p, q) to A
+// and its solid angle ω(c0, p, q) at o to Ω; each arc of ∂D of angle θ contributes ρ² θ / 2
+// and θ (1 - |h| / r). Deviation from the note: instead of walking the arcs one by one, whose
+// angles are ambiguous (≈0 or ≈2π) in floating point when their end points nearly coincide,
+// as they do near tangencies, we use that the boundary winds once around c0 when c0 ∈ t and
+// not at all otherwise. The total arc angle is then
+//   Θ = 2π [c0 ∈ t] - Σ_pieces angle(p, q),
+// which is continuous in the input, needs no case analysis, and costs no more than the
+// pieces themselves:
 //   A = Σ_pieces cross(p, q) / 2 + ρ² Θ / 2,
-//   Ω = Σ_pieces ω(c, p, q)      + Θ (1 - |h| / r),
-// where ω is the signed solid angle of the planar triangle (c, p, q) seen from o.
+//   Ω = Σ_pieces ω(c0, p, q)     + Θ (1 - |h| / r).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -68,36 +69,6 @@ inline double fanSolidAngle(double abs_h, P2 p, P2 q) {
   const double num = abs_h * cr;
   const double den = abs_h * sum + h2 * (lb + lq);
   return 2.0 * std::atan2(num, den);
-}
-
-// Measure of the intersection of circular arcs [start_k, start_k + len_k] (angles, radians).
-double arcIntersectionMeasure(const std::array<double, 3>& start,
-                              const std::array<double, 3>& len) {
-  // Intervals on the real line, kept inside [start[0], start[0] + len[0]].
-  std::array<std::array<double, 2>, 8> cur{}, next{};
-  int ncur = 1;
-  cur[0] = {start[0], start[0] + len[0]};
-  for (int k = 1; k < 3; ++k) {
-    if (len[k] >= kTwoPi) continue;  // the whole circle: no constraint
-    // Shift the arc so its first copy starts in [start[0] - 2π, start[0]).
-    double s = start[k] - start[0];
-    s = s - kTwoPi * std::floor(s / kTwoPi) + start[0] - kTwoPi;
-    int nnext = 0;
-    for (int i = 0; i < ncur; ++i) {
-      for (int copy = 0; copy < 3; ++copy) {
-        const double a0 = s + copy * kTwoPi;
-        const double lo = std::max(cur[i][0], a0);
-        const double hi = std::min(cur[i][1], a0 + len[k]);
-        if (hi > lo && nnext < 8) next[nnext++] = {lo, hi};
-      }
-    }
-    cur = next;
-    ncur = nnext;
-    if (ncur == 0) return 0.0;
-  }
-  double total = 0.0;
-  for (int i = 0; i < ncur; ++i) total += cur[i][1] - cur[i][0];
-  return std::min(total, kTwoPi);
 }
 
 }  // namespace
@@ -149,41 +120,50 @@ TriangleBallTerms triangleBallTerms(const Vec3& a, const Vec3& b, const Vec3& c,
   const double rho2 = std::max(0.0, r2 - out.h * out.h);
   const double rho = std::sqrt(rho2);
 
-  double fan_area = 0.0, fan_omega = 0.0;
-  std::array<double, 3> arc_start{}, arc_len{};
+  // Signed distances of c0 from the edge lines, positive on the triangle's side. An edge
+  // line with the whole disk on its outer side (s <= -ρ) means t ∩ D is empty.
+  std::array<P2, 3> d;
+  std::array<double, 3> dd, sdist, side;
   bool inside_all = true;  // foot c0 inside every edge half-plane (c0 ∈ t)
   for (int k = 0; k < 3; ++k) {
     const P2 p0 = p[k], p1 = p[(k + 1) % 3];
-    const P2 d{p1.x - p0.x, p1.y - p0.y};
-    const double dd = dot(d, d);
-    const double dl = std::sqrt(dd);
-    // Signed distance of c0 from the edge line, positive on the triangle's side.
-    const double s = cross(p0, d) / dl;
-    if (s < 0.0) inside_all = false;
-    // Arc of ∂D inside this edge's half-plane: [ψ_out + β, ψ_out + 2π - β].
-    const double ratio = rho > 0.0 ? s / rho : (s >= 0.0 ? 1.0 : -1.0);
-    const double beta = std::acos(std::clamp(ratio, -1.0, 1.0));
-    arc_start[k] = std::atan2(d.y, d.x) - 0.5 * kPi + beta;
-    arc_len[k] = kTwoPi - 2.0 * beta;
+    d[k] = P2{p1.x - p0.x, p1.y - p0.y};
+    dd[k] = dot(d[k], d[k]);
+    side[k] = cross(p0, d[k]) + 0.0;  // + 0.0 turns -0 into +0, see the angle sum below
+    sdist[k] = side[k] / std::sqrt(dd[k]);
+    if (sdist[k] <= -rho) return out;
+    if (side[k] < 0.0) inside_all = false;
+  }
 
+  double fan_area = 0.0, fan_omega = 0.0, fan_angle = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    if (sdist[k] >= rho) continue;  // the edge's line misses the disk
+    const P2 p0 = p[k];
     // Piece of the edge inside D: roots of |p0 + t d|² = ρ², clipped to [0, 1].
-    const double hb = dot(p0, d);
+    const double hb = dot(p0, d[k]);
     const double cc = dot(p0, p0) - rho2;
-    const double disc = hb * hb - dd * cc;
+    const double disc = hb * hb - dd[k] * cc;
     if (!(disc > 0.0)) continue;
     const double sq = std::sqrt(disc);
     const double qq = -(hb + std::copysign(sq, hb));
-    double t0 = qq / dd, t1 = cc / qq;
+    double t0 = qq / dd[k], t1 = cc / qq;
     if (t0 > t1) std::swap(t0, t1);
     t0 = std::max(t0, 0.0);
     t1 = std::min(t1, 1.0);
     if (!(t1 > t0)) continue;
-    const P2 q0{p0.x + t0 * d.x, p0.y + t0 * d.y};
-    const P2 q1{p0.x + t1 * d.x, p0.y + t1 * d.y};
-    fan_area += 0.5 * cross(q0, q1);
+    const P2 q0{p0.x + t0 * d[k].x, p0.y + t0 * d[k].y};
+    const P2 q1{p0.x + t1 * d[k].x, p0.y + t1 * d[k].y};
+    // cross(q0, q1) = (t1 - t0) cross(p0, d): computed this way its sign always agrees with
+    // the side test, which keeps the angle sum below consistent when c0 lies on the edge's
+    // line (there the piece's angle is +π exactly when c0 counts as inside t).
+    const double cr = (t1 - t0) * side[k];
+    fan_area += 0.5 * cr;
+    fan_angle += std::atan2(cr, dot(q0, q1));
     if (!on_plane) fan_omega += fanSolidAngle(abs_h, q0, q1);
   }
-  const double theta = arcIntersectionMeasure(arc_start, arc_len);
+  // The boundary of R winds once around c0 if c0 ∈ t (then c0 ∈ R) and not at all
+  // otherwise, so the arcs' total angle is Θ = 2π [c0 ∈ t] - Σ (angles of the pieces at c0).
+  const double theta = std::clamp((inside_all ? kTwoPi : 0.0) - fan_angle, 0.0, kTwoPi);
   out.area = std::max(0.0, fan_area + 0.5 * rho2 * theta);
   if (on_plane) {
     out.center_on_triangle = inside_all;
