@@ -14,6 +14,7 @@ packages=(
   libgtest-dev         # unit tests
   libbenchmark-dev     # micro-benchmarks
   libpng-dev           # PNG pictures
+  python3              # benchmark scripts (CSV tables)
 )
 
 missing=()
