@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <unordered_map>
 
 namespace sphereset::detail {
 
@@ -86,7 +87,8 @@ void Bvh::build(const Mesh& mesh, int leaf_size) {
 void Bvh::buildPatches(const Mesh& mesh, const std::vector<std::array<int32_t, 2>>& ranges) {
   const int32_t n = static_cast<int32_t>(tris.size());
   patches.clear();
-  patch_edges.clear();
+  patch_loops.clear();
+  patch_vertices.clear();
   // Position in `tris` of the neighbour across each directed edge, -1 where the edge is not
   // shared by exactly one oppositely oriented triangle (open or non-manifold meshes: the
   // nodes touching such edges get no patch and are always evaluated triangle by triangle).
@@ -124,39 +126,59 @@ void Bvh::buildPatches(const Mesh& mesh, const std::vector<std::array<int32_t, 2
       twin[3 * i + k] = unique ? twinOf(u, v) : -1;
     }
   }
+  std::vector<std::array<int32_t, 2>> edges_uv;  // the current patch's boundary edges
+  std::unordered_map<int32_t, std::vector<int32_t>> out_edges;
   for (size_t ni = 0; ni < nodes.size(); ++ni) {
     BvhNode& node = nodes[ni];
     const int32_t begin = ranges[ni][0], total = ranges[ni][1];
     if (total < kMinPatch) continue;
     NodePatch p;
     p.q = 0.5 * (node.min + node.max);
-    p.edge_begin = static_cast<int32_t>(patch_edges.size());
+    edges_uv.clear();
     bool ok = true;
     for (int32_t i = begin; i < begin + total && ok; ++i) {
       const TriRecord& tr = tris[i];
       p.det_q += (tr.a - p.q).dot((tr.b - p.q).cross(tr.c - p.q));
       p.cross += (tr.b - tr.a).cross(tr.c - tr.a);
-      const Vec3* v[3] = {&tr.a, &tr.b, &tr.c};
+      const Triangle& t = mesh.triangles[original[i]];
       for (int k = 0; k < 3; ++k) {
         const int32_t tw = twin[3 * i + k];
         if (tw < 0) {
           ok = false;
           break;
         }
-        if (tw < begin || tw >= begin + total)
-          patch_edges.push_back({*v[k], *v[(k + 1) % 3]});
+        if (tw < begin || tw >= begin + total) edges_uv.push_back({t[k], t[(k + 1) % 3]});
       }
     }
-    if (!ok) {
-      patch_edges.resize(p.edge_begin);
-      continue;
-    }
-    p.edge_end = static_cast<int32_t>(patch_edges.size());
     // A patch pays off only when its boundary is shorter than its triangle list.
-    if (p.edge_end - p.edge_begin >= total) {
-      patch_edges.resize(p.edge_begin);
-      continue;
+    if (!ok || static_cast<int32_t>(edges_uv.size()) >= total) continue;
+    // Chain the directed boundary edges into closed loops, stored as vertex sequences with
+    // the first vertex repeated at the end, so that consecutive entries are the edges.
+    out_edges.clear();
+    for (int32_t e = 0; e < static_cast<int32_t>(edges_uv.size()); ++e)
+      out_edges[edges_uv[e][0]].push_back(e);
+    std::vector<char> used(edges_uv.size(), 0);
+    p.loop_begin = static_cast<int32_t>(patch_loops.size());
+    for (size_t e0 = 0; e0 < edges_uv.size(); ++e0) {
+      if (used[e0]) continue;
+      const int32_t start = static_cast<int32_t>(patch_vertices.size());
+      int32_t e = static_cast<int32_t>(e0);
+      patch_vertices.push_back(mesh.vertices[edges_uv[e][0]]);
+      while (e >= 0 && !used[e]) {
+        used[e] = 1;
+        const int32_t v = edges_uv[e][1];
+        patch_vertices.push_back(mesh.vertices[v]);
+        e = -1;
+        for (int32_t cand : out_edges[v])
+          if (!used[cand]) {
+            e = cand;
+            break;
+          }
+      }
+      patch_loops.push_back({start, static_cast<int32_t>(patch_vertices.size())});
     }
+    p.loop_end = static_cast<int32_t>(patch_loops.size());
+    p.edges = static_cast<int32_t>(edges_uv.size());
     node.patch = static_cast<int32_t>(patches.size());
     patches.push_back(p);
   }

@@ -26,7 +26,8 @@ struct NodePatch {
   Vec3 q = Vec3::Zero();          // reference point: the node's box centre
   double det_q = 0.0;             // Σ det(a - q, b - q, c - q)
   Vec3 cross = Vec3::Zero();      // Σ (b - a) × (c - a)  (twice the vector area)
-  int32_t edge_begin = 0, edge_end = 0;  // boundary edges in Bvh::patch_edges
+  int32_t loop_begin = 0, loop_end = 0;  // boundary loops in Bvh::patch_loops
+  int32_t edges = 0;                      // boundary edges in all loops
 };
 
 // One triangle as the kernels need it.
@@ -41,10 +42,12 @@ struct Bvh {
   std::vector<TriRecord> tris;   // in leaf order
   std::vector<int32_t> original;  // original triangle index of tris[i]
   std::vector<NodePatch> patches;  // referenced by BvhNode::patch
-  // Directed boundary edges of node patches (each edge of a node triangle whose neighbour
-  // across it lies outside the node), as vertex positions.
-  std::vector<std::array<Vec3, 2>> patch_edges;
-  static constexpr int32_t kMinPatch = 8;
+  // Boundary of node patches (the edges of a node's triangles whose neighbour across lies
+  // outside the node), chained into closed loops: patch_loops[k] = [first, end) in
+  // patch_vertices, whose consecutive entries are the directed edges.
+  std::vector<std::array<int32_t, 2>> patch_loops;
+  std::vector<Vec3> patch_vertices;
+  static constexpr int32_t kMinPatch = 32;
 
   void build(const Mesh& mesh, int leaf_size = 4);
 

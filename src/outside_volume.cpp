@@ -93,14 +93,22 @@ struct Accumulator {
   void addPatch(const detail::Bvh& bvh, const detail::NodePatch& p, const Vec3& o) {
     const Vec3 x = p.q - o;
     const double lx = x.norm();
-    for (int32_t e = p.edge_begin; e < p.edge_end; ++e) {
-      const Vec3 y = bvh.patch_edges[e][0] - o, z = bvh.patch_edges[e][1] - o;
-      const SolidAngleTerms sa = solidAngleTerms(x, y, z, lx, y.norm(), z.norm());
-      half_omega.add(sa.num, sa.den);
+    for (int32_t l = p.loop_begin; l < p.loop_end; ++l) {
+      const auto [first, end] = bvh.patch_loops[l];
+      Vec3 y = bvh.patch_vertices[first] - o;
+      double ly = y.norm();
+      for (int32_t i = first + 1; i < end; ++i) {
+        const Vec3 z = bvh.patch_vertices[i] - o;
+        const double lz = z.norm();
+        const SolidAngleTerms sa = solidAngleTerms(x, y, z, lx, ly, lz);
+        half_omega.add(sa.num, sa.den);
+        y = z;
+        ly = lz;
+      }
     }
     h_area += 0.5 * (p.det_q - (o - p.q).dot(p.cross));  // Σ det(a - o, ...) / 2
     gradient += 0.5 * p.cross;
-    tested += p.edge_end - p.edge_begin;
+    tested += p.edges;
   }
 };
 

@@ -26,6 +26,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "angle_sum.hpp"
 #include "sphereset/solid_index.hpp"
 
 namespace sphereset {
@@ -44,15 +45,15 @@ struct P2 {
 inline double cross(P2 a, P2 b) { return a.x * b.y - a.y * b.x; }
 inline double dot(P2 a, P2 b) { return a.x * b.x + a.y * b.y; }
 
-// Signed solid angle at o of the planar triangle (c, p, q) where c is the foot of o on the
-// plane at distance |h|; p, q are 2D coordinates about c. Positive for counter-clockwise
-// (p, q). Van Oosterom–Strackee with a = c - o, b = c + p - o, d = c + q - o, using the
+// Signed solid angle at o of the planar triangle (c, p, q), as the pair (num, den) with
+// ω = 2 atan2(num, den); c is the foot of o on the plane at distance |h|, p and q are 2D
+// coordinates about c, and ω > 0 for counter-clockwise (p, q). Van Oosterom–Strackee with a = c - o, b = c + p - o, d = c + q - o, using the
 // plane's geometry: a·b = a·d = h², det(a, b, d) = |h| cross(p, q), and
 //   den = |h| (|b||d| + b·d) + h² (|b| + |d|).
 // When the angle at c approaches π (c close to the segment pq, which happens for every centre
 // near a mesh edge) |b||d| + b·d cancels catastrophically; it is then evaluated as
 // |b × d|² / (|b||d| - b·d), with b × d = (h (p_y - q_y), h (q_x - p_x), cross(p, q)).
-inline double fanSolidAngle(double abs_h, P2 p, P2 q) {
+inline void fanSolidAngleTerms(double abs_h, P2 p, P2 q, double* num_out, double* den_out) {
   const double h2 = abs_h * abs_h;
   const double lb = std::sqrt(h2 + dot(p, p));
   const double lq = std::sqrt(h2 + dot(q, q));
@@ -66,9 +67,8 @@ inline double fanSolidAngle(double abs_h, P2 p, P2 q) {
     const double cross2 = h2 * (dx * dx + dy * dy) + cr * cr;
     sum = cross2 / (lb * lq - bd);
   }
-  const double num = abs_h * cr;
-  const double den = abs_h * sum + h2 * (lb + lq);
-  return 2.0 * std::atan2(num, den);
+  *num_out = abs_h * cr;
+  *den_out = abs_h * sum + h2 * (lb + lq);
 }
 
 }  // namespace
@@ -135,7 +135,9 @@ TriangleBallTerms triangleBallTerms(const Vec3& a, const Vec3& b, const Vec3& c,
     if (side[k] < 0.0) inside_all = false;
   }
 
-  double fan_area = 0.0, fan_omega = 0.0, fan_angle = 0.0;
+  // Angles are summed as arguments of complex products (one atan2 per sum, not per piece).
+  double fan_area = 0.0;
+  detail::AngleSum fan_half_omega, fan_angle;
   for (int k = 0; k < 3; ++k) {
     if (sdist[k] >= rho) continue;  // the edge's line misses the disk
     const P2 p0 = p[k];
@@ -158,18 +160,23 @@ TriangleBallTerms triangleBallTerms(const Vec3& a, const Vec3& b, const Vec3& c,
     // line (there the piece's angle is +π exactly when c0 counts as inside t).
     const double cr = (t1 - t0) * side[k];
     fan_area += 0.5 * cr;
-    fan_angle += std::atan2(cr, dot(q0, q1));
-    if (!on_plane) fan_omega += fanSolidAngle(abs_h, q0, q1);
+    fan_angle.add(cr, dot(q0, q1));
+    if (!on_plane) {
+      double num, den;
+      fanSolidAngleTerms(abs_h, q0, q1, &num, &den);
+      fan_half_omega.add(num, den);
+    }
   }
   // The boundary of R winds once around c0 if c0 ∈ t (then c0 ∈ R) and not at all
   // otherwise, so the arcs' total angle is Θ = 2π [c0 ∈ t] - Σ (angles of the pieces at c0).
-  const double theta = std::clamp((inside_all ? kTwoPi : 0.0) - fan_angle, 0.0, kTwoPi);
+  const double theta =
+      std::clamp((inside_all ? kTwoPi : 0.0) - fan_angle.value(), 0.0, kTwoPi);
   out.area = std::max(0.0, fan_area + 0.5 * rho2 * theta);
   if (on_plane) {
     out.center_on_triangle = inside_all;
     return out;
   }
-  out.solid_angle = std::max(0.0, fan_omega + theta * (1.0 - abs_h / r));
+  out.solid_angle = std::max(0.0, 2.0 * fan_half_omega.value() + theta * (1.0 - abs_h / r));
   return out;
 }
 
