@@ -27,6 +27,7 @@ void Bvh::build(const Mesh& mesh, int leaf_size) {
 
   nodes.reserve(2 * (n / std::max(1, leaf_size)) + 8);
   nodes.push_back({});
+  nodes.push_back({});  // unused: keeps sibling pairs on even indices
   std::vector<std::array<int32_t, 2>> ranges;
   struct Task {
     int32_t node, begin, end;
@@ -40,8 +41,7 @@ void Bvh::build(const Mesh& mesh, int leaf_size) {
       bounds.extend(box[original[i]]);
       cbounds.extend(centroid[original[i]]);
     }
-    nodes[task.node].min = bounds.min;
-    nodes[task.node].max = bounds.max;
+    nodes[task.node].setBox(bounds.min, bounds.max);
     if (ranges.size() < nodes.size()) ranges.resize(nodes.size());
     ranges[task.node] = {task.begin, task.end - task.begin};
     const int32_t count = task.end - task.begin;
@@ -87,6 +87,7 @@ void Bvh::build(const Mesh& mesh, int leaf_size) {
 void Bvh::buildPatches(const Mesh& mesh, const std::vector<std::array<int32_t, 2>>& ranges) {
   const int32_t n = static_cast<int32_t>(tris.size());
   patches.clear();
+  node_patch.assign(nodes.size(), -1);
   patch_loops.clear();
   patch_vertices.clear();
   // Position in `tris` of the neighbour across each directed edge, -1 where the edge is not
@@ -129,11 +130,12 @@ void Bvh::buildPatches(const Mesh& mesh, const std::vector<std::array<int32_t, 2
   std::vector<std::array<int32_t, 2>> edges_uv;  // the current patch's boundary edges
   std::unordered_map<int32_t, std::vector<int32_t>> out_edges;
   for (size_t ni = 0; ni < nodes.size(); ++ni) {
-    BvhNode& node = nodes[ni];
+    if (ni == 1) continue;  // the unused slot
+    const BvhNode& node = nodes[ni];
     const int32_t begin = ranges[ni][0], total = ranges[ni][1];
     if (total < kMinPatch) continue;
     NodePatch p;
-    p.q = 0.5 * (node.min + node.max);
+    p.q = 0.5 * (node.min() + node.max());
     edges_uv.clear();
     bool ok = true;
     for (int32_t i = begin; i < begin + total && ok; ++i) {
@@ -179,7 +181,7 @@ void Bvh::buildPatches(const Mesh& mesh, const std::vector<std::array<int32_t, 2
     }
     p.loop_end = static_cast<int32_t>(patch_loops.size());
     p.edges = static_cast<int32_t>(edges_uv.size());
-    node.patch = static_cast<int32_t>(patches.size());
+    node_patch[ni] = static_cast<int32_t>(patches.size());
     patches.push_back(p);
   }
 }

@@ -3,21 +3,47 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
+#include <new>
 #include <vector>
 
 #include "sphereset/mesh.hpp"
 
 namespace sphereset::detail {
 
-// One cache line per node: the box, the children or triangles, and the node's patch.
-struct BvhNode {
-  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
-  int32_t first = 0;   // leaf: first triangle; inner: index of left child (right = first + 1)
-  int32_t count = 0;   // leaf: number of triangles; inner: 0
-  int32_t patch = -1;  // index into Bvh::patches, or -1
-  int32_t unused = 0;
+// 32 bytes per node, two siblings per cache line. The box is stored in float, rounded
+// outwards, so it still contains the node's triangles; every test on it is conservative.
+struct alignas(32) BvhNode {
+  std::array<float, 3> lo{}, hi{};
+  int32_t first = 0;  // leaf: first triangle; inner: index of left child (right = first + 1)
+  int32_t count = 0;  // leaf: number of triangles; inner: 0
   bool leaf() const { return count > 0; }
+  Vec3 min() const { return Vec3(lo[0], lo[1], lo[2]); }
+  Vec3 max() const { return Vec3(hi[0], hi[1], hi[2]); }
+  void setBox(const Vec3& mn, const Vec3& mx) {
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = static_cast<float>(mn[k]);
+      if (lo[k] > mn[k]) lo[k] = std::nextafter(lo[k], -std::numeric_limits<float>::infinity());
+      hi[k] = static_cast<float>(mx[k]);
+      if (hi[k] < mx[k]) hi[k] = std::nextafter(hi[k], std::numeric_limits<float>::infinity());
+    }
+  }
+};
+
+// Allocates node arrays on cache-line boundaries so that sibling pairs share a line.
+template <class T>
+struct CacheLineAllocator {
+  using value_type = T;
+  CacheLineAllocator() = default;
+  template <class U>
+  CacheLineAllocator(const CacheLineAllocator<U>&) {}  // NOLINT: allocator rebinding
+  T* allocate(size_t n) {
+    return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t{64}));
+  }
+  void deallocate(T* p, size_t) { ::operator delete(p, std::align_val_t{64}); }
+  bool operator==(const CacheLineAllocator&) const { return true; }
 };
 
 // Sums over a node's triangles that make a ball containing the whole node cheap to
@@ -38,10 +64,12 @@ struct TriRecord {
 };
 
 struct Bvh {
-  std::vector<BvhNode> nodes;
+  // Node 0 is the root and node 1 unused, so that every sibling pair starts at an even index.
+  std::vector<BvhNode, CacheLineAllocator<BvhNode>> nodes;
+  std::vector<int32_t> node_patch;  // per node: index into patches, or -1
   std::vector<TriRecord> tris;   // in leaf order
   std::vector<int32_t> original;  // original triangle index of tris[i]
-  std::vector<NodePatch> patches;  // referenced by BvhNode::patch
+  std::vector<NodePatch> patches;
   // Boundary of node patches (the edges of a node's triangles whose neighbour across lies
   // outside the node), chained into closed loops: patch_loops[k] = [first, end) in
   // patch_vertices, whose consecutive entries are the directed edges.
@@ -67,7 +95,7 @@ struct Bvh {
     stack[top++] = 0;
     while (top > 0) {
       const BvhNode& node = nodes[stack[--top]];
-      if (!overlaps(node.min, node.max)) continue;
+      if (!overlaps(node.min(), node.max())) continue;
       if (node.leaf()) {
         for (int32_t i = node.first; i < node.first + node.count; ++i) visit(i);
       } else {

@@ -19,6 +19,7 @@
 
 #include "angle_sum.hpp"
 #include "bvh.hpp"
+#include "sphere_triangle.hpp"
 #include "solid_index_impl.hpp"
 
 namespace sphereset {
@@ -76,10 +77,11 @@ struct Accumulator {
       gradient += t.area * t.n;
       return;
     }
-    const TriangleBallTerms k = triangleBallTerms(t.a, t.b, t.c, t.n, o, r);
+    const double s = h > 0.0 ? 1.0 : (h < 0.0 ? -1.0 : 0.0);
+    const TriangleBallTerms k =
+        detail::triangleBallTermsSplit(t.a, t.b, t.c, t.n, o, r, &half_omega, s);
     if (k.center_on_triangle) center_on_surface = true;
     if (k.area <= 0.0) return;
-    const double s = k.h > 0.0 ? 1.0 : (k.h < 0.0 ? -1.0 : 0.0);
     omega += s * k.solid_angle;
     h_area += k.h * k.area;
     gradient += k.area * t.n;
@@ -130,22 +132,40 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
     for (const TriRecord& t : im.bvh.tris) acc.add(t, o, r, r2);
   } else {
     const detail::Bvh& bvh = im.bvh;
+    constexpr int kPendingLeaves = 4;
+    int32_t pending[kPendingLeaves];
+    int pending_head = 0, pending_count = 0;
+    auto runLeaf = [&](int32_t leaf) {
+      const detail::BvhNode& ln = bvh.nodes[leaf];
+      for (int32_t i = ln.first; i < ln.first + ln.count; ++i) acc.add(bvh.tris[i], o, r, r2);
+    };
     int32_t stack[128];
     int top = 0;
     if (!bvh.nodes.empty()) stack[top++] = 0;
     while (top > 0) {
       const int32_t ni = stack[--top];
       const detail::BvhNode& node = bvh.nodes[ni];
-      const double near2 = detail::boxPointSquaredDistance(node.min, node.max, o);
+      const Vec3 mn = node.min(), mx = node.max();
+      const double near2 = detail::boxPointSquaredDistance(mn, mx, o);
       if (near2 >= r2) continue;
-      if (node.patch >= 0 && near2 > 0.0 &&
-          farthestCornerSquaredDistance(node.min, node.max, o) <= r2) {
-        acc.addPatch(bvh, bvh.patches[node.patch], o);
+      if (near2 > 0.0 && farthestCornerSquaredDistance(mn, mx, o) <= r2 &&
+          bvh.node_patch[ni] >= 0) {
+        acc.addPatch(bvh, bvh.patches[bvh.node_patch[ni]], o);
         continue;
       }
       if (node.leaf()) {
-        for (int32_t i = node.first; i < node.first + node.count; ++i)
-          acc.add(bvh.tris[i], o, r, r2);
+        // Leaves wait in a short queue while their triangles are fetched and the traversal
+        // goes on; the oldest is processed when the queue is full.
+        const char* first = reinterpret_cast<const char*>(&bvh.tris[node.first]);
+        const char* last = reinterpret_cast<const char*>(&bvh.tris[node.first + node.count]);
+        for (const char* c = first; c < last; c += 64) __builtin_prefetch(c);
+        if (pending_count == kPendingLeaves) {
+          runLeaf(pending[pending_head]);
+          pending[pending_head] = ni;
+          pending_head = (pending_head + 1) % kPendingLeaves;
+        } else {
+          pending[(pending_head + pending_count++) % kPendingLeaves] = ni;
+        }
       } else {
         // The children are adjacent; fetching them now hides the latency of the next pop.
         __builtin_prefetch(&bvh.nodes[node.first]);
@@ -153,6 +173,7 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
         stack[top++] = node.first;
       }
     }
+    for (int k = 0; k < pending_count; ++k) runLeaf(pending[(pending_head + k) % kPendingLeaves]);
   }
   Containment where = acc.center_on_surface ? Containment::kBoundary : index.classify(o);
   if (where == Containment::kBoundary && depth == 0) {

@@ -136,7 +136,7 @@ double SolidIndex::distance(const Vec3& p, int32_t* closest_triangle) const {
   stack[top++] = 0;
   while (top > 0) {
     const BvhNode& node = bvh.nodes[stack[--top]];
-    if (detail::boxPointSquaredDistance(node.min, node.max, p) > best2) continue;
+    if (detail::boxPointSquaredDistance(node.min(), node.max(), p) > best2) continue;
     if (node.leaf()) {
       for (int32_t i = node.first; i < node.first + node.count; ++i) {
         const TriRecord& t = bvh.tris[i];
@@ -149,8 +149,8 @@ double SolidIndex::distance(const Vec3& p, int32_t* closest_triangle) const {
       continue;
     }
     const int32_t l = node.first, r = node.first + 1;
-    const double dl = detail::boxPointSquaredDistance(bvh.nodes[l].min, bvh.nodes[l].max, p);
-    const double dr = detail::boxPointSquaredDistance(bvh.nodes[r].min, bvh.nodes[r].max, p);
+    const double dl = detail::boxPointSquaredDistance(bvh.nodes[l].min(), bvh.nodes[l].max(), p);
+    const double dr = detail::boxPointSquaredDistance(bvh.nodes[r].min(), bvh.nodes[r].max(), p);
     if (dl <= dr) {
       stack[top++] = r;
       stack[top++] = l;

@@ -26,8 +26,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "angle_sum.hpp"
-#include "sphereset/solid_index.hpp"
+#include "sphere_triangle.hpp"
 
 namespace sphereset {
 namespace {
@@ -81,8 +80,9 @@ double triangleSolidAngle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec
   return 2.0 * std::atan2(num, den);
 }
 
-TriangleBallTerms triangleBallTerms(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n,
-                                    const Vec3& o, double r) {
+TriangleBallTerms detail::triangleBallTermsSplit(const Vec3& a, const Vec3& b, const Vec3& c,
+                                                 const Vec3& n, const Vec3& o, double r,
+                                                 AngleSum* half_omega, double sign) {
   TriangleBallTerms out;
   out.h = n.dot(a - o);
   const double abs_h = std::abs(out.h);
@@ -103,7 +103,11 @@ TriangleBallTerms triangleBallTerms(const Vec3& a, const Vec3& b, const Vec3& c,
       out.center_on_triangle = w0 >= 0 && w1 >= 0 && w2 >= 0;
       return out;
     }
-    out.solid_angle = std::abs(triangleSolidAngle(a, b, c, o));
+    const Vec3 x = a - o, y = b - o, z = c - o;
+    const double lx = std::sqrt(da), ly = std::sqrt(db), lz = std::sqrt(dc);
+    const double num = std::abs(x.dot(y.cross(z)));
+    const double den = lx * ly * lz + x.dot(y) * lz + x.dot(z) * ly + y.dot(z) * lx;
+    half_omega->add(sign * num, den);
     return out;
   }
 
@@ -118,28 +122,30 @@ TriangleBallTerms triangleBallTerms(const Vec3& a, const Vec3& b, const Vec3& c,
                                P2{(b - c0).dot(u), (b - c0).dot(v)},
                                P2{(c - c0).dot(u), (c - c0).dot(v)}};
   const double rho2 = std::max(0.0, r2 - out.h * out.h);
-  const double rho = std::sqrt(rho2);
 
   // Signed distances of c0 from the edge lines, positive on the triangle's side. An edge
   // line with the whole disk on its outer side (s <= -ρ) means t ∩ D is empty.
   std::array<P2, 3> d;
-  std::array<double, 3> dd, sdist, side;
+  std::array<double, 3> dd, side;
+  std::array<bool, 3> misses{};  // the edge's line misses the disk (c0 on the inner side)
   bool inside_all = true;  // foot c0 inside every edge half-plane (c0 ∈ t)
   for (int k = 0; k < 3; ++k) {
     const P2 p0 = p[k], p1 = p[(k + 1) % 3];
     d[k] = P2{p1.x - p0.x, p1.y - p0.y};
     dd[k] = dot(d[k], d[k]);
     side[k] = cross(p0, d[k]) + 0.0;  // + 0.0 turns -0 into +0, see the angle sum below
-    sdist[k] = side[k] / std::sqrt(dd[k]);
-    if (sdist[k] <= -rho) return out;
+    // Distance of c0 from the line is side / |d|, compared with ρ without a square root.
+    const bool far = side[k] * side[k] >= rho2 * dd[k];
+    if (far && side[k] < 0.0) return out;
+    misses[k] = far;
     if (side[k] < 0.0) inside_all = false;
   }
 
   // Angles are summed as arguments of complex products (one atan2 per sum, not per piece).
   double fan_area = 0.0;
-  detail::AngleSum fan_half_omega, fan_angle;
+  detail::AngleSum fan_angle;
   for (int k = 0; k < 3; ++k) {
-    if (sdist[k] >= rho) continue;  // the edge's line misses the disk
+    if (misses[k]) continue;  // the edge's line misses the disk
     const P2 p0 = p[k];
     // Piece of the edge inside D: roots of |p0 + t d|² = ρ², clipped to [0, 1].
     const double hb = dot(p0, d[k]);
@@ -164,7 +170,7 @@ TriangleBallTerms triangleBallTerms(const Vec3& a, const Vec3& b, const Vec3& c,
     if (!on_plane) {
       double num, den;
       fanSolidAngleTerms(abs_h, q0, q1, &num, &den);
-      fan_half_omega.add(num, den);
+      half_omega->add(sign * num, den);
     }
   }
   // The boundary of R winds once around c0 if c0 ∈ t (then c0 ∈ R) and not at all
@@ -176,7 +182,15 @@ TriangleBallTerms triangleBallTerms(const Vec3& a, const Vec3& b, const Vec3& c,
     out.center_on_triangle = inside_all;
     return out;
   }
-  out.solid_angle = std::max(0.0, 2.0 * fan_half_omega.value() + theta * (1.0 - abs_h / r));
+  out.solid_angle = theta * (1.0 - abs_h / r);
+  return out;
+}
+
+TriangleBallTerms triangleBallTerms(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n,
+                                    const Vec3& o, double r) {
+  detail::AngleSum half_omega;
+  TriangleBallTerms out = detail::triangleBallTermsSplit(a, b, c, n, o, r, &half_omega, 1.0);
+  out.solid_angle = std::max(0.0, out.solid_angle + 2.0 * half_omega.value());
   return out;
 }
 
