@@ -46,14 +46,12 @@ struct CacheLineAllocator {
   bool operator==(const CacheLineAllocator&) const { return true; }
 };
 
-// Sums over a node's triangles that make a ball containing the whole node cheap to
-// evaluate (see outside_volume.cpp). Only for nodes with at least kMinPatch triangles.
-struct NodePatch {
-  Vec3 q = Vec3::Zero();          // reference point: the node's box centre
-  double det_q = 0.0;             // Σ det(a - q, b - q, c - q)
-  Vec3 cross = Vec3::Zero();      // Σ (b - a) × (c - a)  (twice the vector area)
-  int32_t loop_begin = 0, loop_end = 0;  // boundary loops in Bvh::patch_loops
-  int32_t edges = 0;                      // boundary edges in all loops
+// Sums over a node's triangles that make a node lying wholly inside a ball cheap: with them
+// Σ h_t A_t and Σ A_t n_t over the node are linear in the ball's centre.
+struct NodeSums {
+  Vec3 q = Vec3::Zero();      // reference point: the node's box centre
+  double det_q = 0.0;         // Σ det(a - q, b - q, c - q)
+  Vec3 cross = Vec3::Zero();  // Σ (b - a) × (c - a)  (twice the vector area)
 };
 
 // One triangle as the kernels need it.
@@ -61,27 +59,24 @@ struct TriRecord {
   Vec3 a, b, c;
   Vec3 n;       // outward unit normal
   double area;  // full triangle area
+  // Position in Bvh::tris of the neighbour across edges (a, b), (b, c), (c, a); -1 where the
+  // edge is not shared by exactly one oppositely oriented triangle.
+  std::array<int32_t, 3> nbr{-1, -1, -1};
 };
 
 struct Bvh {
   // Node 0 is the root and node 1 unused, so that every sibling pair starts at an even index.
   std::vector<BvhNode, CacheLineAllocator<BvhNode>> nodes;
-  std::vector<int32_t> node_patch;  // per node: index into patches, or -1
-  std::vector<TriRecord> tris;   // in leaf order
+  std::vector<NodeSums> sums;     // per node
+  std::vector<TriRecord> tris;    // in leaf order
   std::vector<int32_t> original;  // original triangle index of tris[i]
-  std::vector<NodePatch> patches;
-  // Boundary of node patches (the edges of a node's triangles whose neighbour across lies
-  // outside the node), chained into closed loops: patch_loops[k] = [first, end) in
-  // patch_vertices, whose consecutive entries are the directed edges.
-  std::vector<std::array<int32_t, 2>> patch_loops;
-  std::vector<Vec3> patch_vertices;
-  static constexpr int32_t kMinPatch = 32;
+  bool closed = false;            // every triangle has its three neighbours
 
   void build(const Mesh& mesh, int leaf_size = 4);
 
  private:
-  // ranges[i]: the triangles below node i are tris[first, first + count) (build time only).
-  void buildPatches(const Mesh& mesh, const std::vector<std::array<int32_t, 2>>& ranges);
+  void buildNeighbours(const Mesh& mesh);
+  void buildSums();
 
  public:
 

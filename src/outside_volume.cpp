@@ -11,16 +11,32 @@
 //
 // Centre on the surface: there the indicator and the triangles through o are discontinuous
 // while SOV itself is continuously differentiable in o. We evaluate at o ± δ d and average,
-// which is exact to O(δ²); δ is kNudgeRel of the smaller of r and the mesh size, and far above the boundary tolerance. The direction is a
-// fixed irregular one rather than a face normal, because a normal at an edge or corner can
-// slide the centre along another face.
+// which is exact to O(δ²); δ is kNudgeRel of the smaller of r and the mesh size, and far
+// above the boundary tolerance. The direction is a fixed irregular one rather than a face
+// normal, because a normal at an edge or corner can slide the centre along another face.
+//
+// Speed (beyond the paper): most triangles met by a large ball lie wholly inside it. Let Q be
+// the set of those triangles. Their Σ h A and Σ A n are linear in o, so hierarchy nodes inside
+// the ball contribute precomputed sums and are not opened. Their solid angles are not summed
+// one by one either: Q is a surface whose boundary ∂Q consists of edges between a triangle of
+// Q and a triangle crossing the sphere, so ∂Q is found from the crossing triangles alone, and
+//   Ω(Q) = Ω(F) + 4π w,
+// where F is the fan over ∂Q from an apex o + L d far along a direction d (each edge (u, v)
+// contributes the limit of the solid angle of triangle (o + L d, u, v) as L → ∞), and w is
+// the winding number about o of the closed surface Q - F, i.e. the signed count of triangles
+// of Q crossed by the ray from o along -d, which the fan does not meet. A ray or fan that
+// grazes an edge is detected and the next direction is used. Cost: proportional to the
+// triangles crossing the sphere, plus one short ray query. Meshes without neighbour
+// information (not closed) sum every triangle's solid angle instead.
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "angle_sum.hpp"
 #include "bvh.hpp"
-#include "sphere_triangle.hpp"
+#include "ray_triangle.hpp"
 #include "solid_index_impl.hpp"
+#include "sphere_triangle.hpp"
 
 namespace sphereset {
 namespace {
@@ -37,8 +53,9 @@ const Vec3 kNudgeDirections[] = {Vec3(0.5377, 0.8183, 0.2031).normalized(),
                                  Vec3(-0.3122, 0.2450, 0.9179).normalized(),
                                  Vec3(0.7071, -0.5803, 0.4040).normalized()};
 
-// Van Oosterom–Strackee numerator and denominator of triangle (a, b, c) seen from o: the
-// signed solid angle is 2 atan2(num, den) and num = det(a - o, b - o, c - o) = 2 h A.
+// Numerator and denominator of the Van Oosterom–Strackee formula for the solid angle of
+// triangle (x, y, z) (positions relative to o, with lengths lx, ly, lz): Ω = 2 atan2(num, den)
+// and num = det(x, y, z) = 2 h A.
 struct SolidAngleTerms {
   double num, den;
 };
@@ -54,9 +71,11 @@ struct Accumulator {
   Vec3 gradient = Vec3::Zero();
   int64_t tested = 0;
   bool center_on_surface = false;
-
-  // Σ sign(h) Ω, the signed solid angle of the surface inside the ball.
-  double signedOmega() const { return omega + 2.0 * half_omega.value(); }
+  // With topology: solid angles of triangles inside the ball are left to Ω(Q); the edges of
+  // ∂Q are collected instead, oriented as in their triangle of Q.
+  bool use_boundary = false;
+  const detail::Bvh* bvh = nullptr;
+  std::vector<std::array<Vec3, 2>> boundary;
 
   void add(const TriRecord& t, const Vec3& o, double r, double r2) {
     // Cheap rejection by the triangle's bounding box, then by its plane.
@@ -65,57 +84,107 @@ struct Accumulator {
     const double h = t.n.dot(t.a - o);
     if (std::abs(h) >= r) return;
     ++tested;
-    // Case (a), the whole triangle in the ball, inline: the same closed form as
-    // triangleBallTerms (Ω of the triangle, A its area), with the solid angle accumulated as
-    // an atan2 pair. A centre in the triangle's plane goes to the general kernel.
     const Vec3 x = t.a - o, y = t.b - o, z = t.c - o;
     const double dx = x.squaredNorm(), dy = y.squaredNorm(), dz = z.squaredNorm();
-    if (dx <= r2 && dy <= r2 && dz <= r2 && std::abs(h) > kOnPlaneRelTol * r) {
-      const SolidAngleTerms sa = solidAngleTerms(x, y, z, std::sqrt(dx), std::sqrt(dy), std::sqrt(dz));
-      half_omega.add(sa.num, sa.den);
+    const bool in_plane = std::abs(h) <= kOnPlaneRelTol * r;
+    if (dx <= r2 && dy <= r2 && dz <= r2 && !in_plane) {
+      // Case (a): the whole triangle in the ball. Same closed form as triangleBallTerms.
       h_area += h * t.area;
       gradient += t.area * t.n;
+      if (use_boundary) return;  // its solid angle is part of Ω(Q)
+      const SolidAngleTerms sa =
+          solidAngleTerms(x, y, z, std::sqrt(dx), std::sqrt(dy), std::sqrt(dz));
+      half_omega.add(sa.num, sa.den);
       return;
     }
     const double s = h > 0.0 ? 1.0 : (h < 0.0 ? -1.0 : 0.0);
     const TriangleBallTerms k =
         detail::triangleBallTermsSplit(t.a, t.b, t.c, t.n, o, r, &half_omega, s);
     if (k.center_on_triangle) center_on_surface = true;
-    if (k.area <= 0.0) return;
-    omega += s * k.solid_angle;
-    h_area += k.h * k.area;
-    gradient += k.area * t.n;
+    if (k.area > 0.0) {
+      omega += s * k.solid_angle;
+      h_area += k.h * k.area;
+      gradient += k.area * t.n;
+    }
+    if (!use_boundary || (dx <= r2 && dy <= r2 && dz <= r2)) return;
+    // An edge of this crossing triangle with both ends in the ball borders Q when the
+    // neighbour across it lies wholly in the ball.
+    const Vec3* v[3] = {&t.a, &t.b, &t.c};
+    const double d2[3] = {dx, dy, dz};
+    for (int e = 0; e < 3; ++e) {
+      if (d2[e] > r2 || d2[(e + 1) % 3] > r2) continue;
+      const TriRecord& nb = bvh->tris[t.nbr[e]];
+      if ((nb.a - o).squaredNorm() <= r2 && (nb.b - o).squaredNorm() <= r2 &&
+          (nb.c - o).squaredNorm() <= r2)
+        boundary.push_back({*v[(e + 1) % 3], *v[e]});  // as traversed by the neighbour
+    }
   }
 
-  // A BVH node entirely inside the ball, with o outside the node's box: every triangle is in
-  // case (a), so Σ sign(h) Ω_t is the solid angle of the node's surface patch and Σ h_t A_t is
-  // half of Σ det(a - o, b - o, c - o), which is linear in o. The patch's solid angle equals
-  // that of the fan from the box centre q over its boundary edges, because the patch and the
-  // fan bound a closed surface inside the box, whose winding number about o is 0.
-  void addPatch(const detail::Bvh& bvh, const detail::NodePatch& p, const Vec3& o) {
-    const Vec3 x = p.q - o;
-    const double lx = x.norm();
-    for (int32_t l = p.loop_begin; l < p.loop_end; ++l) {
-      const auto [first, end] = bvh.patch_loops[l];
-      Vec3 y = bvh.patch_vertices[first] - o;
-      double ly = y.norm();
-      for (int32_t i = first + 1; i < end; ++i) {
-        const Vec3 z = bvh.patch_vertices[i] - o;
-        const double lz = z.norm();
-        const SolidAngleTerms sa = solidAngleTerms(x, y, z, lx, ly, lz);
-        half_omega.add(sa.num, sa.den);
-        y = z;
-        ly = lz;
-      }
-    }
-    h_area += 0.5 * (p.det_q - (o - p.q).dot(p.cross));  // Σ det(a - o, ...) / 2
-    gradient += 0.5 * p.cross;
-    tested += p.edges;
+  // A hierarchy node wholly inside the ball: Σ h A = Σ det(a - o, b - o, c - o) / 2 and
+  // Σ A n = Σ (b - a) × (c - a) / 2 from the node's sums.
+  void addNode(const detail::NodeSums& ns, const Vec3& o) {
+    h_area += 0.5 * (ns.det_q - (o - ns.q).dot(ns.cross));
+    gradient += 0.5 * ns.cross;
   }
 };
 
 inline double farthestCornerSquaredDistance(const Vec3& mn, const Vec3& mx, const Vec3& p) {
   return (mn - p).cwiseAbs().cwiseMax((mx - p).cwiseAbs()).squaredNorm();
+}
+
+// Ω(Q) from the boundary edges of Q (see the top of the file); false if every direction
+// grazed an edge (then the caller falls back to summing triangles).
+bool solidAngleOfInside(const detail::Bvh& bvh, const std::vector<std::array<Vec3, 2>>& edges,
+                        const Vec3& o, double r, double r2, double* omega) {
+  for (const Vec3& d : detail::rayDirections()) {
+    // Fan from the apex o + L d, L → ∞: for edge (u, v) the limit of the solid angle of
+    // triangle (o + L d, u, v), Van Oosterom–Strackee divided through by L.
+    detail::AngleSum half;
+    bool degenerate = false;
+    for (const auto& [u0, v0] : edges) {
+      const Vec3 u = u0 - o, v = v0 - o;
+      const double lu = u.norm(), lv = v.norm();
+      const double num = u.dot(v.cross(d));
+      const double den = lu * lv + u.dot(v) + u.dot(d) * lv + v.dot(d) * lu;
+      // o on a strip (num ≈ 0 with the edge seen across o) makes the winding undefined.
+      if (std::abs(num) <= detail::kRayDegenerateRelTol * lu * lv && den <= 0.0) {
+        degenerate = true;
+        break;
+      }
+      half.add(num, den);
+    }
+    if (degenerate) continue;
+    // Winding: signed crossings of the ray o - t d, 0 < t <= r, with triangles of Q. (The
+    // fan's apex o + L d lies on the other side, so this ray meets only Q.)
+    const Vec3 back = -d;
+    const Vec3 inv_d = back.cwiseInverse();
+    int winding = 0;
+    bvh.traverse(
+        [&](const Vec3& mn, const Vec3& mx) {
+          return !degenerate && detail::rayHitsBox(o, inv_d, r, mn, mx);
+        },
+        [&](int32_t i) {
+          const TriRecord& t = bvh.tris[i];
+          if (degenerate || (t.a - o).squaredNorm() > r2 || (t.b - o).squaredNorm() > r2 ||
+              (t.c - o).squaredNorm() > r2)
+            return;
+          const detail::LineTriangle lt = detail::lineTriangle(o, back, t);
+          const bool pos = lt.u > lt.tol_u && lt.v > lt.tol_v && lt.w > lt.tol_w;
+          const bool neg = lt.u < -lt.tol_u && lt.v < -lt.tol_v && lt.w < -lt.tol_w;
+          const double sum = lt.u + lt.v + lt.w;
+          if (!pos && !neg) {
+            const bool maybe_pos = lt.u >= -lt.tol_u && lt.v >= -lt.tol_v && lt.w >= -lt.tol_w;
+            const bool maybe_neg = lt.u <= lt.tol_u && lt.v <= lt.tol_v && lt.w <= lt.tol_w;
+            if ((maybe_pos || maybe_neg) && (sum == 0.0 || lt.det / sum > 0.0)) degenerate = true;
+            return;
+          }
+          if (lt.det / sum > 0.0) winding += pos ? 1 : -1;
+        });
+    if (degenerate) continue;
+    *omega = 2.0 * half.value() + 4.0 * std::numbers::pi * winding;
+    return true;
+  }
+  return false;
 }
 
 template <bool kBrute>
@@ -132,6 +201,11 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
     for (const TriRecord& t : im.bvh.tris) acc.add(t, o, r, r2);
   } else {
     const detail::Bvh& bvh = im.bvh;
+    acc.bvh = &bvh;
+    acc.use_boundary = bvh.closed;
+    thread_local std::vector<std::array<Vec3, 2>> boundary_buffer;
+    boundary_buffer.clear();
+    acc.boundary.swap(boundary_buffer);
     constexpr int kPendingLeaves = 4;
     int32_t pending[kPendingLeaves];
     int pending_head = 0, pending_count = 0;
@@ -146,11 +220,9 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
       const int32_t ni = stack[--top];
       const detail::BvhNode& node = bvh.nodes[ni];
       const Vec3 mn = node.min(), mx = node.max();
-      const double near2 = detail::boxPointSquaredDistance(mn, mx, o);
-      if (near2 >= r2) continue;
-      if (near2 > 0.0 && farthestCornerSquaredDistance(mn, mx, o) <= r2 &&
-          bvh.node_patch[ni] >= 0) {
-        acc.addPatch(bvh, bvh.patches[bvh.node_patch[ni]], o);
+      if (detail::boxPointSquaredDistance(mn, mx, o) >= r2) continue;
+      if (acc.use_boundary && farthestCornerSquaredDistance(mn, mx, o) <= r2) {
+        acc.addNode(bvh.sums[ni], o);
         continue;
       }
       if (node.leaf()) {
@@ -174,6 +246,17 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
       }
     }
     for (int k = 0; k < pending_count; ++k) runLeaf(pending[(pending_head + k) % kPendingLeaves]);
+    if (acc.use_boundary) {
+      double omega_q = 0.0;
+      if (solidAngleOfInside(bvh, acc.boundary, o, r, r2, &omega_q)) {
+        acc.omega += omega_q;
+        acc.tested += static_cast<int64_t>(acc.boundary.size());
+      } else {
+        acc.boundary.swap(boundary_buffer);
+        return evaluate<true>(index, im, o, r, depth);
+      }
+    }
+    acc.boundary.swap(boundary_buffer);
   }
   Containment where = acc.center_on_surface ? Containment::kBoundary : index.classify(o);
   if (where == Containment::kBoundary && depth == 0) {
@@ -198,7 +281,7 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
                                                            : 0.0;
   const double four_pi = 4.0 * std::numbers::pi;
   const double ball = four_pi / 3.0 * r * r2;
-  const double omega = acc.signedOmega();
+  const double omega = acc.omega + 2.0 * acc.half_omega.value();
   out.volume = std::clamp(outside * ball + (r * r2 * omega - acc.h_area) / 3.0, 0.0, ball);
   out.d_radius = std::clamp(r2 * (four_pi * outside + omega), 0.0, four_pi * r2);
   out.gradient = acc.gradient;

@@ -13,6 +13,7 @@
 #include <numbers>
 
 #include "bvh.hpp"
+#include "ray_triangle.hpp"
 #include "solid_index_impl.hpp"
 
 namespace sphereset {
@@ -21,48 +22,13 @@ namespace {
 using detail::Bvh;
 using detail::BvhNode;
 using detail::TriRecord;
+using detail::LineTriangle;
+using detail::lineTriangle;
+using detail::rayDirections;
+using detail::rayHitsBox;
 
 // Points closer than this fraction of the bounding-box diagonal to the surface are on it.
 constexpr double kBoundaryRelTol = 1e-11;
-// Orientation determinants smaller than this fraction of their magnitude bound are treated
-// as zero: the ray grazes an edge or vertex and another direction is tried.
-constexpr double kRayDegenerateRelTol = 1e-12;
-
-// Fixed, irregular ray directions (unit vectors from a golden-angle spiral), tried in order.
-const std::array<Vec3, 16>& rayDirections() {
-  static const std::array<Vec3, 16> dirs = [] {
-    std::array<Vec3, 16> d;
-    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
-    for (int i = 0; i < 16; ++i) {
-      const double z = 1.0 - (2.0 * i + 1.0) / 16.0 + 0.0123;
-      const double rr = std::sqrt(std::max(0.0, 1.0 - z * z));
-      const double phi = golden * i + 0.377;
-      d[i] = Vec3(rr * std::cos(phi), rr * std::sin(phi), z).normalized();
-    }
-    return d;
-  }();
-  return dirs;
-}
-
-// Slab test of the ray p + t d, t in [0, tmax], against a box.
-inline bool rayHitsBox(const Vec3& p, const Vec3& inv_d, double tmax, const Vec3& mn,
-                       const Vec3& mx) {
-  double t0 = 0.0, t1 = tmax;
-  for (int k = 0; k < 3; ++k) {
-    double ta = (mn[k] - p[k]) * inv_d[k];
-    double tb = (mx[k] - p[k]) * inv_d[k];
-    if (std::isnan(ta) || std::isnan(tb)) {  // d[k] == 0 and p on the slab plane
-      if (p[k] < mn[k] || p[k] > mx[k]) return false;
-      continue;
-    }
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-    if (t0 > t1) return false;
-  }
-  return true;
-}
-
 // Closest point on triangle (a, b, c) to p (Ericson, Real-Time Collision Detection, 5.1.5).
 Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
@@ -83,29 +49,6 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
     return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
   const double denom = 1.0 / (va + vb + vc);
   return a + ab * (vb * denom) + ac * (vc * denom);
-}
-
-// Orientation of the line p + t d against the triangle: u, v, w are d·(e1×e2), d·(e2×e0),
-// d·(e0×e1) with e_i the vertices relative to p. The line meets the interior iff all three
-// share a sign; det(e0, e1, e2) / (u + v + w) is the crossing parameter t.
-struct LineTriangle {
-  double u, v, w, det;
-  double tol_u, tol_v, tol_w;
-};
-inline LineTriangle lineTriangle(const Vec3& p, const Vec3& d, const TriRecord& tri) {
-  const Vec3 e0 = tri.a - p, e1 = tri.b - p, e2 = tri.c - p;
-  const Vec3 c12 = e1.cross(e2), c20 = e2.cross(e0), c01 = e0.cross(e1);
-  LineTriangle lt;
-  lt.u = d.dot(c12);
-  lt.v = d.dot(c20);
-  lt.w = d.dot(c01);
-  lt.det = e0.dot(c12);
-  const double dn = d.norm();
-  const double l0 = e0.norm(), l1 = e1.norm(), l2 = e2.norm();
-  lt.tol_u = kRayDegenerateRelTol * dn * l1 * l2;
-  lt.tol_v = kRayDegenerateRelTol * dn * l2 * l0;
-  lt.tol_w = kRayDegenerateRelTol * dn * l0 * l1;
-  return lt;
 }
 
 }  // namespace
