@@ -20,16 +20,28 @@ namespace {
 
 using namespace sphereset;
 
-enum Exit { kOk = 0, kInternal = 1, kUsage = 2, kUnreadable = 3, kInvalid = 4, kNotSolid = 5,
-            kWrite = 6 };
+enum Exit {
+  kOk = 0,
+  kInternal = 1,
+  kUsage = 2,
+  kUnreadable = 3,
+  kInvalid = 4,
+  kNotSolid = 5,
+  kWrite = 6
+};
 
 int exitFor(const Error& e) {
   switch (e.code) {
-    case ErrorCode::kInvalidArgument: return kUsage;
-    case ErrorCode::kUnreadable: return kUnreadable;
-    case ErrorCode::kInvalidData: return kInvalid;
-    case ErrorCode::kNotSolid: return kNotSolid;
-    case ErrorCode::kWriteFailed: return kWrite;
+    case ErrorCode::kInvalidArgument:
+      return kUsage;
+    case ErrorCode::kUnreadable:
+      return kUnreadable;
+    case ErrorCode::kInvalidData:
+      return kInvalid;
+    case ErrorCode::kNotSolid:
+      return kNotSolid;
+    case ErrorCode::kWriteFailed:
+      return kWrite;
   }
   return kInternal;
 }
@@ -82,12 +94,12 @@ void printCheck(const LoadedMesh& m, const MeshDiagnosis& d) {
               static_cast<long long>(r.scene_meshes), r.scene_meshes == 1 ? "" : "es");
   std::printf("  loaded      %lld vertices, %lld triangles in the file\n",
               static_cast<long long>(r.file_vertices), static_cast<long long>(r.file_faces));
-  std::printf("  clean-up    %lld vertices welded, %lld unused removed, %lld degenerate and %lld "
-              "duplicate triangles dropped%s\n",
-              static_cast<long long>(r.welded_vertices), static_cast<long long>(r.unused_vertices),
-              static_cast<long long>(r.degenerate_dropped),
-              static_cast<long long>(r.duplicate_dropped),
-              r.flipped ? ", orientation flipped outward" : "");
+  std::printf(
+      "  clean-up    %lld vertices welded, %lld unused removed, %lld degenerate and %lld "
+      "duplicate triangles dropped%s\n",
+      static_cast<long long>(r.welded_vertices), static_cast<long long>(r.unused_vertices),
+      static_cast<long long>(r.degenerate_dropped), static_cast<long long>(r.duplicate_dropped),
+      r.flipped ? ", orientation flipped outward" : "");
   std::printf("  mesh        %lld vertices, %lld triangles, %lld edges, %lld component%s\n",
               static_cast<long long>(d.vertices), static_cast<long long>(d.triangles),
               static_cast<long long>(d.edges), static_cast<long long>(d.components),
@@ -100,12 +112,12 @@ void printCheck(const LoadedMesh& m, const MeshDiagnosis& d) {
   std::printf("  oriented    %s (%lld inconsistent edges)\n", yes(d.oriented),
               static_cast<long long>(d.misoriented_edges));
   std::printf("  volume      %.9g\n  area        %.9g\n", d.volume, d.area);
-  std::printf("  bbox        [%.6g %.6g %.6g] .. [%.6g %.6g %.6g], diagonal %.6g\n",
-              d.bbox.min.x(), d.bbox.min.y(), d.bbox.min.z(), d.bbox.max.x(), d.bbox.max.y(),
-              d.bbox.max.z(), d.bbox.diagonal());
+  std::printf("  bbox        [%.6g %.6g %.6g] .. [%.6g %.6g %.6g], diagonal %.6g\n", d.bbox.min.x(),
+              d.bbox.min.y(), d.bbox.min.z(), d.bbox.max.x(), d.bbox.max.y(), d.bbox.max.z(),
+              d.bbox.diagonal());
   std::printf("  edges       %.6g .. %.6g\n", d.min_edge, d.max_edge);
-  std::printf("  solid       %s\n", d.isSolid() ? "yes: ready for fitting"
-                                                 : "no: fitting needs a closed manifold solid");
+  std::printf("  solid       %s\n",
+              d.isSolid() ? "yes: ready for fitting" : "no: fitting needs a closed manifold solid");
 }
 
 struct MeshArgs {
@@ -252,10 +264,11 @@ int main(int argc, char** argv) {
                     r.er_sum);
         std::printf("  E_r union        %.6f +- %.6f (Monte Carlo, %lld samples)\n", r.er_union,
                     r.er_union_stderr, static_cast<long long>(eo.union_samples));
-        std::printf("  surface covered  %s (max gap %.3g of the diagonal, %lld triangles not "
-                    "covered)\n",
-                    r.surface_covered ? "yes" : "no", r.max_surface_gap,
-                    static_cast<long long>(r.uncovered_triangles));
+        std::printf(
+            "  surface covered  %s (max gap %.3g of the diagonal, %lld triangles not "
+            "covered)\n",
+            r.surface_covered ? "yes" : "no", r.max_surface_gap,
+            static_cast<long long>(r.uncovered_triangles));
         std::printf("  interior covered %s (max gap %.3g of the diagonal)\n",
                     r.interior_covered ? "yes" : "no", r.max_interior_gap);
         std::printf("  proximity error  %.6f of the diagonal (%d segments)\n", r.proximity_error,

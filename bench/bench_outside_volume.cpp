@@ -25,7 +25,7 @@ using namespace sphereset;
 
 struct Loaded {
   std::unique_ptr<SolidIndex> index;
-  std::vector<Sphere> queries_by_radius[8];  // centred near the surface
+  std::vector<Sphere> queries_by_radius[8];   // centred near the surface
   std::vector<Sphere> interior_by_radius[8];  // centred at interior points, as in fitting
 };
 
@@ -61,7 +61,8 @@ Loaded* loadOnce(const std::string& rel) {
     const Aabb box = l->index->bounds();
     while (l->interior_by_radius[ri].size() < 64) {
       const Vec3 c = box.min + (box.max - box.min).cwiseProduct(Vec3(U(rng), U(rng), U(rng)));
-      if (l->index->classify(c) == Containment::kInside) l->interior_by_radius[ri].push_back({c, r});
+      if (l->index->classify(c) == Containment::kInside)
+        l->interior_by_radius[ri].push_back({c, r});
     }
   }
   return (cache[rel] = std::move(l)).get();
@@ -73,8 +74,8 @@ void runQueries(benchmark::State& state, const std::string& mesh, bool brute, bo
     state.SkipWithError("mesh not found (pass --mesh-dir)");
     return;
   }
-  const auto& qs = interior ? l->interior_by_radius[state.range(0)]
-                            : l->queries_by_radius[state.range(0)];
+  const auto& qs =
+      interior ? l->interior_by_radius[state.range(0)] : l->queries_by_radius[state.range(0)];
   size_t i = 0;
   int64_t tested = 0;
   for (auto _ : state) {
@@ -99,13 +100,13 @@ void registerAll() {
   for (const auto& [name, rel] : meshes)
     for (int interior = 0; interior < 2; ++interior)
       for (int brute = 0; brute < 2; ++brute) {
-        const std::string bname = std::string(interior ? "SOV_interior/" : "SOV/") + name +
-                                  (brute ? "/brute" : "/bvh");
+        const std::string bname =
+            std::string(interior ? "SOV_interior/" : "SOV/") + name + (brute ? "/brute" : "/bvh");
         const std::string path = rel;
-        auto* b = benchmark::RegisterBenchmark(
-            bname.c_str(), [path, brute, interior](benchmark::State& s) {
-              runQueries(s, path, brute != 0, interior != 0);
-            });
+        auto* b = benchmark::RegisterBenchmark(bname.c_str(),
+                                               [path, brute, interior](benchmark::State& s) {
+                                                 runQueries(s, path, brute != 0, interior != 0);
+                                               });
         for (size_t ri = 0; ri < std::size(kRadii); ++ri) b->Arg(static_cast<int>(ri));
         if (brute) b->MinTime(0.2);
       }

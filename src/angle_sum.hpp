@@ -16,7 +16,7 @@ class AngleSum {
  public:
   void add(double num, double den) {
     if (num == 0.0 && den >= 0.0) return;  // angle 0 (also a degenerate 0/0 term)
-    if (den < 0.0) {                        // |angle| > π/2: on its own
+    if (den < 0.0) {                       // |angle| > π/2: on its own
       total_ += std::atan2(num, den);
       return;
     }

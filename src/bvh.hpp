@@ -40,9 +40,9 @@ struct CacheLineAllocator {
   template <class U>
   CacheLineAllocator(const CacheLineAllocator<U>&) {}  // NOLINT: allocator rebinding
   T* allocate(size_t n) {
-    return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t{64}));
+    return static_cast<T*>(::operator new (n * sizeof(T), std::align_val_t{64}));
   }
-  void deallocate(T* p, size_t) { ::operator delete(p, std::align_val_t{64}); }
+  void deallocate(T* p, size_t) { ::operator delete (p, std::align_val_t{64}); }
   bool operator==(const CacheLineAllocator&) const { return true; }
 };
 
@@ -79,7 +79,6 @@ struct Bvh {
   void buildSums();
 
  public:
-
   // Visits every leaf triangle whose node box passes `overlaps(min, max)`; `visit(i)` gets the
   // index into tris. Iterative with a fixed stack (depth is bounded by the build).
   template <class Overlaps, class Visit>

@@ -59,8 +59,8 @@ struct CoverStats {
   double uncertified = 0.0;  // area (surface) or count (interior) left undecided
 };
 
-void coverTriangle(const std::vector<Sphere>& spheres, const Vec3& a, const Vec3& b,
-                   const Vec3& c, int depth, int max_depth, CoverStats* st) {
+void coverTriangle(const std::vector<Sphere>& spheres, const Vec3& a, const Vec3& b, const Vec3& c,
+                   int depth, int max_depth, CoverStats* st) {
   const Vec3 pts[3] = {a, b, c};
   if (oneSphereHolds(spheres, pts, 3)) return;
   const Vec3 g = (a + b + c) / 3.0;
@@ -101,8 +101,8 @@ void coverCell(const SolidIndex& index, const std::vector<Sphere>& spheres, cons
   }
   const double h = 0.5 * size;
   for (int k = 0; k < 8; ++k)
-    coverCell(index, spheres, mn + h * Vec3((k & 1) ? 1 : 0, (k & 2) ? 1 : 0, (k & 4) ? 1 : 0),
-              h, depth + 1, max_depth, st);
+    coverCell(index, spheres, mn + h * Vec3((k & 1) ? 1 : 0, (k & 2) ? 1 : 0, (k & 4) ? 1 : 0), h,
+              depth + 1, max_depth, st);
 }
 
 }  // namespace
@@ -174,8 +174,8 @@ EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& s
       double sx = 0.0, sxx = 0.0;
       for (int64_t k = 0; k < count; ++k) {
         const double pick = uniform01(rng) * vsum;
-        const size_t i = std::min<size_t>(
-            std::upper_bound(cum.begin(), cum.end(), pick) - cum.begin(), n - 1);
+        const size_t i =
+            std::min<size_t>(std::upper_bound(cum.begin(), cum.end(), pick) - cum.begin(), n - 1);
         Vec3 u;
         do {
           u = Vec3(2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1);
@@ -214,8 +214,8 @@ EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& s
     std::vector<CoverStats> st(nt);
     tbb::parallel_for(size_t{0}, nt, [&](size_t t) {
       const auto& tri = mesh.triangles[t];
-      coverTriangle(grown, mesh.vertices[tri[0]], mesh.vertices[tri[1]],
-                    mesh.vertices[tri[2]], 0, options.surface_max_depth, &st[t]);
+      coverTriangle(grown, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], 0,
+                    options.surface_max_depth, &st[t]);
     });
     for (const CoverStats& s : st) {
       res.max_surface_gap = std::max(res.max_surface_gap, s.gap);

@@ -23,9 +23,9 @@ struct UnionFind {
 };
 
 struct HalfEdge {
-  int32_t lo, hi;   // undirected key
+  int32_t lo, hi;  // undirected key
   int32_t tri;
-  bool forward;     // stored as lo -> hi in the triangle
+  bool forward;  // stored as lo -> hi in the triangle
   bool operator<(const HalfEdge& o) const {
     return lo != o.lo ? lo < o.lo : (hi != o.hi ? hi < o.hi : tri < o.tri);
   }

@@ -62,7 +62,8 @@ Expected<RawMesh> readOff(const std::string& path) {
   std::vector<Triangle> tris;
   tris.reserve(nf);
   for (int64_t f = 0; f < nf; ++f) {
-    if (!next(&tok)) return bad("expected " + std::to_string(nf) + " faces, found " + std::to_string(f));
+    if (!next(&tok))
+      return bad("expected " + std::to_string(nf) + " faces, found " + std::to_string(f));
     int64_t k = 0;
     std::vector<int64_t> idx;
     try {
@@ -74,8 +75,9 @@ Expected<RawMesh> readOff(const std::string& path) {
     }
     for (int64_t v : idx)
       if (v < 0 || v >= nv)
-        return Error{ErrorCode::kInvalidData, path + ":" + std::to_string(lineno) + ": face references vertex " +
-                                                  std::to_string(v) + " of " + std::to_string(nv)};
+        return Error{ErrorCode::kInvalidData, path + ":" + std::to_string(lineno) +
+                                                  ": face references vertex " + std::to_string(v) +
+                                                  " of " + std::to_string(nv)};
     for (int64_t j = 1; j + 1 < k; ++j)
       tris.push_back({static_cast<int32_t>(idx[0]), static_cast<int32_t>(idx[j]),
                       static_cast<int32_t>(idx[j + 1])});
@@ -101,11 +103,20 @@ PlyType plyType(const std::string& t) {
 
 int plySize(PlyType t) {
   switch (t) {
-    case PlyType::kInt8: case PlyType::kUint8: return 1;
-    case PlyType::kInt16: case PlyType::kUint16: return 2;
-    case PlyType::kInt32: case PlyType::kUint32: case PlyType::kFloat32: return 4;
-    case PlyType::kFloat64: return 8;
-    case PlyType::kBad: return 0;
+    case PlyType::kInt8:
+    case PlyType::kUint8:
+      return 1;
+    case PlyType::kInt16:
+    case PlyType::kUint16:
+      return 2;
+    case PlyType::kInt32:
+    case PlyType::kUint32:
+    case PlyType::kFloat32:
+      return 4;
+    case PlyType::kFloat64:
+      return 8;
+    case PlyType::kBad:
+      return 0;
   }
   return 0;
 }
@@ -154,15 +165,48 @@ class PlyData {
     if (swap)
       for (int i = 0; i < n / 2; ++i) std::swap(b[i], b[n - 1 - i]);
     switch (t) {
-      case PlyType::kInt8: { int8_t v; std::memcpy(&v, b, 1); return v; }
-      case PlyType::kUint8: { uint8_t v; std::memcpy(&v, b, 1); return v; }
-      case PlyType::kInt16: { int16_t v; std::memcpy(&v, b, 2); return v; }
-      case PlyType::kUint16: { uint16_t v; std::memcpy(&v, b, 2); return v; }
-      case PlyType::kInt32: { int32_t v; std::memcpy(&v, b, 4); return v; }
-      case PlyType::kUint32: { uint32_t v; std::memcpy(&v, b, 4); return v; }
-      case PlyType::kFloat32: { float v; std::memcpy(&v, b, 4); return v; }
-      case PlyType::kFloat64: { double v; std::memcpy(&v, b, 8); return v; }
-      case PlyType::kBad: break;
+      case PlyType::kInt8: {
+        int8_t v;
+        std::memcpy(&v, b, 1);
+        return v;
+      }
+      case PlyType::kUint8: {
+        uint8_t v;
+        std::memcpy(&v, b, 1);
+        return v;
+      }
+      case PlyType::kInt16: {
+        int16_t v;
+        std::memcpy(&v, b, 2);
+        return v;
+      }
+      case PlyType::kUint16: {
+        uint16_t v;
+        std::memcpy(&v, b, 2);
+        return v;
+      }
+      case PlyType::kInt32: {
+        int32_t v;
+        std::memcpy(&v, b, 4);
+        return v;
+      }
+      case PlyType::kUint32: {
+        uint32_t v;
+        std::memcpy(&v, b, 4);
+        return v;
+      }
+      case PlyType::kFloat32: {
+        float v;
+        std::memcpy(&v, b, 4);
+        return v;
+      }
+      case PlyType::kFloat64: {
+        double v;
+        std::memcpy(&v, b, 8);
+        return v;
+      }
+      case PlyType::kBad:
+        break;
     }
     ok_ = false;
     return 0.0;
@@ -181,7 +225,9 @@ Expected<RawMesh> readPly(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
   const std::string buf((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  auto bad = [&](const std::string& what) { return Error{ErrorCode::kUnreadable, path + ": " + what}; };
+  auto bad = [&](const std::string& what) {
+    return Error{ErrorCode::kUnreadable, path + ": " + what};
+  };
 
   // Header.
   size_t pos = 0;
@@ -206,7 +252,10 @@ Expected<RawMesh> readPly(const std::string& path) {
     if (kw == "format") {
       std::string f;
       is >> f;
-      format = f == "ascii" ? 0 : f == "binary_little_endian" ? 1 : f == "binary_big_endian" ? 2 : -1;
+      format = f == "ascii"                  ? 0
+               : f == "binary_little_endian" ? 1
+               : f == "binary_big_endian"    ? 2
+                                             : -1;
       if (format < 0) return bad("unknown PLY format '" + f + "'");
     } else if (kw == "element") {
       PlyElement e;
@@ -252,7 +301,8 @@ Expected<RawMesh> readPly(const std::string& path) {
       if (n == "x") ix = static_cast<int>(k);
       if (n == "y") iy = static_cast<int>(k);
       if (n == "z") iz = static_cast<int>(k);
-      if (e.props[k].list && (n == "vertex_indices" || n == "vertex_index")) iidx = static_cast<int>(k);
+      if (e.props[k].list && (n == "vertex_indices" || n == "vertex_index"))
+        iidx = static_cast<int>(k);
     }
     if (is_vertex) {
       if (ix < 0 || iy < 0 || iz < 0) return bad("vertex element without x, y and z");
@@ -271,15 +321,16 @@ Expected<RawMesh> readPly(const std::string& path) {
           continue;
         }
         const double cnt = data.read(pr.count_type);
-        if (!data.ok() || cnt < 0 || cnt > 1e7) return bad("malformed list in element '" + e.name + "'");
+        if (!data.ok() || cnt < 0 || cnt > 1e7)
+          return bad("malformed list in element '" + e.name + "'");
         list.resize(static_cast<size_t>(cnt));
         for (auto& x : list) x = static_cast<int64_t>(data.read(pr.type));
         if (static_cast<int>(k) != iidx || !(is_face || is_strip)) continue;
         for (int64_t x : list)
           if (x >= nv || (x < 0 && !(is_strip && x == -1)))
-            return Error{ErrorCode::kInvalidData, path + ": " + e.name + " " + std::to_string(i) +
-                                                      " references vertex " + std::to_string(x) +
-                                                      " of " + std::to_string(std::max<int64_t>(nv, 0))};
+            return Error{ErrorCode::kInvalidData,
+                         path + ": " + e.name + " " + std::to_string(i) + " references vertex " +
+                             std::to_string(x) + " of " + std::to_string(std::max<int64_t>(nv, 0))};
         if (is_face) {
           for (size_t j = 1; j + 1 < list.size(); ++j)
             out.triangles.push_back({static_cast<int32_t>(list[0]), static_cast<int32_t>(list[j]),
@@ -292,7 +343,8 @@ Expected<RawMesh> readPly(const std::string& path) {
             if (j < list.size() && list[j] >= 0) continue;
             for (size_t a = begin; a + 2 < j; ++a) {
               const bool odd = (a - begin) % 2 == 1;
-              const int32_t s0 = static_cast<int32_t>(list[a]), s1 = static_cast<int32_t>(list[a + 1]),
+              const int32_t s0 = static_cast<int32_t>(list[a]),
+                            s1 = static_cast<int32_t>(list[a + 1]),
                             s2 = static_cast<int32_t>(list[a + 2]);
               out.triangles.push_back(odd ? Triangle{s1, s0, s2} : Triangle{s0, s1, s2});
             }

@@ -22,7 +22,8 @@ namespace {
 std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   if (!ext.empty() && ext[0] == '.') ext.erase(0, 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 
@@ -37,8 +38,7 @@ struct KeyHash {
 // Welds vertices. Exact mode merges bit-identical positions (after -0 → +0). Tolerance mode
 // snaps to a grid of cell `tol` and merges each vertex into the first vertex within `tol` in
 // its own or a neighbouring cell (deterministic: in input order).
-std::vector<int32_t> weldVertices(const std::vector<Vec3>& v, double tol,
-                                  std::vector<Vec3>* out) {
+std::vector<int32_t> weldVertices(const std::vector<Vec3>& v, double tol, std::vector<Vec3>* out) {
   std::vector<int32_t> remap(v.size());
   out->clear();
   if (tol <= 0.0) {
@@ -261,9 +261,9 @@ Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& option
   Assimp::Importer importer;
   // Keep only triangles and polygons; no normals, no vertex joining (we weld positions
   // ourselves, since assimp joins only vertices whose every attribute matches).
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
   if (!scene || !scene->mRootNode) {
     std::string why = importer.GetErrorString();
     if (why.empty()) why = "unknown format";

@@ -188,8 +188,8 @@ bool solidAngleOfInside(const detail::Bvh& bvh, const std::vector<std::array<Vec
 }
 
 template <bool kBrute>
-OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, const Vec3& o,
-                       double r, int depth) {
+OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, const Vec3& o, double r,
+                       int depth) {
   OutsideVolume out;
   if (!(r > 0.0)) {
     out.center = index.classify(o);

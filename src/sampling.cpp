@@ -22,8 +22,8 @@ SurfaceSampler::SurfaceSampler(const Mesh& mesh) : mesh_(mesh) {
 Vec3 SurfaceSampler::sample(std::mt19937_64& rng, int32_t* triangle) const {
   const double x = uniform01(rng) * cumulative_.back();
   const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), x);
-  const int32_t t = static_cast<int32_t>(
-      std::min<ptrdiff_t>(it - cumulative_.begin(), static_cast<ptrdiff_t>(cumulative_.size()) - 1));
+  const int32_t t = static_cast<int32_t>(std::min<ptrdiff_t>(
+      it - cumulative_.begin(), static_cast<ptrdiff_t>(cumulative_.size()) - 1));
   if (triangle) *triangle = t;
   const double s = std::sqrt(uniform01(rng)), u = uniform01(rng);
   const auto& tri = mesh_.triangles[t];

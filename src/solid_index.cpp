@@ -21,11 +21,11 @@ namespace {
 
 using detail::Bvh;
 using detail::BvhNode;
-using detail::TriRecord;
 using detail::LineTriangle;
 using detail::lineTriangle;
 using detail::rayDirections;
 using detail::rayHitsBox;
+using detail::TriRecord;
 
 // Points closer than this fraction of the bounding-box diagonal to the surface are on it.
 constexpr double kBoundaryRelTol = 1e-11;
@@ -179,8 +179,7 @@ std::vector<double> SolidIndex::segmentCrossings(const Vec3& a, const Vec3& b) c
                     const LineTriangle lt = lineTriangle(a, d, im.bvh.tris[i]);
                     const bool maybe_pos =
                         lt.u >= -lt.tol_u && lt.v >= -lt.tol_v && lt.w >= -lt.tol_w;
-                    const bool maybe_neg =
-                        lt.u <= lt.tol_u && lt.v <= lt.tol_v && lt.w <= lt.tol_w;
+                    const bool maybe_neg = lt.u <= lt.tol_u && lt.v <= lt.tol_v && lt.w <= lt.tol_w;
                     if (!maybe_pos && !maybe_neg) return;
                     const double sum = lt.u + lt.v + lt.w;
                     if (sum == 0.0) return;

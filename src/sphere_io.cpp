@@ -21,7 +21,8 @@ namespace {
 
 std::string extensionOf(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 
@@ -59,9 +60,8 @@ Expected<SphereFormat> sphereFormatFromPath(const std::string& path) {
   if (ext == ".json") return SphereFormat::kJson;
   if (ext == ".sph") return SphereFormat::kSph;
   if (ext == ".yaml" || ext == ".yml") return SphereFormat::kYaml;
-  return Error{ErrorCode::kInvalidArgument,
-               path + ": unknown sphere-set extension '" + ext +
-                   "' (use .txt, .json, .sph or .yaml)"};
+  return Error{ErrorCode::kInvalidArgument, path + ": unknown sphere-set extension '" + ext +
+                                                "' (use .txt, .json, .sph or .yaml)"};
 }
 
 std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& spheres,
@@ -173,13 +173,15 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
         return Error{ErrorCode::kInvalidData, path + ": no \"spheres\" array"};
       list = &j["spheres"];
     }
-    if (!list->is_array()) return Error{ErrorCode::kInvalidData, path + ": \"spheres\" is not an array"};
+    if (!list->is_array())
+      return Error{ErrorCode::kInvalidData, path + ": \"spheres\" is not an array"};
     for (size_t i = 0; i < list->size(); ++i) {
       const auto& e = (*list)[i];
       const std::string where = path + ": sphere " + std::to_string(i);
       if (!e.is_object() || !e.contains("center") || !e.contains("radius") ||
           !e["center"].is_array() || e["center"].size() != 3 || !e["radius"].is_number())
-        return Error{ErrorCode::kInvalidData, where + ": needs \"center\": [x, y, z] and \"radius\""};
+        return Error{ErrorCode::kInvalidData,
+                     where + ": needs \"center\": [x, y, z] and \"radius\""};
       Sphere s;
       for (int k = 0; k < 3; ++k) {
         if (!e["center"][k].is_number())
@@ -231,8 +233,8 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
 
   if (*format == SphereFormat::kSph) {
     int levels = 0, branch = 0;
-    if (!std::getline(in, line) || !(std::istringstream(line) >> levels >> branch) ||
-        levels < 1 || branch < 1)
+    if (!std::getline(in, line) || !(std::istringstream(line) >> levels >> branch) || levels < 1 ||
+        branch < 1)
       return Error{ErrorCode::kInvalidData, path + ":1: expected \"levels branching\""};
     // Node counts per level: 1, B, B², ...; keep the deepest level that has spheres.
     std::vector<std::vector<Sphere>> by_level(levels);
@@ -241,11 +243,13 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
     for (int lev = 0; lev < levels; ++lev) {
       for (int64_t i = 0; i < level_size; ++i) {
         if (!std::getline(in, line))
-          return Error{ErrorCode::kInvalidData, path + ": truncated at level " + std::to_string(lev)};
+          return Error{ErrorCode::kInvalidData,
+                       path + ": truncated at level " + std::to_string(lev)};
         ++lineno;
         Sphere s;
         if (!(std::istringstream(line) >> s.center.x() >> s.center.y() >> s.center.z() >> s.radius))
-          return Error{ErrorCode::kInvalidData, path + ":" + std::to_string(lineno) + ": expected x y z r"};
+          return Error{ErrorCode::kInvalidData,
+                       path + ":" + std::to_string(lineno) + ": expected x y z r"};
         if (s.radius <= 0.0) continue;  // unused node
         Status st = checkSphere(path + ":" + std::to_string(lineno), s);
         if (!st) return st.error();

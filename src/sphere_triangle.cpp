@@ -21,12 +21,12 @@
 // pieces themselves:
 //   A = Σ_pieces cross(p, q) / 2 + ρ² Θ / 2,
 //   Ω = Σ_pieces ω(c0, p, q)     + Θ (1 - |h| / r).
+#include "sphere_triangle.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
-
-#include "sphere_triangle.hpp"
 
 namespace sphereset {
 namespace {
@@ -46,8 +46,9 @@ inline double dot(P2 a, P2 b) { return a.x * b.x + a.y * b.y; }
 
 // Signed solid angle at o of the planar triangle (c, p, q), as the pair (num, den) with
 // ω = 2 atan2(num, den); c is the foot of o on the plane at distance |h|, p and q are 2D
-// coordinates about c, and ω > 0 for counter-clockwise (p, q). Van Oosterom–Strackee with a = c - o, b = c + p - o, d = c + q - o, using the
-// plane's geometry: a·b = a·d = h², det(a, b, d) = |h| cross(p, q), and
+// coordinates about c, and ω > 0 for counter-clockwise (p, q). Van Oosterom–Strackee with a = c -
+// o, b = c + p - o, d = c + q - o, using the plane's geometry: a·b = a·d = h², det(a, b, d) = |h|
+// cross(p, q), and
 //   den = |h| (|b||d| + b·d) + h² (|b| + |d|).
 // When the angle at c approaches π (c close to the segment pq, which happens for every centre
 // near a mesh edge) |b||d| + b·d cancels catastrophically; it is then evaluated as
@@ -89,8 +90,7 @@ TriangleBallTerms detail::triangleBallTermsSplit(const Vec3& a, const Vec3& b, c
   if (!(r > 0.0) || abs_h >= r) return out;  // the plane misses the ball
 
   const double r2 = r * r;
-  const double da = (a - o).squaredNorm(), db = (b - o).squaredNorm(),
-               dc = (c - o).squaredNorm();
+  const double da = (a - o).squaredNorm(), db = (b - o).squaredNorm(), dc = (c - o).squaredNorm();
   const bool on_plane = abs_h <= kOnPlaneRelTol * r;
 
   // Case (a) of the paper: the whole triangle is inside the ball.
@@ -128,7 +128,7 @@ TriangleBallTerms detail::triangleBallTermsSplit(const Vec3& a, const Vec3& b, c
   std::array<P2, 3> d;
   std::array<double, 3> dd, side;
   std::array<bool, 3> misses{};  // the edge's line misses the disk (c0 on the inner side)
-  bool inside_all = true;  // foot c0 inside every edge half-plane (c0 ∈ t)
+  bool inside_all = true;        // foot c0 inside every edge half-plane (c0 ∈ t)
   for (int k = 0; k < 3; ++k) {
     const P2 p0 = p[k], p1 = p[(k + 1) % 3];
     d[k] = P2{p1.x - p0.x, p1.y - p0.y};
@@ -175,8 +175,7 @@ TriangleBallTerms detail::triangleBallTermsSplit(const Vec3& a, const Vec3& b, c
   }
   // The boundary of R winds once around c0 if c0 ∈ t (then c0 ∈ R) and not at all
   // otherwise, so the arcs' total angle is Θ = 2π [c0 ∈ t] - Σ (angles of the pieces at c0).
-  const double theta =
-      std::clamp((inside_all ? kTwoPi : 0.0) - fan_angle.value(), 0.0, kTwoPi);
+  const double theta = std::clamp((inside_all ? kTwoPi : 0.0) - fan_angle.value(), 0.0, kTwoPi);
   out.area = std::max(0.0, fan_area + 0.5 * rho2 * theta);
   if (on_plane) {
     out.center_on_triangle = inside_all;

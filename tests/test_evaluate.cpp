@@ -1,6 +1,5 @@
 // Evaluation metrics on sets with known answers.
 #include <gtest/gtest.h>
-
 #include <tbb/global_control.h>
 
 #include <numbers>
@@ -68,9 +67,12 @@ TEST(Evaluate, HollowShellOfSpheresLeavesTheInteriorUncovered) {
       for (int f = 0; f < 6; ++f) {
         Vec3 p;
         const double a = i, b = j, c = (f % 2) ? 10.0 : 0.0;
-        if (f < 2) p = Vec3(c, a, b);
-        else if (f < 4) p = Vec3(a, c, b);
-        else p = Vec3(a, b, c);
+        if (f < 2)
+          p = Vec3(c, a, b);
+        else if (f < 4)
+          p = Vec3(a, c, b);
+        else
+          p = Vec3(a, b, c);
         shell.push_back({p, 0.9});
       }
   EvalOptions o;
@@ -84,8 +86,8 @@ TEST(Evaluate, HollowShellOfSpheresLeavesTheInteriorUncovered) {
 
 TEST(Evaluate, ResultsDoNotDependOnThreads) {
   const SolidIndex idx(test::makeTorus(1.0, 0.4, 32, 16));
-  const std::vector<Sphere> s = {{Vec3(1, 0, 0), 0.6}, {Vec3(-1, 0, 0), 0.6},
-                                 {Vec3(0, 1, 0), 0.6}, {Vec3(0, -1, 0), 0.6}};
+  const std::vector<Sphere> s = {
+      {Vec3(1, 0, 0), 0.6}, {Vec3(-1, 0, 0), 0.6}, {Vec3(0, 1, 0), 0.6}, {Vec3(0, -1, 0), 0.6}};
   EvalOptions o;
   o.union_samples = 50000;
   o.proximity_segments = 300;

@@ -41,7 +41,8 @@ std::string cubeObjQuads() {
   for (const Vec3& v : kCube.vertices) os << "v " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
   const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                        {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& f : q) os << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << ' ' << f[3] + 1 << '\n';
+  for (const auto& f : q)
+    os << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << ' ' << f[3] + 1 << '\n';
   return os.str();
 }
 
@@ -60,7 +61,9 @@ void expectUnitCube(const Expected<LoadedMesh>& m, double scale = 1.0, Vec3 offs
   EXPECT_TRUE(d.isSolid());
 }
 
-TEST_F(MeshIo, ObjWithQuadsIsTriangulated) { expectUnitCube(loadMesh(write("c.obj", cubeObjQuads()))); }
+TEST_F(MeshIo, ObjWithQuadsIsTriangulated) {
+  expectUnitCube(loadMesh(write("c.obj", cubeObjQuads())));
+}
 
 TEST_F(MeshIo, AsciiAndBinaryStlAreWelded) {
   std::ostringstream a;
@@ -137,13 +140,16 @@ TEST_F(MeshIo, ColladaSceneGraphTransformsAreApplied) {
       "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n"
       "<asset><unit name=\"meter\" meter=\"1\"/><up_axis>Y_UP</up_axis></asset>\n"
       "<library_geometries><geometry id=\"cube\"><mesh>\n"
-      "<source id=\"p\"><float_array id=\"pa\" count=\"24\">" + pos.str() + "</float_array>\n"
+      "<source id=\"p\"><float_array id=\"pa\" count=\"24\">" +
+      pos.str() +
+      "</float_array>\n"
       "<technique_common><accessor source=\"#pa\" count=\"8\" stride=\"3\">"
       "<param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/>"
       "<param name=\"Z\" type=\"float\"/></accessor></technique_common></source>\n"
       "<vertices id=\"v\"><input semantic=\"POSITION\" source=\"#p\"/></vertices>\n"
       "<triangles count=\"12\"><input semantic=\"VERTEX\" source=\"#v\" offset=\"0\"/><p>" +
-      idx.str() + "</p></triangles>\n</mesh></geometry></library_geometries>\n"
+      idx.str() +
+      "</p></triangles>\n</mesh></geometry></library_geometries>\n"
       "<library_visual_scenes><visual_scene id=\"s\">\n"
       "<node id=\"outer\"><matrix>1 0 0 10 0 1 0 0 0 0 1 0 0 0 0 1</matrix>\n"
       "<node id=\"inner\"><matrix>2 0 0 0 0 2 0 0 0 0 2 0 0 0 0 1</matrix>"
@@ -194,8 +200,10 @@ TEST_F(MeshIo, GltfWithEmbeddedBuffer) {
       "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
       "\"nodes\":[{\"mesh\":0,\"translation\":[0,5,0]}],"
       "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1}]}],"
-      "\"buffers\":[{\"byteLength\":" + std::to_string(buf.size()) +
-      ",\"uri\":\"data:application/octet-stream;base64," + base64(buf) + "\"}],"
+      "\"buffers\":[{\"byteLength\":" +
+      std::to_string(buf.size()) + ",\"uri\":\"data:application/octet-stream;base64," +
+      base64(buf) +
+      "\"}],"
       "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":96},"
       "{\"buffer\":0,\"byteOffset\":96,\"byteLength\":72}],"
       "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":8,\"type\":\"VEC3\","
@@ -227,9 +235,9 @@ TEST_F(MeshIo, InvertedMeshIsFlippedOutward) {
 
 TEST_F(MeshIo, DegenerateAndDuplicateTrianglesAreDroppedAndCounted) {
   std::string obj = cubeObjQuads();
-  obj += "f 1 1 2\n";      // repeated vertex
+  obj += "f 1 1 2\n";             // repeated vertex
   obj += "v 0.5 0 0\nf 1 2 9\n";  // zero area (collinear)
-  obj += "f 1 3 4\n";      // duplicate of an existing triangle
+  obj += "f 1 3 4\n";             // duplicate of an existing triangle
   auto m = loadMesh(write("d.obj", obj));
   expectUnitCube(m);
   EXPECT_EQ(m->report.degenerate_dropped, 2);
@@ -254,7 +262,8 @@ TEST_F(MeshIo, OpenAndNonManifoldMeshesAreDiagnosed) {
   const Mesh other = test::makeBox(Vec3(1, 1, 0), Vec3(2, 2, 1));
   const int32_t base = static_cast<int32_t>(two.vertices.size());
   for (const Vec3& v : other.vertices) two.vertices.push_back(v);
-  for (const Triangle& t : other.triangles) two.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  for (const Triangle& t : other.triangles)
+    two.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
   auto cleaned = cleanMesh(two.vertices, two.triangles);
   ASSERT_TRUE(cleaned.ok());
   d = diagnoseMesh(cleaned->mesh);
@@ -267,7 +276,8 @@ TEST_F(MeshIo, OpenAndNonManifoldMeshesAreDiagnosed) {
   Mesh bow = kCube;
   const Mesh corner = test::makeBox(Vec3(1, 1, 1), Vec3(2, 2, 2));
   for (const Vec3& v : corner.vertices) bow.vertices.push_back(v);
-  for (const Triangle& t : corner.triangles) bow.triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
+  for (const Triangle& t : corner.triangles)
+    bow.triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
   auto welded = cleanMesh(bow.vertices, bow.triangles);
   ASSERT_TRUE(welded.ok());
   d = diagnoseMesh(welded->mesh);

@@ -36,9 +36,9 @@ inline Mesh makeBox(const Vec3& lo, const Vec3& hi) {
 inline Mesh makeIcosphere(double r, int subdivisions) {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
   Mesh m;
-  const double v[12][3] = {{-1, t, 0}, {1, t, 0},  {-1, -t, 0}, {1, -t, 0},
-                           {0, -1, t}, {0, 1, t},  {0, -1, -t}, {0, 1, -t},
-                           {t, 0, -1}, {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+  const double v[12][3] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                           {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                           {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
   for (const auto& p : v) m.vertices.push_back(Vec3(p[0], p[1], p[2]).normalized() * r);
   m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                  {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},

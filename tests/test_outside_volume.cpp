@@ -118,7 +118,8 @@ TEST(OutsideVolume, MatchesSeededMonteCarloOnRealMeshes) {
     std::vector<Sphere> spheres;
     // Centres inside (surface samples pushed inwards are not needed: rejection on classify).
     while (spheres.size() < 10) {
-      const Vec3 c = box.center() + 0.5 * (box.max - box.min).cwiseProduct(Vec3(U(rng), U(rng), U(rng)));
+      const Vec3 c =
+          box.center() + 0.5 * (box.max - box.min).cwiseProduct(Vec3(U(rng), U(rng), U(rng)));
       const Containment where = idx.classify(c);
       const bool want_inside = spheres.size() % 2 == 0;
       if ((where == Containment::kInside) != want_inside) continue;
@@ -178,8 +179,7 @@ TEST(OutsideVolume, DerivativesMatchFiniteDifferences) {
 TEST(OutsideVolume, InvariantUnderRigidMotionAndScaling) {
   const Mesh base = loadOrDie(test::dataPath("fr3_link1_collision.stl"));
   const SolidIndex idx0(base);
-  const Eigen::Matrix3d R =
-      Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
   const Vec3 t(12.5, -3.25, 100.0);
   const double diag = idx0.bounds().diagonal();
   std::vector<Sphere> probes = {{idx0.bounds().center(), 0.2 * diag},

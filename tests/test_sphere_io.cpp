@@ -15,8 +15,8 @@ class SphereIo : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("sphereset_sph_" + std::string(
-                                   ::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("sphereset_sph_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }

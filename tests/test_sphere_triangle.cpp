@@ -46,8 +46,7 @@ TriangleBallTerms terms(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3&
   return triangleBallTerms(a, b, c, n, o, r);
 }
 
-void expectMatchesQuadrature(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& o,
-                             double r) {
+void expectMatchesQuadrature(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& o, double r) {
   const TriangleBallTerms t = terms(a, b, c, o, r);
   const Quadrature q = quadrature(a, b, c, o, r);
   const double scale_a = kPi * r * r, scale_o = 2 * kPi;
@@ -83,8 +82,8 @@ TEST(SphereTriangle, CaseC_OneVertexInside) {
 }
 
 TEST(SphereTriangle, CaseD_TwoVerticesInside) {
-  expectMatchesQuadrature(Vec3(-0.4, -0.3, -0.2), Vec3(0.5, -0.2, -0.2), Vec3(0.1, 3.0, -0.2),
-                          O, 1.0);
+  expectMatchesQuadrature(Vec3(-0.4, -0.3, -0.2), Vec3(0.5, -0.2, -0.2), Vec3(0.1, 3.0, -0.2), O,
+                          1.0);
 }
 
 TEST(SphereTriangle, EdgeCutsDiskWithNoVertexInside) {
@@ -95,13 +94,11 @@ TEST(SphereTriangle, EdgeCutsDiskWithNoVertexInside) {
 
 TEST(SphereTriangle, ThreeChordsAroundTheCentre) {
   // Triangle's edges all cut the disk; the foot of o lies inside the triangle.
-  expectMatchesQuadrature(Vec3(-1.2, -0.6, 0.1), Vec3(1.2, -0.6, 0.1), Vec3(0, 1.1, 0.1), O,
-                          1.0);
+  expectMatchesQuadrature(Vec3(-1.2, -0.6, 0.1), Vec3(1.2, -0.6, 0.1), Vec3(0, 1.1, 0.1), O, 1.0);
 }
 
 TEST(SphereTriangle, FootOutsideTriangle) {
-  expectMatchesQuadrature(Vec3(0.3, 0.2, -0.4), Vec3(1.5, 0.2, -0.4), Vec3(0.3, 1.4, -0.4), O,
-                          1.0);
+  expectMatchesQuadrature(Vec3(0.3, 0.2, -0.4), Vec3(1.5, 0.2, -0.4), Vec3(0.3, 1.4, -0.4), O, 1.0);
 }
 
 TEST(SphereTriangle, TangentEdgeIsContinuous) {
@@ -169,15 +166,13 @@ TEST(SphereTriangle, CentreInPlaneOutsideTriangle) {
 }
 
 TEST(SphereTriangle, CentreOnTriangleIsFlagged) {
-  const TriangleBallTerms t =
-      terms(Vec3(-1, -1, 0), Vec3(2, -1, 0), Vec3(-1, 2, 0), O, 0.5);
+  const TriangleBallTerms t = terms(Vec3(-1, -1, 0), Vec3(2, -1, 0), Vec3(-1, 2, 0), O, 0.5);
   EXPECT_TRUE(t.center_on_triangle);
 }
 
 TEST(SphereTriangle, NeedleAndSliverTriangles) {
   // Needle: very long and thin, crossing the ball.
-  expectMatchesQuadrature(Vec3(-3, 0.1, 0.3), Vec3(3, 0.1, 0.3), Vec3(3, 0.1 + 1e-3, 0.3), O,
-                          1.0);
+  expectMatchesQuadrature(Vec3(-3, 0.1, 0.3), Vec3(3, 0.1, 0.3), Vec3(3, 0.1 + 1e-3, 0.3), O, 1.0);
   // Sliver: three almost collinear vertices inside the ball; compare with Van Oosterom.
   const Vec3 a(-0.5, 0, 0.4), b(0.5, 0, 0.4), c(0, 1e-7, 0.4);
   const TriangleBallTerms t = terms(a, b, c, O, 1.0);

@@ -10,11 +10,11 @@
 namespace sphereset {
 
 struct EvalOptions {
-  uint64_t seed = 1;                  // all sampling is seeded; results do not depend on threads
-  int64_t union_samples = 200000;     // Monte Carlo samples for the union's outside volume
-  int proximity_segments = 3000;      // random surface-to-surface segments (paper Sec. 7)
-  int surface_max_depth = 8;          // 4^depth sub-triangles at most per triangle
-  int interior_max_depth = 5;         // octree refinement below an 8³ grid of the bounds
+  uint64_t seed = 1;               // all sampling is seeded; results do not depend on threads
+  int64_t union_samples = 200000;  // Monte Carlo samples for the union's outside volume
+  int proximity_segments = 3000;   // random surface-to-surface segments (paper Sec. 7)
+  int surface_max_depth = 8;       // 4^depth sub-triangles at most per triangle
+  int interior_max_depth = 5;      // octree refinement below an 8³ grid of the bounds
 };
 
 struct EvalResult {
@@ -29,12 +29,12 @@ struct EvalResult {
   std::vector<double> outside_volume;  // per sphere, exact
   // Surface coverage: certified by subdivision (every sub-triangle inside one sphere).
   bool surface_covered = false;
-  double max_surface_gap = 0.0;        // largest distance found from surface to the union / diag
+  double max_surface_gap = 0.0;           // largest distance found from surface to the union / diag
   double surface_uncertified_area = 0.0;  // area that could be neither certified nor refuted
   int64_t uncovered_triangles = 0;
   // Interior coverage: certified on an adaptive octree of cells.
   bool interior_covered = false;
-  double max_interior_gap = 0.0;       // / diag
+  double max_interior_gap = 0.0;           // / diag
   int64_t interior_uncertified_cells = 0;  // finest cells at the surface left undecided
   // Proximity (paper Sec. 7): mean |outside length vs mesh - outside length vs spheres| over
   // random surface-to-surface segments, / diag.

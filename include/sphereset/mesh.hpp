@@ -3,9 +3,9 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <limits>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -52,15 +52,15 @@ struct LoadOptions {
 // What the loader did to the file's data to make an indexed triangle mesh.
 struct LoadReport {
   std::string path;
-  std::string format;            // file extension, lower case, without the dot
-  int64_t file_vertices = 0;     // vertices as stored in the file (all meshes)
-  int64_t file_faces = 0;        // faces after triangulation, before clean-up
-  int64_t scene_meshes = 0;      // meshes in the file's scene graph
-  int64_t welded_vertices = 0;   // vertices merged into another one
-  int64_t unused_vertices = 0;   // vertices referenced by no kept triangle, removed
+  std::string format;              // file extension, lower case, without the dot
+  int64_t file_vertices = 0;       // vertices as stored in the file (all meshes)
+  int64_t file_faces = 0;          // faces after triangulation, before clean-up
+  int64_t scene_meshes = 0;        // meshes in the file's scene graph
+  int64_t welded_vertices = 0;     // vertices merged into another one
+  int64_t unused_vertices = 0;     // vertices referenced by no kept triangle, removed
   int64_t degenerate_dropped = 0;  // triangles with repeated vertices or zero area, dropped
   int64_t duplicate_dropped = 0;   // triangles repeating another's vertex set, dropped
-  bool flipped = false;          // orientation was reversed to make the volume positive
+  bool flipped = false;            // orientation was reversed to make the volume positive
 };
 
 struct LoadedMesh {
@@ -83,15 +83,15 @@ struct MeshDiagnosis {
   int64_t vertices = 0;
   int64_t triangles = 0;
   int64_t edges = 0;
-  int64_t boundary_edges = 0;         // edges with one incident triangle
-  int64_t nonmanifold_edges = 0;      // edges with three or more incident triangles
-  int64_t nonmanifold_vertices = 0;   // vertices whose triangle fan is not one disk or cone
-  int64_t misoriented_edges = 0;      // interior edges traversed the same way by both triangles
-  int64_t components = 0;             // edge-connected components
-  bool closed = false;                // no boundary edges
-  bool manifold = false;              // no non-manifold edges or vertices
-  bool oriented = false;              // every interior edge traversed once each way
-  double volume = 0.0;                // signed volume (positive for outward orientation)
+  int64_t boundary_edges = 0;        // edges with one incident triangle
+  int64_t nonmanifold_edges = 0;     // edges with three or more incident triangles
+  int64_t nonmanifold_vertices = 0;  // vertices whose triangle fan is not one disk or cone
+  int64_t misoriented_edges = 0;     // interior edges traversed the same way by both triangles
+  int64_t components = 0;            // edge-connected components
+  bool closed = false;               // no boundary edges
+  bool manifold = false;             // no non-manifold edges or vertices
+  bool oriented = false;             // every interior edge traversed once each way
+  double volume = 0.0;               // signed volume (positive for outward orientation)
   double area = 0.0;
   Aabb bbox;
   double min_edge = 0.0;

@@ -16,16 +16,16 @@ enum class Containment { kOutside, kInside, kBoundary };
 
 // Closed-form terms of one triangle t against the ball B(o, r); see outside_volume.hpp.
 struct TriangleBallTerms {
-  double h = 0.0;            // signed distance of t's plane from o along t's outward normal
-  double area = 0.0;         // A = area(t ∩ B)
-  double solid_angle = 0.0;  // Ω = solid angle that t ∩ B subtends at o (unsigned, >= 0)
+  double h = 0.0;                   // signed distance of t's plane from o along t's outward normal
+  double area = 0.0;                // A = area(t ∩ B)
+  double solid_angle = 0.0;         // Ω = solid angle that t ∩ B subtends at o (unsigned, >= 0)
   bool center_on_triangle = false;  // o lies on t (within kOnPlaneRelTol): SOTV undefined
 };
 
 // Result of one outside-volume query, with both derivatives from the same pass.
 struct OutsideVolume {
-  double volume = 0.0;          // SOV(o, r): volume of the ball outside the solid
-  double d_radius = 0.0;        // dSOV/dr: area of the sphere's surface outside the solid
+  double volume = 0.0;           // SOV(o, r): volume of the ball outside the solid
+  double d_radius = 0.0;         // dSOV/dr: area of the sphere's surface outside the solid
   Vec3 gradient = Vec3::Zero();  // dSOV/do at fixed r: Σ area(t ∩ B) n_t
   // Closed-form kernel evaluations: triangles met by the ball, plus the boundary fans of
   // hierarchy nodes wholly inside it (whose triangles are summed in one go).

@@ -27,8 +27,8 @@ enum class SphereFormat {
 Expected<SphereFormat> sphereFormatFromPath(const std::string& path);
 
 struct SphereFileMeta {
-  std::string name = "object";     // link name for YAML output
-  std::string source_mesh;         // recorded in JSON output
+  std::string name = "object";  // link name for YAML output
+  std::string source_mesh;      // recorded in JSON output
   std::string generator = "sphereset";
 };
 
