@@ -3,15 +3,20 @@
 //   0 success, 1 internal error, 2 bad options, 3 unreadable input, 4 invalid data,
 //   5 the mesh is not a closed solid, 6 the output could not be written.
 #include <tbb/global_control.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere.hpp"
@@ -199,6 +204,44 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(0, 10000000));
 
+  MeshArgs fit_args;
+  FitOptions fo;
+  std::string out_path, link_name, quality = "default", optimizer = "powell", init = "fps";
+  bool quiet = false;
+  int64_t points = 0;
+  CLI::App* fit = app.add_subcommand("fit", "Fit N spheres that bound the mesh");
+  addMeshArgs(fit, &fit_args);
+  fit->add_option("-n,--spheres", fo.num_spheres, "Number of spheres")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  fit->add_option("-o,--output", out_path,
+                  "Output file; the format follows the extension: .txt (x y z r), .json, .sph, "
+                  ".yaml (cuRobo collision_spheres)")
+      ->required();
+  fit->add_option("--seed", fo.seed, "Seed for sampling and initialisation")->capture_default_str();
+  fit->add_option("--points", points,
+                  "Points to cluster (default 0: max(5000, 100 n), scaled by --quality)")
+      ->check(CLI::Range(int64_t{0}, int64_t{100000000}));
+  fit->add_option("--iterations", fo.max_iterations,
+                  "Cap on assignment/update rounds (default 30; --quality sets 10/30/60)")
+      ->check(CLI::Range(0, 100000));
+  fit->add_option("--padding", fo.padding, "Distance added to every radius")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  fit->add_option("--quality", quality, "fast, default or best (points, rounds, optimiser effort)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"fast", "default", "best"}));
+  fit->add_option("--optimizer", optimizer,
+                  "Sphere update: powell (derivative-free BOBYQA) or gradient (MMA with exact "
+                  "derivatives)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"powell", "gradient"}));
+  fit->add_option("--init", init, "Seeding: fps (farthest point) or random (as in the paper)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"fps", "random"}));
+  fit->add_option("--name", link_name, "Link name for .yaml output (default: the mesh's stem)");
+  fit->add_flag("-q,--quiet", quiet, "No progress on stderr");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -212,6 +255,68 @@ int main(int argc, char** argv) {
                                                   threads);
 
   try {
+    if (*fit) {
+      auto format = sphereFormatFromPath(out_path);
+      if (!format) return fail(format.error());
+      auto m = loadSolid(fit_args);
+      if (!m) return fail(m.error());
+      // Quality presets: (points factor, rounds, optimiser evaluations per sphere).
+      const std::map<std::string, std::tuple<double, int, int>> presets = {
+          {"fast", {0.4, 10, 30}}, {"default", {1.0, 30, 60}}, {"best", {2.0, 60, 120}}};
+      const auto [pf, rounds, evals] = presets.at(quality);
+      if (fit->count("--iterations") == 0) fo.max_iterations = rounds;
+      fo.optimizer_evaluations = evals;
+      fo.target_points =
+          points > 0 ? points
+                     : static_cast<int64_t>(pf * std::max<int64_t>(5000, 100 * fo.num_spheres));
+      fo.optimizer =
+          optimizer == "gradient" ? SphereOptimizer::kGradient : SphereOptimizer::kPowell;
+      fo.init = init == "random" ? FitInit::kRandom : FitInit::kFarthestPoint;
+      const bool tty = isatty(STDERR_FILENO) != 0;
+      if (!quiet)
+        fo.progress = [tty](const FitProgress& p) {
+          if (tty)
+            std::fprintf(stderr, "\r%-10s round %3d  outside volume %.6g  spheres %d  %.1f s   ",
+                         p.phase.c_str(), p.iteration, p.energy, p.spheres, p.seconds);
+          else
+            std::fprintf(stderr, "%s round %d outside volume %.6g spheres %d %.1f s\n",
+                         p.phase.c_str(), p.iteration, p.energy, p.spheres, p.seconds);
+          if (tty && p.phase == "done") std::fprintf(stderr, "\n");
+        };
+      const SolidIndex index(m->mesh);
+      auto r = fitSpheres(index, fo);
+      if (!r) return fail(Error{r.error().code, fit_args.path + ": " + r.error().message});
+      SphereFileMeta meta;
+      meta.name =
+          link_name.empty() ? std::filesystem::path(fit_args.path).stem().string() : link_name;
+      meta.source_mesh = fit_args.path;
+      Status st = writeSpheres(out_path, r->spheres, meta);
+      if (!st) return fail(st.error());
+      EvalOptions eo2;
+      eo2.seed = fo.seed;
+      eo2.union_samples = 100000;
+      eo2.proximity_segments = 0;
+      const EvalResult ev = evaluateSpheres(index, r->spheres, eo2);
+      if (!quiet) {
+        std::fprintf(stderr,
+                     "%s: %zu spheres -> %s\n"
+                     "  E_r summed %.4f (%.4f before bounding), E_r union %.4f +- %.4f\n"
+                     "  surface covered %s, interior covered %s\n"
+                     "  %lld points (%lld interior), %d rounds%s, %lld SOV queries in assignment "
+                     "(%lld culled)\n"
+                     "  time %.2f s (sampling %.2f, assignment %.2f, update %.2f, bounding %.2f)\n",
+                     fit_args.path.c_str(), r->spheres.size(), out_path.c_str(),
+                     r->energy / ev.mesh_volume, r->energy_before_bounding / ev.mesh_volume,
+                     ev.er_union, ev.er_union_stderr, ev.surface_covered ? "yes" : "NO",
+                     ev.interior_covered ? "yes" : "NO", static_cast<long long>(r->points),
+                     static_cast<long long>(r->interior_points), r->iterations,
+                     r->converged ? " (converged)" : "", static_cast<long long>(r->sov_queries),
+                     static_cast<long long>(r->sov_queries_culled), r->seconds.total,
+                     r->seconds.sampling, r->seconds.assignment, r->seconds.update,
+                     r->seconds.bounding);
+      }
+      return kOk;
+    }
     if (*check) {
       LoadOptions lo;
       lo.weld_tolerance = check_args.weld;

@@ -10,13 +10,16 @@ file(WRITE ${work}/bad.txt "0 0 0\n")
 set(link ${CMAKE_CURRENT_SOURCE_DIR}/data/fr3_link1_collision.stl)
 
 function(cli_test name expect)
-  cmake_parse_arguments(A "" "STDERR;STDOUT" "ARGS" ${ARGN})
+  cmake_parse_arguments(A "" "STDERR;STDOUT;FORBID" "ARGS" ${ARGN})
   set(defs -DEXPECT_EXIT=${expect})
   if(A_STDERR)
     list(APPEND defs "-DEXPECT_STDERR=${A_STDERR}")
   endif()
   if(A_STDOUT)
     list(APPEND defs "-DEXPECT_STDOUT=${A_STDOUT}")
+  endif()
+  if(A_FORBID)
+    list(APPEND defs "-DFORBID_FILE=${A_FORBID}")
   endif()
   string(REPLACE ";" "|" cmd "${cli};${A_ARGS}")
   add_test(NAME cli.${name}
@@ -36,3 +39,12 @@ cli_test(eval_json 0 ARGS eval ${link} ${work}/bound.txt --json --samples 20000 
          STDOUT "\"er_sum\":.*\"surface_covered\":true")
 cli_test(bad_option 2 ARGS eval ${link} ${work}/bound.txt --samples -5)
 cli_test(no_command 2 ARGS)
+cli_test(fit_txt 0 ARGS fit ${link} -n 5 -o ${work}/link5.txt --quality fast -q)
+cli_test(fit_bad_extension 2 ARGS fit ${link} -n 5 -o ${work}/link5.xyz -q
+         STDERR "link5.xyz: unknown sphere-set extension" FORBID ${work}/link5.xyz)
+cli_test(fit_open_mesh 5 ARGS fit ${work}/open.off -n 5 -o ${work}/never1.txt -q
+         STDERR "open.off: not a closed solid" FORBID ${work}/never1.txt)
+cli_test(fit_zero_spheres 2 ARGS fit ${link} -n 0 -o ${work}/never2.txt -q FORBID ${work}/never2.txt)
+cli_test(fit_too_many 2 ARGS fit ${link} -n 50000 -o ${work}/never3.txt -q --points 1000
+         STDERR "50000 spheres" FORBID ${work}/never3.txt)
+cli_test(fit_yaml 0 ARGS fit ${link} -n 3 -o ${work}/link3.yaml --name link1 --quality fast -q)

@@ -1,0 +1,72 @@
+// Variational sphere-set fitting (paper Sec. 5) with a guaranteed bound of the surface.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sphereset/solid_index.hpp"
+#include "sphereset/sphere.hpp"
+#include "sphereset/status.hpp"
+
+namespace sphereset {
+
+enum class FitInit {
+  kFarthestPoint,  // farthest-point seeding over the interior points (default)
+  kRandom,         // random interior points, as in the paper
+};
+
+enum class SphereOptimizer {
+  kPowell,    // derivative-free (NLopt BOBYQA, Powell's quadratic model method)
+  kGradient,  // exact derivatives of the outside volume (NLopt MMA)
+};
+
+struct FitProgress {
+  std::string phase;  // "sampling", "clustering", "bounding"
+  int iteration = 0;
+  double energy = 0.0;  // Σ outside volume of the spheres
+  int spheres = 0;
+  double seconds = 0.0;
+};
+
+struct FitOptions {
+  int num_spheres = 32;
+  uint64_t seed = 1;
+  // Points clustered (interior grid + surface samples). 0 chooses max(5000, 100 n).
+  int64_t target_points = 0;
+  double interior_share = 0.5;  // fraction of the points on the interior grid
+  int max_iterations = 30;      // assignment/update rounds
+  double tolerance = 1e-3;      // stop when the energy improves by less than this fraction
+  FitInit init = FitInit::kFarthestPoint;
+  SphereOptimizer optimizer = SphereOptimizer::kPowell;
+  int optimizer_evaluations = 60;  // per sphere and round
+  double padding = 0.0;            // added to every radius at the end (absolute units)
+  std::function<void(const FitProgress&)> progress;  // called from the calling thread
+};
+
+struct FitTimings {
+  double sampling = 0.0, assignment = 0.0, update = 0.0, bounding = 0.0, total = 0.0;
+};
+
+struct FitResult {
+  std::vector<Sphere> spheres;
+  std::vector<double> outside_volume;  // per sphere, exact, after bounding and padding
+  std::vector<double> energy_history;  // Σ outside volume after each round
+  double energy_before_bounding = 0.0;
+  double energy = 0.0;  // final Σ outside volume
+  int iterations = 0;
+  bool converged = false;
+  int64_t points = 0, interior_points = 0;
+  int64_t sov_queries = 0;         // outside-volume evaluations in point assignment
+  int64_t sov_queries_culled = 0;  // assignment candidates settled by a lower bound instead
+  int64_t optimizer_queries = 0;   // outside-volume evaluations in sphere updates
+  int64_t bounding_enlarged = 0;   // spheres enlarged by the bounding step
+  FitTimings seconds;
+};
+
+// Fits options.num_spheres spheres to the closed solid behind `index`. Errors:
+// kInvalidArgument (n < 1, n larger than the points, bad options), kNotSolid (zero volume).
+Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& options);
+
+}  // namespace sphereset

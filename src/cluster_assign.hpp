@@ -1,0 +1,34 @@
+// Private: point assignment by least outside-volume increase (paper Sec. 5).
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "samples.hpp"
+#include "sphereset/solid_index.hpp"
+
+namespace sphereset::detail {
+
+struct Cluster {
+  Vec3 center = Vec3::Zero();
+  double radius = 0.0;  // smallest radius about `center` enclosing the assigned points
+  double sov = 0.0;     // SOV(center, radius)
+  // Known values of SOV(center, ·) at increasing radii: lower bounds for larger radii,
+  // since the outside volume never decreases with the radius.
+  std::vector<std::pair<double, double>> table;
+};
+
+struct AssignStats {
+  int64_t queries = 0;  // exact outside-volume evaluations
+  int64_t culled = 0;   // candidate clusters dismissed by their lower bound
+};
+
+// Assigns every point to the cluster whose sphere grows least in outside volume, in
+// flood-fill order from the points nearest the centres; ties go to the nearest centre.
+// Centres stay fixed; radii and outside volumes grow as points are added. labels[i] is the
+// cluster of point i.
+void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Cluster>* clusters,
+                  std::vector<int32_t>* labels, AssignStats* stats);
+
+}  // namespace sphereset::detail

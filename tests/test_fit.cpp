@@ -1,0 +1,102 @@
+// The variational fit: exact sphere count, guaranteed coverage, determinism, errors.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "test_meshes.hpp"
+
+namespace sphereset {
+namespace {
+
+Mesh link() {
+  auto m = loadMesh(test::dataPath("fr3_link1_collision.stl"));
+  EXPECT_TRUE(m.ok());
+  return m->mesh;
+}
+
+TEST(Fit, WritesExactlyNSpheresThatCoverTheSurfaceAndInterior) {
+  const SolidIndex idx(link());
+  FitOptions o;
+  o.num_spheres = 8;
+  o.target_points = 2000;
+  auto r = fitSpheres(idx, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_EQ(r->spheres.size(), 8u);
+  EvalOptions eo;
+  eo.union_samples = 20000;
+  eo.proximity_segments = 0;
+  const EvalResult e = evaluateSpheres(idx, r->spheres, eo);
+  EXPECT_TRUE(e.surface_covered);
+  EXPECT_TRUE(e.interior_covered);
+  EXPECT_NEAR(e.er_sum * e.mesh_volume, r->energy, 1e-9 * r->energy);
+  // The bounding step only grows spheres.
+  EXPECT_GE(r->energy, r->energy_before_bounding - 1e-15);
+  EXPECT_GT(r->sov_queries, 0);
+  EXPECT_GE(r->iterations, 1);
+  ASSERT_FALSE(r->energy_history.empty());
+}
+
+TEST(Fit, MoreSpheresFitTighter) {
+  const SolidIndex idx(test::makeTorus(1.0, 0.3, 48, 24));
+  FitOptions o;
+  o.target_points = 3000;
+  o.num_spheres = 4;
+  auto few = fitSpheres(idx, o);
+  o.num_spheres = 24;
+  auto many = fitSpheres(idx, o);
+  ASSERT_TRUE(few.ok() && many.ok());
+  EXPECT_LT(many->energy, 0.5 * few->energy);
+}
+
+TEST(Fit, SameSpheresForAnyThreadCount) {
+  const SolidIndex idx(link());
+  FitOptions o;
+  o.num_spheres = 6;
+  o.target_points = 1500;
+  auto a = fitSpheres(idx, o);
+  Expected<FitResult> b = Error{ErrorCode::kInvalidArgument, ""};
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    b = fitSpheres(idx, o);
+  }
+  ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_EQ(a->spheres.size(), b->spheres.size());
+  for (size_t i = 0; i < a->spheres.size(); ++i) {
+    EXPECT_EQ(a->spheres[i].center, b->spheres[i].center);
+    EXPECT_EQ(a->spheres[i].radius, b->spheres[i].radius);
+  }
+}
+
+TEST(Fit, PaddingIsAddedToEveryRadius) {
+  const SolidIndex idx(link());
+  FitOptions o;
+  o.num_spheres = 4;
+  o.target_points = 1000;
+  auto a = fitSpheres(idx, o);
+  o.padding = 0.01;
+  auto b = fitSpheres(idx, o);
+  ASSERT_TRUE(a.ok() && b.ok());
+  for (size_t i = 0; i < a->spheres.size(); ++i)
+    EXPECT_NEAR(b->spheres[i].radius, a->spheres[i].radius + 0.01, 1e-15);
+}
+
+TEST(Fit, BadRequestsGiveErrors) {
+  const SolidIndex idx(link());
+  FitOptions o;
+  o.num_spheres = 0;
+  auto a = fitSpheres(idx, o);
+  ASSERT_FALSE(a.ok());
+  EXPECT_EQ(a.error().code, ErrorCode::kInvalidArgument);
+  o.num_spheres = 5000;
+  o.target_points = 1000;
+  auto b = fitSpheres(idx, o);
+  ASSERT_FALSE(b.ok());
+  EXPECT_NE(b.error().message.find("5000 spheres"), std::string::npos) << b.error().message;
+  o.num_spheres = 4;
+  o.padding = -1.0;
+  EXPECT_FALSE(fitSpheres(idx, o).ok());
+}
+
+}  // namespace
+}  // namespace sphereset
