@@ -15,7 +15,6 @@
 namespace sphereset::detail {
 namespace {
 
-constexpr int32_t kCandidates = 8;
 
 double lowerBoundSov(const Cluster& c, double radius) {
   // Largest tabulated radius not above `radius`.
@@ -107,23 +106,16 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
       place(p, inside, dist[inside], cl[inside].sov);
       continue;
     }
-    // Candidates: the kCandidates clusters whose spheres are nearest to the point (by the
-    // radius increase needed). Deviation from the paper, which considers every cluster: a far
-    // sphere's increase is never the least in practice, and without this its lower bound is
-    // often still zero early in a round, which would cost a query per cluster.
+    // Every cluster is a candidate; they are examined in increasing order of their lower
+    // bound, and the examination stops once the bound exceeds the best exact increase.
+    for (int32_t ci = 0; ci < nc; ++ci)
+      bound[ci] = std::max(0.0, lowerBoundSov(cl[ci], dist[ci]) - cl[ci].sov);
     std::iota(order.begin(), order.end(), 0);
-    const int32_t ncand = std::min(nc, kCandidates);
-    std::partial_sort(order.begin(), order.begin() + ncand, order.end(), [&](int32_t a, int32_t b) {
-      const double ga = dist[a] - cl[a].radius, gb = dist[b] - cl[b].radius;
-      return ga < gb || (ga == gb && a < b);
-    });
-    for (int32_t k = 0; k < ncand; ++k)
-      bound[order[k]] =
-          std::max(0.0, lowerBoundSov(cl[order[k]], dist[order[k]]) - cl[order[k]].sov);
-    std::sort(order.begin(), order.begin() + ncand, [&](int32_t a, int32_t b) {
+    std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
       return bound[a] < bound[b] || (bound[a] == bound[b] && dist[a] < dist[b]) ||
              (bound[a] == bound[b] && dist[a] == dist[b] && a < b);
     });
+    const int32_t ncand = nc;
     int32_t best = -1;
     double best_inc = std::numeric_limits<double>::infinity(), best_sov = 0.0;
     for (int32_t k = 0; k < ncand; ++k) {

@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <random>
 
 #include "bound.hpp"
@@ -59,6 +60,48 @@ std::vector<Vec3> initialCentres(const detail::PointSet& ps, int n, FitInit init
   return out;
 }
 
+// Fraction of each sphere's volume shared with at least one other sphere (paper Sec. 5,
+// "overlap ratio"), estimated from seeded uniform samples in each sphere.
+std::vector<double> overlapRatios(const std::vector<Sphere>& s, uint64_t seed) {
+  constexpr int kSamples = 256;
+  std::vector<double> out(s.size(), 0.0);
+  tbb::parallel_for(size_t{0}, s.size(), [&](size_t i) {
+    std::mt19937_64 rng(detail::mixSeed(seed, 900000 + i));
+    int shared = 0;
+    for (int k = 0; k < kSamples; ++k) {
+      Vec3 u;
+      do {
+        u = Vec3(2 * detail::uniform01(rng) - 1, 2 * detail::uniform01(rng) - 1,
+                 2 * detail::uniform01(rng) - 1);
+      } while (u.squaredNorm() > 1.0);
+      const Vec3 p = s[i].center + s[i].radius * u;
+      for (size_t j = 0; j < s.size(); ++j)
+        if (j != i && s[j].contains(p)) {
+          ++shared;
+          break;
+        }
+    }
+    out[i] = static_cast<double>(shared) / kSamples;
+  });
+  return out;
+}
+
+Vec3 farthestFrom(const std::vector<Vec3>& pts, const Vec3& q) {
+  Vec3 best = q;
+  double bd = -1.0;
+  for (const Vec3& p : pts)
+    if ((p - q).squaredNorm() > bd) {
+      bd = (p - q).squaredNorm();
+      best = p;
+    }
+  return best;
+}
+
+// Rounds without enough improvement before a teleport is tried, and rounds a teleport gets
+// before it is judged (the paper judges after one; the split spheres often need more).
+constexpr int kStallRounds = 2;
+constexpr int kTeleportRounds = 3;
+
 }  // namespace
 
 Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
@@ -99,9 +142,14 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
 
   std::vector<int32_t> labels;
   std::vector<Sphere> best_spheres;
+  std::vector<std::vector<Vec3>> best_members;
   double best_energy = std::numeric_limits<double>::infinity();
-  double prev = std::numeric_limits<double>::infinity();
-  for (int it = 0; it <= o.max_iterations; ++it) {
+  int stall = 0;            // rounds without enough improvement over the best
+  int failed_teleports = 0;
+  int teleport_rounds_left = 0;  // rounds a teleport gets to settle before it is judged
+  double energy_before_teleport = 0.0;
+  std::vector<std::pair<int, int>> tried;  // (source, destination) since the last success
+  for (int it = 0; it < std::max(1, o.max_iterations); ++it) {
     const auto ta = Clock::now();
     detail::AssignStats as;
     detail::assignPoints(index, ps, &clusters, &labels, &as);
@@ -112,21 +160,8 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
     // Points per cluster.
     std::vector<std::vector<Vec3>> members(n);
     for (size_t p = 0; p < labels.size(); ++p) members[labels[p]].push_back(ps.points[p]);
-
-    // An empty cluster (its seed point was taken by another) restarts at the point farthest
-    // from its centre in the cluster of largest outside volume.
-    for (int i = 0; i < n; ++i) {
-      if (!members[i].empty()) continue;
-      int worst = 0;
-      for (int j = 1; j < n; ++j)
-        if (clusters[j].sov > clusters[worst].sov) worst = j;
-      const auto far = std::max_element(members[worst].begin(), members[worst].end(),
-                                        [&](const Vec3& a, const Vec3& b) {
-                                          return (a - clusters[worst].center).squaredNorm() <
-                                                 (b - clusters[worst].center).squaredNorm();
-                                        });
-      clusters[i].center = *far;
-    }
+    bool complete = true;
+    for (int i = 0; i < n; ++i) complete = complete && !members[i].empty();
 
     // Sphere update, each cluster independently (in parallel; deterministic per cluster).
     const auto tu = Clock::now();
@@ -148,21 +183,88 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
       energy += upd[i].sov;
       res.optimizer_queries += upd[i].queries;
     }
-    bool complete = true;
-    for (int i = 0; i < n; ++i) complete = complete && !members[i].empty();
     res.energy_history.push_back(energy);
     res.iterations = it + 1;
     report("clustering", it + 1, energy);
+    const bool improved = complete && energy < best_energy * (1.0 - o.tolerance);
     if (complete && energy < best_energy) {
       best_energy = energy;
       best_spheres = spheres;
+      best_members = members;
     }
-    if (complete && prev < std::numeric_limits<double>::infinity() &&
-        prev - energy < o.tolerance * prev) {
-      res.converged = true;
-      break;
+    stall = improved ? 0 : stall + 1;
+    if (teleport_rounds_left > 0 && --teleport_rounds_left == 0) {
+      ++res.teleports;
+      if (best_energy < energy_before_teleport * (1.0 - o.tolerance)) {
+        ++res.teleports_accepted;
+        failed_teleports = 0;
+        tried.clear();
+      } else {
+        ++failed_teleports;
+      }
+      stall = kStallRounds;  // judge the next move from the best state right away
     }
-    if (complete) prev = energy;
+    if (teleport_rounds_left > 0) continue;
+    // An empty cluster (its seed point was taken by another) restarts at the point farthest
+    // from its centre in the cluster of largest outside volume.
+    if (!complete) {
+      for (int i = 0; i < n; ++i) {
+        if (!members[i].empty()) continue;
+        int worst = -1;
+        for (int j = 0; j < n; ++j)
+          if (members[j].size() > 1 && (worst < 0 || upd[j].sov > upd[worst].sov)) worst = j;
+        if (worst < 0) break;
+        clusters[i].center = farthestFrom(members[worst], clusters[worst].center);
+        members[worst].clear();  // one restart per donor and round
+      }
+      continue;
+    }
+    // Teleportation when the error stops improving (paper Sec. 5): from the best state,
+    // remove the most redundant sphere and split the worst one along its two farthest points.
+    if (stall >= kStallRounds) {
+      if (failed_teleports >= o.max_failed_teleports || n < 2) {
+        res.converged = true;
+        break;
+      }
+      // The most redundant source and the worst destination not tried together yet.
+      const std::vector<double> overlap = overlapRatios(best_spheres, o.seed);
+      std::vector<double> sov(n);
+      for (int i = 0; i < n; ++i) sov[i] = index.outsideVolume(best_spheres[i]).volume;
+      std::vector<int> by_overlap(n), by_sov(n);
+      std::iota(by_overlap.begin(), by_overlap.end(), 0);
+      std::iota(by_sov.begin(), by_sov.end(), 0);
+      std::stable_sort(by_overlap.begin(), by_overlap.end(),
+                       [&](int a, int b) { return overlap[a] > overlap[b]; });
+      std::stable_sort(by_sov.begin(), by_sov.end(), [&](int a, int b) { return sov[a] > sov[b]; });
+      int src = -1, dst = -1;
+      for (int rank = 0; rank < 2 * n && src < 0; ++rank)
+        for (int a = 0; a <= rank && src < 0; ++a) {
+          const int b = rank - a;
+          if (a >= n || b >= n) continue;
+          const int s_i = by_overlap[a], d_i = by_sov[b];
+          if (s_i == d_i || best_members[d_i].size() < 2) continue;
+          if (std::find(tried.begin(), tried.end(), std::make_pair(s_i, d_i)) != tried.end())
+            continue;
+          src = s_i;
+          dst = d_i;
+        }
+      if (dst < 0) {
+        res.converged = true;
+        break;
+      }
+      tried.emplace_back(src, dst);
+      for (int i = 0; i < n; ++i) clusters[i].center = best_spheres[i].center;
+      Vec3 centroid = Vec3::Zero();
+      for (const Vec3& p : best_members[dst]) centroid += p;
+      centroid /= static_cast<double>(best_members[dst].size());
+      const Vec3 far1 = farthestFrom(best_members[dst], centroid);
+      const Vec3 far2 = farthestFrom(best_members[dst], far1);
+      clusters[dst].center = far1;
+      clusters[src].center = far2;
+      teleport_rounds_left = kTeleportRounds;
+      energy_before_teleport = best_energy;
+      stall = 0;
+    }
   }
   if (best_spheres.empty())
     return Error{ErrorCode::kInvalidArgument,

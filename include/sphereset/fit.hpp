@@ -37,7 +37,8 @@ struct FitOptions {
   int64_t target_points = 0;
   double interior_share = 0.5;  // fraction of the points on the interior grid
   int max_iterations = 30;      // assignment/update rounds
-  double tolerance = 1e-3;      // stop when the energy improves by less than this fraction
+  double tolerance = 1e-3;      // a round "improves" when it lowers the best energy by this fraction
+  int max_failed_teleports = 3;  // stop after this many teleports in a row that did not help
   FitInit init = FitInit::kFarthestPoint;
   SphereOptimizer optimizer = SphereOptimizer::kPowell;
   int optimizer_evaluations = 60;  // per sphere and round
@@ -56,7 +57,8 @@ struct FitResult {
   double energy_before_bounding = 0.0;
   double energy = 0.0;  // final Σ outside volume
   int iterations = 0;
-  bool converged = false;
+  int teleports = 0, teleports_accepted = 0;
+  bool converged = false;  // stopped because neither rounds nor teleports improved
   int64_t points = 0, interior_points = 0;
   int64_t sov_queries = 0;         // outside-volume evaluations in point assignment
   int64_t sov_queries_culled = 0;  // assignment candidates settled by a lower bound instead
