@@ -26,6 +26,7 @@ constexpr double kSlackRel = 1e-12;
 struct Request {
   int32_t sphere;
   double radius;
+  std::array<Vec3, 3> piece;
 };
 
 bool oneSphereHolds(const std::vector<Sphere>& s, const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -36,7 +37,8 @@ bool oneSphereHolds(const std::vector<Sphere>& s, const Vec3& a, const Vec3& b, 
 
 }  // namespace
 
-BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, double min_edge) {
+BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, double min_edge,
+                        std::vector<std::vector<Vec3>>* held) {
   BoundStats st;
   std::vector<Sphere>& sp = *spheres;
   const Mesh& mesh = index.mesh();
@@ -82,7 +84,7 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
           std::sort(cand.begin(), cand.end());
         }
       }
-      Request best{-1, 0.0};
+      Request best{-1, 0.0, {pc.a, pc.b, pc.c}};
       double best_inc = std::numeric_limits<double>::infinity();
       for (const auto& [grow, i] : cand) {
         if (i < 0) continue;
@@ -91,12 +93,14 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
         ++queries[t];
         if (inc < best_inc) {
           best_inc = inc;
-          best = {i, radius};
+          best.sphere = i;
+          best.radius = radius;
         }
       }
       if (best.sphere >= 0) req[t].push_back(best);
     }
   });
+  if (held) held->assign(sp.size(), {});
   std::vector<double> radius(sp.size());
   for (size_t i = 0; i < sp.size(); ++i) radius[i] = sp[i].radius;
   for (int64_t t = 0; t < nt; ++t) {
@@ -104,6 +108,7 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
     for (const Request& r : req[t]) {
       ++st.pieces;
       radius[r.sphere] = std::max(radius[r.sphere], r.radius);
+      if (held) (*held)[r.sphere].insert((*held)[r.sphere].end(), r.piece.begin(), r.piece.end());
     }
   }
   for (size_t i = 0; i < sp.size(); ++i)

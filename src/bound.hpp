@@ -18,6 +18,8 @@ struct BoundStats {
 // split in four until each piece has its three vertices in one sphere (then the piece is
 // inside it, by convexity) or is shorter than `min_edge`; such a small piece is given to the
 // sphere whose outside volume grows least when enlarged to hold its vertices.
-BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, double min_edge);
+// If `held` is given, (*held)[i] receives the vertices of the pieces sphere i was enlarged for.
+BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, double min_edge,
+                        std::vector<std::vector<Vec3>>* held = nullptr);
 
 }  // namespace sphereset::detail

@@ -101,6 +101,8 @@ Vec3 farthestFrom(const std::vector<Vec3>& pts, const Vec3& q) {
 // before it is judged (the paper judges after one; the split spheres often need more).
 constexpr int kStallRounds = 2;
 constexpr int kTeleportRounds = 3;
+// Refits of the spheres the bounding step enlarged, before the final bounding pass.
+constexpr int kRefitPasses = 2;
 
 }  // namespace
 
@@ -278,8 +280,23 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
   const double surface_spacing =
       std::sqrt(surfaceArea(index.mesh()) /
                 std::max<double>(1.0, static_cast<double>(res.points - res.interior_points)));
-  const detail::BoundStats bs =
-      detail::boundSurface(index, &best_spheres, 0.5 * std::min(surface_spacing, ps.spacing));
+  const double min_edge = 0.5 * std::min(surface_spacing, ps.spacing);
+  // The bounding step grows spheres where the surface between samples pokes out. Spheres
+  // that grew are refitted once with the pieces they had to take added to their points, so
+  // that their centres can move instead of only their radii growing; a last pass then
+  // guarantees the bound.
+  std::vector<std::vector<Vec3>> held;
+  detail::BoundStats bs = detail::boundSurface(index, &best_spheres, min_edge, &held);
+  for (int pass = 0; pass < kRefitPasses && bs.enlarged > 0; ++pass) {
+    tbb::parallel_for(0, n, [&](int i) {
+      if (held[i].empty()) return;
+      best_members[i].insert(best_members[i].end(), held[i].begin(), held[i].end());
+      const detail::SphereUpdate u = detail::updateSphere(
+          index, best_members[i], best_spheres[i].center, o.optimizer, o.optimizer_evaluations);
+      best_spheres[i] = u.sphere;
+    });
+    bs = detail::boundSurface(index, &best_spheres, min_edge, &held);
+  }
   res.bounding_enlarged = bs.enlarged;
   for (Sphere& s : best_spheres) s.radius += o.padding;
   res.spheres = std::move(best_spheres);
