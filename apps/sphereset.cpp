@@ -298,23 +298,22 @@ int main(int argc, char** argv) {
       eo2.proximity_segments = 0;
       const EvalResult ev = evaluateSpheres(index, r->spheres, eo2);
       if (!quiet) {
-        std::fprintf(stderr,
-                     "%s: %zu spheres -> %s\n"
-                     "  E_r summed %.4f (%.4f before bounding), E_r union %.4f +- %.4f\n"
-                     "  surface covered %s, interior covered %s\n"
-                     "  %lld points (%lld interior), %d rounds%s, %d teleports (%d kept), %lld SOV "
-                     "queries in assignment (%lld culled)\n"
-                     "  time %.2f s (sampling %.2f, assignment %.2f, update %.2f, bounding %.2f)\n",
-                     fit_args.path.c_str(), r->spheres.size(), out_path.c_str(),
-                     r->energy / ev.mesh_volume, r->energy_before_bounding / ev.mesh_volume,
-                     ev.er_union, ev.er_union_stderr, ev.surface_covered ? "yes" : "NO",
-                     ev.interior_covered ? "yes" : "NO", static_cast<long long>(r->points),
-                     static_cast<long long>(r->interior_points), r->iterations,
-                     r->converged ? " (converged)" : "", r->teleports, r->teleports_accepted,
-                     static_cast<long long>(r->sov_queries),
-                     static_cast<long long>(r->sov_queries_culled), r->seconds.total,
-                     r->seconds.sampling, r->seconds.assignment, r->seconds.update,
-                     r->seconds.bounding);
+        std::fprintf(
+            stderr,
+            "%s: %zu spheres -> %s\n"
+            "  E_r summed %.4f (%.4f before bounding), E_r union %.4f +- %.4f\n"
+            "  surface covered %s, interior covered %s\n"
+            "  %lld points (%lld interior), %d rounds%s, %d teleports (%d kept), %lld SOV "
+            "queries in assignment (%lld culled)\n"
+            "  time %.2f s (sampling %.2f, assignment %.2f, update %.2f, bounding %.2f)\n",
+            fit_args.path.c_str(), r->spheres.size(), out_path.c_str(), r->energy / ev.mesh_volume,
+            r->energy_before_bounding / ev.mesh_volume, ev.er_union, ev.er_union_stderr,
+            ev.surface_covered ? "yes" : "NO", ev.interior_covered ? "yes" : "NO",
+            static_cast<long long>(r->points), static_cast<long long>(r->interior_points),
+            r->iterations, r->converged ? " (converged)" : "", r->teleports, r->teleports_accepted,
+            static_cast<long long>(r->sov_queries), static_cast<long long>(r->sov_queries_culled),
+            r->seconds.total, r->seconds.sampling, r->seconds.assignment, r->seconds.update,
+            r->seconds.bounding);
       }
       return kOk;
     }

@@ -15,7 +15,6 @@
 namespace sphereset::detail {
 namespace {
 
-
 double lowerBoundSov(const Cluster& c, double radius) {
   // Largest tabulated radius not above `radius`.
   auto it =

@@ -146,7 +146,7 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
   std::vector<Sphere> best_spheres;
   std::vector<std::vector<Vec3>> best_members;
   double best_energy = std::numeric_limits<double>::infinity();
-  int stall = 0;            // rounds without enough improvement over the best
+  int stall = 0;  // rounds without enough improvement over the best
   int failed_teleports = 0;
   int teleport_rounds_left = 0;  // rounds a teleport gets to settle before it is judged
   double energy_before_teleport = 0.0;

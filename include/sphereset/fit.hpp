@@ -37,7 +37,7 @@ struct FitOptions {
   int64_t target_points = 0;
   double interior_share = 0.5;  // fraction of the points on the interior grid
   int max_iterations = 30;      // assignment/update rounds
-  double tolerance = 1e-3;      // a round "improves" when it lowers the best energy by this fraction
+  double tolerance = 1e-3;  // a round "improves" when it lowers the best energy by this fraction
   int max_failed_teleports = 3;  // stop after this many teleports in a row that did not help
   FitInit init = FitInit::kFarthestPoint;
   SphereOptimizer optimizer = SphereOptimizer::kPowell;
