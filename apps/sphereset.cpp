@@ -241,6 +241,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"fps", "random"}));
   fit->add_option("--name", link_name, "Link name for .yaml output (default: the mesh's stem)");
   fit->add_flag("-q,--quiet", quiet, "No progress on stderr");
+  fit->add_flag("--json", json, "Print the summary as one JSON object on stdout");
 
   try {
     app.parse(argc, argv);
@@ -297,6 +298,35 @@ int main(int argc, char** argv) {
       eo2.union_samples = 100000;
       eo2.proximity_segments = 0;
       const EvalResult ev = evaluateSpheres(index, r->spheres, eo2);
+      if (json) {
+        nlohmann::json j = {{"mesh", fit_args.path},
+                            {"output", out_path},
+                            {"spheres", r->spheres.size()},
+                            {"er_sum", r->energy / ev.mesh_volume},
+                            {"er_sum_before_bounding", r->energy_before_bounding / ev.mesh_volume},
+                            {"er_union", ev.er_union},
+                            {"er_union_stderr", ev.er_union_stderr},
+                            {"surface_covered", ev.surface_covered},
+                            {"interior_covered", ev.interior_covered},
+                            {"points", r->points},
+                            {"interior_points", r->interior_points},
+                            {"rounds", r->iterations},
+                            {"converged", r->converged},
+                            {"teleports", r->teleports},
+                            {"teleports_kept", r->teleports_accepted},
+                            {"sov_queries", r->sov_queries},
+                            {"sov_queries_culled", r->sov_queries_culled},
+                            {"optimizer_queries", r->optimizer_queries},
+                            {"bounding_enlarged", r->bounding_enlarged},
+                            {"seconds",
+                             {{"total", r->seconds.total},
+                              {"sampling", r->seconds.sampling},
+                              {"assignment", r->seconds.assignment},
+                              {"update", r->seconds.update},
+                              {"bounding", r->seconds.bounding}}},
+                            {"seed", fo.seed}};
+        std::cout << j.dump() << '\n';
+      }
       if (!quiet) {
         std::fprintf(
             stderr,

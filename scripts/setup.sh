@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config time
   libassimp-dev        # mesh import (OBJ, PLY, STL, OFF, DAE, glTF/GLB)
   libeigen3-dev        # small dense linear algebra
   libtbb-dev           # parallel loops

@@ -48,3 +48,5 @@ cli_test(fit_zero_spheres 2 ARGS fit ${link} -n 0 -o ${work}/never2.txt -q FORBI
 cli_test(fit_too_many 2 ARGS fit ${link} -n 50000 -o ${work}/never3.txt -q --points 1000
          STDERR "50000 spheres" FORBID ${work}/never3.txt)
 cli_test(fit_yaml 0 ARGS fit ${link} -n 3 -o ${work}/link3.yaml --name link1 --quality fast -q)
+cli_test(fit_json 0 ARGS fit ${link} -n 4 -o ${work}/link4.sph --quality fast -q --json
+         STDOUT "\"er_sum\":.*\"surface_covered\":true")
