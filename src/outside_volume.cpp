@@ -168,17 +168,19 @@ bool solidAngleOfInside(const detail::Bvh& bvh, const std::vector<std::array<Vec
           if (degenerate || (t.a - o).squaredNorm() > r2 || (t.b - o).squaredNorm() > r2 ||
               (t.c - o).squaredNorm() > r2)
             return;
-          const detail::LineTriangle lt = detail::lineTriangle(o, back, t);
-          const bool pos = lt.u > lt.tol_u && lt.v > lt.tol_v && lt.w > lt.tol_w;
-          const bool neg = lt.u < -lt.tol_u && lt.v < -lt.tol_v && lt.w < -lt.tol_w;
-          const double sum = lt.u + lt.v + lt.w;
-          if (!pos && !neg) {
-            const bool maybe_pos = lt.u >= -lt.tol_u && lt.v >= -lt.tol_v && lt.w >= -lt.tol_w;
-            const bool maybe_neg = lt.u <= lt.tol_u && lt.v <= lt.tol_v && lt.w <= lt.tol_w;
-            if ((maybe_pos || maybe_neg) && (sum == 0.0 || lt.det / sum > 0.0)) degenerate = true;
-            return;
+          switch (detail::rayCrossing(o, back, t)) {
+            case detail::RayCrossing::kLeave:
+              ++winding;
+              break;
+            case detail::RayCrossing::kEnter:
+              --winding;
+              break;
+            case detail::RayCrossing::kGraze:
+              degenerate = true;
+              break;
+            case detail::RayCrossing::kNone:
+              break;
           }
-          if (lt.det / sum > 0.0) winding += pos ? 1 : -1;
         });
     if (degenerate) continue;
     *omega = 2.0 * half.value() + 4.0 * std::numbers::pi * winding;

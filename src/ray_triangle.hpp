@@ -72,4 +72,24 @@ inline LineTriangle lineTriangle(const Vec3& p, const Vec3& d, const TriRecord& 
   return lt;
 }
 
+// What the ray p + t d, t > 0, does at a triangle: nothing, leave the solid (+1: d along the
+// outward normal), enter it (-1), or graze an edge or vertex (the count would be unreliable;
+// callers try another direction).
+enum class RayCrossing { kNone, kLeave, kEnter, kGraze };
+inline RayCrossing rayCrossing(const Vec3& p, const Vec3& d, const TriRecord& tri) {
+  const LineTriangle lt = lineTriangle(p, d, tri);
+  const bool pos = lt.u > lt.tol_u && lt.v > lt.tol_v && lt.w > lt.tol_w;
+  const bool neg = lt.u < -lt.tol_u && lt.v < -lt.tol_v && lt.w < -lt.tol_w;
+  const double sum = lt.u + lt.v + lt.w;
+  if (!pos && !neg) {
+    // The line misses, or grazes an edge or vertex; only a graze ahead of p matters.
+    const bool maybe_pos = lt.u >= -lt.tol_u && lt.v >= -lt.tol_v && lt.w >= -lt.tol_w;
+    const bool maybe_neg = lt.u <= lt.tol_u && lt.v <= lt.tol_v && lt.w <= lt.tol_w;
+    if ((maybe_pos || maybe_neg) && (sum == 0.0 || lt.det / sum > 0.0)) return RayCrossing::kGraze;
+    return RayCrossing::kNone;
+  }
+  if (!(lt.det / sum > 0.0)) return RayCrossing::kNone;  // behind p
+  return pos ? RayCrossing::kLeave : RayCrossing::kEnter;
+}
+
 }  // namespace sphereset::detail

@@ -137,24 +137,19 @@ Containment SolidIndex::classify(const Vec3& p) const {
         },
         [&](int32_t i) {
           if (degenerate) return;
-          const LineTriangle lt = lineTriangle(p, d, im.bvh.tris[i]);
-          const bool pos = lt.u > lt.tol_u && lt.v > lt.tol_v && lt.w > lt.tol_w;
-          const bool neg = lt.u < -lt.tol_u && lt.v < -lt.tol_v && lt.w < -lt.tol_w;
-          const bool maybe_pos = lt.u >= -lt.tol_u && lt.v >= -lt.tol_v && lt.w >= -lt.tol_w;
-          const bool maybe_neg = lt.u <= lt.tol_u && lt.v <= lt.tol_v && lt.w <= lt.tol_w;
-          if (!pos && !neg) {
-            // Line misses, or grazes an edge/vertex: only the latter matters, and only when
-            // the graze lies ahead of p.
-            if (maybe_pos || maybe_neg) {
-              const double sum = lt.u + lt.v + lt.w;
-              if (sum == 0.0 || lt.det / sum > 0.0) degenerate = true;
-            }
-            return;
+          switch (detail::rayCrossing(p, d, im.bvh.tris[i])) {
+            case detail::RayCrossing::kLeave:
+              ++winding;
+              break;
+            case detail::RayCrossing::kEnter:
+              --winding;
+              break;
+            case detail::RayCrossing::kGraze:
+              degenerate = true;
+              break;
+            case detail::RayCrossing::kNone:
+              break;
           }
-          const double sum = lt.u + lt.v + lt.w;
-          const double t = lt.det / sum;
-          if (t <= 0.0) return;
-          winding += pos ? 1 : -1;  // sign of d·N: +1 leaving the solid, -1 entering
         });
     if (!degenerate) return winding != 0 ? Containment::kInside : Containment::kOutside;
   }
