@@ -318,6 +318,8 @@ int main(int argc, char** argv) {
                             {"sov_queries_culled", r->sov_queries_culled},
                             {"optimizer_queries", r->optimizer_queries},
                             {"bounding_enlarged", r->bounding_enlarged},
+                            {"bounding_pieces", r->bounding_pieces},
+                            {"bounding_queries", r->bounding_queries},
                             {"seconds",
                              {{"total", r->seconds.total},
                               {"sampling", r->seconds.sampling},

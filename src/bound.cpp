@@ -44,12 +44,14 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
   const Mesh& mesh = index.mesh();
   const double slack = kSlackRel * index.bounds().diagonal();
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
-  std::vector<double> sov(sp.size());
+  // dSOV/dr of each sphere (its outside surface area): the growth of the outside volume for a
+  // small enlargement dr is dSOV/dr * dr to first order, which ranks the candidates without a
+  // query per piece (pieces are small, so the enlargements are).
+  std::vector<double> sov_dr(sp.size());
   tbb::parallel_for(size_t{0}, sp.size(),
-                    [&](size_t i) { sov[i] = index.outsideVolume(sp[i]).volume; });
+                    [&](size_t i) { sov_dr[i] = index.outsideVolume(sp[i]).d_radius; });
   st.queries += static_cast<int64_t>(sp.size());
   std::vector<std::vector<Request>> req(nt);
-  std::vector<int64_t> queries(nt, 0);
   tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
     const auto& tri = mesh.triangles[t];
     struct Piece {
@@ -86,15 +88,15 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
       }
       Request best{-1, 0.0, {pc.a, pc.b, pc.c}};
       double best_inc = std::numeric_limits<double>::infinity();
+      // Candidates come in increasing order of radius growth, so a strict comparison breaks
+      // ties (spheres with no surface outside the solid, dSOV/dr = 0) by the smaller growth.
       for (const auto& [grow, i] : cand) {
         if (i < 0) continue;
-        const double radius = sp[i].radius + grow + slack;
-        const double inc = index.outsideVolume({sp[i].center, radius}).volume - sov[i];
-        ++queries[t];
+        const double inc = sov_dr[i] * grow;
         if (inc < best_inc) {
           best_inc = inc;
           best.sphere = i;
-          best.radius = radius;
+          best.radius = sp[i].radius + grow + slack;
         }
       }
       if (best.sphere >= 0) req[t].push_back(best);
@@ -104,7 +106,6 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
   std::vector<double> radius(sp.size());
   for (size_t i = 0; i < sp.size(); ++i) radius[i] = sp[i].radius;
   for (int64_t t = 0; t < nt; ++t) {
-    st.queries += queries[t];
     for (const Request& r : req[t]) {
       ++st.pieces;
       radius[r.sphere] = std::max(radius[r.sphere], r.radius);

@@ -287,6 +287,8 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
   // guarantees the bound.
   std::vector<std::vector<Vec3>> held;
   detail::BoundStats bs = detail::boundSurface(index, &best_spheres, min_edge, &held);
+  res.bounding_pieces += bs.pieces;
+  res.bounding_queries += bs.queries;
   for (int pass = 0; pass < kRefitPasses && bs.enlarged > 0; ++pass) {
     tbb::parallel_for(0, n, [&](int i) {
       if (held[i].empty()) return;
@@ -296,6 +298,8 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
       best_spheres[i] = u.sphere;
     });
     bs = detail::boundSurface(index, &best_spheres, min_edge, &held);
+    res.bounding_pieces += bs.pieces;
+    res.bounding_queries += bs.queries;
   }
   res.bounding_enlarged = bs.enlarged;
   for (Sphere& s : best_spheres) s.radius += o.padding;

@@ -63,7 +63,9 @@ struct FitResult {
   int64_t sov_queries = 0;         // outside-volume evaluations in point assignment
   int64_t sov_queries_culled = 0;  // assignment candidates settled by a lower bound instead
   int64_t optimizer_queries = 0;   // outside-volume evaluations in sphere updates
-  int64_t bounding_enlarged = 0;   // spheres enlarged by the bounding step
+  int64_t bounding_enlarged = 0;   // spheres enlarged by the last bounding pass
+  int64_t bounding_pieces = 0;     // triangle pieces that made a sphere grow (all passes)
+  int64_t bounding_queries = 0;    // outside-volume evaluations of the bounding step
   FitTimings seconds;
 };
 
