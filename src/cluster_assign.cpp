@@ -1,13 +1,18 @@
 // Point assignment of the variational fit. Reference: Wang et al. 2006, Sec. 5 "Point
 // Assignment": each point goes to the cluster whose bounding sphere's outside volume grows
-// least when enlarged to include it (ties: nearest centre), in stack-based flood-fill order
-// from the cluster centres over adjacent points. Acceleration as in the paper: per cluster, a
+// least when enlarged to include it (ties: nearest centre), in flood-fill order from the
+// cluster centres over adjacent points. Deviation: the paper's flood fill is stack-based
+// (depth first); ours is first-in first-out (breadth first), which grows the clusters as even
+// wavefronts. Measured with `sphereset fit -n 32` (summed E_r, depth first -> breadth first):
+// spot 0.47 -> 0.37, armadillo (n = 64) 0.70 -> 0.64, fandisk 0.90 -> 0.95; it costs about
+// 60% more SOV queries. Acceleration as in the paper: per cluster, a
 // table of radius -> SOV computed so far gives a lower bound of the increase for any larger
 // radius, and clusters are examined in increasing order of that bound, so most are dismissed
 // without an SOV query.
 #include "cluster_assign.hpp"
 
 #include <algorithm>
+#include <deque>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -44,7 +49,7 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
     c.sov = 0.0;
     c.table.assign(1, {0.0, 0.0});
   }
-  std::vector<int32_t> stack;
+  std::deque<int32_t> queue;
   std::vector<double> dist(nc), bound(nc);
   std::vector<int32_t> order(nc);
 
@@ -55,7 +60,7 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
       cl[ci].sov = sov;
     }
     for (int32_t k = ps.adj_start[p]; k < ps.adj_start[p + 1]; ++k)
-      if ((*labels)[ps.adj[k]] < 0) stack.push_back(ps.adj[k]);
+      if ((*labels)[ps.adj[k]] < 0) queue.push_back(ps.adj[k]);
   };
   auto query = [&](int32_t ci, double radius) {
     const double v = index.outsideVolume({cl[ci].center, radius}).volume;
@@ -84,9 +89,9 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
   int64_t scan = 0;
   while (true) {
     int64_t p = -1;
-    while (!stack.empty() && p < 0) {
-      const int32_t q = stack.back();
-      stack.pop_back();
+    while (!queue.empty() && p < 0) {
+      const int32_t q = queue.front();
+      queue.pop_front();
       if ((*labels)[q] < 0) p = q;
     }
     if (p < 0) {  // a part not reached from any centre: continue from its first point

@@ -25,7 +25,8 @@ struct AssignStats {
 };
 
 // Assigns every point to the cluster whose sphere grows least in outside volume, in
-// flood-fill order from the points nearest the centres; ties go to the nearest centre.
+// breadth-first flood-fill order from the points nearest the centres; ties go to the nearest
+// centre.
 // Centres stay fixed; radii and outside volumes grow as points are added. labels[i] is the
 // cluster of point i.
 void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Cluster>* clusters,
