@@ -12,8 +12,8 @@
 #include "cluster_assign.hpp"
 
 #include <algorithm>
-#include <deque>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <numeric>
 

@@ -156,33 +156,15 @@ bool solidAngleOfInside(const detail::Bvh& bvh, const std::vector<std::array<Vec
     if (degenerate) continue;
     // Winding: signed crossings of the ray o - t d, 0 < t <= r, with triangles of Q. (The
     // fan's apex o + L d lies on the other side, so this ray meets only Q.)
-    const Vec3 back = -d;
-    const Vec3 inv_d = back.cwiseInverse();
     int winding = 0;
-    bvh.traverse(
-        [&](const Vec3& mn, const Vec3& mx) {
-          return !degenerate && detail::rayHitsBox(o, inv_d, r, mn, mx);
+    const bool clean = detail::rayWinding(
+        bvh, o, -d, r,
+        [&](const TriRecord& t) {
+          return (t.a - o).squaredNorm() <= r2 && (t.b - o).squaredNorm() <= r2 &&
+                 (t.c - o).squaredNorm() <= r2;
         },
-        [&](int32_t i) {
-          const TriRecord& t = bvh.tris[i];
-          if (degenerate || (t.a - o).squaredNorm() > r2 || (t.b - o).squaredNorm() > r2 ||
-              (t.c - o).squaredNorm() > r2)
-            return;
-          switch (detail::rayCrossing(o, back, t)) {
-            case detail::RayCrossing::kLeave:
-              ++winding;
-              break;
-            case detail::RayCrossing::kEnter:
-              --winding;
-              break;
-            case detail::RayCrossing::kGraze:
-              degenerate = true;
-              break;
-            case detail::RayCrossing::kNone:
-              break;
-          }
-        });
-    if (degenerate) continue;
+        &winding);
+    if (!clean) continue;
     *omega = 2.0 * half.value() + 4.0 * std::numbers::pi * winding;
     return true;
   }

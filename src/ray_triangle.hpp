@@ -92,4 +92,36 @@ inline RayCrossing rayCrossing(const Vec3& p, const Vec3& d, const TriRecord& tr
   return pos ? RayCrossing::kLeave : RayCrossing::kEnter;
 }
 
+// Signed crossings (+1 leaving, -1 entering) of the ray p + t d, 0 < t <= tmax, with the
+// triangles `use` accepts (use(tri) -> bool). False if the ray grazes an edge or vertex of one
+// of them, in which case *winding is meaningless and the caller tries another direction.
+template <class Use>
+bool rayWinding(const Bvh& bvh, const Vec3& p, const Vec3& d, double tmax, Use&& use,
+                int* winding) {
+  const Vec3 inv_d = d.cwiseInverse();
+  int count = 0;
+  bool graze = false;
+  bvh.traverse(
+      [&](const Vec3& mn, const Vec3& mx) { return !graze && rayHitsBox(p, inv_d, tmax, mn, mx); },
+      [&](int32_t i) {
+        const TriRecord& t = bvh.tris[i];
+        if (graze || !use(t)) return;
+        switch (rayCrossing(p, d, t)) {
+          case RayCrossing::kLeave:
+            ++count;
+            break;
+          case RayCrossing::kEnter:
+            --count;
+            break;
+          case RayCrossing::kGraze:
+            graze = true;
+            break;
+          case RayCrossing::kNone:
+            break;
+        }
+      });
+  *winding = count;
+  return !graze;
+}
+
 }  // namespace sphereset::detail

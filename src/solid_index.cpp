@@ -128,30 +128,10 @@ Containment SolidIndex::classify(const Vec3& p) const {
 
   const double reach = 2.0 * im.bounds.diagonal() + (p - im.bounds.center()).norm();
   for (const Vec3& d : rayDirections()) {
-    const Vec3 inv_d = d.cwiseInverse();
     int winding = 0;
-    bool degenerate = false;
-    im.bvh.traverse(
-        [&](const Vec3& mn, const Vec3& mx) {
-          return !degenerate && rayHitsBox(p, inv_d, reach, mn, mx);
-        },
-        [&](int32_t i) {
-          if (degenerate) return;
-          switch (detail::rayCrossing(p, d, im.bvh.tris[i])) {
-            case detail::RayCrossing::kLeave:
-              ++winding;
-              break;
-            case detail::RayCrossing::kEnter:
-              --winding;
-              break;
-            case detail::RayCrossing::kGraze:
-              degenerate = true;
-              break;
-            case detail::RayCrossing::kNone:
-              break;
-          }
-        });
-    if (!degenerate) return winding != 0 ? Containment::kInside : Containment::kOutside;
+    if (detail::rayWinding(
+            im.bvh, p, d, reach, [](const TriRecord&) { return true; }, &winding))
+      return winding != 0 ? Containment::kInside : Containment::kOutside;
   }
   // Every direction grazed an edge: fall back to the exact winding number (p is off the
   // surface here, so it is an integer up to rounding).
