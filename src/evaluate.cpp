@@ -26,6 +26,7 @@
 #include <numbers>
 
 #include "sampling.hpp"
+#include "sphereset/query.hpp"
 
 namespace sphereset {
 namespace {
@@ -106,36 +107,6 @@ void coverCell(const SolidIndex& index, const std::vector<Sphere>& spheres, cons
 }
 
 }  // namespace
-
-double outsideLengthSpheres(const std::vector<Sphere>& spheres, const Vec3& a, const Vec3& b) {
-  const Vec3 d = b - a;
-  const double dd = d.squaredNorm();
-  const double len = std::sqrt(dd);
-  if (!(dd > 0.0)) return 0.0;
-  std::vector<std::pair<double, double>> in;
-  for (const Sphere& s : spheres) {
-    const Vec3 m = a - s.center;
-    const double hb = m.dot(d), cc = m.squaredNorm() - s.radius * s.radius;
-    const double disc = hb * hb - dd * cc;
-    if (!(disc > 0.0)) continue;
-    const double sq = std::sqrt(disc);
-    const double t0 = std::max(0.0, (-hb - sq) / dd), t1 = std::min(1.0, (-hb + sq) / dd);
-    if (t1 > t0) in.emplace_back(t0, t1);
-  }
-  std::sort(in.begin(), in.end());
-  double covered = 0.0, cur0 = -1.0, cur1 = -1.0;
-  for (const auto& [t0, t1] : in) {
-    if (t0 > cur1) {
-      if (cur1 > cur0) covered += cur1 - cur0;
-      cur0 = t0;
-      cur1 = t1;
-    } else {
-      cur1 = std::max(cur1, t1);
-    }
-  }
-  if (cur1 > cur0) covered += cur1 - cur0;
-  return std::max(0.0, (1.0 - covered) * len);
-}
 
 EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& spheres,
                            const EvalOptions& options) {
@@ -253,7 +224,8 @@ EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& s
     tbb::parallel_for(0, segs, [&](int k) {
       std::mt19937_64 rng(mixSeed(options.seed, 5000000 + k));
       const Vec3 a = sampler.sample(rng), bb = sampler.sample(rng);
-      err[k] = std::abs(index.outsideLength(a, bb) - outsideLengthSpheres(spheres, a, bb));
+      err[k] =
+          std::abs(index.outsideLength(a, bb) - segmentOutsideLengthBruteForce(spheres, a, bb));
     });
     double s = 0.0;
     for (double e : err) s += e;

@@ -1,5 +1,5 @@
-// Sphere-set files: plain text, JSON, Bradshaw's .sph and cuRobo-style YAML. Writes are
-// atomic (temporary file in the same directory, then rename).
+// Sphere-set and sphere-tree files: plain text, JSON, Bradshaw's .sph and cuRobo-style YAML.
+// Writes are atomic (temporary file in the same directory, then rename).
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -11,10 +11,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "sphereset/sphere.hpp"
+#include "sphereset/tree.hpp"
 
 namespace sphereset {
 namespace {
@@ -37,19 +39,6 @@ std::string num(double x) {
   std::ostringstream os;
   os << std::setprecision(17) << x;
   return os.str();
-}
-
-Sphere enclosingSphere(const std::vector<Sphere>& spheres) {
-  // A simple (not minimal) bound of the set for the .sph root node.
-  Aabb box;
-  for (const Sphere& s : spheres) {
-    box.extend(Vec3(s.center.array() - s.radius));
-    box.extend(Vec3(s.center.array() + s.radius));
-  }
-  Sphere root{box.empty() ? Vec3::Zero() : box.center(), 0.0};
-  for (const Sphere& s : spheres)
-    root.radius = std::max(root.radius, (s.center - root.center).norm() + s.radius);
-  return root;
 }
 
 }  // namespace
@@ -89,7 +78,7 @@ std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& sphere
     case SphereFormat::kSph: {
       // Two levels (root + leaves), branching factor = number of spheres. Each node line is
       // "x y z r error"; the error column is not used and written as 0.
-      const Sphere root = enclosingSphere(spheres);
+      const Sphere root = minimalEnclosingBall(spheres);
       os << 2 << ' ' << std::max<size_t>(spheres.size(), 1) << '\n';
       os << num(root.center.x()) << ' ' << num(root.center.y()) << ' ' << num(root.center.z())
          << ' ' << num(root.radius) << " 0\n";
@@ -114,7 +103,10 @@ Status writeFileAtomically(const std::string& path, const std::string& contents)
   const fs::path target(path);
   fs::path dir = target.parent_path();
   if (dir.empty()) dir = ".";
-  std::string tmpl = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
+  std::string name = ".";
+  name += target.filename().string();
+  name += ".XXXXXX";
+  const std::string tmpl = (dir / name).string();
   std::vector<char> buf(tmpl.begin(), tmpl.end());
   buf.push_back('\0');
   const int fd = mkstemp(buf.data());
@@ -281,6 +273,166 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
     out.push_back(s);
   }
   return out;
+}
+
+std::string formatSphereTree(SphereFormat format, const SphereTree& tree,
+                             const SphereFileMeta& meta) {
+  std::ostringstream os;
+  if (format == SphereFormat::kSph) {
+    // Bradshaw's layout: "levels branching", then every slot of every level as
+    // "x y z r error"; unused slots have radius -1. The error column is written as 0.
+    os << tree.levels() << ' ' << tree.branching << '\n';
+    for (const Sphere& s : tree.nodes)
+      os << num(s.center.x()) << ' ' << num(s.center.y()) << ' ' << num(s.center.z()) << ' '
+         << num(s.radius < 0.0 ? -1.0 : s.radius) << " 0\n";
+    return os.str();
+  }
+  // JSON: the used nodes with their Bradshaw slot as id, level, parent and children.
+  nlohmann::json j;
+  j["generator"] = meta.generator;
+  if (!meta.source_mesh.empty()) j["source_mesh"] = meta.source_mesh;
+  j["branching"] = tree.branching;
+  j["depth"] = tree.depth;
+  nlohmann::json nodes = nlohmann::json::array();
+  for (int l = 0; l <= tree.depth; ++l) {
+    const int64_t b = tree.levelBegin(l), e = b + tree.levelSize(l);
+    for (int64_t n = b; n < e; ++n) {
+      if (!tree.used(n)) continue;
+      nlohmann::json node;
+      node["id"] = n;
+      node["level"] = l;
+      node["center"] = {tree.nodes[n].center.x(), tree.nodes[n].center.y(),
+                        tree.nodes[n].center.z()};
+      node["radius"] = tree.nodes[n].radius;
+      node["parent"] = n == 0 ? nlohmann::json(nullptr) : nlohmann::json((n - 1) / tree.branching);
+      nlohmann::json ch = nlohmann::json::array();
+      if (l < tree.depth)
+        for (int i = 0; i < tree.branching; ++i)
+          if (tree.used(tree.child(n, i))) ch.push_back(tree.child(n, i));
+      node["children"] = ch;
+      nodes.push_back(node);
+    }
+  }
+  j["nodes"] = nodes;
+  os << j.dump(1) << '\n';
+  return os.str();
+}
+
+Status writeSphereTree(const std::string& path, const SphereTree& tree,
+                       const SphereFileMeta& meta) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  if (*format != SphereFormat::kSph && *format != SphereFormat::kJson)
+    return Error{ErrorCode::kInvalidArgument, path + ": a sphere tree is written as .sph or .json"};
+  Status st = checkSphereTree(tree, std::numeric_limits<double>::infinity());
+  if (!st) return st;
+  for (size_t i = 0; i < tree.nodes.size(); ++i)
+    if (tree.used(static_cast<int64_t>(i))) {
+      st = checkSphere(path + ": node " + std::to_string(i), tree.nodes[i]);
+      if (!st) return st;
+    }
+  return writeFileAtomically(path, formatSphereTree(*format, tree, meta));
+}
+
+namespace {
+
+// A flat set as a two-level tree: its minimal enclosing ball over the spheres.
+SphereTree flatTree(const std::vector<Sphere>& spheres) {
+  SphereTree t;
+  t.depth = 1;
+  t.branching = std::max<int>(2, static_cast<int>(spheres.size()));
+  t.nodes.assign(1 + t.branching, Sphere{Vec3::Zero(), -1.0});
+  t.nodes[0] = minimalEnclosingBall(spheres);
+  for (size_t i = 0; i < spheres.size(); ++i) t.nodes[1 + i] = spheres[i];
+  return t;
+}
+
+}  // namespace
+
+Expected<SphereTree> readSphereTree(const std::string& path) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  std::ifstream in(path);
+  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+  SphereTree t;
+  if (*format == SphereFormat::kSph) {
+    std::string line;
+    int levels = 0, branch = 0;
+    if (!std::getline(in, line) || !(std::istringstream(line) >> levels >> branch) || levels < 1 ||
+        branch < 1)
+      return Error{ErrorCode::kInvalidData, path + ":1: expected \"levels branching\""};
+    t.branching = branch;
+    t.depth = levels - 1;
+    int64_t slots = 0, size = 1;
+    for (int l = 0; l < levels; ++l) {
+      slots += size;
+      if (slots > (int64_t{1} << 26))
+        return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
+      size *= branch;
+    }
+    t.nodes.reserve(slots);
+    int lineno = 1;
+    while (static_cast<int64_t>(t.nodes.size()) < slots) {
+      if (!std::getline(in, line))
+        return Error{ErrorCode::kInvalidData, path + ": truncated after " +
+                                                  std::to_string(t.nodes.size()) + " of " +
+                                                  std::to_string(slots) + " nodes"};
+      ++lineno;
+      Sphere s;
+      if (!(std::istringstream(line) >> s.center.x() >> s.center.y() >> s.center.z() >> s.radius))
+        return Error{ErrorCode::kInvalidData,
+                     path + ":" + std::to_string(lineno) + ": expected x y z r"};
+      if (!s.center.allFinite() || !std::isfinite(s.radius))
+        return Error{ErrorCode::kInvalidData,
+                     path + ":" + std::to_string(lineno) + ": NaN or infinite value"};
+      if (s.radius <= 0.0) s = {Vec3::Zero(), -1.0};  // unused slot
+      t.nodes.push_back(s);
+    }
+    return t;
+  }
+  if (*format == SphereFormat::kJson) {
+    nlohmann::json j;
+    try {
+      in >> j;
+    } catch (const std::exception& e) {
+      return Error{ErrorCode::kUnreadable, path + ": invalid JSON (" + e.what() + ")"};
+    }
+    if (j.is_object() && j.contains("nodes") && j.contains("branching") && j.contains("depth")) {
+      try {
+        t.branching = j["branching"].get<int>();
+        t.depth = j["depth"].get<int>();
+        if (t.branching < 1 || t.depth < 0 || t.depth > 26)
+          return Error{ErrorCode::kInvalidData, path + ": bad branching or depth"};
+        int64_t slots = 0, size = 1;
+        for (int l = 0; l <= t.depth; ++l) {
+          slots += size;
+          if (slots > (int64_t{1} << 26))
+            return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
+          size *= t.branching;
+        }
+        t.nodes.assign(slots, Sphere{Vec3::Zero(), -1.0});
+        for (const auto& n : j["nodes"]) {
+          const int64_t id = n.at("id").get<int64_t>();
+          if (id < 0 || id >= slots)
+            return Error{ErrorCode::kInvalidData,
+                         path + ": node id " + std::to_string(id) + " outside the layout"};
+          Sphere s;
+          for (int k = 0; k < 3; ++k) s.center[k] = n.at("center").at(k).get<double>();
+          s.radius = n.at("radius").get<double>();
+          Status st = checkSphere(path + ": node " + std::to_string(id), s);
+          if (!st) return st.error();
+          t.nodes[id] = s;
+        }
+      } catch (const nlohmann::json::exception& e) {
+        return Error{ErrorCode::kInvalidData, path + ": malformed sphere tree (" + e.what() + ")"};
+      }
+      return t;
+    }
+  }
+  auto flat = readSpheres(path);
+  if (!flat) return flat.error();
+  if (flat->empty()) return Error{ErrorCode::kInvalidData, path + ": no spheres"};
+  return flatTree(*flat);
 }
 
 }  // namespace sphereset

@@ -15,39 +15,26 @@
 
 namespace sphereset::detail {
 
-SphereUpdate updateSphere(const SolidIndex& index, const std::vector<Vec3>& points,
-                          const Vec3& start, SphereOptimizer optimizer, int max_evaluations) {
+SphereUpdate minimiseOutsideVolume(const SolidIndex& index, const EnclosingRadius& radius_of,
+                                   const Vec3& start, const Aabb& box, SphereOptimizer optimizer,
+                                   int max_evaluations) {
   SphereUpdate best;
-  auto enclosing = [&](const Vec3& c, Vec3* far) {
-    double r2 = 0.0;
-    for (const Vec3& p : points) {
-      const double d2 = (p - c).squaredNorm();
-      if (d2 > r2) {
-        r2 = d2;
-        if (far) *far = p;
-      }
-    }
-    return std::sqrt(r2);
-  };
-  best.sphere = {start, enclosing(start, nullptr)};
+  best.sphere = {start, radius_of(start, nullptr)};
   best.sov = index.outsideVolume(best.sphere).volume;
   best.queries = 1;
-  if (points.size() < 2 || max_evaluations < 2) return best;
+  if (max_evaluations < 2) return best;
 
-  Aabb box;
-  for (const Vec3& p : points) box.extend(p);
   const double scale = std::max(best.sphere.radius, 1e-12 * (box.diagonal() + 1.0));
-  using Enclosing = decltype(enclosing);
   struct Ctx {
     const SolidIndex* index;
-    Enclosing* radius_of;
+    const EnclosingRadius* radius_of;
     SphereUpdate* best;
-  } ctx{&index, &enclosing, &best};
+  } ctx{&index, &radius_of, &best};
   auto objective = [](unsigned, const double* x, double* grad, void* data) -> double {
     Ctx& c = *static_cast<Ctx*>(data);
     const Vec3 centre(x[0], x[1], x[2]);
-    Vec3 far = centre;
-    const double r = (*c.radius_of)(centre, &far);
+    Vec3 dr = Vec3::Zero();
+    const double r = (*c.radius_of)(centre, grad ? &dr : nullptr);
     const OutsideVolume ov = c.index->outsideVolume({centre, r});
     ++c.best->queries;
     if (ov.volume < c.best->sov) {
@@ -55,8 +42,7 @@ SphereUpdate updateSphere(const SolidIndex& index, const std::vector<Vec3>& poin
       c.best->sphere = {centre, r};
     }
     if (grad) {
-      Vec3 g = ov.gradient;
-      if (r > 0.0) g += ov.d_radius * (centre - far) / r;
+      const Vec3 g = ov.gradient + ov.d_radius * dr;
       for (int k = 0; k < 3; ++k) grad[k] = g[k];
     }
     return ov.volume;
@@ -82,6 +68,29 @@ SphereUpdate updateSphere(const SolidIndex& index, const std::vector<Vec3>& poin
     // Round-off or a forced stop: the best point evaluated so far is kept.
   }
   return best;
+}
+
+SphereUpdate updateSphere(const SolidIndex& index, const std::vector<Vec3>& points,
+                          const Vec3& start, SphereOptimizer optimizer, int max_evaluations) {
+  // R(c) = max_p |p - c|, ∇R = (c - p_far) / R.
+  const EnclosingRadius radius_of = [&](const Vec3& c, Vec3* grad) {
+    double r2 = 0.0;
+    Vec3 far = c;
+    for (const Vec3& p : points) {
+      const double d2 = (p - c).squaredNorm();
+      if (d2 > r2) {
+        r2 = d2;
+        far = p;
+      }
+    }
+    const double r = std::sqrt(r2);
+    if (grad) *grad = r > 0.0 ? Vec3((c - far) / r) : Vec3::Zero();
+    return r;
+  };
+  Aabb box;
+  for (const Vec3& p : points) box.extend(p);
+  return minimiseOutsideVolume(index, radius_of, start, box, optimizer,
+                               points.size() < 2 ? 0 : max_evaluations);
 }
 
 }  // namespace sphereset::detail

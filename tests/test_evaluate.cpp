@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "sphereset/evaluate.hpp"
+#include "sphereset/query.hpp"
 #include "test_meshes.hpp"
 
 namespace sphereset {
@@ -107,9 +108,9 @@ TEST(Evaluate, ResultsDoNotDependOnThreads) {
 TEST(Evaluate, OutsideLengthAgainstSpheres) {
   const std::vector<Sphere> s = {{Vec3(0, 0, 0), 1.0}, {Vec3(1.5, 0, 0), 1.0}};
   // Segment from x=-2 to x=4 along the axis: covered [-1, 2.5], outside 1 + 1.5.
-  EXPECT_NEAR(outsideLengthSpheres(s, Vec3(-2, 0, 0), Vec3(4, 0, 0)), 2.5, 1e-12);
-  EXPECT_NEAR(outsideLengthSpheres(s, Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0)), 0.0, 1e-12);
-  EXPECT_NEAR(outsideLengthSpheres(s, Vec3(-2, 5, 0), Vec3(4, 5, 0)), 6.0, 1e-12);
+  EXPECT_NEAR(segmentOutsideLengthBruteForce(s, Vec3(-2, 0, 0), Vec3(4, 0, 0)), 2.5, 1e-12);
+  EXPECT_NEAR(segmentOutsideLengthBruteForce(s, Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0)), 0.0, 1e-12);
+  EXPECT_NEAR(segmentOutsideLengthBruteForce(s, Vec3(-2, 5, 0), Vec3(4, 5, 0)), 6.0, 1e-12);
 }
 
 }  // namespace

@@ -46,7 +46,4 @@ struct EvalResult {
 EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& spheres,
                            const EvalOptions& options = {});
 
-// Length of segment [a, b] outside the union of the spheres (1D interval union).
-double outsideLengthSpheres(const std::vector<Sphere>& spheres, const Vec3& a, const Vec3& b);
-
 }  // namespace sphereset
