@@ -18,8 +18,10 @@
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/mesh.hpp"
+#include "sphereset/query.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere.hpp"
+#include "sphereset/tree.hpp"
 
 namespace {
 
@@ -171,6 +173,113 @@ Expected<LoadedMesh> loadSolid(const MeshArgs& a) {
   return m;
 }
 
+// Fit options shared by `fit` and `tree`.
+struct FitArgs {
+  MeshArgs mesh;
+  FitOptions fit;
+  std::string out_path, link_name, quality = "default", optimizer = "powell", init = "fps";
+  bool quiet = false;
+  int64_t points = 0;
+};
+
+void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
+  addMeshArgs(cmd, &a->mesh);
+  if (count_option)
+    cmd->add_option("-n,--spheres", a->fit.num_spheres, "Number of spheres")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000000));
+  cmd->add_option("-o,--output", a->out_path,
+                  count_option ? "Output file; the format follows the extension: .txt (x y z r), "
+                                 ".json, .sph, .yaml (cuRobo collision_spheres)"
+                               : "Output file: .sph (Bradshaw's layout) or .json (nodes with "
+                                 "parent and children)")
+      ->required();
+  cmd->add_option("--seed", a->fit.seed, "Seed for sampling and initialisation")
+      ->capture_default_str();
+  cmd->add_option("--points", a->points,
+                  "Points to cluster (default 0: max(5000, 100 n), scaled by --quality)")
+      ->check(CLI::Range(int64_t{0}, int64_t{100000000}));
+  cmd->add_option("--iterations", a->fit.max_iterations,
+                  "Cap on assignment/update rounds (default 30; --quality sets 10/30/60)")
+      ->check(CLI::Range(0, 100000));
+  cmd->add_option("--padding", a->fit.padding, "Distance added to every radius")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--quality", a->quality,
+                  "fast, default or best (points, rounds, optimiser effort)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"fast", "default", "best"}));
+  cmd->add_option("--optimizer", a->optimizer,
+                  "Sphere update: powell (derivative-free BOBYQA) or gradient (MMA with exact "
+                  "derivatives)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"powell", "gradient"}));
+  cmd->add_option("--init", a->init, "Seeding: fps (farthest point) or random (as in the paper)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"fps", "random"}));
+  cmd->add_flag("-q,--quiet", a->quiet, "No progress on stderr");
+}
+
+// Turns the parsed options into FitOptions: quality presets, optimiser, seeding, progress.
+FitOptions fitOptions(const FitArgs& a, const CLI::App* cmd) {
+  FitOptions fo = a.fit;
+  // Quality presets: (points factor, rounds, optimiser evaluations per sphere).
+  const std::map<std::string, std::tuple<double, int, int>> presets = {
+      {"fast", {0.4, 10, 30}}, {"default", {1.0, 30, 60}}, {"best", {2.0, 60, 120}}};
+  const auto [pf, rounds, evals] = presets.at(a.quality);
+  if (cmd->count("--iterations") == 0) fo.max_iterations = rounds;
+  fo.optimizer_evaluations = evals;
+  fo.target_points = a.points > 0
+                         ? a.points
+                         : static_cast<int64_t>(pf * std::max<int64_t>(5000, 100 * fo.num_spheres));
+  fo.optimizer = a.optimizer == "gradient" ? SphereOptimizer::kGradient : SphereOptimizer::kPowell;
+  fo.init = a.init == "random" ? FitInit::kRandom : FitInit::kFarthestPoint;
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  if (!a.quiet)
+    fo.progress = [tty](const FitProgress& p) {
+      if (tty)
+        std::fprintf(stderr, "\r%-10s round %3d  outside volume %.6g  spheres %d  %.1f s   ",
+                     p.phase.c_str(), p.iteration, p.energy, p.spheres, p.seconds);
+      else
+        std::fprintf(stderr, "%s round %d outside volume %.6g spheres %d %.1f s\n", p.phase.c_str(),
+                     p.iteration, p.energy, p.spheres, p.seconds);
+      if (tty && p.phase == "done") std::fprintf(stderr, "\n");
+    };
+  return fo;
+}
+
+nlohmann::json evalJson(const EvalResult& r, size_t count) {
+  return {{"spheres", count},
+          {"mesh_volume", r.mesh_volume},
+          {"bbox_diagonal", r.bbox_diagonal},
+          {"er_sum", r.er_sum},
+          {"er_union", r.er_union},
+          {"er_union_stderr", r.er_union_stderr},
+          {"surface_covered", r.surface_covered},
+          {"max_surface_gap", r.max_surface_gap},
+          {"uncovered_triangles", r.uncovered_triangles},
+          {"surface_uncertified_area", r.surface_uncertified_area},
+          {"interior_covered", r.interior_covered},
+          {"max_interior_gap", r.max_interior_gap},
+          {"proximity_error", r.proximity_error},
+          {"seconds", r.seconds}};
+}
+
+void printEval(const EvalResult& r, const EvalOptions& eo) {
+  std::printf("  E_r summed       %.6f   (exact: sum of outside volumes / mesh volume)\n",
+              r.er_sum);
+  std::printf("  E_r union        %.6f +- %.6f (Monte Carlo, %lld samples)\n", r.er_union,
+              r.er_union_stderr, static_cast<long long>(eo.union_samples));
+  std::printf("  surface covered  %s (max gap %.3g of the diagonal, %lld triangles not covered)\n",
+              r.surface_covered ? "yes" : "no", r.max_surface_gap,
+              static_cast<long long>(r.uncovered_triangles));
+  std::printf("  interior covered %s (max gap %.3g of the diagonal)\n",
+              r.interior_covered ? "yes" : "no", r.max_interior_gap);
+  std::printf("  proximity error  %.6f of the diagonal (%d segments)\n", r.proximity_error,
+              eo.proximity_segments);
+  std::printf("  time             %.2f s\n", r.seconds);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -204,44 +313,59 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(0, 10000000));
 
-  MeshArgs fit_args;
-  FitOptions fo;
-  std::string out_path, link_name, quality = "default", optimizer = "powell", init = "fps";
-  bool quiet = false;
-  int64_t points = 0;
+  FitArgs fit_args;
   CLI::App* fit = app.add_subcommand("fit", "Fit N spheres that bound the mesh");
-  addMeshArgs(fit, &fit_args);
-  fit->add_option("-n,--spheres", fo.num_spheres, "Number of spheres")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 1000000));
-  fit->add_option("-o,--output", out_path,
-                  "Output file; the format follows the extension: .txt (x y z r), .json, .sph, "
-                  ".yaml (cuRobo collision_spheres)")
-      ->required();
-  fit->add_option("--seed", fo.seed, "Seed for sampling and initialisation")->capture_default_str();
-  fit->add_option("--points", points,
-                  "Points to cluster (default 0: max(5000, 100 n), scaled by --quality)")
-      ->check(CLI::Range(int64_t{0}, int64_t{100000000}));
-  fit->add_option("--iterations", fo.max_iterations,
-                  "Cap on assignment/update rounds (default 30; --quality sets 10/30/60)")
-      ->check(CLI::Range(0, 100000));
-  fit->add_option("--padding", fo.padding, "Distance added to every radius")
-      ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
-  fit->add_option("--quality", quality, "fast, default or best (points, rounds, optimiser effort)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"fast", "default", "best"}));
-  fit->add_option("--optimizer", optimizer,
-                  "Sphere update: powell (derivative-free BOBYQA) or gradient (MMA with exact "
-                  "derivatives)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"powell", "gradient"}));
-  fit->add_option("--init", init, "Seeding: fps (farthest point) or random (as in the paper)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"fps", "random"}));
-  fit->add_option("--name", link_name, "Link name for .yaml output (default: the mesh's stem)");
-  fit->add_flag("-q,--quiet", quiet, "No progress on stderr");
+  addFitArgs(fit, &fit_args, true);
+  fit->add_option("--name", fit_args.link_name,
+                  "Link name for .yaml output (default: the mesh's stem)");
   fit->add_flag("--json", json, "Print the summary as one JSON object on stdout");
+
+  FitArgs tree_args;
+  tree_args.fit.num_spheres = 0;  // B^D unless -n is given
+  TreeOptions to;
+  std::string parents = "minimal";
+  CLI::App* tree = app.add_subcommand(
+      "tree", "Fit a sphere set and build a sphere-tree over it (Bradshaw .sph or JSON)");
+  addFitArgs(tree, &tree_args, false);
+  tree->add_option("--branch", to.branching, "Children per node at most (B)")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 1024));
+  tree->add_option("--depth", to.depth,
+                   "Levels below the root (D): D + 1 levels, at most B^D leaves")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 26));
+  tree->add_option("-n,--spheres", tree_args.fit.num_spheres, "Leaves to fit (default 0: B^D)")
+      ->check(CLI::Range(0, 1000000));
+  tree->add_option("--parents", parents,
+                   "minimal (smallest ball enclosing the children) or outside (least outside "
+                   "volume while enclosing them)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"minimal", "outside"}));
+  tree->add_flag("--json", json, "Print the summary as one JSON object on stdout");
+
+  std::string query_path, other_path;
+  std::vector<double> q_points, q_segments, other_pose;
+  CLI::App* query =
+      app.add_subcommand("query", "Point, segment and set-to-set queries on a sphere set or tree");
+  query->add_option("spheres", query_path, "Sphere set or tree (.txt, .json, .sph, .yaml)")
+      ->required();
+  query->add_option("--point", q_points, "x,y,z: inside? and signed distance to the set")
+      ->delimiter(',')
+      ->expected(3)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  query
+      ->add_option("--segment", q_segments,
+                   "ax,ay,az,bx,by,bz: length of the segment outside the spheres")
+      ->delimiter(',')
+      ->expected(6)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  query->add_option("--other", other_path, "A second set or tree: separation and overlap");
+  query
+      ->add_option("--pose", other_pose,
+                   "tx,ty,tz,qw,qx,qy,qz: rigid pose of the second set (default identity)")
+      ->delimiter(',')
+      ->expected(7);
+  query->add_flag("--json", json, "Print one JSON object");
 
   try {
     app.parse(argc, argv);
@@ -257,41 +381,20 @@ int main(int argc, char** argv) {
 
   try {
     if (*fit) {
-      auto format = sphereFormatFromPath(out_path);
+      auto format = sphereFormatFromPath(fit_args.out_path);
       if (!format) return fail(format.error());
-      auto m = loadSolid(fit_args);
+      auto m = loadSolid(fit_args.mesh);
       if (!m) return fail(m.error());
-      // Quality presets: (points factor, rounds, optimiser evaluations per sphere).
-      const std::map<std::string, std::tuple<double, int, int>> presets = {
-          {"fast", {0.4, 10, 30}}, {"default", {1.0, 30, 60}}, {"best", {2.0, 60, 120}}};
-      const auto [pf, rounds, evals] = presets.at(quality);
-      if (fit->count("--iterations") == 0) fo.max_iterations = rounds;
-      fo.optimizer_evaluations = evals;
-      fo.target_points =
-          points > 0 ? points
-                     : static_cast<int64_t>(pf * std::max<int64_t>(5000, 100 * fo.num_spheres));
-      fo.optimizer =
-          optimizer == "gradient" ? SphereOptimizer::kGradient : SphereOptimizer::kPowell;
-      fo.init = init == "random" ? FitInit::kRandom : FitInit::kFarthestPoint;
-      const bool tty = isatty(STDERR_FILENO) != 0;
-      if (!quiet)
-        fo.progress = [tty](const FitProgress& p) {
-          if (tty)
-            std::fprintf(stderr, "\r%-10s round %3d  outside volume %.6g  spheres %d  %.1f s   ",
-                         p.phase.c_str(), p.iteration, p.energy, p.spheres, p.seconds);
-          else
-            std::fprintf(stderr, "%s round %d outside volume %.6g spheres %d %.1f s\n",
-                         p.phase.c_str(), p.iteration, p.energy, p.spheres, p.seconds);
-          if (tty && p.phase == "done") std::fprintf(stderr, "\n");
-        };
+      FitOptions fo = fitOptions(fit_args, fit);
       const SolidIndex index(m->mesh);
       auto r = fitSpheres(index, fo);
-      if (!r) return fail(Error{r.error().code, fit_args.path + ": " + r.error().message});
+      if (!r) return fail(Error{r.error().code, fit_args.mesh.path + ": " + r.error().message});
       SphereFileMeta meta;
-      meta.name =
-          link_name.empty() ? std::filesystem::path(fit_args.path).stem().string() : link_name;
-      meta.source_mesh = fit_args.path;
-      Status st = writeSpheres(out_path, r->spheres, meta);
+      meta.name = fit_args.link_name.empty()
+                      ? std::filesystem::path(fit_args.mesh.path).stem().string()
+                      : fit_args.link_name;
+      meta.source_mesh = fit_args.mesh.path;
+      Status st = writeSpheres(fit_args.out_path, r->spheres, meta);
       if (!st) return fail(st.error());
       EvalOptions eo2;
       eo2.seed = fo.seed;
@@ -299,8 +402,8 @@ int main(int argc, char** argv) {
       eo2.proximity_segments = 0;
       const EvalResult ev = evaluateSpheres(index, r->spheres, eo2);
       if (json) {
-        nlohmann::json j = {{"mesh", fit_args.path},
-                            {"output", out_path},
+        nlohmann::json j = {{"mesh", fit_args.mesh.path},
+                            {"output", fit_args.out_path},
                             {"spheres", r->spheres.size()},
                             {"er_sum", r->energy / ev.mesh_volume},
                             {"er_sum_before_bounding", r->energy_before_bounding / ev.mesh_volume},
@@ -329,23 +432,24 @@ int main(int argc, char** argv) {
                             {"seed", fo.seed}};
         std::cout << j.dump() << '\n';
       }
-      if (!quiet) {
-        std::fprintf(
-            stderr,
-            "%s: %zu spheres -> %s\n"
-            "  E_r summed %.4f (%.4f before bounding), E_r union %.4f +- %.4f\n"
-            "  surface covered %s, interior covered %s\n"
-            "  %lld points (%lld interior), %d rounds%s, %d teleports (%d kept), %lld SOV "
-            "queries in assignment (%lld culled)\n"
-            "  time %.2f s (sampling %.2f, assignment %.2f, update %.2f, bounding %.2f)\n",
-            fit_args.path.c_str(), r->spheres.size(), out_path.c_str(), r->energy / ev.mesh_volume,
-            r->energy_before_bounding / ev.mesh_volume, ev.er_union, ev.er_union_stderr,
-            ev.surface_covered ? "yes" : "NO", ev.interior_covered ? "yes" : "NO",
-            static_cast<long long>(r->points), static_cast<long long>(r->interior_points),
-            r->iterations, r->converged ? " (converged)" : "", r->teleports, r->teleports_accepted,
-            static_cast<long long>(r->sov_queries), static_cast<long long>(r->sov_queries_culled),
-            r->seconds.total, r->seconds.sampling, r->seconds.assignment, r->seconds.update,
-            r->seconds.bounding);
+      if (!fit_args.quiet) {
+        std::fprintf(stderr,
+                     "%s: %zu spheres -> %s\n"
+                     "  E_r summed %.4f (%.4f before bounding), E_r union %.4f +- %.4f\n"
+                     "  surface covered %s, interior covered %s\n"
+                     "  %lld points (%lld interior), %d rounds%s, %d teleports (%d kept), %lld SOV "
+                     "queries in assignment (%lld culled)\n"
+                     "  time %.2f s (sampling %.2f, assignment %.2f, update %.2f, bounding %.2f)\n",
+                     fit_args.mesh.path.c_str(), r->spheres.size(), fit_args.out_path.c_str(),
+                     r->energy / ev.mesh_volume, r->energy_before_bounding / ev.mesh_volume,
+                     ev.er_union, ev.er_union_stderr, ev.surface_covered ? "yes" : "NO",
+                     ev.interior_covered ? "yes" : "NO", static_cast<long long>(r->points),
+                     static_cast<long long>(r->interior_points), r->iterations,
+                     r->converged ? " (converged)" : "", r->teleports, r->teleports_accepted,
+                     static_cast<long long>(r->sov_queries),
+                     static_cast<long long>(r->sov_queries_culled), r->seconds.total,
+                     r->seconds.sampling, r->seconds.assignment, r->seconds.update,
+                     r->seconds.bounding);
       }
       return kOk;
     }
@@ -369,49 +473,153 @@ int main(int argc, char** argv) {
     if (*eval) {
       auto m = loadSolid(eval_args);
       if (!m) return fail(m.error());
-      auto spheres = readSpheres(spheres_path);
-      if (!spheres) return fail(spheres.error());
-      if (spheres->empty())
-        return fail(Error{ErrorCode::kInvalidData, spheres_path + ": no spheres"});
+      // A tree file gets one report per level (root first); a plain set one report.
+      auto tree_in = readSphereTree(spheres_path);
+      if (!tree_in) return fail(tree_in.error());
+      // Plain sets read as two-level trees; a JSON tree file does not read as a plain set.
+      const bool is_tree = tree_in->depth >= 2 || !readSpheres(spheres_path).ok();
       const SolidIndex index(m->mesh);
-      const EvalResult r = evaluateSpheres(index, *spheres, eo);
-      if (json) {
-        nlohmann::json j = {{"mesh", eval_args.path},
-                            {"spheres_file", spheres_path},
-                            {"spheres", spheres->size()},
-                            {"mesh_volume", r.mesh_volume},
-                            {"bbox_diagonal", r.bbox_diagonal},
-                            {"er_sum", r.er_sum},
-                            {"er_union", r.er_union},
-                            {"er_union_stderr", r.er_union_stderr},
-                            {"surface_covered", r.surface_covered},
-                            {"max_surface_gap", r.max_surface_gap},
-                            {"uncovered_triangles", r.uncovered_triangles},
-                            {"surface_uncertified_area", r.surface_uncertified_area},
-                            {"interior_covered", r.interior_covered},
-                            {"max_interior_gap", r.max_interior_gap},
-                            {"proximity_error", r.proximity_error},
-                            {"seed", eo.seed},
-                            {"seconds", r.seconds}};
-        std::cout << j.dump() << '\n';
-      } else {
-        std::printf("%s with %zu spheres from %s\n", eval_args.path.c_str(), spheres->size(),
-                    spheres_path.c_str());
-        std::printf("  E_r summed       %.6f   (exact: sum of outside volumes / mesh volume)\n",
-                    r.er_sum);
-        std::printf("  E_r union        %.6f +- %.6f (Monte Carlo, %lld samples)\n", r.er_union,
-                    r.er_union_stderr, static_cast<long long>(eo.union_samples));
-        std::printf(
-            "  surface covered  %s (max gap %.3g of the diagonal, %lld triangles not "
-            "covered)\n",
-            r.surface_covered ? "yes" : "no", r.max_surface_gap,
-            static_cast<long long>(r.uncovered_triangles));
-        std::printf("  interior covered %s (max gap %.3g of the diagonal)\n",
-                    r.interior_covered ? "yes" : "no", r.max_interior_gap);
-        std::printf("  proximity error  %.6f of the diagonal (%d segments)\n", r.proximity_error,
-                    eo.proximity_segments);
-        std::printf("  time             %.2f s\n", r.seconds);
+      nlohmann::json levels = nlohmann::json::array();
+      const int first = is_tree ? 0 : tree_in->depth;
+      for (int l = first; l <= tree_in->depth; ++l) {
+        const std::vector<Sphere> spheres = tree_in->level(l);
+        if (spheres.empty())
+          return fail(Error{ErrorCode::kInvalidData, spheres_path + ": no spheres"});
+        const EvalResult r = evaluateSpheres(index, spheres, eo);
+        if (json) {
+          nlohmann::json j = evalJson(r, spheres.size());
+          if (is_tree) j["level"] = l;
+          levels.push_back(j);
+        } else {
+          if (is_tree)
+            std::printf("%s, level %d of %s: %zu spheres\n", eval_args.path.c_str(), l,
+                        spheres_path.c_str(), spheres.size());
+          else
+            std::printf("%s with %zu spheres from %s\n", eval_args.path.c_str(), spheres.size(),
+                        spheres_path.c_str());
+          printEval(r, eo);
+        }
       }
+      if (json) {
+        nlohmann::json j = is_tree ? nlohmann::json{{"levels", levels}} : levels[0];
+        j["mesh"] = eval_args.path;
+        j["spheres_file"] = spheres_path;
+        j["seed"] = eo.seed;
+        std::cout << j.dump() << '\n';
+      }
+      return kOk;
+    }
+    if (*tree) {
+      auto format = sphereFormatFromPath(tree_args.out_path);
+      if (!format) return fail(format.error());
+      if (*format != SphereFormat::kSph && *format != SphereFormat::kJson)
+        return fail(Error{ErrorCode::kInvalidArgument,
+                          tree_args.out_path + ": a sphere tree is written as .sph or .json"});
+      auto m = loadSolid(tree_args.mesh);
+      if (!m) return fail(m.error());
+      if (tree_args.fit.num_spheres == 0) {
+        // B^D leaves, when that is a sensible count (otherwise the library says why not).
+        int64_t leaves = 1;
+        for (int l = 0; l < to.depth && leaves <= (int64_t{1} << 16); ++l) leaves *= to.branching;
+        if (leaves <= (int64_t{1} << 16)) tree_args.fit.num_spheres = static_cast<int>(leaves);
+      }
+      FitOptions fo = fitOptions(tree_args, tree);
+      to.parents = parents == "outside" ? TreeParents::kOutsideVolume : TreeParents::kMinimal;
+      to.seed = fo.seed;
+      const SolidIndex index(m->mesh);
+      auto r = fitSphereTree(index, fo, to);
+      if (!r) return fail(Error{r.error().code, tree_args.mesh.path + ": " + r.error().message});
+      SphereFileMeta meta;
+      meta.source_mesh = tree_args.mesh.path;
+      Status st = writeSphereTree(tree_args.out_path, r->tree.tree, meta);
+      if (!st) return fail(st.error());
+      const double vol = signedVolume(m->mesh);
+      nlohmann::json lv = nlohmann::json::array();
+      for (const TreeLevelStats& l : r->tree.levels)
+        lv.push_back({{"level", l.level},
+                      {"spheres", l.nodes},
+                      {"er_sum", l.outside_volume / vol},
+                      {"rounds", l.iterations},
+                      {"converged", l.converged}});
+      if (json)
+        std::cout << nlohmann::json{{"mesh", tree_args.mesh.path},
+                                    {"output", tree_args.out_path},
+                                    {"branching", to.branching},
+                                    {"depth", to.depth},
+                                    {"parents", parents},
+                                    {"leaves", r->fit.spheres.size()},
+                                    {"levels", lv},
+                                    {"seconds",
+                                     {{"fit", r->fit.seconds.total}, {"tree", r->tree.seconds}}},
+                                    {"seed", fo.seed}}
+                         .dump()
+                  << '\n';
+      if (!tree_args.quiet) {
+        std::fprintf(stderr, "%s: tree of branching %d, depth %d (%s parents) -> %s\n",
+                     tree_args.mesh.path.c_str(), to.branching, to.depth, parents.c_str(),
+                     tree_args.out_path.c_str());
+        for (const TreeLevelStats& l : r->tree.levels)
+          std::fprintf(stderr, "  level %d: %4lld spheres, E_r summed %.4f\n", l.level,
+                       static_cast<long long>(l.nodes), l.outside_volume / vol);
+        std::fprintf(stderr, "  time %.2f s fit + %.2f s tree\n", r->fit.seconds.total,
+                     r->tree.seconds);
+      }
+      return kOk;
+    }
+    if (*query) {
+      if (q_points.size() % 3 != 0 || q_segments.size() % 6 != 0)
+        return fail(Error{ErrorCode::kInvalidArgument,
+                          "--point takes x,y,z and --segment ax,ay,az,bx,by,bz"});
+      auto ta = readSphereTree(query_path);
+      if (!ta) return fail(ta.error());
+      nlohmann::json out;
+      const SphereTree qa = queryTree(ta->leaves());
+      for (size_t i = 0; i + 2 < q_points.size(); i += 3) {
+        const Vec3 p(q_points[i], q_points[i + 1], q_points[i + 2]);
+        const PointQuery pq = pointDistance(qa, p);
+        const bool in = containsPoint(qa, p);
+        if (json)
+          out["points"].push_back({{"point", vec(p)}, {"inside", in}, {"distance", pq.distance}});
+        else
+          std::printf("point %g %g %g: %s, signed distance %.9g\n", p.x(), p.y(), p.z(),
+                      in ? "inside" : "outside", pq.distance);
+      }
+      for (size_t i = 0; i + 5 < q_segments.size(); i += 6) {
+        const Vec3 a(q_segments[i], q_segments[i + 1], q_segments[i + 2]);
+        const Vec3 b(q_segments[i + 3], q_segments[i + 4], q_segments[i + 5]);
+        const double len = segmentOutsideLength(qa, a, b);
+        if (json)
+          out["segments"].push_back({{"a", vec(a)}, {"b", vec(b)}, {"outside_length", len}});
+        else
+          std::printf("segment %g %g %g -> %g %g %g: %.9g of %.9g outside\n", a.x(), a.y(), a.z(),
+                      b.x(), b.y(), b.z(), len, (b - a).norm());
+      }
+      if (!other_path.empty()) {
+        auto tb = readSphereTree(other_path);
+        if (!tb) return fail(tb.error());
+        Pose pose;
+        if (!other_pose.empty()) {
+          Eigen::Quaterniond q(other_pose[3], other_pose[4], other_pose[5], other_pose[6]);
+          if (!(q.norm() > 0.0) || !std::isfinite(q.norm()))
+            return fail(Error{ErrorCode::kInvalidArgument, "--pose: the quaternion is zero"});
+          pose.rotation = q.normalized().toRotationMatrix();
+          pose.translation = Vec3(other_pose[0], other_pose[1], other_pose[2]);
+        }
+        const SphereTree qb = queryTree(tb->leaves());
+        const PairQuery pq = separation(qa, Pose{}, qb, pose);
+        const bool hit = pq.distance < 0.0;
+        if (json)
+          out["other"] = {{"file", other_path},
+                          {"overlap", hit},
+                          {"distance", pq.distance},
+                          {"closest_pair",
+                           {{"a", vec(qa.nodes[pq.sphere_a].center)},
+                            {"b", vec(pose.apply(qb.nodes[pq.sphere_b].center))}}}};
+        else
+          std::printf("against %s: %s, signed distance %.9g\n", other_path.c_str(),
+                      hit ? "overlap" : "apart", pq.distance);
+      }
+      if (json) std::cout << out.dump() << '\n';
       return kOk;
     }
   } catch (const std::exception& e) {

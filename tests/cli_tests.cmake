@@ -50,3 +50,19 @@ cli_test(fit_too_many 2 ARGS fit ${link} -n 50000 -o ${work}/never3.txt -q --poi
 cli_test(fit_yaml 0 ARGS fit ${link} -n 3 -o ${work}/link3.yaml --name link1 --quality fast -q)
 cli_test(fit_json 0 ARGS fit ${link} -n 4 -o ${work}/link4.sph --quality fast -q --json
          STDOUT "\"er_sum\":.*\"surface_covered\":true")
+cli_test(tree_sph 0 ARGS tree ${link} --branch 3 --depth 2 -o ${work}/link_tree.sph --quality fast -q
+         --json STDOUT "\"leaves\":9")
+cli_test(tree_outside_json 0 ARGS tree ${link} --branch 2 --depth 2 -n 3 --parents outside
+         -o ${work}/link_tree.json --quality fast -q --json STDOUT "\"parents\":\"outside\"")
+cli_test(tree_bad_extension 2 ARGS tree ${link} -o ${work}/never4.yaml -q
+         STDERR "never4.yaml: a sphere tree is written as .sph or .json" FORBID ${work}/never4.yaml)
+cli_test(tree_too_many_leaves 2 ARGS tree ${link} --branch 2 --depth 2 -n 5 -o ${work}/never5.sph -q
+         STDERR "5 leaves do not fit" FORBID ${work}/never5.sph)
+cli_test(tree_absurd_depth 2 ARGS tree ${link} --branch 1000 --depth 20 -o ${work}/never6.sph -q
+         FORBID ${work}/never6.sph)
+cli_test(query_point 0 ARGS query ${work}/bound.txt --point 0,-0.037,-0.068 --point 1,1,1
+         STDOUT "inside, signed distance -0.17.*outside")
+cli_test(query_bad_point 2 ARGS query ${work}/bound.txt --point 0,0 STDERR "--point takes x,y,z")
+cli_test(query_pair_json 0 ARGS query ${work}/bound.txt --other ${work}/bound.txt
+         --pose 1,0,0,1,0,0,0 --json STDOUT "\"overlap\":false")
+cli_test(query_missing 3 ARGS query ${work}/missing.txt --point 0,0,0 STDERR "missing.txt")
