@@ -177,7 +177,8 @@ Expected<LoadedMesh> loadSolid(const MeshArgs& a) {
 struct FitArgs {
   MeshArgs mesh;
   FitOptions fit;
-  std::string out_path, link_name, quality = "default", optimizer = "powell", init = "fps";
+  std::string out_path, link_name, quality = "default", optimizer = "powell", init = "fps",
+                                   method = "variational";
   bool quiet = false;
   int64_t points = 0;
 };
@@ -217,6 +218,11 @@ void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
   cmd->add_option("--init", a->init, "Seeding: fps (farthest point) or random (as in the paper)")
       ->capture_default_str()
       ->check(CLI::IsMember({"fps", "random"}));
+  cmd->add_option("--method", a->method,
+                  "variational (the paper's), or the baselines kmeans (L2 Lloyd clusters) and "
+                  "octree (occupied octree leaves); all end with the same guaranteed bound")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"variational", "kmeans", "octree"}));
   cmd->add_flag("-q,--quiet", a->quiet, "No progress on stderr");
 }
 
@@ -234,6 +240,9 @@ FitOptions fitOptions(const FitArgs& a, const CLI::App* cmd) {
                          : static_cast<int64_t>(pf * std::max<int64_t>(5000, 100 * fo.num_spheres));
   fo.optimizer = a.optimizer == "gradient" ? SphereOptimizer::kGradient : SphereOptimizer::kPowell;
   fo.init = a.init == "random" ? FitInit::kRandom : FitInit::kFarthestPoint;
+  fo.method = a.method == "kmeans"   ? FitMethod::kKMeans
+              : a.method == "octree" ? FitMethod::kOctree
+                                     : FitMethod::kVariational;
   const bool tty = isatty(STDERR_FILENO) != 0;
   if (!a.quiet)
     fo.progress = [tty](const FitProgress& p) {

@@ -14,6 +14,8 @@
 #include <cmath>
 #include <limits>
 
+#include "cover_cells.hpp"
+
 namespace sphereset::detail {
 namespace {
 
@@ -29,10 +31,35 @@ struct Request {
   std::array<Vec3, 3> piece;
 };
 
-bool oneSphereHolds(const std::vector<Sphere>& s, const Vec3& a, const Vec3& b, const Vec3& c) {
-  for (const Sphere& x : s)
-    if (x.contains(a) && x.contains(b) && x.contains(c)) return true;
-  return false;
+// The sphere whose outside volume grows least, to first order (dSOV/dr times the radius
+// increase), when enlarged to hold the points; among the kCandidates needing the least radius
+// increase. Writes its index and new radius (-1 when there are no spheres).
+void cheapestGrowth(const std::vector<Sphere>& sp, const std::vector<double>& sov_dr,
+                    const Vec3* pts, int npts, double slack, int32_t* sphere, double* radius) {
+  std::array<std::pair<double, int32_t>, kCandidates> cand;
+  cand.fill({std::numeric_limits<double>::infinity(), -1});
+  for (int32_t i = 0; i < static_cast<int32_t>(sp.size()); ++i) {
+    double need = 0.0;
+    for (int k = 0; k < npts; ++k) need = std::max(need, (pts[k] - sp[i].center).norm());
+    const double grow = need - sp[i].radius;
+    if (grow < cand.back().first) {
+      cand.back() = {grow, i};
+      std::sort(cand.begin(), cand.end());
+    }
+  }
+  double best_inc = std::numeric_limits<double>::infinity();
+  *sphere = -1;
+  // Candidates come in increasing order of radius growth, so a strict comparison breaks
+  // ties (spheres with no surface outside the solid, dSOV/dr = 0) by the smaller growth.
+  for (const auto& [grow, i] : cand) {
+    if (i < 0) continue;
+    const double inc = sov_dr[i] * grow;
+    if (inc < best_inc) {
+      best_inc = inc;
+      *sphere = i;
+      *radius = sp[i].radius + grow + slack;
+    }
+  }
 }
 
 }  // namespace
@@ -63,7 +90,8 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
     while (!todo.empty()) {
       const Piece pc = todo.back();
       todo.pop_back();
-      if (oneSphereHolds(sp, pc.a, pc.b, pc.c)) continue;
+      const Vec3 corners[3] = {pc.a, pc.b, pc.c};
+      if (oneSphereHolds(sp, corners, 3)) continue;
       const double edge =
           std::max({(pc.b - pc.a).norm(), (pc.c - pc.b).norm(), (pc.a - pc.c).norm()});
       if (edge > min_edge && pc.depth < kMaxDepth) {
@@ -74,31 +102,8 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
         todo.push_back({ab, bc, ca, pc.depth + 1});
         continue;
       }
-      // The spheres needing the least radius increase, compared by outside-volume growth.
-      std::array<std::pair<double, int32_t>, kCandidates> cand;
-      cand.fill({std::numeric_limits<double>::infinity(), -1});
-      for (int32_t i = 0; i < static_cast<int32_t>(sp.size()); ++i) {
-        const double need = std::max({(pc.a - sp[i].center).norm(), (pc.b - sp[i].center).norm(),
-                                      (pc.c - sp[i].center).norm()});
-        const double grow = need - sp[i].radius;
-        if (grow < cand.back().first) {
-          cand.back() = {grow, i};
-          std::sort(cand.begin(), cand.end());
-        }
-      }
       Request best{-1, 0.0, {pc.a, pc.b, pc.c}};
-      double best_inc = std::numeric_limits<double>::infinity();
-      // Candidates come in increasing order of radius growth, so a strict comparison breaks
-      // ties (spheres with no surface outside the solid, dSOV/dr = 0) by the smaller growth.
-      for (const auto& [grow, i] : cand) {
-        if (i < 0) continue;
-        const double inc = sov_dr[i] * grow;
-        if (inc < best_inc) {
-          best_inc = inc;
-          best.sphere = i;
-          best.radius = sp[i].radius + grow + slack;
-        }
-      }
+      cheapestGrowth(sp, sov_dr, corners, 3, slack, &best.sphere, &best.radius);
       if (best.sphere >= 0) req[t].push_back(best);
     }
   });
@@ -112,6 +117,56 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
       if (held) (*held)[r.sphere].insert((*held)[r.sphere].end(), r.piece.begin(), r.piece.end());
     }
   }
+  for (size_t i = 0; i < sp.size(); ++i)
+    if (radius[i] > sp[i].radius) {
+      sp[i].radius = radius[i];
+      ++st.enlarged;
+    }
+  return st;
+}
+
+BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth) {
+  BoundStats st;
+  std::vector<Sphere>& sp = *spheres;
+  const double slack = kSlackRel * index.bounds().diagonal();
+  std::vector<double> sov_dr(sp.size());
+  tbb::parallel_for(size_t{0}, sp.size(),
+                    [&](size_t i) { sov_dr[i] = index.outsideVolume(sp[i]).d_radius; });
+  st.queries += static_cast<int64_t>(sp.size());
+  // An uncovered centre found above max_depth goes to the cheapest sphere and the walk
+  // descends; at max_depth the cheapest sphere takes the whole cube (its eight corners). Requests per root cube, applied as maxima afterwards.
+  std::vector<std::vector<std::pair<int32_t, double>>> req(kRootCells);
+  tbb::parallel_for(0, kRootCells, [&](int k) {
+    double size = 0.0;
+    const Vec3 mn = rootCell(index.bounds(), k, &size);
+    walkSolidCells(
+        index, sp, mn, size, 0, max_depth,
+        [&](const Vec3& lo, double s, int depth, double) {
+          int32_t i = -1;
+          double r = 0.0;
+          if (depth < max_depth) {
+            // The centre itself (the walk tests it), then the cubes below.
+            const Vec3 centre = lo + Vec3::Constant(0.5 * s);
+            cheapestGrowth(sp, sov_dr, &centre, 1, slack, &i, &r);
+            if (i >= 0) req[k].emplace_back(i, r);
+            return true;
+          }
+          Vec3 corners[8];
+          for (int c = 0; c < 8; ++c)
+            corners[c] = lo + s * Vec3((c & 1) ? 1 : 0, (c & 2) ? 1 : 0, (c & 4) ? 1 : 0);
+          cheapestGrowth(sp, sov_dr, corners, 8, slack, &i, &r);
+          if (i >= 0) req[k].emplace_back(i, r);
+          return false;
+        },
+        [](const Vec3&, double) {});
+  });
+  std::vector<double> radius(sp.size());
+  for (size_t i = 0; i < sp.size(); ++i) radius[i] = sp[i].radius;
+  for (const auto& list : req)
+    for (const auto& [i, r] : list) {
+      ++st.pieces;
+      radius[i] = std::max(radius[i], r);
+    }
   for (size_t i = 0; i < sp.size(); ++i)
     if (radius[i] > sp[i].radius) {
       sp[i].radius = radius[i];

@@ -22,4 +22,9 @@ struct BoundStats {
 BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, double min_edge,
                         std::vector<std::vector<Vec3>>* held = nullptr);
 
+// Interior coverage on the octree of cover_cells.hpp (the same test `evaluateSpheres` runs):
+// cubes down to `max_depth` whose centre lies inside the solid but in no sphere are handed
+// whole to the sphere whose outside volume grows least. One pass; radii only grow.
+BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth);
+
 }  // namespace sphereset::detail

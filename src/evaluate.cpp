@@ -25,6 +25,7 @@
 #include <mutex>
 #include <numbers>
 
+#include "cover_cells.hpp"
 #include "sampling.hpp"
 #include "sphereset/query.hpp"
 
@@ -39,22 +40,6 @@ using detail::uniform01;
 // refuted by the last bit of rounding.
 constexpr double kCoverRelTol = 1e-12;
 
-// Distance from p to the union of spheres (0 inside).
-double gapToUnion(const std::vector<Sphere>& spheres, const Vec3& p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const Sphere& s : spheres) best = std::min(best, (p - s.center).norm() - s.radius);
-  return std::max(best, 0.0);
-}
-
-bool oneSphereHolds(const std::vector<Sphere>& spheres, const Vec3* pts, int n) {
-  for (const Sphere& s : spheres) {
-    bool all = true;
-    for (int i = 0; i < n && all; ++i) all = s.contains(pts[i]);
-    if (all) return true;
-  }
-  return false;
-}
-
 struct CoverStats {
   double gap = 0.0;
   double uncertified = 0.0;  // area (surface) or count (interior) left undecided
@@ -63,10 +48,10 @@ struct CoverStats {
 void coverTriangle(const std::vector<Sphere>& spheres, const Vec3& a, const Vec3& b, const Vec3& c,
                    int depth, int max_depth, CoverStats* st) {
   const Vec3 pts[3] = {a, b, c};
-  if (oneSphereHolds(spheres, pts, 3)) return;
+  if (detail::oneSphereHolds(spheres, pts, 3)) return;
   const Vec3 g = (a + b + c) / 3.0;
   double gap = 0.0;
-  for (const Vec3& p : {a, b, c, g}) gap = std::max(gap, gapToUnion(spheres, p));
+  for (const Vec3& p : {a, b, c, g}) gap = std::max(gap, detail::gapToUnion(spheres, p));
   st->gap = std::max(st->gap, gap);
   if (gap > 0.0 && depth >= max_depth / 2) return;  // refuted; refine the gap a little only
   if (depth >= max_depth) {
@@ -78,32 +63,6 @@ void coverTriangle(const std::vector<Sphere>& spheres, const Vec3& a, const Vec3
   coverTriangle(spheres, ab, b, bc, depth + 1, max_depth, st);
   coverTriangle(spheres, ca, bc, c, depth + 1, max_depth, st);
   coverTriangle(spheres, ab, bc, ca, depth + 1, max_depth, st);
-}
-
-void coverCell(const SolidIndex& index, const std::vector<Sphere>& spheres, const Vec3& mn,
-               double size, int depth, int max_depth, CoverStats* st) {
-  Vec3 corners[8];
-  for (int k = 0; k < 8; ++k)
-    corners[k] = mn + size * Vec3((k & 1) ? 1 : 0, (k & 2) ? 1 : 0, (k & 4) ? 1 : 0);
-  if (oneSphereHolds(spheres, corners, 8)) return;
-  const Vec3 center = mn + Vec3::Constant(0.5 * size);
-  const double half_diag = 0.5 * std::sqrt(3.0) * size;
-  const bool has_surface = index.distance(center) <= half_diag;
-  const Containment where = index.classify(center);
-  if (!has_surface && where == Containment::kOutside) return;  // empty of solid
-  if (where != Containment::kOutside) {
-    const double gap = gapToUnion(spheres, center);
-    st->gap = std::max(st->gap, gap);
-    if (gap > 0.0) return;  // refuted
-  }
-  if (depth >= max_depth) {
-    if (where != Containment::kOutside || has_surface) st->uncertified += 1.0;
-    return;
-  }
-  const double h = 0.5 * size;
-  for (int k = 0; k < 8; ++k)
-    coverCell(index, spheres, mn + h * Vec3((k & 1) ? 1 : 0, (k & 2) ? 1 : 0, (k & 4) ? 1 : 0), h,
-              depth + 1, max_depth, st);
 }
 
 }  // namespace
@@ -199,12 +158,17 @@ EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& s
 
   // Interior coverage on an octree below an 8³ grid of cubes covering the bounds.
   {
-    const Aabb& b = index.bounds();
-    const double size = (b.max - b.min).maxCoeff() / 8.0;
-    std::vector<CoverStats> st(512);
-    tbb::parallel_for(0, 512, [&](int k) {
-      const Vec3 mn = b.min + size * Vec3(k % 8, (k / 8) % 8, k / 64);
-      coverCell(index, grown, mn, size, 0, options.interior_max_depth, &st[k]);
+    std::vector<CoverStats> st(detail::kRootCells);
+    tbb::parallel_for(0, detail::kRootCells, [&](int k) {
+      double size = 0.0;
+      const Vec3 mn = detail::rootCell(index.bounds(), k, &size);
+      detail::walkSolidCells(
+          index, grown, mn, size, 0, options.interior_max_depth,
+          [&](const Vec3&, double, int, double gap) {
+            st[k].gap = std::max(st[k].gap, gap);
+            return false;  // refuted
+          },
+          [&](const Vec3&, double) { st[k].uncertified += 1.0; });
     });
     double gap = 0.0, unc = 0.0;
     for (const CoverStats& s : st) {

@@ -19,11 +19,13 @@
 #include <numeric>
 #include <random>
 
+#include "baselines.hpp"
 #include "bound.hpp"
 #include "cluster_assign.hpp"
 #include "samples.hpp"
 #include "sampling.hpp"
 #include "sphere_update.hpp"
+#include "sphereset/evaluate.hpp"
 
 namespace sphereset {
 namespace {
@@ -103,6 +105,8 @@ constexpr int kStallRounds = 2;
 constexpr int kTeleportRounds = 3;
 // Refits of the spheres the bounding step enlarged, before the final bounding pass.
 constexpr int kRefitPasses = 2;
+// Passes of the interior bound (each settles the cubes it finds; one usually suffices).
+constexpr int kInteriorPasses = 4;
 
 }  // namespace
 
@@ -151,7 +155,28 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
   int teleport_rounds_left = 0;  // rounds a teleport gets to settle before it is judged
   double energy_before_teleport = 0.0;
   std::vector<std::pair<int, int>> tried;  // (source, destination) since the last success
-  for (int it = 0; it < std::max(1, o.max_iterations); ++it) {
+  const bool variational = o.method == FitMethod::kVariational;
+  if (!variational) {
+    // Baselines: their clusters and minimal balls, then the same bounding step.
+    report("clustering", 0, 0.0);
+    const auto ta = Clock::now();
+    detail::BaselineResult b =
+        o.method == FitMethod::kOctree
+            ? detail::octreeSpheres(ps, n)
+            : detail::kmeansSpheres(ps, initialCentres(ps, n, o.init, o.seed), o.max_iterations);
+    res.seconds.assignment += since(ta);
+    res.iterations = b.iterations;
+    res.converged = b.converged;
+    best_spheres = std::move(b.spheres);
+    std::vector<double> sov(best_spheres.size());
+    tbb::parallel_for(size_t{0}, best_spheres.size(),
+                      [&](size_t i) { sov[i] = index.outsideVolume(best_spheres[i]).volume; });
+    best_energy = 0.0;
+    for (double v : sov) best_energy += v;
+    res.energy_history.push_back(best_energy);
+    best_members.assign(best_spheres.size(), {});
+  }
+  for (int it = 0; variational && it < std::max(1, o.max_iterations); ++it) {
     const auto ta = Clock::now();
     detail::AssignStats as;
     detail::assignPoints(index, ps, &clusters, &labels, &as);
@@ -289,7 +314,7 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
   detail::BoundStats bs = detail::boundSurface(index, &best_spheres, min_edge, &held);
   res.bounding_pieces += bs.pieces;
   res.bounding_queries += bs.queries;
-  for (int pass = 0; pass < kRefitPasses && bs.enlarged > 0; ++pass) {
+  for (int pass = 0; variational && pass < kRefitPasses && bs.enlarged > 0; ++pass) {
     tbb::parallel_for(0, n, [&](int i) {
       if (held[i].empty()) return;
       best_members[i].insert(best_members[i].end(), held[i].begin(), held[i].end());
@@ -302,11 +327,22 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
     res.bounding_queries += bs.queries;
   }
   res.bounding_enlarged = bs.enlarged;
+  // Interior: the cubes of the evaluation's octree test whose centres lie inside the solid
+  // must be covered too (between grid points the clusters' spheres can leave gaps, most of
+  // all for the baselines). Radii only grow, so the surface stays covered.
+  for (int pass = 0; pass < kInteriorPasses; ++pass) {
+    const detail::BoundStats is =
+        detail::boundInterior(index, &best_spheres, EvalOptions{}.interior_max_depth);
+    res.bounding_queries += is.queries;
+    res.bounding_interior_cells += is.pieces;
+    if (is.enlarged == 0) break;
+  }
   for (Sphere& s : best_spheres) s.radius += o.padding;
   res.spheres = std::move(best_spheres);
-  res.outside_volume.resize(n);
-  tbb::parallel_for(
-      0, n, [&](int i) { res.outside_volume[i] = index.outsideVolume(res.spheres[i]).volume; });
+  res.outside_volume.resize(res.spheres.size());
+  tbb::parallel_for(size_t{0}, res.spheres.size(), [&](size_t i) {
+    res.outside_volume[i] = index.outsideVolume(res.spheres[i]).volume;
+  });
   res.energy = 0.0;
   for (double v : res.outside_volume) res.energy += v;
   res.seconds.bounding = since(tb);

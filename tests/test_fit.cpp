@@ -98,5 +98,29 @@ TEST(Fit, BadRequestsGiveErrors) {
   EXPECT_FALSE(fitSpheres(idx, o).ok());
 }
 
+TEST(Fit, BaselinesGiveNCoveringSpheresAndTheVariationalFitIsTighter) {
+  const SolidIndex idx(link());
+  EvalOptions eo;
+  eo.union_samples = 10000;
+  eo.proximity_segments = 0;
+  double energy[3] = {0, 0, 0};
+  const FitMethod methods[3] = {FitMethod::kVariational, FitMethod::kKMeans, FitMethod::kOctree};
+  for (int m = 0; m < 3; ++m) {
+    FitOptions o;
+    o.num_spheres = 12;
+    o.target_points = 3000;
+    o.method = methods[m];
+    auto r = fitSpheres(idx, o);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    ASSERT_EQ(r->spheres.size(), 12u) << "method " << m;
+    const EvalResult e = evaluateSpheres(idx, r->spheres, eo);
+    EXPECT_TRUE(e.surface_covered) << "method " << m;
+    EXPECT_TRUE(e.interior_covered) << "method " << m;
+    energy[m] = r->energy;
+  }
+  EXPECT_LT(energy[0], energy[1]);
+  EXPECT_LT(energy[0], energy[2]);
+}
+
 }  // namespace
 }  // namespace sphereset

@@ -17,6 +17,12 @@ enum class FitInit {
   kRandom,         // random interior points, as in the paper
 };
 
+enum class FitMethod {
+  kVariational,  // the paper's method (Sec. 5), the default
+  kKMeans,       // baseline: L2 Lloyd clusters of the same points, minimal ball of each
+  kOctree,       // baseline: minimal balls of the points in occupied octree leaves (Hubbard)
+};
+
 enum class SphereOptimizer {
   kPowell,    // derivative-free (NLopt BOBYQA, Powell's quadratic model method)
   kGradient,  // exact derivatives of the outside volume (NLopt MMA)
@@ -32,6 +38,9 @@ struct FitProgress {
 
 struct FitOptions {
   int num_spheres = 32;
+  // Baselines share the points, the bounding step and the outputs; they skip teleports and
+  // the refits of the bounding step, which are part of the variational method.
+  FitMethod method = FitMethod::kVariational;
   uint64_t seed = 1;
   // Points clustered (interior grid + surface samples). 0 chooses max(5000, 100 n).
   int64_t target_points = 0;
@@ -60,12 +69,13 @@ struct FitResult {
   int teleports = 0, teleports_accepted = 0;
   bool converged = false;  // stopped because neither rounds nor teleports improved
   int64_t points = 0, interior_points = 0;
-  int64_t sov_queries = 0;         // outside-volume evaluations in point assignment
-  int64_t sov_queries_culled = 0;  // assignment candidates settled by a lower bound instead
-  int64_t optimizer_queries = 0;   // outside-volume evaluations in sphere updates
-  int64_t bounding_enlarged = 0;   // spheres enlarged by the last bounding pass
-  int64_t bounding_pieces = 0;     // triangle pieces that made a sphere grow (all passes)
-  int64_t bounding_queries = 0;    // outside-volume evaluations of the bounding step
+  int64_t sov_queries = 0;              // outside-volume evaluations in point assignment
+  int64_t sov_queries_culled = 0;       // assignment candidates settled by a lower bound instead
+  int64_t optimizer_queries = 0;        // outside-volume evaluations in sphere updates
+  int64_t bounding_enlarged = 0;        // spheres enlarged by the last bounding pass
+  int64_t bounding_pieces = 0;          // triangle pieces that made a sphere grow (all passes)
+  int64_t bounding_queries = 0;         // outside-volume evaluations of the bounding step
+  int64_t bounding_interior_cells = 0;  // interior cubes that made a sphere grow
   FitTimings seconds;
 };
 
