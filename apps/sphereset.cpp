@@ -271,6 +271,8 @@ nlohmann::json evalJson(const EvalResult& r, size_t count) {
           {"interior_covered", r.interior_covered},
           {"max_interior_gap", r.max_interior_gap},
           {"proximity_error", r.proximity_error},
+          {"shadow_error_sky", r.shadow_error_sky},
+          {"shadow_error_lights", r.shadow_error_lights},
           {"seconds", r.seconds}};
 }
 
@@ -286,6 +288,11 @@ void printEval(const EvalResult& r, const EvalOptions& eo) {
               r.interior_covered ? "yes" : "no", r.max_interior_gap);
   std::printf("  proximity error  %.6f of the diagonal (%d segments)\n", r.proximity_error,
               eo.proximity_segments);
+  if (eo.shadow_resolution > 0)
+    std::printf(
+        "  shadow error     %.6f sky light, %.6f per light (RMS irradiance, %d² pixels, "
+        "%d lights)\n",
+        r.shadow_error_sky, r.shadow_error_lights, eo.shadow_resolution, eo.shadow_lights);
   std::printf("  time             %.2f s\n", r.seconds);
 }
 
@@ -321,6 +328,18 @@ int main(int argc, char** argv) {
   eval->add_option("--segments", eo.proximity_segments, "Segments for the proximity error")
       ->capture_default_str()
       ->check(CLI::Range(0, 10000000));
+  std::string up = "y";
+  eval->add_option("--up", up, "Up axis for the ground plane of the shadow comparison")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"x", "y", "z"}));
+  eval->add_option("--shadow-resolution", eo.shadow_resolution,
+                   "Ground-plane pixels per side for the shadow errors (0 skips them)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 4096));
+  eval->add_option("--shadow-lights", eo.shadow_lights,
+                   "Directional lights over the upper hemisphere for the shadow errors")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
 
   FitArgs fit_args;
   CLI::App* fit = app.add_subcommand("fit", "Fit N spheres that bound the mesh");
@@ -480,6 +499,7 @@ int main(int argc, char** argv) {
       return d.isSolid() ? kOk : kNotSolid;
     }
     if (*eval) {
+      eo.up_axis = up[0] - 'x';
       auto m = loadSolid(eval_args);
       if (!m) return fail(m.error());
       // A tree file gets one report per level (root first); a plain set one report.

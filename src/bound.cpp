@@ -134,7 +134,8 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
                     [&](size_t i) { sov_dr[i] = index.outsideVolume(sp[i]).d_radius; });
   st.queries += static_cast<int64_t>(sp.size());
   // An uncovered centre found above max_depth goes to the cheapest sphere and the walk
-  // descends; at max_depth the cheapest sphere takes the whole cube (its eight corners). Requests per root cube, applied as maxima afterwards.
+  // descends; at max_depth the cheapest sphere takes the whole cube (its eight corners). Requests
+  // per root cube, applied as maxima afterwards.
   std::vector<std::vector<std::pair<int32_t, double>>> req(kRootCells);
   tbb::parallel_for(0, kRootCells, [&](int k) {
     double size = 0.0;

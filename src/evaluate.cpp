@@ -196,6 +196,13 @@ EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& s
     res.proximity_error = s / segs / diag;
   }
 
+  if (options.shadow_resolution > 0 && n > 0) {
+    const ShadowResult sh = compareShadows(index, spheres, options.up_axis,
+                                           options.shadow_resolution, options.shadow_lights);
+    res.shadow_error_sky = sh.sky_rms;
+    res.shadow_error_lights = sh.lights_rms;
+  }
+
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }

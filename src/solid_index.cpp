@@ -51,6 +51,17 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
   return a + ab * (vb * denom) + ac * (vc * denom);
 }
 
+// Ray parameter of the line p + t d through a triangle, when it passes through it (edges and
+// vertices included, up to the degeneracy tolerance of lineTriangle); NaN otherwise.
+double rayTriangleT(const Vec3& p, const Vec3& d, const TriRecord& tri) {
+  const LineTriangle lt = lineTriangle(p, d, tri);
+  const bool maybe_pos = lt.u >= -lt.tol_u && lt.v >= -lt.tol_v && lt.w >= -lt.tol_w;
+  const bool maybe_neg = lt.u <= lt.tol_u && lt.v <= lt.tol_v && lt.w <= lt.tol_w;
+  const double sum = lt.u + lt.v + lt.w;
+  if ((!maybe_pos && !maybe_neg) || sum == 0.0) return std::numeric_limits<double>::quiet_NaN();
+  return lt.det / sum;
+}
+
 }  // namespace
 
 SolidIndex::SolidIndex(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
@@ -151,19 +162,50 @@ std::vector<double> SolidIndex::segmentCrossings(const Vec3& a, const Vec3& b) c
   std::vector<double> ts;
   im.bvh.traverse([&](const Vec3& mn, const Vec3& mx) { return rayHitsBox(a, inv_d, 1.0, mn, mx); },
                   [&](int32_t i) {
-                    const LineTriangle lt = lineTriangle(a, d, im.bvh.tris[i]);
-                    const bool maybe_pos =
-                        lt.u >= -lt.tol_u && lt.v >= -lt.tol_v && lt.w >= -lt.tol_w;
-                    const bool maybe_neg = lt.u <= lt.tol_u && lt.v <= lt.tol_v && lt.w <= lt.tol_w;
-                    if (!maybe_pos && !maybe_neg) return;
-                    const double sum = lt.u + lt.v + lt.w;
-                    if (sum == 0.0) return;
-                    const double t = lt.det / sum;
+                    const double t = rayTriangleT(a, d, im.bvh.tris[i]);
                     if (t > 0.0 && t < 1.0) ts.push_back(t);
                   });
   std::sort(ts.begin(), ts.end());
   ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
   return ts;
+}
+
+bool SolidIndex::raycast(const Vec3& o, const Vec3& d, double t_min, double t_max,
+                         RayHit* hit) const {
+  const Impl& im = *impl_;
+  const Vec3 inv_d = d.cwiseInverse();
+  double best = t_max;
+  int32_t best_i = -1;
+  im.bvh.traverse(
+      [&](const Vec3& mn, const Vec3& mx) { return rayHitsBox(o, inv_d, best, mn, mx); },
+      [&](int32_t i) {
+        const double t = rayTriangleT(o, d, im.bvh.tris[i]);
+        if (t > t_min && t <= best) {
+          best = t;
+          best_i = i;
+        }
+      });
+  if (best_i < 0) return false;
+  if (hit) {
+    hit->t = best;
+    hit->triangle = im.bvh.original[best_i];
+    hit->normal = im.bvh.tris[best_i].n;
+  }
+  return true;
+}
+
+bool SolidIndex::occluded(const Vec3& o, const Vec3& d, double t_min, double t_max) const {
+  const Impl& im = *impl_;
+  const Vec3 inv_d = d.cwiseInverse();
+  bool found = false;
+  im.bvh.traverse(
+      [&](const Vec3& mn, const Vec3& mx) { return !found && rayHitsBox(o, inv_d, t_max, mn, mx); },
+      [&](int32_t i) {
+        if (found) return;
+        const double t = rayTriangleT(o, d, im.bvh.tris[i]);
+        found = t > t_min && t <= t_max;
+      });
+  return found;
 }
 
 double SolidIndex::outsideLength(const Vec3& a, const Vec3& b) const {

@@ -113,5 +113,37 @@ TEST(Evaluate, OutsideLengthAgainstSpheres) {
   EXPECT_NEAR(segmentOutsideLengthBruteForce(s, Vec3(-2, 5, 0), Vec3(4, 5, 0)), 6.0, 1e-12);
 }
 
+TEST(Evaluate, ShadowsOfASphereMeshAndOfThatSphereAgree) {
+  // A fine icosphere and the ball it approximates cast nearly the same shadow; a ball twice
+  // as large, or no ball at all, does not.
+  const SolidIndex idx(test::makeIcosphere(1.0, 4));
+  const std::vector<Sphere> same = {{Vec3::Zero(), 1.0}};
+  const std::vector<Sphere> big = {{Vec3::Zero(), 2.0}};
+  const ShadowResult a = compareShadows(idx, same, 2, 32, 48);
+  const ShadowResult b = compareShadows(idx, big, 2, 32, 48);
+  const ShadowResult none = compareShadows(idx, {}, 2, 32, 48);
+  EXPECT_EQ(a.pixels, 32 * 32);
+  EXPECT_LT(a.sky_rms, 0.01);
+  EXPECT_LT(a.lights_rms, 0.03);
+  EXPECT_GT(b.sky_rms, 5 * a.sky_rms);
+  EXPECT_GT(none.sky_rms, 5 * a.sky_rms);
+  // The up axis only turns the scene: a sphere looks the same from every axis.
+  const ShadowResult ay = compareShadows(idx, same, 1, 32, 48);
+  EXPECT_NEAR(ay.sky_rms, a.sky_rms, 0.003);
+}
+
+TEST(Evaluate, HemisphereDirectionsAreUnitUpwardAndBalanced) {
+  const Vec3 up = Vec3(1, 2, 2).normalized();
+  const auto dirs = hemisphereDirections(500, up);
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& d : dirs) {
+    EXPECT_NEAR(d.norm(), 1.0, 1e-12);
+    EXPECT_GT(d.dot(up), 0.0);
+    mean += d / 500.0;
+  }
+  // Uniform over the hemisphere: the mean direction is up/2.
+  EXPECT_NEAR((mean - 0.5 * up).norm(), 0.0, 0.01);
+}
+
 }  // namespace
 }  // namespace sphereset

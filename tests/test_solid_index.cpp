@@ -2,6 +2,7 @@
 // analytic answers, including the degenerate positions that break naive ray casting.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 #include "sphereset/solid_index.hpp"
@@ -128,6 +129,43 @@ TEST(SolidIndex, OutsideLengthOfSegmentsThroughABox) {
   const SolidIndex tor(test::makeTorus(1.0, 0.3, 64, 32));
   const double len = tor.outsideLength(Vec3(-1.3, 0, 0), Vec3(1.3, 0, 0));
   EXPECT_NEAR(len, 1.4, 0.01);
+}
+
+TEST(SolidIndex, RaycastMatchesBruteForceOverTriangles) {
+  const Mesh torus = test::makeTorus(1.0, 0.4, 40, 20);
+  const SolidIndex idx(torus);
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  int hits = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const Vec3 o(u(rng), u(rng), u(rng));
+    const Vec3 d = Vec3(u(rng), u(rng), u(rng)).normalized();
+    // Brute force: Möller-Trumbore over every triangle.
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& t : torus.triangles) {
+      const Vec3 &a = torus.vertices[t[0]], &b = torus.vertices[t[1]], &c = torus.vertices[t[2]];
+      const Vec3 e1 = b - a, e2 = c - a, pv = d.cross(e2);
+      const double det = e1.dot(pv);
+      if (std::abs(det) < 1e-14) continue;
+      const Vec3 tv = o - a;
+      const double bu = tv.dot(pv) / det;
+      const Vec3 qv = tv.cross(e1);
+      const double bv = d.dot(qv) / det;
+      const double tt = e2.dot(qv) / det;
+      if (bu >= 0 && bv >= 0 && bu + bv <= 1 && tt > 0 && tt < best) best = tt;
+    }
+    RayHit h;
+    const bool hit = idx.raycast(o, d, 0.0, 100.0, &h);
+    ASSERT_EQ(hit, std::isfinite(best)) << k;
+    EXPECT_EQ(idx.occluded(o, d, 0.0, 100.0), hit);
+    if (hit) {
+      ++hits;
+      EXPECT_NEAR(h.t, best, 1e-9);
+      // The normal faces the ray where it enters the solid (the origin outside).
+      if (idx.classify(o) == Containment::kOutside) EXPECT_LT(h.normal.dot(d), 0.0);
+    }
+  }
+  EXPECT_GT(hits, 200);
 }
 
 }  // namespace

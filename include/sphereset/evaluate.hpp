@@ -15,6 +15,12 @@ struct EvalOptions {
   int proximity_segments = 3000;   // random surface-to-surface segments (paper Sec. 7)
   int surface_max_depth = 8;       // 4^depth sub-triangles at most per triangle
   int interior_max_depth = 5;      // octree refinement below an 8³ grid of the bounds
+  // Shadow comparison on a ground plane under the object (paper Sec. 7): the up axis
+  // (0 x, 1 y, 2 z), pixels per side of the plane and directional lights over the upper
+  // hemisphere. A resolution of 0 skips it.
+  int up_axis = 1;
+  int shadow_resolution = 48;
+  int shadow_lights = 64;
 };
 
 struct EvalResult {
@@ -39,11 +45,30 @@ struct EvalResult {
   // Proximity (paper Sec. 7): mean |outside length vs mesh - outside length vs spheres| over
   // random surface-to-surface segments, / diag.
   double proximity_error = 0.0;
+  // Shadow RMS errors (irradiance on the ground plane, 1 = unoccluded light from straight
+  // above): uniform sky light (ambient occlusion) and each directional light on its own.
+  double shadow_error_sky = 0.0;
+  double shadow_error_lights = 0.0;
   double seconds = 0.0;
 };
 
 // Needs a closed solid (callers check with diagnoseMesh first) and at least one sphere.
 EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& spheres,
                            const EvalOptions& options = {});
+
+// Shadows of the mesh and of the spheres on a ground plane just under the mesh's lowest point
+// (a square 3 times the object's largest extent, resolution² pixels), lit by `lights`
+// directional lights spread evenly over the upper hemisphere. See shadow.cpp.
+struct ShadowResult {
+  double sky_rms = 0.0;     // RMS over pixels of the sky-light irradiance difference
+  double lights_rms = 0.0;  // RMS over pixels and lights of the per-light irradiance difference
+  int pixels = 0, lights = 0;
+};
+ShadowResult compareShadows(const SolidIndex& index, const std::vector<Sphere>& spheres,
+                            int up_axis, int resolution, int lights);
+
+// Directions over the hemisphere about the unit vector `up`, each standing for the same solid
+// angle (a deterministic spiral).
+std::vector<Vec3> hemisphereDirections(int count, const Vec3& up);
 
 }  // namespace sphereset

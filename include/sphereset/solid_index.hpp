@@ -33,6 +33,13 @@ struct OutsideVolume {
   Containment center = Containment::kOutside;
 };
 
+// The first surface point met by a ray.
+struct RayHit {
+  double t = 0.0;              // ray parameter (in units of the direction vector)
+  int32_t triangle = -1;       // original triangle index
+  Vec3 normal = Vec3::Zero();  // the triangle's outward unit normal
+};
+
 class SolidIndex {
  public:
   // The mesh is copied into the index (in the hierarchy's order); it should be a closed,
@@ -58,6 +65,10 @@ class SolidIndex {
 
   // Parameters t in (0, 1) where the segment a + t (b - a) meets a triangle, sorted.
   std::vector<double> segmentCrossings(const Vec3& a, const Vec3& b) const;
+  // Closest hit of the ray o + t d with t_min < t <= t_max (edges and vertices count as hits).
+  bool raycast(const Vec3& o, const Vec3& d, double t_min, double t_max, RayHit* hit) const;
+  // Whether the ray o + t d, t_min < t <= t_max, meets the surface at all (stops at the first hit).
+  bool occluded(const Vec3& o, const Vec3& d, double t_min, double t_max) const;
   // Length of the part of segment [a, b] that lies outside the solid.
   double outsideLength(const Vec3& a, const Vec3& b) const;
 
