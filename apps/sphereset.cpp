@@ -13,12 +13,14 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/query.hpp"
+#include "sphereset/render.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/tree.hpp"
@@ -371,6 +373,44 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"minimal", "outside"}));
   tree->add_flag("--json", json, "Print the summary as one JSON object on stdout");
 
+  MeshArgs render_args;
+  std::string render_spheres, render_out,
+      render_size = "1200x900", render_views = "front,side,top,three-quarter", render_up = "y";
+  RenderOptions ro;
+  CLI::App* render = app.add_subcommand(
+      "render", "Draw the mesh with the spheres over it, from several views, to a PNG");
+  render->add_option("mesh", render_args.path, "Mesh file")->required();
+  render->add_option("--weld-tolerance", render_args.weld,
+                     "Merge vertices closer than this (absolute units)");
+  render->add_option("spheres", render_spheres, "Sphere set or tree (its leaves are drawn)");
+  render->add_option("-o,--output", render_out, "PNG file")->required();
+  render->add_option("--size", render_size, "Image size WxH")->capture_default_str();
+  render
+      ->add_option("--views", render_views,
+                   "Up to four of front, side, top, three-quarter, comma-separated")
+      ->capture_default_str();
+  render->add_option("--up", render_up, "Up axis")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"x", "y", "z"}));
+  render->add_option("--opacity", ro.sphere_opacity, "Opacity of each sphere surface")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  bool no_ground = false;
+  render->add_flag("--no-ground", no_ground, "No ground plane");
+
+  std::string export_in, export_out;
+  int export_subdiv = 2;
+  CLI::App* exp = app.add_subcommand(
+      "export",
+      "Write a sphere set as a triangle mesh (.ply, .obj, .gltf, .glb), one colour "
+      "per sphere");
+  exp->add_option("spheres", export_in, "Sphere set or tree (its leaves are written)")->required();
+  exp->add_option("-o,--output", export_out, "Mesh file: .ply, .obj, .gltf or .glb")->required();
+  exp->add_option("--subdivisions", export_subdiv,
+                  "Icosahedron subdivisions per sphere (20·4^s triangles)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 6));
+
   std::string query_path, other_path;
   std::vector<double> q_points, q_segments, other_pose;
   CLI::App* query =
@@ -593,6 +633,58 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "  time %.2f s fit + %.2f s tree\n", r->fit.seconds.total,
                      r->tree.seconds);
       }
+      return kOk;
+    }
+    if (*render) {
+      int w = 0, h = 0;
+      char x = 0, extra = 0;
+      if (std::sscanf(render_size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 ||
+          (x != 'x' && x != 'X'))
+        return fail(
+            Error{ErrorCode::kInvalidArgument, "--size: expected WxH, got '" + render_size + "'"});
+      ro.width = w;
+      ro.height = h;
+      ro.up_axis = render_up[0] - 'x';
+      ro.ground = !no_ground;
+      ro.views.clear();
+      std::stringstream vs(render_views);
+      for (std::string v; std::getline(vs, v, ',');) {
+        if (v == "front")
+          ro.views.push_back(View::kFront);
+        else if (v == "side")
+          ro.views.push_back(View::kSide);
+        else if (v == "top")
+          ro.views.push_back(View::kTop);
+        else if (v == "three-quarter")
+          ro.views.push_back(View::kThreeQuarter);
+        else
+          return fail(Error{ErrorCode::kInvalidArgument, "--views: unknown view '" + v + "'"});
+      }
+      if (render_out.size() < 4 || std::filesystem::path(render_out).extension().string() != ".png")
+        return fail(Error{ErrorCode::kInvalidArgument, render_out + ": the output must be .png"});
+      // The mesh is drawn even when it is not a closed solid.
+      LoadOptions lo;
+      lo.weld_tolerance = render_args.weld;
+      auto m = loadMesh(render_args.path, lo);
+      if (!m) return fail(m.error());
+      std::vector<Sphere> spheres;
+      if (!render_spheres.empty()) {
+        auto t = readSphereTree(render_spheres);
+        if (!t) return fail(t.error());
+        spheres = t->leaves();
+      }
+      const SolidIndex index(m->mesh);
+      auto img = renderScene(&index, spheres, ro);
+      if (!img) return fail(img.error());
+      Status st = writePng(render_out, *img);
+      if (!st) return fail(st.error());
+      return kOk;
+    }
+    if (*exp) {
+      auto t = readSphereTree(export_in);
+      if (!t) return fail(t.error());
+      Status st = writeSphereSetMesh(export_out, t->leaves(), export_subdiv);
+      if (!st) return fail(st.error());
       return kOk;
     }
     if (*query) {

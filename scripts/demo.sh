@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
 # The main job on the bundled example (Keenan Crane's "spot", CC0): diagnose the mesh, fit 32
-# spheres, and measure them. Installs and builds first when needed.
+# spheres, measure them and draw them. Installs and builds first when needed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-if [ ! -x build/apps/sphereset ]; then
-  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build build -j "$(nproc)" --target sphereset_cli
-fi
+[ -f build/CMakeCache.txt ] || cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j "$(nproc)" --target sphereset_cli
 mkdir -p out
 ./build/apps/sphereset check examples/spot.obj
 ./build/apps/sphereset fit examples/spot.obj -n 32 -o out/spot_32.json
 ./build/apps/sphereset eval examples/spot.obj out/spot_32.json
 echo "For comparison, one sphere around the bounding box:"
 ./build/apps/sphereset eval examples/spot.obj examples/spot_bounding_sphere.txt
+./build/apps/sphereset render examples/spot.obj out/spot_32.json -o out/spot_32.png
+./build/apps/sphereset export out/spot_32.json -o out/spot_32_spheres.ply
+echo "Picture: out/spot_32.png (front, side, top, three-quarter); spheres as a mesh: out/spot_32_spheres.ply"

@@ -66,3 +66,14 @@ cli_test(query_bad_point 2 ARGS query ${work}/bound.txt --point 0,0 STDERR "--po
 cli_test(query_pair_json 0 ARGS query ${work}/bound.txt --other ${work}/bound.txt
          --pose 1,0,0,1,0,0,0 --json STDOUT "\"overlap\":false")
 cli_test(query_missing 3 ARGS query ${work}/missing.txt --point 0,0,0 STDERR "missing.txt")
+cli_test(render_png 0 ARGS render ${link} ${work}/bound.txt -o ${work}/link.png --size 160x120 --up z)
+cli_test(render_bad_size 2 ARGS render ${link} -o ${work}/never7.png --size 10 STDERR "--size: expected WxH"
+         FORBID ${work}/never7.png)
+cli_test(render_bad_view 2 ARGS render ${link} -o ${work}/never8.png --views front,back
+         STDERR "unknown view 'back'" FORBID ${work}/never8.png)
+cli_test(render_not_png 2 ARGS render ${link} -o ${work}/never9.jpg STDERR "must be .png"
+         FORBID ${work}/never9.jpg)
+cli_test(export_ply 0 ARGS export ${work}/bound.txt -o ${work}/bound_spheres.ply)
+cli_test(export_glb 0 ARGS export ${work}/bound.txt -o ${work}/bound_spheres.glb --subdivisions 1)
+cli_test(export_bad_extension 2 ARGS export ${work}/bound.txt -o ${work}/never10.stl
+         STDERR "never10.stl: unknown mesh extension" FORBID ${work}/never10.stl)

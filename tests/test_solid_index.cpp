@@ -162,7 +162,9 @@ TEST(SolidIndex, RaycastMatchesBruteForceOverTriangles) {
       ++hits;
       EXPECT_NEAR(h.t, best, 1e-9);
       // The normal faces the ray where it enters the solid (the origin outside).
-      if (idx.classify(o) == Containment::kOutside) EXPECT_LT(h.normal.dot(d), 0.0);
+      if (idx.classify(o) == Containment::kOutside) {
+        EXPECT_LT(h.normal.dot(d), 0.0);
+      }
     }
   }
   EXPECT_GT(hits, 200);

@@ -106,5 +106,33 @@ TEST_F(SphereIo, FailedWritesLeaveNoFile) {
   EXPECT_EQ(files, 1);
 }
 
+TEST(SphereExport, MeshesReadBackAsClosedSolidsInsideTheSpheres) {
+  const std::vector<Sphere> spheres = {{Vec3(0, 0, 0), 1.0}, {Vec3(3, 0, 0), 0.5}};
+  const SphereSetMesh m = sphereSetMesh(spheres, 2);
+  EXPECT_EQ(m.mesh.triangles.size(), 2u * 20u * 16u);
+  for (size_t i = 0; i < m.mesh.vertices.size(); ++i) {
+    const Sphere& s = spheres[i / m.vertices_per_sphere];
+    EXPECT_NEAR((m.mesh.vertices[i] - s.center).norm(), s.radius, 1e-12);
+  }
+  const auto dir = std::filesystem::temp_directory_path() / "sphereset_export_test";
+  std::filesystem::create_directories(dir);
+  for (const char* name : {"s.ply", "s.obj", "s.gltf", "s.glb"}) {
+    const std::string path = (dir / name).string();
+    ASSERT_TRUE(writeSphereSetMesh(path, spheres, 2).ok()) << name;
+    auto back = loadMesh(path);
+    ASSERT_TRUE(back.ok()) << name << ": " << back.error().message;
+    const MeshDiagnosis d = diagnoseMesh(back->mesh);
+    EXPECT_TRUE(d.isSolid()) << name;
+    EXPECT_EQ(d.components, 2) << name;
+    EXPECT_EQ(d.triangles, 640) << name;
+    // Volume of two inscribed polyhedra: a little below that of the balls.
+    const double balls = 4.0 / 3.0 * M_PI * (1.0 + 0.125);
+    EXPECT_LT(d.volume, balls) << name;
+    EXPECT_GT(d.volume, 0.95 * balls) << name;
+  }
+  EXPECT_FALSE(writeSphereSetMesh((dir / "s.stl").string(), spheres).ok());
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace sphereset

@@ -1,6 +1,8 @@
 // Spheres and sphere sets: plain data and file formats.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -45,6 +47,22 @@ Status writeSpheres(const std::string& path, const std::vector<Sphere>& spheres,
 // The same, into a string (tests and embedding).
 std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& spheres,
                           const SphereFileMeta& meta = {});
+
+// A sphere set as one triangle mesh: each sphere a subdivided icosahedron (20·4^s triangles)
+// with its vertices on the sphere, so the mesh lies inside it.
+struct SphereSetMesh {
+  Mesh mesh;
+  std::vector<Vec3> normals;                    // per vertex
+  std::vector<std::array<uint8_t, 3>> colours;  // per vertex, one colour per sphere
+  int32_t vertices_per_sphere = 0;
+};
+SphereSetMesh sphereSetMesh(const std::vector<Sphere>& spheres, int subdivisions = 2);
+// Writes it as .ply (binary, vertex colours), .obj (one object per sphere, vertex colours) or
+// glTF 2.0 (.gltf with an embedded buffer, or .glb), atomically.
+Status writeSphereSetMesh(const std::string& path, const std::vector<Sphere>& spheres,
+                          int subdivisions = 2);
+// The colour of sphere i in pictures and exported meshes (a fixed palette).
+std::array<uint8_t, 3> sphereColour(size_t i);
 
 // Writes a whole file atomically (temporary file + rename). Used by every writer.
 Status writeFileAtomically(const std::string& path, const std::string& contents);

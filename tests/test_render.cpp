@@ -1,0 +1,78 @@
+// The renderer on a known scene: where the sphere is, where nothing is, where the shadow is.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "sphereset/render.hpp"
+#include "test_meshes.hpp"
+
+namespace sphereset {
+namespace {
+
+int brightness(const Image& img, double x, double y) {
+  const auto c = img.at(static_cast<int>(x), static_cast<int>(y));
+  return c[0] + c[1] + c[2];
+}
+
+TEST(Render, SpherePresentAbsentAndShadow) {
+  const SolidIndex box(test::makeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1)));
+  const std::vector<Sphere> ball = {{Vec3::Zero(), 1.8}};
+  RenderOptions o;
+  o.width = 240;
+  o.height = 240;
+  o.views = {View::kFront};
+  o.up_axis = 1;
+  auto with = renderScene(&box, ball, o);
+  RenderOptions clear = o;  // the same framing, the sphere fully transparent
+  clear.sphere_opacity = 0.0;
+  auto without = renderScene(&box, ball, clear);
+  ASSERT_TRUE(with.ok() && without.ok());
+  const std::vector<Camera> cams = renderCameras(&box, ball, o);
+  ASSERT_EQ(cams.size(), 1u);
+  double px, py;
+  // The box's front face centre: the translucent sphere changes it.
+  ASSERT_TRUE(cams[0].project(Vec3(0, 0, 1), &px, &py));
+  EXPECT_NEAR(px, 120, 2);
+  const auto a = with->at(px, py), b = without->at(px, py);
+  EXPECT_NE(a, b);
+  // Just outside the sphere's silhouette on the left: the same pixel either way.
+  ASSERT_TRUE(cams[0].project(Vec3(-2.0, 0.3, 0), &px, &py));
+  EXPECT_EQ(with->at(px, py), without->at(px, py));
+  // A sky pixel at the top-left corner is the background, with or without the sphere.
+  EXPECT_EQ(with->at(3, 3), without->at(3, 3));
+
+  // The shadow: the light comes from up + 0.45 z + 0.3 x, so the box's shadow falls on the
+  // ground on the -z side; the ground on the +z side, as far from the box, is lit.
+  o.views = {View::kTop};
+  auto top = renderScene(&box, {}, o);
+  ASSERT_TRUE(top.ok());
+  const std::vector<Camera> tc = renderCameras(&box, {}, o);
+  double sx, sy, lx, ly;
+  ASSERT_TRUE(tc[0].project(Vec3(-0.3, -1, -1.6), &sx, &sy));
+  ASSERT_TRUE(tc[0].project(Vec3(-0.3, -1, 1.6), &lx, &ly));
+  EXPECT_LT(brightness(*top, sx, sy) + 100, brightness(*top, lx, ly));
+}
+
+TEST(Render, PngIsWrittenAndBadOptionsAreRefused) {
+  const std::vector<Sphere> ball = {{Vec3::Zero(), 1.0}};
+  RenderOptions o;
+  o.width = 64;
+  o.height = 48;
+  auto img = renderScene(nullptr, ball, o);
+  ASSERT_TRUE(img.ok());
+  EXPECT_EQ(img->rgb.size(), 64u * 48u * 3u);
+  const auto path = std::filesystem::temp_directory_path() / "sphereset_render_test.png";
+  ASSERT_TRUE(writePng(path.string(), *img).ok());
+  std::ifstream in(path, std::ios::binary);
+  char sig[8] = {};
+  in.read(sig, 8);
+  EXPECT_EQ(std::string(sig + 1, 3), "PNG");
+  std::filesystem::remove(path);
+  EXPECT_FALSE(renderScene(nullptr, {}, o).ok());
+  o.width = 5;
+  EXPECT_FALSE(renderScene(nullptr, ball, o).ok());
+}
+
+}  // namespace
+}  // namespace sphereset
