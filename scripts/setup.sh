@@ -15,6 +15,7 @@ packages=(
   libbenchmark-dev     # micro-benchmarks
   libpng-dev           # PNG pictures
   python3              # benchmark scripts (CSV tables)
+  python3-matplotlib   # benchmark plots (PNG)
 )
 
 missing=()
