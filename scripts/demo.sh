@@ -12,6 +12,6 @@ mkdir -p out
 ./build/apps/sphereset eval examples/spot.obj out/spot_32.json
 echo "For comparison, one sphere around the bounding box:"
 ./build/apps/sphereset eval examples/spot.obj examples/spot_bounding_sphere.txt
-./build/apps/sphereset render examples/spot.obj out/spot_32.json -o out/spot_32.png
 ./build/apps/sphereset export out/spot_32.json -o out/spot_32_spheres.ply
+./build/apps/sphereset render examples/spot.obj out/spot_32.json -o out/spot_32.png
 echo "Picture: out/spot_32.png (front, side, top, three-quarter); spheres as a mesh: out/spot_32_spheres.ply"

@@ -176,40 +176,54 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
     res.energy_history.push_back(best_energy);
     best_members.assign(best_spheres.size(), {});
   }
-  for (int it = 0; variational && it < std::max(1, o.max_iterations); ++it) {
+  // One Lloyd round on a point set: assignment by least outside-volume increase, then the
+  // sphere update of every cluster (in parallel; deterministic per cluster).
+  struct Round {
+    std::vector<Sphere> spheres;
+    std::vector<std::vector<Vec3>> members;
+    std::vector<double> sov;
+    double energy = 0.0;
+    bool complete = true;
+  };
+  auto lloydRound = [&](const detail::PointSet& points) {
+    Round rd;
     const auto ta = Clock::now();
     detail::AssignStats as;
-    detail::assignPoints(index, ps, &clusters, &labels, &as);
+    detail::assignPoints(index, points, &clusters, &labels, &as);
     res.sov_queries += as.queries;
     res.sov_queries_culled += as.culled;
     res.seconds.assignment += since(ta);
-
-    // Points per cluster.
-    std::vector<std::vector<Vec3>> members(n);
-    for (size_t p = 0; p < labels.size(); ++p) members[labels[p]].push_back(ps.points[p]);
-    bool complete = true;
-    for (int i = 0; i < n; ++i) complete = complete && !members[i].empty();
-
-    // Sphere update, each cluster independently (in parallel; deterministic per cluster).
+    rd.members.assign(n, {});
+    for (size_t p = 0; p < labels.size(); ++p) rd.members[labels[p]].push_back(points.points[p]);
+    for (int i = 0; i < n; ++i) rd.complete = rd.complete && !rd.members[i].empty();
     const auto tu = Clock::now();
     std::vector<detail::SphereUpdate> upd(n);
     tbb::parallel_for(0, n, [&](int i) {
-      if (members[i].empty()) {
+      if (rd.members[i].empty()) {
         upd[i].sphere = {clusters[i].center, 0.0};
         return;
       }
-      upd[i] = detail::updateSphere(index, members[i], clusters[i].center, o.optimizer,
+      upd[i] = detail::updateSphere(index, rd.members[i], clusters[i].center, o.optimizer,
                                     o.optimizer_evaluations);
     });
     res.seconds.update += since(tu);
-    double energy = 0.0;
-    std::vector<Sphere> spheres(n);
+    rd.spheres.resize(n);
+    rd.sov.resize(n);
     for (int i = 0; i < n; ++i) {
-      spheres[i] = upd[i].sphere;
+      rd.spheres[i] = upd[i].sphere;
+      rd.sov[i] = upd[i].sov;
       clusters[i].center = upd[i].sphere.center;
-      energy += upd[i].sov;
+      rd.energy += upd[i].sov;
       res.optimizer_queries += upd[i].queries;
     }
+    return rd;
+  };
+  for (int it = 0; variational && it < std::max(1, o.max_iterations); ++it) {
+    Round rd = lloydRound(ps);
+    const double energy = rd.energy;
+    const bool complete = rd.complete;
+    std::vector<std::vector<Vec3>>& members = rd.members;
+    const std::vector<Sphere>& spheres = rd.spheres;
     res.energy_history.push_back(energy);
     res.iterations = it + 1;
     report("clustering", it + 1, energy);
@@ -239,7 +253,7 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
         if (!members[i].empty()) continue;
         int worst = -1;
         for (int j = 0; j < n; ++j)
-          if (members[j].size() > 1 && (worst < 0 || upd[j].sov > upd[worst].sov)) worst = j;
+          if (members[j].size() > 1 && (worst < 0 || rd.sov[j] > rd.sov[worst])) worst = j;
         if (worst < 0) break;
         clusters[i].center = farthestFrom(members[worst], clusters[worst].center);
         members[worst].clear();  // one restart per donor and round
@@ -310,22 +324,28 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
   // that grew are refitted once with the pieces they had to take added to their points, so
   // that their centres can move instead of only their radii growing; a last pass then
   // guarantees the bound.
-  std::vector<std::vector<Vec3>> held;
-  detail::BoundStats bs = detail::boundSurface(index, &best_spheres, min_edge, &held);
-  res.bounding_pieces += bs.pieces;
-  res.bounding_queries += bs.queries;
-  for (int pass = 0; variational && pass < kRefitPasses && bs.enlarged > 0; ++pass) {
-    tbb::parallel_for(0, n, [&](int i) {
-      if (held[i].empty()) return;
-      best_members[i].insert(best_members[i].end(), held[i].begin(), held[i].end());
-      const detail::SphereUpdate u = detail::updateSphere(
-          index, best_members[i], best_spheres[i].center, o.optimizer, o.optimizer_evaluations);
-      best_spheres[i] = u.sphere;
-    });
-    bs = detail::boundSurface(index, &best_spheres, min_edge, &held);
-    res.bounding_pieces += bs.pieces;
-    res.bounding_queries += bs.queries;
-  }
+  // Bounds `sp` (the clusters' points in `mem`), refitting the spheres that grew; returns
+  // the last pass's statistics.
+  auto boundWithRefits = [&](std::vector<Sphere>* sp, std::vector<std::vector<Vec3>>* mem) {
+    std::vector<std::vector<Vec3>> held;
+    detail::BoundStats b = detail::boundSurface(index, sp, min_edge, &held);
+    res.bounding_pieces += b.pieces;
+    res.bounding_queries += b.queries;
+    for (int pass = 0; variational && pass < kRefitPasses && b.enlarged > 0; ++pass) {
+      tbb::parallel_for(0, n, [&](int i) {
+        if (held[i].empty()) return;
+        (*mem)[i].insert((*mem)[i].end(), held[i].begin(), held[i].end());
+        (*sp)[i] = detail::updateSphere(index, (*mem)[i], (*sp)[i].center, o.optimizer,
+                                        o.optimizer_evaluations)
+                       .sphere;
+      });
+      b = detail::boundSurface(index, sp, min_edge, &held);
+      res.bounding_pieces += b.pieces;
+      res.bounding_queries += b.queries;
+    }
+    return b;
+  };
+  detail::BoundStats bs = boundWithRefits(&best_spheres, &best_members);
   res.bounding_enlarged = bs.enlarged;
   // Interior: the cubes of the evaluation's octree test whose centres lie inside the solid
   // must be covered too (between grid points the clusters' spheres can leave gaps, most of

@@ -48,6 +48,39 @@ struct CellHash {
 
 }  // namespace
 
+void buildAdjacency(PointSet* ps, double cell) {
+  const int64_t n = static_cast<int64_t>(ps->points.size());
+  ps->cell = cell;
+  const double reach2 = (1.8 * cell) * (1.8 * cell);
+  std::unordered_map<std::array<int64_t, 3>, std::vector<int32_t>, CellHash> grid;
+  auto key = [&](const Vec3& p) {
+    return std::array<int64_t, 3>{static_cast<int64_t>(std::floor(p.x() / cell)),
+                                  static_cast<int64_t>(std::floor(p.y() / cell)),
+                                  static_cast<int64_t>(std::floor(p.z() / cell))};
+  };
+  for (int64_t i = 0; i < n; ++i) grid[key(ps->points[i])].push_back(static_cast<int32_t>(i));
+  std::vector<std::vector<int32_t>> nb(n);
+  tbb::parallel_for(int64_t{0}, n, [&](int64_t i) {
+    const auto k = key(ps->points[i]);
+    for (int dx = -2; dx <= 2; ++dx)
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dz = -2; dz <= 2; ++dz) {
+          auto it = grid.find({k[0] + dx, k[1] + dy, k[2] + dz});
+          if (it == grid.end()) continue;
+          for (int32_t j : it->second)
+            if (j != i && (ps->points[j] - ps->points[i]).squaredNorm() <= reach2)
+              nb[i].push_back(j);
+        }
+    std::sort(nb[i].begin(), nb[i].end());
+  });
+  ps->adj_start.assign(n + 1, 0);
+  for (int64_t i = 0; i < n; ++i)
+    ps->adj_start[i + 1] = ps->adj_start[i] + static_cast<int32_t>(nb[i].size());
+  ps->adj.clear();
+  ps->adj.reserve(ps->adj_start[n]);
+  for (auto& v : nb) ps->adj.insert(ps->adj.end(), v.begin(), v.end());
+}
+
 PointSet samplePoints(const SolidIndex& index, int64_t target, double interior_share,
                       uint64_t seed) {
   PointSet ps;
@@ -70,37 +103,10 @@ PointSet samplePoints(const SolidIndex& index, int64_t target, double interior_s
   std::mt19937_64 rng(mixSeed(seed, 77));
   for (int64_t k = 0; k < want_surface; ++k) ps.points.push_back(sampler.sample(rng));
 
-  // Adjacency through a hash grid: neighbours within kReach cells of spacing `cell`.
-  const int64_t n = static_cast<int64_t>(ps.points.size());
+  // Adjacency through a hash grid, over cells of about the larger point spacing.
   const double surface_spacing =
       want_surface > 0 ? std::sqrt(surfaceArea(mesh) / static_cast<double>(want_surface)) : h;
-  const double cell = 1.01 * std::max(h, surface_spacing);
-  const double reach2 = (1.8 * cell) * (1.8 * cell);
-  std::unordered_map<std::array<int64_t, 3>, std::vector<int32_t>, CellHash> grid;
-  auto key = [&](const Vec3& p) {
-    return std::array<int64_t, 3>{static_cast<int64_t>(std::floor(p.x() / cell)),
-                                  static_cast<int64_t>(std::floor(p.y() / cell)),
-                                  static_cast<int64_t>(std::floor(p.z() / cell))};
-  };
-  for (int64_t i = 0; i < n; ++i) grid[key(ps.points[i])].push_back(static_cast<int32_t>(i));
-  std::vector<std::vector<int32_t>> nb(n);
-  tbb::parallel_for(int64_t{0}, n, [&](int64_t i) {
-    const auto k = key(ps.points[i]);
-    for (int dx = -2; dx <= 2; ++dx)
-      for (int dy = -2; dy <= 2; ++dy)
-        for (int dz = -2; dz <= 2; ++dz) {
-          auto it = grid.find({k[0] + dx, k[1] + dy, k[2] + dz});
-          if (it == grid.end()) continue;
-          for (int32_t j : it->second)
-            if (j != i && (ps.points[j] - ps.points[i]).squaredNorm() <= reach2) nb[i].push_back(j);
-        }
-    std::sort(nb[i].begin(), nb[i].end());
-  });
-  ps.adj_start.assign(n + 1, 0);
-  for (int64_t i = 0; i < n; ++i)
-    ps.adj_start[i + 1] = ps.adj_start[i] + static_cast<int32_t>(nb[i].size());
-  ps.adj.reserve(ps.adj_start[n]);
-  for (auto& v : nb) ps.adj.insert(ps.adj.end(), v.begin(), v.end());
+  buildAdjacency(&ps, 1.01 * std::max(h, surface_spacing));
   return ps;
 }
 

@@ -14,7 +14,11 @@ struct PointSet {
   double spacing = 0.0;      // grid spacing of the interior points
   // Flood-fill adjacency (CSR): neighbours of point i are adj[adj_start[i] .. adj_start[i+1]).
   std::vector<int32_t> adj_start, adj;
+  double cell = 0.0;  // the adjacency's cell size
 };
+
+// (Re)builds the adjacency: neighbours are points closer than 1.8 cells.
+void buildAdjacency(PointSet* ps, double cell);
 
 // Interior points on a regular grid of cell centres (robust point-in-solid), about
 // target * interior_share of them, refined when the solid is too thin to hold them; surface
