@@ -36,6 +36,7 @@ TEST(Query, PointQueriesMatchBruteForce) {
   for (int n : {1, 64, 500}) {
     const auto s = blob(n, n);
     const SphereTree t = queryTree(s);
+    ASSERT_TRUE(checkSphereTree(t).ok());
     std::mt19937_64 rng(7);
     for (int k = 0; k < 500; ++k) {
       const Vec3 p = randomPoint(rng);
@@ -70,6 +71,7 @@ TEST(Query, SeparationAndOverlapMatchBruteForceUnderRandomPoses) {
   for (int k = 0; k < 200; ++k) {
     const auto sa = blob(20 + k % 90, 100 + k), sb = blob(10 + k % 70, 500 + k);
     const SphereTree ta = queryTree(sa, 4 + k % 5), tb = queryTree(sb);
+    ASSERT_TRUE(checkSphereTree(ta).ok() && checkSphereTree(tb).ok());
     const Pose pa = randomPose(rng, 1.0), pb = randomPose(rng, 4.0);
     const PairQuery q = separation(ta, pa, tb, pb);
     const PairQuery o = separationBruteForce(sa, pa, sb, pb);

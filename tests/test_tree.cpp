@@ -149,6 +149,7 @@ TEST(SphereTree, ParentsAreMinimalBallsOfTheirChildren) {
   auto r = buildSphereTree(balls, o);
   ASSERT_TRUE(r.ok());
   const SphereTree& t = r->tree;
+  expectValidTree(t);
   for (int l = 0; l < t.depth; ++l)
     for (int64_t n = t.levelBegin(l); n < t.levelBegin(l) + t.levelSize(l); ++n) {
       if (!t.used(n)) continue;
@@ -199,6 +200,7 @@ TEST(SphereTree, FitTreeBothParentKindsOnARobotLink) {
   // Same clustering, so per level the outside-volume parents never waste more.
   auto again = buildSphereTree(minimal->fit.spheres, TreeOptions{3, 2}, &idx);
   ASSERT_TRUE(again.ok());
+  expectValidTree(again->tree);
   for (int l = 0; l < 2; ++l)
     EXPECT_LE(tight->levels[l].outside_volume, again->levels[l].outside_volume * (1 + 1e-12));
   // Leaves are the fit's spheres.
@@ -216,6 +218,7 @@ TEST(SphereTree, SameTreeForAnyThreadCount) {
     one = buildSphereTree(balls, o)->tree;
   }
   many = buildSphereTree(balls, o)->tree;
+  expectValidTree(one);
   ASSERT_EQ(one.nodes.size(), many.nodes.size());
   for (size_t i = 0; i < one.nodes.size(); ++i) {
     EXPECT_EQ(one.nodes[i].radius, many.nodes[i].radius);
@@ -229,6 +232,7 @@ TEST(SphereTree, FilesRoundTrip) {
   o.depth = 3;
   const auto balls = randomBalls(20, 23);
   const SphereTree t = buildSphereTree(balls, o)->tree;
+  expectValidTree(t);
   const auto dir = std::filesystem::temp_directory_path() / "sphereset_tree_test";
   std::filesystem::create_directories(dir);
   for (const char* name : {"t.sph", "t.json"}) {
