@@ -491,6 +491,8 @@ int main(int argc, char** argv) {
                             {"bounding_enlarged", r->bounding_enlarged},
                             {"bounding_pieces", r->bounding_pieces},
                             {"bounding_queries", r->bounding_queries},
+                            {"bounding_interior_cells", r->bounding_interior_cells},
+                            {"shrink_passes", r->shrink_passes},
                             {"seconds",
                              {{"total", r->seconds.total},
                               {"sampling", r->seconds.sampling},

@@ -176,4 +176,57 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
   return st;
 }
 
+std::vector<std::vector<Vec3>> soleCover(const SolidIndex& index, const std::vector<Sphere>& sp,
+                                         const std::vector<Vec3>& interior, double min_edge) {
+  const Mesh& mesh = index.mesh();
+  const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
+  const int ns = static_cast<int>(sp.size());
+  // Per triangle, the pieces one sphere alone holds, as (sphere, vertices).
+  std::vector<std::vector<std::pair<int32_t, std::array<Vec3, 3>>>> own(nt);
+  tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
+    const auto& tri = mesh.triangles[t];
+    struct Piece {
+      Vec3 a, b, c;
+      int depth;
+    };
+    std::vector<Piece> todo{
+        {mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], 0}};
+    while (!todo.empty()) {
+      const Piece pc = todo.back();
+      todo.pop_back();
+      int holders = 0, holder = -1;
+      for (int i = 0; i < ns && holders < 2; ++i)
+        if (sp[i].contains(pc.a) && sp[i].contains(pc.b) && sp[i].contains(pc.c)) {
+          ++holders;
+          holder = i;
+        }
+      if (holders == 1) own[t].push_back({holder, {pc.a, pc.b, pc.c}});
+      if (holders > 0) continue;
+      // Held by no single sphere: split further while pieces are large (the spheres cover
+      // it together); a tiny piece is left to the bounding step that follows.
+      const double edge =
+          std::max({(pc.b - pc.a).norm(), (pc.c - pc.b).norm(), (pc.a - pc.c).norm()});
+      if (edge <= min_edge || pc.depth >= kMaxDepth) continue;
+      const Vec3 ab = 0.5 * (pc.a + pc.b), bc = 0.5 * (pc.b + pc.c), ca = 0.5 * (pc.c + pc.a);
+      todo.push_back({pc.a, ab, ca, pc.depth + 1});
+      todo.push_back({ab, pc.b, bc, pc.depth + 1});
+      todo.push_back({ca, bc, pc.c, pc.depth + 1});
+      todo.push_back({ab, bc, ca, pc.depth + 1});
+    }
+  });
+  std::vector<std::vector<Vec3>> out(ns);
+  for (const auto& list : own)
+    for (const auto& [i, v] : list) out[i].insert(out[i].end(), v.begin(), v.end());
+  for (const Vec3& p : interior) {
+    int holders = 0, holder = -1;
+    for (int i = 0; i < ns && holders < 2; ++i)
+      if (sp[i].contains(p)) {
+        ++holders;
+        holder = i;
+      }
+    if (holders == 1) out[holder].push_back(p);
+  }
+  return out;
+}
+
 }  // namespace sphereset::detail

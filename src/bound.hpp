@@ -27,4 +27,11 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
 // whole to the sphere whose outside volume grows least. One pass; radii only grow.
 BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth);
 
+// For each sphere, what it alone covers: the vertices of the surface pieces (triangles split
+// until one sphere holds each piece, as in boundSurface) that no other sphere holds, and the
+// given interior points no other sphere contains. A sphere refitted around these keeps
+// everything covered that only it covered.
+std::vector<std::vector<Vec3>> soleCover(const SolidIndex& index, const std::vector<Sphere>& sp,
+                                         const std::vector<Vec3>& interior, double min_edge);
+
 }  // namespace sphereset::detail

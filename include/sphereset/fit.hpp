@@ -52,6 +52,9 @@ struct FitOptions {
   SphereOptimizer optimizer = SphereOptimizer::kPowell;
   int optimizer_evaluations = 60;  // per sphere and round
   double padding = 0.0;            // added to every radius at the end (absolute units)
+  // After bounding, passes that refit each sphere around what it alone covers (variational
+  // method only); they stop when a pass gains less than `tolerance`.
+  int shrink_passes = 10;
   std::function<void(const FitProgress&)> progress;  // called from the calling thread
 };
 
@@ -76,6 +79,7 @@ struct FitResult {
   int64_t bounding_pieces = 0;          // triangle pieces that made a sphere grow (all passes)
   int64_t bounding_queries = 0;         // outside-volume evaluations of the bounding step
   int64_t bounding_interior_cells = 0;  // interior cubes that made a sphere grow
+  int shrink_passes = 0;                // shrinking passes kept
   FitTimings seconds;
 };
 
