@@ -493,6 +493,7 @@ int main(int argc, char** argv) {
                             {"bounding_queries", r->bounding_queries},
                             {"bounding_interior_cells", r->bounding_interior_cells},
                             {"shrink_passes", r->shrink_passes},
+                            {"idle_teleports", r->idle_teleports},
                             {"seconds",
                              {{"total", r->seconds.total},
                               {"sampling", r->seconds.sampling},

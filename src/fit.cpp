@@ -105,6 +105,8 @@ constexpr int kStallRounds = 2;
 constexpr int kTeleportRounds = 3;
 // Refits of the spheres the bounding step enlarged, before the final bounding pass.
 constexpr int kRefitPasses = 2;
+// 2-means rounds when a sphere is split in two after the bound.
+constexpr int kSplitRounds = 5;
 // Passes of the interior bound (each settles the cubes it finds; one usually suffices).
 constexpr int kInteriorPasses = 4;
 
@@ -362,26 +364,83 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
       for (double x : v) e += x;
       return e;
     };
+    // Splits points in two (2-means from the farthest pair).
+    auto split = [](const std::vector<Vec3>& pts, std::vector<Vec3>* a, std::vector<Vec3>* b) {
+      Vec3 centroid = Vec3::Zero();
+      for (const Vec3& p : pts) centroid += p / static_cast<double>(pts.size());
+      Vec3 ca = farthestFrom(pts, centroid), cb = farthestFrom(pts, ca);
+      for (int it = 0; it < kSplitRounds; ++it) {
+        a->clear();
+        b->clear();
+        for (const Vec3& p : pts)
+          ((p - ca).squaredNorm() <= (p - cb).squaredNorm() ? a : b)->push_back(p);
+        if (a->empty() || b->empty()) return;
+        ca = Vec3::Zero();
+        cb = Vec3::Zero();
+        for (const Vec3& p : *a) ca += p / static_cast<double>(a->size());
+        for (const Vec3& p : *b) cb += p / static_cast<double>(b->size());
+      }
+    };
     double current = total(best_spheres);
     for (int pass = 0; pass < o.shrink_passes; ++pass) {
       const auto owned = detail::soleCover(index, best_spheres, interior, min_edge);
-      std::vector<Sphere> cand = best_spheres;
+      std::vector<Sphere> shrunk = best_spheres;
       tbb::parallel_for(0, n, [&](int i) {
         if (owned[i].empty()) return;
-        const detail::SphereUpdate u = detail::updateSphere(index, owned[i], cand[i].center,
+        const detail::SphereUpdate u = detail::updateSphere(index, owned[i], shrunk[i].center,
                                                             o.optimizer, o.optimizer_evaluations);
-        cand[i] = u.sphere;
+        shrunk[i] = u.sphere;
       });
-      const detail::BoundStats b = detail::boundSurface(index, &cand, min_edge, nullptr);
-      res.bounding_queries += b.queries;
-      const double e = total(cand);
-      if (!(e < current)) break;
+      std::vector<std::vector<Sphere>> cands{shrunk};
+      // Spheres that cover nothing alone are moved (teleported, paper Sec. 5) to split the
+      // spheres of largest outside volume, each in two along its own points.
+      std::vector<int> idle, by_sov(n);
+      for (int i = 0; i < n; ++i)
+        if (owned[i].empty()) idle.push_back(i);
+      if (!idle.empty()) {
+        std::vector<double> sov(n);
+        tbb::parallel_for(0, n, [&](int i) { sov[i] = index.outsideVolume(shrunk[i]).volume; });
+        std::iota(by_sov.begin(), by_sov.end(), 0);
+        std::stable_sort(by_sov.begin(), by_sov.end(),
+                         [&](int a, int b) { return sov[a] > sov[b]; });
+        std::vector<std::pair<int, int>> moves;  // (idle sphere, split sphere)
+        for (int k = 0, d = 0; k < static_cast<int>(idle.size()) && d < n; ++d)
+          if (owned[by_sov[d]].size() >= 2) moves.emplace_back(idle[k++], by_sov[d]);
+        std::vector<Sphere> moved = shrunk;
+        tbb::parallel_for(size_t{0}, moves.size(), [&](size_t m) {
+          const auto [i, j] = moves[m];
+          std::vector<Vec3> a, b;
+          split(owned[j], &a, &b);
+          if (a.empty() || b.empty()) return;
+          moved[j] = detail::updateSphere(index, a, a.front(), o.optimizer, o.optimizer_evaluations)
+                         .sphere;
+          moved[i] = detail::updateSphere(index, b, b.front(), o.optimizer, o.optimizer_evaluations)
+                         .sphere;
+        });
+        cands.push_back(std::move(moved));
+      }
+      // Repair the bound of each candidate and keep the best, if it beats the current set.
+      int pick = -1;
+      double e_pick = current;
+      detail::BoundStats b_pick;
+      for (size_t c = 0; c < cands.size(); ++c) {
+        const detail::BoundStats b = detail::boundSurface(index, &cands[c], min_edge, nullptr);
+        res.bounding_queries += b.queries;
+        const double e = total(cands[c]);
+        if (e < e_pick) {
+          e_pick = e;
+          pick = static_cast<int>(c);
+          b_pick = b;
+        }
+      }
+      if (pick < 0) break;
       ++res.shrink_passes;
-      const bool small_gain = e > current * (1.0 - o.tolerance);
-      current = e;
-      best_spheres = std::move(cand);
-      bs = b;
-      if (small_gain) break;
+      if (pick == 1) res.idle_teleports += static_cast<int>(idle.size());
+      const bool small_gain = e_pick > current * (1.0 - o.tolerance);
+      current = e_pick;
+      best_spheres = std::move(cands[pick]);
+      bs = b_pick;
+      if (small_gain && pick == 0) break;
     }
   }
   res.bounding_enlarged = bs.enlarged;

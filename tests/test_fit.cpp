@@ -122,5 +122,28 @@ TEST(Fit, BaselinesGiveNCoveringSpheresAndTheVariationalFitIsTighter) {
   EXPECT_LT(energy[0], energy[2]);
 }
 
+TEST(Fit, ShrinkingAfterTheBoundLowersTheEnergyAndKeepsTheCover) {
+  const SolidIndex idx(test::makeTorus(1.0, 0.35, 48, 24));
+  FitOptions o;
+  o.num_spheres = 10;
+  o.target_points = 3000;
+  o.shrink_passes = 0;
+  auto plain = fitSpheres(idx, o);
+  o.shrink_passes = 10;
+  auto shrunk = fitSpheres(idx, o);
+  ASSERT_TRUE(plain.ok() && shrunk.ok());
+  EXPECT_EQ(plain->shrink_passes, 0);
+  EXPECT_GE(shrunk->shrink_passes, 1);
+  EXPECT_LT(shrunk->energy, plain->energy);
+  EXPECT_NEAR(shrunk->energy_before_bounding, plain->energy_before_bounding, 1e-15);
+  EvalOptions eo;
+  eo.union_samples = 0;
+  eo.proximity_segments = 0;
+  eo.shadow_resolution = 0;
+  const EvalResult e = evaluateSpheres(idx, shrunk->spheres, eo);
+  EXPECT_TRUE(e.surface_covered);
+  EXPECT_TRUE(e.interior_covered);
+}
+
 }  // namespace
 }  // namespace sphereset

@@ -80,6 +80,7 @@ struct FitResult {
   int64_t bounding_queries = 0;         // outside-volume evaluations of the bounding step
   int64_t bounding_interior_cells = 0;  // interior cubes that made a sphere grow
   int shrink_passes = 0;                // shrinking passes kept
+  int idle_teleports = 0;  // spheres that covered nothing alone, moved to split another
   FitTimings seconds;
 };
 
