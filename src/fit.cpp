@@ -2,12 +2,14 @@
 // alternation of point assignment by least outside-volume increase (cluster_assign.cpp) and
 // per-cluster sphere update (sphere_update.cpp), on interior grid points and surface samples
 // (samples.cpp), followed by a bounding step (bound.cpp) that here covers the whole surface
-// exactly instead of sampled points only.
+// exactly instead of sampled points only, and the interior cubes of the evaluation's test.
 //
 // Deviations from the paper, each explained where it happens: farthest-point seeding by
 // default (the paper suggests better seeding for large n; random interior seeds remain an
-// option), and the best spheres of all rounds are kept, since an assignment round can raise
-// the error.
+// option); the best spheres of all rounds are kept, since an assignment round can raise the
+// error; and after the bound, shrinking passes refit each sphere around what it alone covers
+// and move spheres that cover nothing alone to split the largest ones (teleportation applied
+// to the bounded set), which recovers much of what the bounding step costs.
 #include "sphereset/fit.hpp"
 
 #include <tbb/parallel_for.h>
