@@ -203,7 +203,7 @@ void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
                   "Points to cluster (default 0: max(5000, 100 n), scaled by --quality)")
       ->check(CLI::Range(int64_t{0}, int64_t{100000000}));
   cmd->add_option("--iterations", a->fit.max_iterations,
-                  "Cap on assignment/update rounds (default 30; --quality sets 10/30/60)")
+                  "Cap on assignment/update rounds (default 30; --quality sets 10/30/30)")
       ->check(CLI::Range(0, 100000));
   cmd->add_option("--padding", a->fit.padding, "Distance added to every radius")
       ->capture_default_str()
@@ -212,6 +212,9 @@ void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
                   "fast, default or best (points, rounds, optimiser effort)")
       ->capture_default_str()
       ->check(CLI::IsMember({"fast", "default", "best"}));
+  cmd->add_option("--restarts", a->fit.restarts,
+                  "Independent fits from derived seeds, best kept (default 1; --quality best: 4)")
+      ->check(CLI::Range(1, 1000));
   cmd->add_option("--optimizer", a->optimizer,
                   "Sphere update: powell (derivative-free BOBYQA) or gradient (MMA with exact "
                   "derivatives)")
@@ -231,11 +234,12 @@ void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
 // Turns the parsed options into FitOptions: quality presets, optimiser, seeding, progress.
 FitOptions fitOptions(const FitArgs& a, const CLI::App* cmd) {
   FitOptions fo = a.fit;
-  // Quality presets: (points factor, rounds, optimiser evaluations per sphere).
-  const std::map<std::string, std::tuple<double, int, int>> presets = {
-      {"fast", {0.4, 10, 30}}, {"default", {1.0, 30, 60}}, {"best", {2.0, 60, 120}}};
-  const auto [pf, rounds, evals] = presets.at(a.quality);
+  // Quality presets: (points factor, rounds, optimiser evaluations per sphere, restarts).
+  const std::map<std::string, std::tuple<double, int, int, int>> presets = {
+      {"fast", {0.4, 10, 30, 1}}, {"default", {1.0, 30, 60, 1}}, {"best", {1.0, 30, 60, 4}}};
+  const auto [pf, rounds, evals, restarts] = presets.at(a.quality);
   if (cmd->count("--iterations") == 0) fo.max_iterations = rounds;
+  if (cmd->count("--restarts") == 0) fo.restarts = restarts;
   fo.optimizer_evaluations = evals;
   fo.target_points = a.points > 0
                          ? a.points
@@ -494,6 +498,7 @@ int main(int argc, char** argv) {
                             {"bounding_interior_cells", r->bounding_interior_cells},
                             {"shrink_passes", r->shrink_passes},
                             {"idle_teleports", r->idle_teleports},
+                            {"restart", r->restart},
                             {"seconds",
                              {{"total", r->seconds.total},
                               {"sampling", r->seconds.sampling},

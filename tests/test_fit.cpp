@@ -145,5 +145,26 @@ TEST(Fit, ShrinkingAfterTheBoundLowersTheEnergyAndKeepsTheCover) {
   EXPECT_TRUE(e.interior_covered);
 }
 
+TEST(Fit, RestartsKeepTheBestOfIndependentFits) {
+  const SolidIndex idx(link());
+  FitOptions o;
+  o.num_spheres = 6;
+  o.target_points = 1500;
+  o.max_iterations = 8;
+  auto one = fitSpheres(idx, o);
+  o.restarts = 3;
+  auto three = fitSpheres(idx, o);
+  ASSERT_TRUE(one.ok() && three.ok());
+  EXPECT_LE(three->energy, one->energy);
+  EXPECT_GE(three->restart, 0);
+  EXPECT_LT(three->restart, 3);
+  EXPECT_GT(three->sov_queries, one->sov_queries);  // the counts add up over the restarts
+  if (three->restart == 0) {
+    EXPECT_EQ(three->energy, one->energy);
+  }
+  o.restarts = 0;
+  EXPECT_FALSE(fitSpheres(idx, o).ok());
+}
+
 }  // namespace
 }  // namespace sphereset

@@ -55,6 +55,10 @@ struct FitOptions {
   // After bounding, passes that refit each sphere around what it alone covers (variational
   // method only); they stop when a pass gains less than `tolerance`.
   int shrink_passes = 10;
+  // Independent fits (the first with `seed`, the others with seeds derived from it); the one
+  // with the lowest final outside volume is returned. The clustering's local minima vary a lot
+  // with the seed, so this buys quality for time.
+  int restarts = 1;
   std::function<void(const FitProgress&)> progress;  // called from the calling thread
 };
 
@@ -80,7 +84,9 @@ struct FitResult {
   int64_t bounding_queries = 0;         // outside-volume evaluations of the bounding step
   int64_t bounding_interior_cells = 0;  // interior cubes that made a sphere grow
   int shrink_passes = 0;                // shrinking passes kept
-  int idle_teleports = 0;  // spheres that covered nothing alone, moved to split another
+  int idle_teleports = 0;
+  int restart = 0;  // which restart won (0: the one with options.seed)  // spheres that covered
+                    // nothing alone, moved to split another
   FitTimings seconds;
 };
 
