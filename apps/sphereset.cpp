@@ -668,7 +668,7 @@ int main(int argc, char** argv) {
         else
           return fail(Error{ErrorCode::kInvalidArgument, "--views: unknown view '" + v + "'"});
       }
-      if (render_out.size() < 4 || std::filesystem::path(render_out).extension().string() != ".png")
+      if (std::filesystem::path(render_out).extension().string() != ".png")
         return fail(Error{ErrorCode::kInvalidArgument, render_out + ": the output must be .png"});
       // The mesh is drawn even when it is not a closed solid.
       LoadOptions lo;
@@ -702,7 +702,11 @@ int main(int argc, char** argv) {
       auto ta = readSphereTree(query_path);
       if (!ta) return fail(ta.error());
       nlohmann::json out;
-      const SphereTree qa = queryTree(ta->leaves());
+      // A file that holds a sphere tree is queried through it; a plain set gets one built.
+      auto treeFor = [](const SphereTree& t) {
+        return t.depth >= 2 && checkSphereTree(t).ok() ? t : queryTree(t.leaves());
+      };
+      const SphereTree qa = treeFor(*ta);
       for (size_t i = 0; i + 2 < q_points.size(); i += 3) {
         const Vec3 p(q_points[i], q_points[i + 1], q_points[i + 2]);
         const PointQuery pq = pointDistance(qa, p);
@@ -734,7 +738,7 @@ int main(int argc, char** argv) {
           pose.rotation = q.normalized().toRotationMatrix();
           pose.translation = Vec3(other_pose[0], other_pose[1], other_pose[2]);
         }
-        const SphereTree qb = queryTree(tb->leaves());
+        const SphereTree qb = treeFor(*tb);
         const PairQuery pq = separation(qa, Pose{}, qb, pose);
         const bool hit = pq.distance < 0.0;
         if (json)

@@ -62,6 +62,71 @@ void cheapestGrowth(const std::vector<Sphere>& sp, const std::vector<double>& so
   }
 }
 
+// dSOV/dr of each sphere (its outside surface area): the growth of the outside volume for a
+// small enlargement dr is dSOV/dr * dr to first order, which ranks the candidates without a
+// query per piece (pieces are small, so the enlargements are).
+std::vector<double> radiusRates(const SolidIndex& index, const std::vector<Sphere>& sp,
+                                BoundStats* st) {
+  std::vector<double> sov_dr(sp.size());
+  tbb::parallel_for(size_t{0}, sp.size(),
+                    [&](size_t i) { sov_dr[i] = index.outsideVolume(sp[i]).d_radius; });
+  st->queries += static_cast<int64_t>(sp.size());
+  return sov_dr;
+}
+
+// Radii only grow: each sphere takes the largest radius requested for it.
+void growTo(std::vector<Sphere>* sp, const std::vector<double>& radius, BoundStats* st) {
+  for (size_t i = 0; i < sp->size(); ++i)
+    if (radius[i] > (*sp)[i].radius) {
+      (*sp)[i].radius = radius[i];
+      ++st->enlarged;
+    }
+}
+
+// How many spheres (0, 1, or 2 meaning "two or more") contain all the points; *holder is
+// the last one found.
+int holders(const std::vector<Sphere>& sp, const Vec3* pts, int npts, int32_t* holder) {
+  int count = 0;
+  for (int32_t i = 0; i < static_cast<int32_t>(sp.size()) && count < 2; ++i) {
+    bool all = true;
+    for (int k = 0; k < npts && all; ++k) all = sp[i].contains(pts[k]);
+    if (all) {
+      ++count;
+      *holder = i;
+    }
+  }
+  return count;
+}
+
+// Splits triangle (a, b, c) in four, recursively, until settled(piece) says a piece needs no
+// more work; a piece still unsettled when its longest edge is at most min_edge (or after
+// kMaxDepth splits) goes to small(piece).
+template <class Settled, class Small>
+void splitPieces(const Vec3& a, const Vec3& b, const Vec3& c, double min_edge, Settled&& settled,
+                 Small&& small) {
+  struct Piece {
+    std::array<Vec3, 3> v;
+    int depth;
+  };
+  std::vector<Piece> todo{{{a, b, c}, 0}};
+  while (!todo.empty()) {
+    const Piece pc = todo.back();
+    todo.pop_back();
+    if (settled(pc.v)) continue;
+    const auto& [p, q, r] = pc.v;
+    const double edge = std::max({(q - p).norm(), (r - q).norm(), (p - r).norm()});
+    if (edge <= min_edge || pc.depth >= kMaxDepth) {
+      small(pc.v);
+      continue;
+    }
+    const Vec3 pq = 0.5 * (p + q), qr = 0.5 * (q + r), rp = 0.5 * (r + p);
+    todo.push_back({{p, pq, rp}, pc.depth + 1});
+    todo.push_back({{pq, q, qr}, pc.depth + 1});
+    todo.push_back({{rp, qr, r}, pc.depth + 1});
+    todo.push_back({{pq, qr, rp}, pc.depth + 1});
+  }
+}
+
 }  // namespace
 
 BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, double min_edge,
@@ -71,41 +136,18 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
   const Mesh& mesh = index.mesh();
   const double slack = kSlackRel * index.bounds().diagonal();
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
-  // dSOV/dr of each sphere (its outside surface area): the growth of the outside volume for a
-  // small enlargement dr is dSOV/dr * dr to first order, which ranks the candidates without a
-  // query per piece (pieces are small, so the enlargements are).
-  std::vector<double> sov_dr(sp.size());
-  tbb::parallel_for(size_t{0}, sp.size(),
-                    [&](size_t i) { sov_dr[i] = index.outsideVolume(sp[i]).d_radius; });
-  st.queries += static_cast<int64_t>(sp.size());
+  const std::vector<double> sov_dr = radiusRates(index, sp, &st);
   std::vector<std::vector<Request>> req(nt);
   tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
     const auto& tri = mesh.triangles[t];
-    struct Piece {
-      Vec3 a, b, c;
-      int depth;
-    };
-    std::vector<Piece> todo{
-        {mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], 0}};
-    while (!todo.empty()) {
-      const Piece pc = todo.back();
-      todo.pop_back();
-      const Vec3 corners[3] = {pc.a, pc.b, pc.c};
-      if (oneSphereHolds(sp, corners, 3)) continue;
-      const double edge =
-          std::max({(pc.b - pc.a).norm(), (pc.c - pc.b).norm(), (pc.a - pc.c).norm()});
-      if (edge > min_edge && pc.depth < kMaxDepth) {
-        const Vec3 ab = 0.5 * (pc.a + pc.b), bc = 0.5 * (pc.b + pc.c), ca = 0.5 * (pc.c + pc.a);
-        todo.push_back({pc.a, ab, ca, pc.depth + 1});
-        todo.push_back({ab, pc.b, bc, pc.depth + 1});
-        todo.push_back({ca, bc, pc.c, pc.depth + 1});
-        todo.push_back({ab, bc, ca, pc.depth + 1});
-        continue;
-      }
-      Request best{-1, 0.0, {pc.a, pc.b, pc.c}};
-      cheapestGrowth(sp, sov_dr, corners, 3, slack, &best.sphere, &best.radius);
-      if (best.sphere >= 0) req[t].push_back(best);
-    }
+    splitPieces(
+        mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], min_edge,
+        [&](const std::array<Vec3, 3>& v) { return oneSphereHolds(sp, v.data(), 3); },
+        [&](const std::array<Vec3, 3>& v) {
+          Request best{-1, 0.0, v};
+          cheapestGrowth(sp, sov_dr, v.data(), 3, slack, &best.sphere, &best.radius);
+          if (best.sphere >= 0) req[t].push_back(best);
+        });
   });
   if (held) held->assign(sp.size(), {});
   std::vector<double> radius(sp.size());
@@ -117,11 +159,7 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
       if (held) (*held)[r.sphere].insert((*held)[r.sphere].end(), r.piece.begin(), r.piece.end());
     }
   }
-  for (size_t i = 0; i < sp.size(); ++i)
-    if (radius[i] > sp[i].radius) {
-      sp[i].radius = radius[i];
-      ++st.enlarged;
-    }
+  growTo(&sp, radius, &st);
   return st;
 }
 
@@ -129,10 +167,7 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
   BoundStats st;
   std::vector<Sphere>& sp = *spheres;
   const double slack = kSlackRel * index.bounds().diagonal();
-  std::vector<double> sov_dr(sp.size());
-  tbb::parallel_for(size_t{0}, sp.size(),
-                    [&](size_t i) { sov_dr[i] = index.outsideVolume(sp[i]).d_radius; });
-  st.queries += static_cast<int64_t>(sp.size());
+  const std::vector<double> sov_dr = radiusRates(index, sp, &st);
   // An uncovered centre found above max_depth goes to the cheapest sphere and the walk
   // descends; at max_depth the cheapest sphere takes the whole cube (its eight corners). Requests
   // per root cube, applied as maxima afterwards.
@@ -168,11 +203,7 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
       ++st.pieces;
       radius[i] = std::max(radius[i], r);
     }
-  for (size_t i = 0; i < sp.size(); ++i)
-    if (radius[i] > sp[i].radius) {
-      sp[i].radius = radius[i];
-      ++st.enlarged;
-    }
+  growTo(&sp, radius, &st);
   return st;
 }
 
@@ -185,46 +216,24 @@ std::vector<std::vector<Vec3>> soleCover(const SolidIndex& index, const std::vec
   std::vector<std::vector<std::pair<int32_t, std::array<Vec3, 3>>>> own(nt);
   tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
     const auto& tri = mesh.triangles[t];
-    struct Piece {
-      Vec3 a, b, c;
-      int depth;
-    };
-    std::vector<Piece> todo{
-        {mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], 0}};
-    while (!todo.empty()) {
-      const Piece pc = todo.back();
-      todo.pop_back();
-      int holders = 0, holder = -1;
-      for (int i = 0; i < ns && holders < 2; ++i)
-        if (sp[i].contains(pc.a) && sp[i].contains(pc.b) && sp[i].contains(pc.c)) {
-          ++holders;
-          holder = i;
-        }
-      if (holders == 1) own[t].push_back({holder, {pc.a, pc.b, pc.c}});
-      if (holders > 0) continue;
-      // Held by no single sphere: split further while pieces are large (the spheres cover
-      // it together); a tiny piece is left to the bounding step that follows.
-      const double edge =
-          std::max({(pc.b - pc.a).norm(), (pc.c - pc.b).norm(), (pc.a - pc.c).norm()});
-      if (edge <= min_edge || pc.depth >= kMaxDepth) continue;
-      const Vec3 ab = 0.5 * (pc.a + pc.b), bc = 0.5 * (pc.b + pc.c), ca = 0.5 * (pc.c + pc.a);
-      todo.push_back({pc.a, ab, ca, pc.depth + 1});
-      todo.push_back({ab, pc.b, bc, pc.depth + 1});
-      todo.push_back({ca, bc, pc.c, pc.depth + 1});
-      todo.push_back({ab, bc, ca, pc.depth + 1});
-    }
+    // Pieces held by no single sphere are split further (the spheres cover them together);
+    // tiny ones are left to the bounding step that follows.
+    splitPieces(
+        mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], min_edge,
+        [&](const std::array<Vec3, 3>& v) {
+          int32_t holder = -1;
+          const int h = holders(sp, v.data(), 3, &holder);
+          if (h == 1) own[t].push_back({holder, v});
+          return h > 0;
+        },
+        [](const std::array<Vec3, 3>&) {});
   });
   std::vector<std::vector<Vec3>> out(ns);
   for (const auto& list : own)
     for (const auto& [i, v] : list) out[i].insert(out[i].end(), v.begin(), v.end());
   for (const Vec3& p : interior) {
-    int holders = 0, holder = -1;
-    for (int i = 0; i < ns && holders < 2; ++i)
-      if (sp[i].contains(p)) {
-        ++holders;
-        holder = i;
-      }
-    if (holders == 1) out[holder].push_back(p);
+    int32_t holder = -1;
+    if (holders(sp, &p, 1, &holder) == 1) out[holder].push_back(p);
   }
   return out;
 }

@@ -90,6 +90,15 @@ std::vector<double> overlapRatios(const std::vector<Sphere>& s, uint64_t seed) {
   return out;
 }
 
+// Outside volume of each sphere (in parallel), and their sum in a fixed order.
+std::vector<double> outsideVolumes(const SolidIndex& index, const std::vector<Sphere>& sp) {
+  std::vector<double> v(sp.size());
+  tbb::parallel_for(size_t{0}, sp.size(),
+                    [&](size_t i) { v[i] = index.outsideVolume(sp[i]).volume; });
+  return v;
+}
+double total(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); }
+
 Vec3 farthestFrom(const std::vector<Vec3>& pts, const Vec3& q) {
   Vec3 best = q;
   double bd = -1.0;
@@ -206,11 +215,7 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
     res.iterations = b.iterations;
     res.converged = b.converged;
     best_spheres = std::move(b.spheres);
-    std::vector<double> sov(best_spheres.size());
-    tbb::parallel_for(size_t{0}, best_spheres.size(),
-                      [&](size_t i) { sov[i] = index.outsideVolume(best_spheres[i]).volume; });
-    best_energy = 0.0;
-    for (double v : sov) best_energy += v;
+    best_energy = total(outsideVolumes(index, best_spheres));
     res.energy_history.push_back(best_energy);
     best_members.assign(best_spheres.size(), {});
   }
@@ -307,8 +312,7 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
       }
       // The most redundant source and the worst destination not tried together yet.
       const std::vector<double> overlap = overlapRatios(best_spheres, o.seed);
-      std::vector<double> sov(n);
-      for (int i = 0; i < n; ++i) sov[i] = index.outsideVolume(best_spheres[i]).volume;
+      const std::vector<double> sov = outsideVolumes(index, best_spheres);
       std::vector<int> by_overlap(n), by_sov(n);
       std::iota(by_overlap.begin(), by_overlap.end(), 0);
       std::iota(by_sov.begin(), by_sov.end(), 0);
@@ -391,14 +395,6 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
   // bounding step, which grows spheres without looking at their neighbours.
   if (variational && o.shrink_passes > 0) {
     const std::vector<Vec3> interior(ps.points.begin(), ps.points.begin() + ps.interior);
-    auto total = [&](const std::vector<Sphere>& sp) {
-      std::vector<double> v(sp.size());
-      tbb::parallel_for(size_t{0}, sp.size(),
-                        [&](size_t i) { v[i] = index.outsideVolume(sp[i]).volume; });
-      double e = 0.0;
-      for (double x : v) e += x;
-      return e;
-    };
     // Splits points in two (2-means from the farthest pair).
     auto split = [](const std::vector<Vec3>& pts, std::vector<Vec3>* a, std::vector<Vec3>* b) {
       Vec3 centroid = Vec3::Zero();
@@ -416,7 +412,7 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
         for (const Vec3& p : *b) cb += p / static_cast<double>(b->size());
       }
     };
-    double current = total(best_spheres);
+    double current = total(outsideVolumes(index, best_spheres));
     for (int pass = 0; pass < o.shrink_passes; ++pass) {
       const auto owned = detail::soleCover(index, best_spheres, interior, min_edge);
       std::vector<Sphere> shrunk = best_spheres;
@@ -433,8 +429,7 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
       for (int i = 0; i < n; ++i)
         if (owned[i].empty()) idle.push_back(i);
       if (!idle.empty()) {
-        std::vector<double> sov(n);
-        tbb::parallel_for(0, n, [&](int i) { sov[i] = index.outsideVolume(shrunk[i]).volume; });
+        const std::vector<double> sov = outsideVolumes(index, shrunk);
         std::iota(by_sov.begin(), by_sov.end(), 0);
         std::stable_sort(by_sov.begin(), by_sov.end(),
                          [&](int a, int b) { return sov[a] > sov[b]; });
@@ -461,7 +456,7 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
       for (size_t c = 0; c < cands.size(); ++c) {
         const detail::BoundStats b = detail::boundSurface(index, &cands[c], min_edge, nullptr);
         res.bounding_queries += b.queries;
-        const double e = total(cands[c]);
+        const double e = total(outsideVolumes(index, cands[c]));
         if (e < e_pick) {
           e_pick = e;
           pick = static_cast<int>(c);
@@ -491,12 +486,8 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
   }
   for (Sphere& s : best_spheres) s.radius += o.padding;
   res.spheres = std::move(best_spheres);
-  res.outside_volume.resize(res.spheres.size());
-  tbb::parallel_for(size_t{0}, res.spheres.size(), [&](size_t i) {
-    res.outside_volume[i] = index.outsideVolume(res.spheres[i]).volume;
-  });
-  res.energy = 0.0;
-  for (double v : res.outside_volume) res.energy += v;
+  res.outside_volume = outsideVolumes(index, res.spheres);
+  res.energy = total(res.outside_volume);
   res.seconds.bounding = since(tb);
   res.seconds.total = since(t0);
   report("done", res.iterations, res.energy);

@@ -13,6 +13,8 @@
 #include <limits>
 #include <numbers>
 
+#include "ray_sphere.hpp"
+
 namespace sphereset {
 namespace {
 
@@ -46,23 +48,12 @@ Aabb sceneBounds(const SolidIndex* mesh, const std::vector<Sphere>& spheres) {
   return b;
 }
 
-bool sphereHitsRay(const Sphere& s, const Vec3& o, const Vec3& d, double* t0, double* t1) {
-  const Vec3 m = o - s.center;
-  const double b = m.dot(d), c = m.squaredNorm() - s.radius * s.radius;
-  const double disc = b * b - c;
-  if (disc <= 0.0) return false;
-  const double sq = std::sqrt(disc);
-  *t0 = -b - sq;
-  *t1 = -b + sq;
-  return *t1 > 0.0;
-}
-
 bool shadowed(const Scene& sc, const Vec3& p) {
   const double eps = kRayOffsetRel * sc.radius;
   if (sc.mesh) return sc.mesh->occluded(p, sc.light, eps, 1e3 * sc.radius);
   double t0, t1;
   for (const Sphere& s : *sc.spheres)
-    if (sphereHitsRay(s, p, sc.light, &t0, &t1) && t1 > eps) return true;
+    if (detail::lineSphere(s, p, sc.light, &t0, &t1) && t1 > eps) return true;
   return false;
 }
 
@@ -108,7 +99,7 @@ Vec3 trace(const Scene& sc, const Vec3& o, const Vec3& d) {
   double t0, t1;
   for (size_t i = 0; i < sc.spheres->size(); ++i) {
     const Sphere& s = (*sc.spheres)[i];
-    if (!sphereHitsRay(s, o, d, &t0, &t1)) continue;
+    if (!detail::lineSphere(s, o, d, &t0, &t1) || t1 <= 0.0) continue;
     for (const double t : {t0, t1}) {
       if (t <= 0.0 || t >= t_opaque) continue;
       Vec3 n = (o + t * d - s.center) / std::max(s.radius, 1e-300);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "ray_sphere.hpp"
 #include "sphereset/evaluate.hpp"
 
 namespace sphereset {
@@ -24,14 +25,11 @@ constexpr double kPlaneGapRel = 1e-6;
 // The plane square is this many times the object's largest extent, centred under it.
 constexpr double kPlaneScale = 3.0;
 
+// Whether the ray x + t d, t > 0, enters or starts inside a sphere.
 bool sphereBlocks(const std::vector<Sphere>& spheres, const Vec3& x, const Vec3& d) {
-  for (const Sphere& s : spheres) {
-    const Vec3 m = s.center - x;
-    const double r2 = s.radius * s.radius;
-    if (m.squaredNorm() <= r2) return true;  // the ray starts inside
-    const double t = m.dot(d);
-    if (t > 0.0 && m.squaredNorm() - t * t <= r2) return true;
-  }
+  double t0, t1;
+  for (const Sphere& s : spheres)
+    if (detail::lineSphere(s, x, d, &t0, &t1) && t1 > 0.0) return true;
   return false;
 }
 

@@ -224,35 +224,13 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
   }
 
   if (*format == SphereFormat::kSph) {
-    int levels = 0, branch = 0;
-    if (!std::getline(in, line) || !(std::istringstream(line) >> levels >> branch) || levels < 1 ||
-        branch < 1)
-      return Error{ErrorCode::kInvalidData, path + ":1: expected \"levels branching\""};
-    // Node counts per level: 1, B, B², ...; keep the deepest level that has spheres.
-    std::vector<std::vector<Sphere>> by_level(levels);
-    int64_t level_size = 1;
-    lineno = 1;
-    for (int lev = 0; lev < levels; ++lev) {
-      for (int64_t i = 0; i < level_size; ++i) {
-        if (!std::getline(in, line))
-          return Error{ErrorCode::kInvalidData,
-                       path + ": truncated at level " + std::to_string(lev)};
-        ++lineno;
-        Sphere s;
-        if (!(std::istringstream(line) >> s.center.x() >> s.center.y() >> s.center.z() >> s.radius))
-          return Error{ErrorCode::kInvalidData,
-                       path + ":" + std::to_string(lineno) + ": expected x y z r"};
-        if (s.radius <= 0.0) continue;  // unused node
-        Status st = checkSphere(path + ":" + std::to_string(lineno), s);
-        if (!st) return st.error();
-        by_level[lev].push_back(s);
-      }
-      level_size *= branch;
-      if (level_size > (int64_t{1} << 40))
-        return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
+    // The deepest level of the tree that has spheres.
+    auto tree = readSphereTree(path);
+    if (!tree) return tree.error();
+    for (int l = tree->depth; l >= 0; --l) {
+      std::vector<Sphere> level = tree->level(l);
+      if (!level.empty()) return level;
     }
-    for (int lev = levels - 1; lev >= 0; --lev)
-      if (!by_level[lev].empty()) return by_level[lev];
     return out;
   }
 
@@ -363,13 +341,8 @@ Expected<SphereTree> readSphereTree(const std::string& path) {
       return Error{ErrorCode::kInvalidData, path + ":1: expected \"levels branching\""};
     t.branching = branch;
     t.depth = levels - 1;
-    int64_t slots = 0, size = 1;
-    for (int l = 0; l < levels; ++l) {
-      slots += size;
-      if (slots > (int64_t{1} << 26))
-        return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
-      size *= branch;
-    }
+    const int64_t slots = SphereTree::slotCount(branch, t.depth);
+    if (slots < 0) return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
     t.nodes.reserve(slots);
     int lineno = 1;
     while (static_cast<int64_t>(t.nodes.size()) < slots) {
@@ -403,13 +376,8 @@ Expected<SphereTree> readSphereTree(const std::string& path) {
         t.depth = j["depth"].get<int>();
         if (t.branching < 1 || t.depth < 0 || t.depth > 26)
           return Error{ErrorCode::kInvalidData, path + ": bad branching or depth"};
-        int64_t slots = 0, size = 1;
-        for (int l = 0; l <= t.depth; ++l) {
-          slots += size;
-          if (slots > (int64_t{1} << 26))
-            return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
-          size *= t.branching;
-        }
+        const int64_t slots = SphereTree::slotCount(t.branching, t.depth);
+        if (slots < 0) return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
         t.nodes.assign(slots, Sphere{Vec3::Zero(), -1.0});
         for (const auto& n : j["nodes"]) {
           const int64_t id = n.at("id").get<int64_t>();

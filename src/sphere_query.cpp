@@ -11,6 +11,7 @@
 #include <limits>
 #include <queue>
 
+#include "ray_sphere.hpp"
 #include "sphereset/query.hpp"
 
 namespace sphereset {
@@ -20,16 +21,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double signedGap(const Sphere& s, const Vec3& p) { return (p - s.center).norm() - s.radius; }
 
-// Parameter interval [t0, t1] ⊂ [0, 1] of a + t (b - a) inside the sphere, if not empty.
-bool segmentInterval(const Sphere& s, const Vec3& a, const Vec3& d, double dd, double* t0,
-                     double* t1) {
-  const Vec3 m = a - s.center;
-  const double hb = m.dot(d), cc = m.squaredNorm() - s.radius * s.radius;
-  const double disc = hb * hb - dd * cc;
-  if (!(disc > 0.0)) return false;
-  const double sq = std::sqrt(disc);
-  *t0 = std::max(0.0, (-hb - sq) / dd);
-  *t1 = std::min(1.0, (-hb + sq) / dd);
+// Parameter interval [t0, t1] ⊂ [0, 1] of a + t d inside the sphere, if not empty.
+bool segmentInterval(const Sphere& s, const Vec3& a, const Vec3& d, double* t0, double* t1) {
+  if (!detail::lineSphere(s, a, d, t0, t1)) return false;
+  *t0 = std::max(0.0, *t0);
+  *t1 = std::min(1.0, *t1);
   return *t1 > *t0;
 }
 
@@ -130,7 +126,7 @@ double segmentOutsideLengthBruteForce(const std::vector<Sphere>& spheres, const 
   std::vector<std::pair<double, double>> in;
   double t0, t1;
   for (const Sphere& s : spheres)
-    if (segmentInterval(s, a, d, dd, &t0, &t1)) in.emplace_back(t0, t1);
+    if (segmentInterval(s, a, d, &t0, &t1)) in.emplace_back(t0, t1);
   return uncoveredLength(&in, std::sqrt(dd));
 }
 
@@ -145,7 +141,7 @@ double segmentOutsideLength(const SphereTree& t, const Vec3& a, const Vec3& b) {
     const int64_t node = stack.back();
     stack.pop_back();
     // A node the segment does not enter holds no leaf the segment enters.
-    if (!segmentInterval(t.nodes[node], a, d, dd, &t0, &t1)) continue;
+    if (!segmentInterval(t.nodes[node], a, d, &t0, &t1)) continue;
     if (isLeafSlot(t, node)) {
       in.emplace_back(t0, t1);
       continue;

@@ -30,21 +30,7 @@
 namespace sphereset {
 namespace {
 
-// Largest tree accepted (slots over all levels), against absurd branching and depth.
-constexpr int64_t kMaxSlots = int64_t{1} << 26;
-
 double reach(const Vec3& centre, const Sphere& s) { return (s.center - centre).norm() + s.radius; }
-
-// Total slots of a tree, or -1 when above kMaxSlots.
-int64_t slotCount(int b, int d) {
-  int64_t total = 0, level = 1;
-  for (int l = 0; l <= d; ++l) {
-    total += level;
-    if (total > kMaxSlots) return -1;
-    if (l < d) level *= b;
-  }
-  return total;
-}
 
 struct Grouping {
   std::vector<std::vector<int32_t>> groups;  // indices into the child level, each non-empty
@@ -173,6 +159,16 @@ Sphere parentOf(const std::vector<Sphere>& kids, const TreeOptions& o, const Sol
 
 }  // namespace
 
+int64_t SphereTree::slotCount(int b, int d) {
+  int64_t total = 0, level = 1;
+  for (int l = 0; l <= d; ++l) {
+    total += level;
+    if (total > kMaxSlots) return -1;
+    if (l < d) level *= b;
+  }
+  return total;
+}
+
 int64_t SphereTree::levelSize(int l) const {
   int64_t s = 1;
   for (int i = 0; i < l; ++i) s *= branching;
@@ -199,7 +195,7 @@ std::vector<Sphere> SphereTree::level(int l) const {
 Status checkSphereTree(const SphereTree& t, double tolerance) {
   if (t.branching < 1 || t.depth < 0)
     return Error{ErrorCode::kInvalidData, "sphere tree: bad branching or depth"};
-  const int64_t slots = slotCount(t.branching, t.depth);
+  const int64_t slots = SphereTree::slotCount(t.branching, t.depth);
   if (slots < 0 || static_cast<int64_t>(t.nodes.size()) != slots)
     return Error{ErrorCode::kInvalidData, "sphere tree: " + std::to_string(t.nodes.size()) +
                                               " nodes, the layout needs " + std::to_string(slots)};
@@ -229,12 +225,12 @@ Expected<TreeResult> buildSphereTree(std::span<const Sphere> leaves, const TreeO
   if (o.depth < 1) return Error{ErrorCode::kInvalidArgument, "depth must be at least 1"};
   if (o.max_iterations < 1 || o.optimizer_evaluations < 0)
     return Error{ErrorCode::kInvalidArgument, "tree options out of range"};
-  const int64_t slots = slotCount(o.branching, o.depth);
+  const int64_t slots = SphereTree::slotCount(o.branching, o.depth);
   if (slots < 0)
     return Error{ErrorCode::kInvalidArgument, "branching " + std::to_string(o.branching) +
                                                   " and depth " + std::to_string(o.depth) +
                                                   " make a tree of more than " +
-                                                  std::to_string(kMaxSlots) + " nodes"};
+                                                  std::to_string(SphereTree::kMaxSlots) + " nodes"};
   SphereTree tree;
   tree.branching = o.branching;
   tree.depth = o.depth;
@@ -310,7 +306,8 @@ Expected<TreeResult> buildSphereTree(std::span<const Sphere> leaves, const TreeO
 
 Expected<TreeFitResult> fitSphereTree(const SolidIndex& index, FitOptions fit,
                                       const TreeOptions& options) {
-  if (options.branching < 2 || options.depth < 1 || slotCount(options.branching, options.depth) < 0)
+  if (options.branching < 2 || options.depth < 1 ||
+      SphereTree::slotCount(options.branching, options.depth) < 0)
     return Error{ErrorCode::kInvalidArgument,
                  "branching must be at least 2, depth at least 1, "
                  "and the tree of a sensible size"};

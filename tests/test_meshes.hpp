@@ -2,11 +2,11 @@
 #pragma once
 
 #include <cmath>
-#include <map>
 #include <numbers>
 #include <string>
 
 #include "sphereset/mesh.hpp"
+#include "sphereset/sphere.hpp"
 
 namespace sphereset::test {
 
@@ -32,41 +32,10 @@ inline Mesh makeBox(const Vec3& lo, const Vec3& hi) {
   return m;
 }
 
-// Icosphere of radius r about the origin (subdivided icosahedron, projected).
+// Icosphere of radius r about the origin (subdivided icosahedron, vertices on the sphere):
+// the library's own sphere-to-mesh conversion.
 inline Mesh makeIcosphere(double r, int subdivisions) {
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  Mesh m;
-  const double v[12][3] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
-                           {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
-                           {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  for (const auto& p : v) m.vertices.push_back(Vec3(p[0], p[1], p[2]).normalized() * r);
-  m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (int s = 0; s < subdivisions; ++s) {
-    std::map<std::pair<int, int>, int> mid;
-    auto midpoint = [&](int a, int b) {
-      auto key = std::minmax(a, b);
-      auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      const int id = static_cast<int>(m.vertices.size());
-      m.vertices.push_back((m.vertices[a] + m.vertices[b]).normalized() * r);
-      mid[key] = id;
-      return id;
-    };
-    std::vector<Triangle> next;
-    for (const Triangle& tri : m.triangles) {
-      const int a = midpoint(tri[0], tri[1]), b = midpoint(tri[1], tri[2]),
-                c = midpoint(tri[2], tri[0]);
-      next.push_back({tri[0], a, c});
-      next.push_back({tri[1], b, a});
-      next.push_back({tri[2], c, b});
-      next.push_back({a, b, c});
-    }
-    m.triangles = std::move(next);
-  }
-  return m;
+  return sphereSetMesh({{Vec3::Zero(), r}}, subdivisions).mesh;
 }
 
 // Torus about the z axis: major radius R, minor radius r, nu × nv quads.

@@ -29,6 +29,11 @@ struct SphereTree {
   int depth = 0;
   std::vector<Sphere> nodes;
 
+  // Largest layout accepted (slots over all levels), against absurd branching and depth.
+  static constexpr int64_t kMaxSlots = int64_t{1} << 26;
+  // Slots of a tree of this branching and depth, or -1 when above kMaxSlots.
+  static int64_t slotCount(int branching, int depth);
+
   int levels() const { return depth + 1; }
   int64_t levelBegin(int level) const;  // first slot of a level
   int64_t levelSize(int level) const;   // B^level
