@@ -203,7 +203,7 @@ void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
                   "Points to cluster (default 0: max(5000, 100 n), scaled by --quality)")
       ->check(CLI::Range(int64_t{0}, int64_t{100000000}));
   cmd->add_option("--iterations", a->fit.max_iterations,
-                  "Cap on assignment/update rounds (default 30; --quality sets 10/30/30)")
+                  "Cap on assignment/update rounds (default 100; --quality sets 30/100/200)")
       ->check(CLI::Range(0, 100000));
   cmd->add_option("--padding", a->fit.padding, "Distance added to every radius")
       ->capture_default_str()
@@ -234,13 +234,17 @@ void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
 // Turns the parsed options into FitOptions: quality presets, optimiser, seeding, progress.
 FitOptions fitOptions(const FitArgs& a, const CLI::App* cmd) {
   FitOptions fo = a.fit;
-  // Quality presets: (points factor, rounds, optimiser evaluations per sphere, restarts).
-  const std::map<std::string, std::tuple<double, int, int, int>> presets = {
-      {"fast", {0.4, 10, 30, 1}}, {"default", {1.0, 30, 60, 1}}, {"best", {1.0, 30, 60, 4}}};
-  const auto [pf, rounds, evals, restarts] = presets.at(a.quality);
+  // Quality presets: (points factor, rounds, optimiser evaluations per sphere, failed
+  // teleports before stopping, restarts).
+  const std::map<std::string, std::tuple<double, int, int, int, int>> presets = {
+      {"fast", {0.4, 30, 30, 2, 1}},
+      {"default", {1.0, 100, 60, 6, 1}},
+      {"best", {1.0, 200, 60, 10, 4}}};
+  const auto [pf, rounds, evals, failed, restarts] = presets.at(a.quality);
   if (cmd->count("--iterations") == 0) fo.max_iterations = rounds;
   if (cmd->count("--restarts") == 0) fo.restarts = restarts;
   fo.optimizer_evaluations = evals;
+  fo.max_failed_teleports = failed;
   fo.target_points = a.points > 0
                          ? a.points
                          : static_cast<int64_t>(pf * std::max<int64_t>(5000, 100 * fo.num_spheres));
@@ -504,6 +508,7 @@ int main(int argc, char** argv) {
                               {"sampling", r->seconds.sampling},
                               {"assignment", r->seconds.assignment},
                               {"update", r->seconds.update},
+                              {"teleport", r->seconds.teleport},
                               {"bounding", r->seconds.bounding}}},
                             {"seed", fo.seed}};
         std::cout << j.dump() << '\n';
@@ -515,7 +520,8 @@ int main(int argc, char** argv) {
                      "  surface covered %s, interior covered %s\n"
                      "  %lld points (%lld interior), %d rounds%s, %d teleports (%d kept), %lld SOV "
                      "queries in assignment (%lld culled)\n"
-                     "  time %.2f s (sampling %.2f, assignment %.2f, update %.2f, bounding %.2f)\n",
+                     "  time %.2f s (sampling %.2f, assignment %.2f, update %.2f, teleport %.2f, "
+                     "bounding %.2f)\n",
                      fit_args.mesh.path.c_str(), r->spheres.size(), fit_args.out_path.c_str(),
                      r->energy / ev.mesh_volume, r->energy_before_bounding / ev.mesh_volume,
                      ev.er_union, ev.er_union_stderr, ev.surface_covered ? "yes" : "NO",
@@ -525,7 +531,7 @@ int main(int argc, char** argv) {
                      static_cast<long long>(r->sov_queries),
                      static_cast<long long>(r->sov_queries_culled), r->seconds.total,
                      r->seconds.sampling, r->seconds.assignment, r->seconds.update,
-                     r->seconds.bounding);
+                     r->seconds.teleport, r->seconds.bounding);
       }
       return kOk;
     }

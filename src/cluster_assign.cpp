@@ -28,7 +28,19 @@ double lowerBoundSov(const Cluster& c, double radius) {
   return it == c.table.begin() ? 0.0 : std::prev(it)->second;
 }
 
+// A table longer than this is dropped instead of grown (it is only a cache).
+constexpr size_t kMaxTable = 1 << 14;
+
+// The tabulated SOV at exactly `radius`, or a negative number.
+double tabulated(const Cluster& c, double radius) {
+  auto it =
+      std::lower_bound(c.table.begin(), c.table.end(), radius,
+                       [](const std::pair<double, double>& e, double r) { return e.first < r; });
+  return it != c.table.end() && it->first == radius ? it->second : -1.0;
+}
+
 void remember(Cluster* c, double radius, double sov) {
+  if (c->table.size() >= kMaxTable) c->table.assign(1, {0.0, 0.0});
   auto it =
       std::lower_bound(c->table.begin(), c->table.end(), radius,
                        [](const std::pair<double, double>& e, double r) { return e.first < r; });
@@ -47,7 +59,10 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
   for (Cluster& c : cl) {
     c.radius = 0.0;
     c.sov = 0.0;
-    c.table.assign(1, {0.0, 0.0});
+    if (c.table.empty() || c.table_center != c.center) {
+      c.table.assign(1, {0.0, 0.0});
+      c.table_center = c.center;
+    }
   }
   std::deque<int32_t> queue;
   std::vector<double> dist(nc), bound(nc);
@@ -63,6 +78,10 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
       if ((*labels)[ps.adj[k]] < 0) queue.push_back(ps.adj[k]);
   };
   auto query = [&](int32_t ci, double radius) {
+    if (const double known = tabulated(cl[ci], radius); known >= 0.0) {
+      ++stats->reused;
+      return known;
+    }
     const double v = index.outsideVolume({cl[ci].center, radius}).volume;
     ++stats->queries;
     remember(&cl[ci], radius, v);

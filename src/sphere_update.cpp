@@ -14,6 +14,14 @@
 #include <nlopt.hpp>
 
 namespace sphereset::detail {
+namespace {
+
+// The optimiser stops once its steps move the centre less than this fraction of the starting
+// radius. Measured on spot (n = 32, 8 seeds) and fandisk (n = 16, 4 seeds): 1e-6 and 1e-3
+// give the same mean E_r within the seeds' spread, 1e-3 in 30% less time; 1e-2 is worse.
+constexpr double kCentreTolRel = 1e-3;
+
+}  // namespace
 
 SphereUpdate minimiseOutsideVolume(const SolidIndex& index, const EnclosingRadius& radius_of,
                                    const Vec3& start, const Aabb& box, SphereOptimizer optimizer,
@@ -59,7 +67,7 @@ SphereUpdate minimiseOutsideVolume(const SolidIndex& index, const EnclosingRadiu
   opt.set_initial_step(step);
   opt.set_min_objective(objective, &ctx);
   opt.set_maxeval(max_evaluations);
-  opt.set_xtol_abs(1e-6 * scale);
+  opt.set_xtol_abs(kCentreTolRel * scale);
   opt.set_ftol_rel(1e-7);
   double f = 0.0;
   try {

@@ -167,4 +167,24 @@ TEST(Fit, RestartsKeepTheBestOfIndependentFits) {
 }
 
 }  // namespace
+
+// Teleports are kept only when they lower the clustering energy, and the best state of all
+// rounds is the one bounded, so allowing them can only lower the energy before bounding.
+TEST(Fit, TeleportsLowerTheClusteringEnergy) {
+  const SolidIndex idx(test::makeTorus(1.0, 0.35, 48, 24));
+  FitOptions o;
+  o.num_spheres = 12;
+  o.target_points = 3000;
+  o.init = FitInit::kRandom;  // random seeds leave a local minimum to escape from
+  o.max_failed_teleports = 0;
+  auto none = fitSpheres(idx, o);
+  o.max_failed_teleports = 6;
+  auto some = fitSpheres(idx, o);
+  ASSERT_TRUE(none.ok() && some.ok());
+  EXPECT_EQ(none->teleports, 0);
+  EXPECT_GE(some->teleports_accepted, 1);
+  EXPECT_LT(some->energy_before_bounding, none->energy_before_bounding);
+  EXPECT_LE(some->teleports_accepted, some->teleports);
+}
+
 }  // namespace sphereset

@@ -45,9 +45,9 @@ struct FitOptions {
   // Points clustered (interior grid + surface samples). 0 chooses max(5000, 100 n).
   int64_t target_points = 0;
   double interior_share = 0.5;  // fraction of the points on the interior grid
-  int max_iterations = 30;      // assignment/update rounds
+  int max_iterations = 100;     // assignment/update rounds
   double tolerance = 1e-3;  // a round "improves" when it lowers the best energy by this fraction
-  int max_failed_teleports = 3;  // stop after this many teleports in a row that did not help
+  int max_failed_teleports = 6;  // stop after this many teleports in a row that did not help
   FitInit init = FitInit::kFarthestPoint;
   SphereOptimizer optimizer = SphereOptimizer::kPowell;
   int optimizer_evaluations = 60;  // per sphere and round
@@ -63,7 +63,8 @@ struct FitOptions {
 };
 
 struct FitTimings {
-  double sampling = 0.0, assignment = 0.0, update = 0.0, bounding = 0.0, total = 0.0;
+  double sampling = 0.0, assignment = 0.0, update = 0.0, teleport = 0.0, bounding = 0.0,
+         total = 0.0;  // teleport: choosing the moves (their rounds count as assignment/update)
 };
 
 struct FitResult {
@@ -84,9 +85,8 @@ struct FitResult {
   int64_t bounding_queries = 0;         // outside-volume evaluations of the bounding step
   int64_t bounding_interior_cells = 0;  // interior cubes that made a sphere grow
   int shrink_passes = 0;                // shrinking passes kept
-  int idle_teleports = 0;
-  int restart = 0;  // which restart won (0: the one with options.seed)  // spheres that covered
-                    // nothing alone, moved to split another
+  int idle_teleports = 0;  // spheres that covered nothing alone, moved to split another
+  int restart = 0;         // which restart won (0: the one with options.seed)
   FitTimings seconds;
 };
 
