@@ -66,7 +66,8 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
   }
   std::deque<int32_t> queue;
   std::vector<double> dist(nc), bound(nc);
-  std::vector<int32_t> order(nc);
+  std::vector<int32_t> order;
+  order.reserve(nc);
 
   auto place = [&](int64_t p, int32_t ci, double d, double sov) {
     (*labels)[p] = ci;
@@ -105,6 +106,10 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
     }
   }
 
+  auto before = [&](int32_t a, int32_t b) {
+    return bound[a] < bound[b] || (bound[a] == bound[b] && dist[a] < dist[b]) ||
+           (bound[a] == bound[b] && dist[a] == dist[b] && a < b);
+  };
   int64_t scan = 0;
   while (true) {
     int64_t p = -1;
@@ -130,23 +135,25 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
       continue;
     }
     // Every cluster is a candidate; they are examined in increasing order of their lower
-    // bound, and the examination stops once the bound exceeds the best exact increase.
-    for (int32_t ci = 0; ci < nc; ++ci)
+    // bound, and the examination stops once the bound exceeds the best exact increase. Only
+    // the clusters whose bound does not exceed the first exact increase are sorted, which
+    // examines them in the same order as sorting all (the best increase only decreases).
+    int32_t first = 0;
+    for (int32_t ci = 0; ci < nc; ++ci) {
       bound[ci] = std::max(0.0, lowerBoundSov(cl[ci], dist[ci]) - cl[ci].sov);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
-      return bound[a] < bound[b] || (bound[a] == bound[b] && dist[a] < dist[b]) ||
-             (bound[a] == bound[b] && dist[a] == dist[b] && a < b);
-    });
-    const int32_t ncand = nc;
-    int32_t best = -1;
-    double best_inc = std::numeric_limits<double>::infinity(), best_sov = 0.0;
-    for (int32_t k = 0; k < ncand; ++k) {
-      const int32_t ci = order[k];
-      if (bound[ci] > best_inc) {
-        stats->culled += ncand - k;
-        break;
-      }
+      if (before(ci, first)) first = ci;
+    }
+    int32_t best = first;
+    double best_sov = query(first, dist[first]);
+    double best_inc = best_sov - cl[first].sov;
+    order.clear();
+    for (int32_t ci = 0; ci < nc; ++ci)
+      if (ci != first && bound[ci] <= best_inc) order.push_back(ci);
+    std::sort(order.begin(), order.end(), before);
+    int64_t examined = 1;
+    for (const int32_t ci : order) {
+      if (bound[ci] > best_inc) break;
+      ++examined;
       const double s = query(ci, dist[ci]);
       const double inc = s - cl[ci].sov;
       if (inc < best_inc || (inc == best_inc && dist[ci] < dist[best])) {
@@ -155,6 +162,7 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
         best_sov = s;
       }
     }
+    stats->culled += nc - examined;
     place(p, best, dist[best], best_sov);
   }
 }
