@@ -203,7 +203,7 @@ void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
                   "Points to cluster (default 0: max(5000, 100 n), scaled by --quality)")
       ->check(CLI::Range(int64_t{0}, int64_t{100000000}));
   cmd->add_option("--iterations", a->fit.max_iterations,
-                  "Cap on assignment/update rounds (default 100; --quality sets 30/100/200)")
+                  "Cap on assignment/update rounds (default 100; --quality fast: 30)")
       ->check(CLI::Range(0, 100000));
   cmd->add_option("--padding", a->fit.padding, "Distance added to every radius")
       ->capture_default_str()
@@ -239,7 +239,7 @@ FitOptions fitOptions(const FitArgs& a, const CLI::App* cmd) {
   const std::map<std::string, std::tuple<double, int, int, int, int>> presets = {
       {"fast", {0.4, 30, 30, 2, 1}},
       {"default", {1.0, 100, 60, 6, 1}},
-      {"best", {1.0, 200, 60, 10, 4}}};
+      {"best", {1.0, 100, 60, 6, 4}}};
   const auto [pf, rounds, evals, failed, restarts] = presets.at(a.quality);
   if (cmd->count("--iterations") == 0) fo.max_iterations = rounds;
   if (cmd->count("--restarts") == 0) fo.restarts = restarts;
