@@ -107,9 +107,7 @@ Vec3 centroid(const std::vector<Vec3>& pts) {
 
 // Splits points in two: 2-means from the farthest pair.
 void splitTwoMeans(const std::vector<Vec3>& pts, std::vector<Vec3>* a, std::vector<Vec3>* b) {
-  Vec3 centroid = Vec3::Zero();
-  for (const Vec3& p : pts) centroid += p / static_cast<double>(pts.size());
-  Vec3 ca = farthestFrom(pts, centroid), cb = farthestFrom(pts, ca);
+  Vec3 ca = farthestFrom(pts, centroid(pts)), cb = farthestFrom(pts, ca);
   for (int it = 0; it < kSplitRounds; ++it) {
     a->clear();
     b->clear();
@@ -130,11 +128,6 @@ struct TeleportMove {
   double predicted = 0.0;       // predicted decrease of the energy
 };
 
-// Teleport candidates, most promising first (deviation from the paper, which pairs the
-// sphere of largest overlap ratio with the sphere of largest outside volume). Each sphere's
-// gain from being split is measured: its points split by 2-means, both halves refitted.
-// Each sphere's cost of removal is bounded from above: its points join the sphere they stick
-// out of least, those spheres grow about fixed centres. A pair is ranked by gain minus cost.
 // A sphere's split, kept while its points stay the same.
 struct SplitCache {
   std::vector<Vec3> members;
@@ -143,6 +136,11 @@ struct SplitCache {
   Vec3 ca, cb;
 };
 
+// Teleport candidates, most promising first (deviation from the paper, which pairs the
+// sphere of largest overlap ratio with the sphere of largest outside volume). Each sphere's
+// gain from being split is measured: its points split by 2-means, both halves refitted.
+// Each sphere's cost of removal is bounded from above: its points join the sphere they stick
+// out of least, those spheres grow about fixed centres. A pair is ranked by gain minus cost.
 std::vector<TeleportMove> rankTeleports(const SolidIndex& index, const std::vector<Sphere>& sp,
                                         const std::vector<std::vector<Vec3>>& members,
                                         const std::vector<double>& sov, SphereOptimizer optimizer,
