@@ -9,13 +9,26 @@
 // table of radius -> SOV computed so far gives a lower bound of the increase for any larger
 // radius, and clusters are examined in increasing order of that bound, so most are dismissed
 // without an SOV query.
+//
+// Parallel preparation (beyond the paper): with many clusters, the per-point scan over all
+// clusters dominates, so batches of queued points are scanned in parallel against the
+// clusters as they were when the batch began, and decided one by one in queue order against
+// the clusters as they are then; see the comments in assignPoints for why the labels are
+// exactly those of the sequential fill. Measured (same labels, 2 cores): spot n = 1024,
+// assignment 42.8 s -> 35.1 s; armadillo n = 512, 32.6 s -> 29.9 s, where the outside-volume
+// queries, made in order so that the freshest tables cull them, are most of the time.
 #include "cluster_assign.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <limits>
 #include <numeric>
+#include <tuple>
 
 namespace sphereset::detail {
 namespace {
@@ -48,6 +61,65 @@ void remember(Cluster* c, double radius, double sov) {
   c->table.insert(it, {radius, sov});
 }
 
+// Points of the fill prepared together, in parallel, against the clusters as they were when
+// the batch began: distances, whether a sphere already holds the point, and the clusters of
+// smallest lower bound. The decisions are then made in queue order with the tables and radii
+// of that moment, so the labels are the sequential fill's whatever the batch size; only the
+// O(clusters) scan per point runs in parallel (outside-volume queries are made when a point is
+// decided, where the latest tables cull best). A function of the cluster count only.
+constexpr int32_t kParallelClusters = 64;
+constexpr size_t kMaxBatch = 128;
+constexpr int kShortList = 8;  // clusters of smallest lower bound kept per prepared point
+size_t batchSize(int32_t nc) {
+  return nc < kParallelClusters ? 1 : std::min<size_t>(kMaxBatch, static_cast<size_t>(nc) / 8);
+}
+
+struct Prepared {
+  int32_t inside = -1;  // nearest cluster whose sphere held the point, or -1
+  double inside_dist = 0.0;
+  int count = 0;  // short list: clusters in examination order, their distances and bounds
+  std::array<int32_t, kShortList> cluster;
+  std::array<double, kShortList> dist, bound;
+  double rest_bound = std::numeric_limits<double>::infinity();  // least bound of the others
+};
+
+struct Scratch {
+  std::vector<double> dist, bound;
+  std::vector<int32_t> order;
+};
+
+void prepare(const std::vector<Cluster>& cl, const Vec3& x, Scratch* s, Prepared* pr) {
+  const int32_t nc = static_cast<int32_t>(cl.size());
+  s->dist.resize(nc);
+  s->bound.resize(nc);
+  for (int32_t ci = 0; ci < nc; ++ci) {
+    s->dist[ci] = (x - cl[ci].center).norm();
+    if (s->dist[ci] <= cl[ci].radius && (pr->inside < 0 || s->dist[ci] < s->dist[pr->inside]))
+      pr->inside = ci;
+  }
+  if (pr->inside >= 0) {
+    pr->inside_dist = s->dist[pr->inside];
+    return;
+  }
+  for (int32_t ci = 0; ci < nc; ++ci)
+    s->bound[ci] = std::max(0.0, lowerBoundSov(cl[ci], s->dist[ci]) - cl[ci].sov);
+  auto before = [&](int32_t a, int32_t b) {
+    return s->bound[a] < s->bound[b] || (s->bound[a] == s->bound[b] && s->dist[a] < s->dist[b]) ||
+           (s->bound[a] == s->bound[b] && s->dist[a] == s->dist[b] && a < b);
+  };
+  s->order.resize(nc);
+  std::iota(s->order.begin(), s->order.end(), 0);
+  pr->count = std::min<int>(kShortList, nc);
+  std::partial_sort(s->order.begin(), s->order.begin() + pr->count, s->order.end(), before);
+  for (int k = 0; k < pr->count; ++k) {
+    pr->cluster[k] = s->order[k];
+    pr->dist[k] = s->dist[s->order[k]];
+    pr->bound[k] = s->bound[s->order[k]];
+  }
+  for (int32_t k = pr->count; k < nc; ++k)
+    pr->rest_bound = std::min(pr->rest_bound, s->bound[s->order[k]]);
+}
+
 }  // namespace
 
 void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Cluster>* clusters,
@@ -65,10 +137,6 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
     }
   }
   std::deque<int32_t> queue;
-  std::vector<double> dist(nc), bound(nc);
-  std::vector<int32_t> order;
-  order.reserve(nc);
-
   auto place = [&](int64_t p, int32_t ci, double d, double sov) {
     (*labels)[p] = ci;
     if (d > cl[ci].radius) {
@@ -90,80 +158,152 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
   };
 
   // Seeds: the point nearest each centre (clusters whose nearest point is taken keep none).
-  for (int32_t ci = 0; ci < nc; ++ci) {
-    int64_t best = -1;
+  std::vector<int64_t> nearest(nc, -1);
+  tbb::parallel_for(int32_t{0}, nc, [&](int32_t ci) {
     double bd = std::numeric_limits<double>::infinity();
     for (int64_t p = 0; p < np; ++p) {
       const double d = (ps.points[p] - cl[ci].center).squaredNorm();
       if (d < bd) {
         bd = d;
-        best = p;
+        nearest[ci] = p;
       }
     }
-    if (best >= 0 && (*labels)[best] < 0) {
-      const double d = std::sqrt(bd);
-      place(best, ci, d, query(ci, d));
+  });
+  for (int32_t ci = 0; ci < nc; ++ci) {
+    const int64_t p = nearest[ci];
+    if (p >= 0 && (*labels)[p] < 0) {
+      const double d = (ps.points[p] - cl[ci].center).norm();
+      place(p, ci, d, query(ci, d));
     }
   }
 
-  auto before = [&](int32_t a, int32_t b) {
-    return bound[a] < bound[b] || (bound[a] == bound[b] && dist[a] < dist[b]) ||
-           (bound[a] == bound[b] && dist[a] == dist[b] && a < b);
-  };
+  const size_t batch_size = batchSize(nc);
+  std::vector<int32_t> batch;
+  std::vector<Prepared> prepared;
+  std::vector<char> queued(np, 0), changed(nc, 0), examined(nc, 0);
+  std::vector<int32_t> changed_list;
+  Scratch serial;
+  std::vector<double> dist(nc), bound(nc);
+  std::vector<int32_t> order;
+  std::vector<std::tuple<double, double, int32_t>> merged;
   int64_t scan = 0;
   while (true) {
-    int64_t p = -1;
-    while (!queue.empty() && p < 0) {
+    // The next points of the fill: the first unlabelled entries of the queue, or, when it
+    // runs dry, the first point of a part not reached from any centre.
+    batch.clear();
+    while (!queue.empty() && batch.size() < batch_size) {
       const int32_t q = queue.front();
       queue.pop_front();
-      if ((*labels)[q] < 0) p = q;
-    }
-    if (p < 0) {  // a part not reached from any centre: continue from its first point
-      while (scan < np && (*labels)[scan] >= 0) ++scan;
-      if (scan == np) break;
-      p = scan;
-    }
-    const Vec3& x = ps.points[p];
-    // Already inside a sphere: no increase; the nearest such centre wins.
-    int32_t inside = -1;
-    for (int32_t ci = 0; ci < nc; ++ci) {
-      dist[ci] = (x - cl[ci].center).norm();
-      if (dist[ci] <= cl[ci].radius && (inside < 0 || dist[ci] < dist[inside])) inside = ci;
-    }
-    if (inside >= 0) {
-      place(p, inside, dist[inside], cl[inside].sov);
-      continue;
-    }
-    // Every cluster is a candidate; they are examined in increasing order of their lower
-    // bound, and the examination stops once the bound exceeds the best exact increase. Only
-    // the clusters whose bound does not exceed the first exact increase are sorted, which
-    // examines them in the same order as sorting all (the best increase only decreases).
-    int32_t first = 0;
-    for (int32_t ci = 0; ci < nc; ++ci) {
-      bound[ci] = std::max(0.0, lowerBoundSov(cl[ci], dist[ci]) - cl[ci].sov);
-      if (before(ci, first)) first = ci;
-    }
-    int32_t best = first;
-    double best_sov = query(first, dist[first]);
-    double best_inc = best_sov - cl[first].sov;
-    order.clear();
-    for (int32_t ci = 0; ci < nc; ++ci)
-      if (ci != first && bound[ci] <= best_inc) order.push_back(ci);
-    std::sort(order.begin(), order.end(), before);
-    int64_t examined = 1;
-    for (const int32_t ci : order) {
-      if (bound[ci] > best_inc) break;
-      ++examined;
-      const double s = query(ci, dist[ci]);
-      const double inc = s - cl[ci].sov;
-      if (inc < best_inc || (inc == best_inc && dist[ci] < dist[best])) {
-        best = ci;
-        best_inc = inc;
-        best_sov = s;
+      if ((*labels)[q] < 0 && !queued[q]) {
+        queued[q] = 1;
+        batch.push_back(q);
       }
     }
-    stats->culled += nc - examined;
-    place(p, best, dist[best], best_sov);
+    if (batch.empty()) {
+      while (scan < np && (*labels)[scan] >= 0) ++scan;
+      if (scan == np) break;
+      batch.push_back(static_cast<int32_t>(scan));
+    }
+    prepared.assign(batch.size(), Prepared{});
+    if (batch.size() == 1) {
+      prepare(cl, ps.points[batch[0]], &serial, &prepared[0]);
+    } else {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, batch.size()),
+                        [&](const tbb::blocked_range<size_t>& r) {
+                          Scratch local;
+                          for (size_t k = r.begin(); k < r.end(); ++k)
+                            prepare(cl, ps.points[batch[k]], &local, &prepared[k]);
+                        });
+    }
+    for (size_t k = 0; k < batch.size(); ++k) {
+      const int32_t p = batch[k];
+      queued[p] = 0;
+      const Prepared& pr = prepared[k];
+      const Vec3& x = ps.points[p];
+      // Already inside a sphere: no increase; the nearest such centre wins. Spheres only
+      // grow, so only those that grew since the preparation can newly hold the point.
+      int32_t inside = pr.inside;
+      double inside_dist = pr.inside_dist;
+      for (const int32_t j : changed_list) {
+        const double dj = (x - cl[j].center).norm();
+        if (dj <= cl[j].radius &&
+            (inside < 0 || dj < inside_dist || (dj == inside_dist && j < inside))) {
+          inside = j;
+          inside_dist = dj;
+        }
+      }
+      if (inside >= 0) {
+        place(p, inside, inside_dist, cl[inside].sov);
+        continue;
+      }
+      // Least increase (ties: nearest centre). A cluster is dismissed when its lower bound
+      // exceeds the best exact increase found; the result does not depend on the order in
+      // which clusters are examined. Unchanged clusters: the prepared bounds are still lower
+      // bounds (tables only gain entries), so the short list is examined in their order and
+      // the rest only if the least other bound does not exceed the best increase. Clusters
+      // that grew meanwhile (their bound can have dropped) are examined afresh.
+      int32_t best = -1;
+      double best_inc = std::numeric_limits<double>::infinity(), best_sov = 0.0, best_dist = 0.0;
+      int64_t looked = 0;
+      auto consider = [&](int32_t ci, double d) {
+        examined[ci] = 1;
+        ++looked;
+        if (std::max(0.0, lowerBoundSov(cl[ci], d) - cl[ci].sov) > best_inc) return;
+        const double v = query(ci, d);
+        const double inc = v - cl[ci].sov;
+        if (inc < best_inc || (inc == best_inc && d < best_dist)) {
+          best = ci;
+          best_inc = inc;
+          best_sov = v;
+          best_dist = d;
+        }
+      };
+      // The short list's unchanged clusters and the grown ones, merged by lower bound.
+      merged.clear();
+      for (int i = 0; i < pr.count; ++i)
+        if (!changed[pr.cluster[i]]) merged.push_back({pr.bound[i], pr.dist[i], pr.cluster[i]});
+      for (const int32_t j : changed_list) {
+        const double dj = (x - cl[j].center).norm();
+        merged.push_back({std::max(0.0, lowerBoundSov(cl[j], dj) - cl[j].sov), dj, j});
+      }
+      std::sort(merged.begin(), merged.end());
+      for (const auto& [b, d, ci] : merged) {
+        if (b > best_inc) break;
+        consider(ci, d);
+      }
+      for (const int32_t j : changed_list) examined[j] = 1;  // examined or dismissed
+      if (pr.rest_bound <= best_inc) {
+        // The short list did not settle it: every other cluster, in order of lower bound.
+        order.clear();
+        for (int32_t ci = 0; ci < nc; ++ci) {
+          if (examined[ci]) continue;
+          dist[ci] = (x - cl[ci].center).norm();
+          bound[ci] = std::max(0.0, lowerBoundSov(cl[ci], dist[ci]) - cl[ci].sov);
+          if (bound[ci] <= best_inc) order.push_back(ci);
+        }
+        std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
+          return bound[a] < bound[b] || (bound[a] == bound[b] && dist[a] < dist[b]) ||
+                 (bound[a] == bound[b] && dist[a] == dist[b] && a < b);
+        });
+        for (const int32_t ci : order) {
+          if (bound[ci] > best_inc) break;
+          consider(ci, dist[ci]);
+        }
+      }
+      for (const int32_t j : changed_list) examined[j] = 0;
+      for (int i = 0; i < pr.count; ++i) examined[pr.cluster[i]] = 0;
+      for (const int32_t ci : order) examined[ci] = 0;
+      order.clear();
+      stats->culled += nc - looked;
+      const double before_radius = cl[best].radius;
+      place(p, best, best_dist, best_sov);
+      if (cl[best].radius != before_radius && !changed[best]) {
+        changed[best] = 1;
+        changed_list.push_back(best);
+      }
+    }
+    for (const int32_t j : changed_list) changed[j] = 0;
+    changed_list.clear();
   }
 }
 

@@ -68,6 +68,29 @@ TEST(Fit, SameSpheresForAnyThreadCount) {
   }
 }
 
+// Enough spheres for the assignment to prepare points in parallel batches.
+TEST(Fit, ManySpheresSameForAnyThreadCount) {
+  const SolidIndex idx(test::makeTorus(1.0, 0.35, 48, 24));
+  FitOptions o;
+  o.num_spheres = 80;
+  o.target_points = 6000;
+  o.max_iterations = 6;
+  auto a = fitSpheres(idx, o);
+  Expected<FitResult> b = Error{ErrorCode::kInvalidArgument, ""};
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    b = fitSpheres(idx, o);
+  }
+  ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_EQ(a->spheres.size(), 80u);
+  ASSERT_EQ(b->spheres.size(), 80u);
+  for (size_t i = 0; i < a->spheres.size(); ++i) {
+    EXPECT_EQ(a->spheres[i].center, b->spheres[i].center);
+    EXPECT_EQ(a->spheres[i].radius, b->spheres[i].radius);
+  }
+  EXPECT_EQ(a->sov_queries, b->sov_queries);
+}
+
 TEST(Fit, PaddingIsAddedToEveryRadius) {
   const SolidIndex idx(link());
   FitOptions o;
