@@ -41,22 +41,36 @@ double lowerBoundSov(const Cluster& c, double radius) {
   return it == c.table.begin() ? 0.0 : std::prev(it)->second;
 }
 
+// Lower bound of the outside-volume increase when cluster c grows to `radius`.
+double increaseBound(const Cluster& c, double radius) {
+  return std::max(0.0, lowerBoundSov(c, radius) - c.sov);
+}
+
+// Examination order of candidate clusters: increasing lower bound, then distance, then index.
+bool examinedBefore(const std::vector<double>& bound, const std::vector<double>& dist, int32_t a,
+                    int32_t b) {
+  return bound[a] < bound[b] || (bound[a] == bound[b] && dist[a] < dist[b]) ||
+         (bound[a] == bound[b] && dist[a] == dist[b] && a < b);
+}
+
 // A table longer than this is dropped instead of grown (it is only a cache).
 constexpr size_t kMaxTable = 1 << 14;
 
+// First table entry whose radius is not below `radius`.
+auto tableEntry(const Cluster& c, double radius) {
+  return std::lower_bound(c.table.begin(), c.table.end(), radius,
+                          [](const std::pair<double, double>& e, double r) { return e.first < r; });
+}
+
 // The tabulated SOV at exactly `radius`, or a negative number.
 double tabulated(const Cluster& c, double radius) {
-  auto it =
-      std::lower_bound(c.table.begin(), c.table.end(), radius,
-                       [](const std::pair<double, double>& e, double r) { return e.first < r; });
+  const auto it = tableEntry(c, radius);
   return it != c.table.end() && it->first == radius ? it->second : -1.0;
 }
 
 void remember(Cluster* c, double radius, double sov) {
   if (c->table.size() >= kMaxTable) c->table.assign(1, {0.0, 0.0});
-  auto it =
-      std::lower_bound(c->table.begin(), c->table.end(), radius,
-                       [](const std::pair<double, double>& e, double r) { return e.first < r; });
+  const auto it = tableEntry(*c, radius);
   if (it != c->table.end() && it->first == radius) return;
   c->table.insert(it, {radius, sov});
 }
@@ -101,12 +115,8 @@ void prepare(const std::vector<Cluster>& cl, const Vec3& x, Scratch* s, Prepared
     pr->inside_dist = s->dist[pr->inside];
     return;
   }
-  for (int32_t ci = 0; ci < nc; ++ci)
-    s->bound[ci] = std::max(0.0, lowerBoundSov(cl[ci], s->dist[ci]) - cl[ci].sov);
-  auto before = [&](int32_t a, int32_t b) {
-    return s->bound[a] < s->bound[b] || (s->bound[a] == s->bound[b] && s->dist[a] < s->dist[b]) ||
-           (s->bound[a] == s->bound[b] && s->dist[a] == s->dist[b] && a < b);
-  };
+  for (int32_t ci = 0; ci < nc; ++ci) s->bound[ci] = increaseBound(cl[ci], s->dist[ci]);
+  auto before = [&](int32_t a, int32_t b) { return examinedBefore(s->bound, s->dist, a, b); };
   s->order.resize(nc);
   std::iota(s->order.begin(), s->order.end(), 0);
   pr->count = std::min<int>(kShortList, nc);
@@ -248,7 +258,7 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
       auto consider = [&](int32_t ci, double d) {
         examined[ci] = 1;
         ++looked;
-        if (std::max(0.0, lowerBoundSov(cl[ci], d) - cl[ci].sov) > best_inc) return;
+        if (increaseBound(cl[ci], d) > best_inc) return;
         const double v = query(ci, d);
         const double inc = v - cl[ci].sov;
         if (inc < best_inc || (inc == best_inc && d < best_dist)) {
@@ -264,7 +274,7 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
         if (!changed[pr.cluster[i]]) merged.push_back({pr.bound[i], pr.dist[i], pr.cluster[i]});
       for (const int32_t j : changed_list) {
         const double dj = (x - cl[j].center).norm();
-        merged.push_back({std::max(0.0, lowerBoundSov(cl[j], dj) - cl[j].sov), dj, j});
+        merged.push_back({increaseBound(cl[j], dj), dj, j});
       }
       std::sort(merged.begin(), merged.end());
       for (const auto& [b, d, ci] : merged) {
@@ -278,13 +288,11 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
         for (int32_t ci = 0; ci < nc; ++ci) {
           if (examined[ci]) continue;
           dist[ci] = (x - cl[ci].center).norm();
-          bound[ci] = std::max(0.0, lowerBoundSov(cl[ci], dist[ci]) - cl[ci].sov);
+          bound[ci] = increaseBound(cl[ci], dist[ci]);
           if (bound[ci] <= best_inc) order.push_back(ci);
         }
-        std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
-          return bound[a] < bound[b] || (bound[a] == bound[b] && dist[a] < dist[b]) ||
-                 (bound[a] == bound[b] && dist[a] == dist[b] && a < b);
-        });
+        std::sort(order.begin(), order.end(),
+                  [&](int32_t a, int32_t b) { return examinedBefore(bound, dist, a, b); });
         for (const int32_t ci : order) {
           if (bound[ci] > best_inc) break;
           consider(ci, dist[ci]);

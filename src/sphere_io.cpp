@@ -41,6 +41,17 @@ std::string num(double x) {
   return os.str();
 }
 
+// The JSON document read from `in` (the file `path`).
+Expected<nlohmann::json> parseJson(std::istream& in, const std::string& path) {
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const std::exception& e) {
+    return Error{ErrorCode::kUnreadable, path + ": invalid JSON (" + e.what() + ")"};
+  }
+  return j;
+}
+
 }  // namespace
 
 Expected<SphereFormat> sphereFormatFromPath(const std::string& path) {
@@ -153,12 +164,9 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
   std::vector<Sphere> out;
 
   if (*format == SphereFormat::kJson) {
-    nlohmann::json j;
-    try {
-      in >> j;
-    } catch (const std::exception& e) {
-      return Error{ErrorCode::kUnreadable, path + ": invalid JSON (" + e.what() + ")"};
-    }
+    auto parsed = parseJson(in, path);
+    if (!parsed) return parsed.error();
+    nlohmann::json& j = *parsed;
     const nlohmann::json* list = &j;
     if (j.is_object()) {
       if (!j.contains("spheres"))
@@ -364,12 +372,9 @@ Expected<SphereTree> readSphereTree(const std::string& path) {
     return t;
   }
   if (*format == SphereFormat::kJson) {
-    nlohmann::json j;
-    try {
-      in >> j;
-    } catch (const std::exception& e) {
-      return Error{ErrorCode::kUnreadable, path + ": invalid JSON (" + e.what() + ")"};
-    }
+    auto parsed = parseJson(in, path);
+    if (!parsed) return parsed.error();
+    nlohmann::json& j = *parsed;
     if (j.is_object() && j.contains("nodes") && j.contains("branching") && j.contains("depth")) {
       try {
         t.branching = j["branching"].get<int>();
