@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 
 #include "sampling.hpp"
@@ -40,19 +41,78 @@ std::vector<Vec3> interiorGrid(const SolidIndex& index, double h) {
   return out;
 }
 
-struct CellHash {
-  size_t operator()(const std::array<int64_t, 3>& k) const {
-    return static_cast<size_t>(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
-  }
-};
+// Rings of cells searched around a query before the nearest-point search gives up on the
+// grid and scans every point (a query far from all points).
+constexpr int64_t kMaxRings = 8;
 
 }  // namespace
+
+size_t PointGrid::KeyHash::operator()(const std::array<int64_t, 3>& k) const {
+  return static_cast<size_t>(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
+}
+
+std::array<int64_t, 3> PointGrid::key(const Vec3& p) const {
+  return {static_cast<int64_t>(std::floor(p.x() / cell_)),
+          static_cast<int64_t>(std::floor(p.y() / cell_)),
+          static_cast<int64_t>(std::floor(p.z() / cell_))};
+}
+
+PointGrid::PointGrid(const std::vector<Vec3>& points, double cell) : cell_(cell) {
+  const int32_t n = static_cast<int32_t>(points.size());
+  std::vector<std::pair<std::array<int64_t, 3>, int32_t>> keyed(n);
+  for (int32_t i = 0; i < n; ++i) keyed[i] = {key(points[i]), i};
+  std::sort(keyed.begin(), keyed.end());
+  sorted_.resize(n);
+  lo_.fill(std::numeric_limits<int64_t>::max());
+  hi_.fill(std::numeric_limits<int64_t>::min());
+  for (int32_t i = 0; i < n; ++i) {
+    sorted_[i] = keyed[i].second;
+    auto [it, fresh] = cells_.try_emplace(keyed[i].first, i, i);
+    it->second.second = i + 1;
+    for (int a = 0; a < 3; ++a) {
+      lo_[a] = std::min(lo_[a], keyed[i].first[a]);
+      hi_[a] = std::max(hi_[a], keyed[i].first[a]);
+    }
+  }
+}
+
+int64_t PointGrid::nearest(const std::vector<Vec3>& pts, const Vec3& q) const {
+  if (pts.empty() || sorted_.empty()) return -1;
+  int64_t best = -1;
+  double bd = std::numeric_limits<double>::infinity();
+  auto consider = [&](int64_t i) {
+    const double d = (pts[i] - q).squaredNorm();
+    if (d < bd || (d == bd && i < best)) {
+      bd = d;
+      best = i;
+    }
+  };
+  const std::array<int64_t, 3> k = key(q);
+  for (int64_t ring = 0; ring <= kMaxRings; ++ring) {
+    // Cells of Chebyshev distance `ring` from the query's cell, within the occupied range.
+    for (int64_t x = std::max(k[0] - ring, lo_[0]); x <= std::min(k[0] + ring, hi_[0]); ++x)
+      for (int64_t y = std::max(k[1] - ring, lo_[1]); y <= std::min(k[1] + ring, hi_[1]); ++y)
+        for (int64_t z = std::max(k[2] - ring, lo_[2]); z <= std::min(k[2] + ring, hi_[2]); ++z) {
+          if (std::max({std::abs(x - k[0]), std::abs(y - k[1]), std::abs(z - k[2])}) != ring)
+            continue;
+          const auto it = cells_.find({x, y, z});
+          if (it == cells_.end()) continue;
+          for (int32_t s = it->second.first; s < it->second.second; ++s) consider(sorted_[s]);
+        }
+    // Points of farther rings lie at least `ring` whole cells away.
+    const double reach = static_cast<double>(ring) * cell_;
+    if (best >= 0 && bd < reach * reach) return best;
+  }
+  // Far from every point: scan them all.
+  for (int64_t i = 0; i < static_cast<int64_t>(pts.size()); ++i) consider(i);
+  return best;
+}
 
 void buildAdjacency(PointSet* ps, double cell) {
   const int64_t n = static_cast<int64_t>(ps->points.size());
   ps->cell = cell;
   const double reach2 = (1.8 * cell) * (1.8 * cell);
-  std::unordered_map<std::array<int64_t, 3>, std::vector<int32_t>, CellHash> grid;
+  std::unordered_map<std::array<int64_t, 3>, std::vector<int32_t>, PointGrid::KeyHash> grid;
   auto key = [&](const Vec3& p) {
     return std::array<int64_t, 3>{static_cast<int64_t>(std::floor(p.x() / cell)),
                                   static_cast<int64_t>(std::floor(p.y() / cell)),
@@ -79,6 +139,7 @@ void buildAdjacency(PointSet* ps, double cell) {
   ps->adj.clear();
   ps->adj.reserve(ps->adj_start[n]);
   for (auto& v : nb) ps->adj.insert(ps->adj.end(), v.begin(), v.end());
+  ps->grid = PointGrid(ps->points, cell);
 }
 
 PointSet samplePoints(const SolidIndex& index, int64_t target, double interior_share,

@@ -1,12 +1,36 @@
 // Private: the points that the fit clusters (paper Sec. 5, "Preprocessing").
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "sphereset/solid_index.hpp"
 
 namespace sphereset::detail {
+
+// Points bucketed in a uniform grid of cubic cells, for nearest-point queries.
+class PointGrid {
+ public:
+  PointGrid() = default;
+  PointGrid(const std::vector<Vec3>& points, double cell);
+  // The point of `points` (the ones the grid was built on) nearest `q`, the lowest index
+  // among equally near ones, as a scan of all points would find it; -1 if there are none.
+  int64_t nearest(const std::vector<Vec3>& points, const Vec3& q) const;
+
+  // Hash of integer cell coordinates.
+  struct KeyHash {
+    size_t operator()(const std::array<int64_t, 3>& k) const;
+  };
+
+ private:
+  std::array<int64_t, 3> key(const Vec3& p) const;
+  double cell_ = 0.0;
+  std::array<int64_t, 3> lo_{}, hi_{};  // occupied cell range
+  std::vector<int32_t> sorted_;         // point indices grouped by cell
+  std::unordered_map<std::array<int64_t, 3>, std::pair<int32_t, int32_t>, KeyHash> cells_;
+};
 
 struct PointSet {
   std::vector<Vec3> points;  // interior grid points first, then surface samples
@@ -15,6 +39,7 @@ struct PointSet {
   // Flood-fill adjacency (CSR): neighbours of point i are adj[adj_start[i] .. adj_start[i+1]).
   std::vector<int32_t> adj_start, adj;
   double cell = 0.0;  // the adjacency's cell size
+  PointGrid grid;     // over `points`, cells of size `cell`
 };
 
 // (Re)builds the adjacency: neighbours are points closer than 1.8 cells.
