@@ -34,30 +34,21 @@ struct Request {
 // The sphere whose outside volume grows least, to first order (dSOV/dr times the radius
 // increase), when enlarged to hold the points; among the kCandidates needing the least radius
 // increase. Writes its index and new radius (-1 when there are no spheres).
-void cheapestGrowth(const std::vector<Sphere>& sp, const std::vector<double>& sov_dr,
-                    const Vec3* pts, int npts, double slack, int32_t* sphere, double* radius) {
+void cheapestGrowth(const SphereGrid& grid, const std::vector<double>& sov_dr, const Vec3* pts,
+                    int npts, double slack, int32_t* sphere, double* radius) {
   std::array<std::pair<double, int32_t>, kCandidates> cand;
-  cand.fill({std::numeric_limits<double>::infinity(), -1});
-  for (int32_t i = 0; i < static_cast<int32_t>(sp.size()); ++i) {
-    double need = 0.0;
-    for (int k = 0; k < npts; ++k) need = std::max(need, (pts[k] - sp[i].center).norm());
-    const double grow = need - sp[i].radius;
-    if (grow < cand.back().first) {
-      cand.back() = {grow, i};
-      std::sort(cand.begin(), cand.end());
-    }
-  }
+  const int m = leastGrowth(grid, pts, npts, kCandidates, cand.data());
   double best_inc = std::numeric_limits<double>::infinity();
   *sphere = -1;
   // Candidates come in increasing order of radius growth, so a strict comparison breaks
   // ties (spheres with no surface outside the solid, dSOV/dr = 0) by the smaller growth.
-  for (const auto& [grow, i] : cand) {
-    if (i < 0) continue;
+  for (int k = 0; k < m; ++k) {
+    const auto [grow, i] = cand[k];
     const double inc = sov_dr[i] * grow;
     if (inc < best_inc) {
       best_inc = inc;
       *sphere = i;
-      *radius = sp[i].radius + grow + slack;
+      *radius = grid.spheres()[i].radius + grow + slack;
     }
   }
 }
@@ -81,21 +72,6 @@ void growTo(std::vector<Sphere>* sp, const std::vector<double>& radius, BoundSta
       (*sp)[i].radius = radius[i];
       ++st->enlarged;
     }
-}
-
-// How many spheres (0, 1, or 2 meaning "two or more") contain all the points; *holder is
-// the last one found.
-int holders(const std::vector<Sphere>& sp, const Vec3* pts, int npts, int32_t* holder) {
-  int count = 0;
-  for (int32_t i = 0; i < static_cast<int32_t>(sp.size()) && count < 2; ++i) {
-    bool all = true;
-    for (int k = 0; k < npts && all; ++k) all = sp[i].contains(pts[k]);
-    if (all) {
-      ++count;
-      *holder = i;
-    }
-  }
-  return count;
 }
 
 // Splits triangle (a, b, c) in four, recursively, until settled(piece) says a piece needs no
@@ -137,15 +113,16 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, d
   const double slack = kSlackRel * index.bounds().diagonal();
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
   const std::vector<double> sov_dr = radiusRates(index, sp, &st);
+  const SphereGrid grid(sp);
   std::vector<std::vector<Request>> req(nt);
   tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
     const auto& tri = mesh.triangles[t];
     splitPieces(
         mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], min_edge,
-        [&](const std::array<Vec3, 3>& v) { return oneSphereHolds(sp, v.data(), 3); },
+        [&](const std::array<Vec3, 3>& v) { return oneSphereHolds(grid, v.data(), 3); },
         [&](const std::array<Vec3, 3>& v) {
           Request best{-1, 0.0, v};
-          cheapestGrowth(sp, sov_dr, v.data(), 3, slack, &best.sphere, &best.radius);
+          cheapestGrowth(grid, sov_dr, v.data(), 3, slack, &best.sphere, &best.radius);
           if (best.sphere >= 0) req[t].push_back(best);
         });
   });
@@ -168,6 +145,7 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
   std::vector<Sphere>& sp = *spheres;
   const double slack = kSlackRel * index.bounds().diagonal();
   const std::vector<double> sov_dr = radiusRates(index, sp, &st);
+  const SphereGrid grid(sp);
   // An uncovered centre found above max_depth goes to the cheapest sphere and the walk
   // descends; at max_depth the cheapest sphere takes the whole cube (its eight corners). Requests
   // per root cube, applied as maxima afterwards.
@@ -176,21 +154,21 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
     double size = 0.0;
     const Vec3 mn = rootCell(index.bounds(), k, &size);
     walkSolidCells(
-        index, sp, mn, size, 0, max_depth,
+        index, grid, mn, size, 0, max_depth,
         [&](const Vec3& lo, double s, int depth, double) {
           int32_t i = -1;
           double r = 0.0;
           if (depth < max_depth) {
             // The centre itself (the walk tests it), then the cubes below.
             const Vec3 centre = lo + Vec3::Constant(0.5 * s);
-            cheapestGrowth(sp, sov_dr, &centre, 1, slack, &i, &r);
+            cheapestGrowth(grid, sov_dr, &centre, 1, slack, &i, &r);
             if (i >= 0) req[k].emplace_back(i, r);
             return true;
           }
           Vec3 corners[8];
           for (int c = 0; c < 8; ++c)
             corners[c] = lo + s * Vec3((c & 1) ? 1 : 0, (c & 2) ? 1 : 0, (c & 4) ? 1 : 0);
-          cheapestGrowth(sp, sov_dr, corners, 8, slack, &i, &r);
+          cheapestGrowth(grid, sov_dr, corners, 8, slack, &i, &r);
           if (i >= 0) req[k].emplace_back(i, r);
           return false;
         },
@@ -212,6 +190,7 @@ std::vector<std::vector<Vec3>> soleCover(const SolidIndex& index, const std::vec
   const Mesh& mesh = index.mesh();
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
   const int ns = static_cast<int>(sp.size());
+  const SphereGrid grid(sp);
   // Per triangle, the pieces one sphere alone holds, as (sphere, vertices).
   std::vector<std::vector<std::pair<int32_t, std::array<Vec3, 3>>>> own(nt);
   tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
@@ -222,7 +201,7 @@ std::vector<std::vector<Vec3>> soleCover(const SolidIndex& index, const std::vec
         mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], min_edge,
         [&](const std::array<Vec3, 3>& v) {
           int32_t holder = -1;
-          const int h = holders(sp, v.data(), 3, &holder);
+          const int h = holders(grid, v.data(), 3, &holder);
           if (h == 1) own[t].push_back({holder, v});
           return h > 0;
         },
@@ -233,7 +212,7 @@ std::vector<std::vector<Vec3>> soleCover(const SolidIndex& index, const std::vec
     for (const auto& [i, v] : list) out[i].insert(out[i].end(), v.begin(), v.end());
   for (const Vec3& p : interior) {
     int32_t holder = -1;
-    if (holders(sp, &p, 1, &holder) == 1) out[holder].push_back(p);
+    if (holders(grid, &p, 1, &holder) == 1) out[holder].push_back(p);
   }
   return out;
 }

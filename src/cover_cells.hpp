@@ -5,26 +5,10 @@
 #include <limits>
 #include <vector>
 
+#include "sphere_grid.hpp"
 #include "sphereset/solid_index.hpp"
 
 namespace sphereset::detail {
-
-// Distance from p to the union of spheres (0 inside).
-inline double gapToUnion(const std::vector<Sphere>& spheres, const Vec3& p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const Sphere& s : spheres) best = std::min(best, (p - s.center).norm() - s.radius);
-  return std::max(best, 0.0);
-}
-
-// Whether one sphere holds all the points (then it holds their convex hull).
-inline bool oneSphereHolds(const std::vector<Sphere>& spheres, const Vec3* pts, int n) {
-  for (const Sphere& s : spheres) {
-    bool all = true;
-    for (int i = 0; i < n && all; ++i) all = s.contains(pts[i]);
-    if (all) return true;
-  }
-  return false;
-}
 
 // The interior coverage walk: cubes of an octree below an 8³ grid over `bounds`. A cube is
 // settled when one sphere holds its eight corners (covered) or when it holds no surface and
@@ -32,9 +16,8 @@ inline bool oneSphereHolds(const std::vector<Sphere>& spheres, const Vec3* pts, 
 // in no sphere, on_gap(min, size, depth, gap) is called and the walk descends only if it
 // returns true; cubes still unsettled at max_depth go to on_undecided(min, size).
 template <class OnGap, class OnUndecided>
-void walkSolidCells(const SolidIndex& index, const std::vector<Sphere>& spheres, const Vec3& mn,
-                    double size, int depth, int max_depth, OnGap&& on_gap,
-                    OnUndecided&& on_undecided) {
+void walkSolidCells(const SolidIndex& index, const SphereGrid& spheres, const Vec3& mn, double size,
+                    int depth, int max_depth, OnGap&& on_gap, OnUndecided&& on_undecided) {
   Vec3 corners[8];
   for (int k = 0; k < 8; ++k)
     corners[k] = mn + size * Vec3((k & 1) ? 1 : 0, (k & 2) ? 1 : 0, (k & 4) ? 1 : 0);

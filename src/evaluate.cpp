@@ -45,7 +45,7 @@ struct CoverStats {
   double uncertified = 0.0;  // area (surface) or count (interior) left undecided
 };
 
-void coverTriangle(const std::vector<Sphere>& spheres, const Vec3& a, const Vec3& b, const Vec3& c,
+void coverTriangle(const detail::SphereGrid& spheres, const Vec3& a, const Vec3& b, const Vec3& c,
                    int depth, int max_depth, CoverStats* st) {
   const Vec3 pts[3] = {a, b, c};
   if (detail::oneSphereHolds(spheres, pts, 3)) return;
@@ -137,6 +137,7 @@ EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& s
   // Coverage: spheres grown by the rounding tolerance.
   std::vector<Sphere> grown = spheres;
   for (Sphere& s : grown) s.radius += kCoverRelTol * diag;
+  const detail::SphereGrid grown_grid(grown);
 
   // Surface coverage, certified per triangle.
   {
@@ -144,8 +145,8 @@ EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& s
     std::vector<CoverStats> st(nt);
     tbb::parallel_for(size_t{0}, nt, [&](size_t t) {
       const auto& tri = mesh.triangles[t];
-      coverTriangle(grown, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], 0,
-                    options.surface_max_depth, &st[t]);
+      coverTriangle(grown_grid, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]],
+                    0, options.surface_max_depth, &st[t]);
     });
     for (const CoverStats& s : st) {
       res.max_surface_gap = std::max(res.max_surface_gap, s.gap);
@@ -163,7 +164,7 @@ EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& s
       double size = 0.0;
       const Vec3 mn = detail::rootCell(index.bounds(), k, &size);
       detail::walkSolidCells(
-          index, grown, mn, size, 0, options.interior_max_depth,
+          index, grown_grid, mn, size, 0, options.interior_max_depth,
           [&](const Vec3&, double, int, double gap) {
             st[k].gap = std::max(st[k].gap, gap);
             return false;  // refuted
