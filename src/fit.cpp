@@ -29,6 +29,7 @@
 #include "cluster_assign.hpp"
 #include "samples.hpp"
 #include "sampling.hpp"
+#include "sphere_grid.hpp"
 #include "sphere_update.hpp"
 #include "sphereset/evaluate.hpp"
 
@@ -154,20 +155,15 @@ std::optional<TeleportMove> bestTeleport(const SolidIndex& index, const std::vec
   cache->resize(n);
   std::vector<int64_t> q(n, 0);
   // Removal costs.
+  const detail::SphereGrid grid(sp);
   tbb::parallel_for(0, n, [&](int i) {
     std::vector<double> grown(n, 0.0);
     for (const Vec3& p : members[i]) {
-      int to = -1;
-      double out = std::numeric_limits<double>::infinity();
-      for (int j = 0; j < n; ++j) {
-        if (j == i) continue;
-        const double d = (p - sp[j].center).norm() - sp[j].radius;
-        if (d < out) {
-          out = d;
-          to = j;
-        }
-      }
-      if (to >= 0) grown[to] = std::max(grown[to], out);
+      // The sphere other than i that p sticks out of least (ties: lower index).
+      std::pair<double, int32_t> least[2];
+      const int m = detail::leastGrowth(grid, &p, 1, 2, least);
+      const int k = least[0].second == i ? 1 : 0;
+      if (k < m) grown[least[k].second] = std::max(grown[least[k].second], least[k].first);
     }
     double c = -sov[i];
     for (int j = 0; j < n; ++j)

@@ -71,6 +71,11 @@ SphereGrid::SphereGrid(const std::vector<Sphere>& spheres) : spheres_(&spheres) 
       for (int64_t y = lo[1]; y <= hi[1]; ++y)
         for (int64_t x = lo[0]; x <= hi[0]; ++x) f(x + dims_[0] * (y + dims_[1] * z));
   };
+  first_cell_.resize(n);
+  for (int64_t i = 0; i < n; ++i)
+    for (int a = 0; a < 3; ++a)
+      first_cell_[i][a] =
+          static_cast<int32_t>(clampedCell(spheres[i].center[a] - spheres[i].radius - widen, a));
   for (const Sphere& s : spheres) forCells(s, [&](int64_t id) { ++start_[id + 1]; });
   for (int64_t id = 0; id < cells; ++id) start_[id + 1] += start_[id];
   members_.resize(start_[cells]);
@@ -145,7 +150,7 @@ int leastGrowth(const SphereGrid& grid, const Vec3* pts, int n, int count,
   int m = 0;
   auto consider = [&](int32_t i) {
     for (int k = 0; k < m; ++k)
-      if (out[k].second == i) return;
+      if (out[k].second == i) return;  // seen at a smaller reach
     const Sphere& s = grid.spheres()[i];
     double need = 0.0;
     for (int k = 0; k < n; ++k) need = std::max(need, (pts[k] - s.center).norm());

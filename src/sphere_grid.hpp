@@ -3,6 +3,8 @@
 // surface and every cube of the interior against the set).
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -27,8 +29,8 @@ class SphereGrid {
     for (int32_t k = start_[id]; k < start_[id + 1]; ++k) f(members_[k]);
   }
 
-  // Calls f(i) for every sphere whose box meets the cube of half side `reach` about p
-  // (spheres may come more than once): every sphere within `reach` of p is among them.
+  // Calls f(i) once for every sphere whose box meets the cube of half side `reach` about p:
+  // every sphere within `reach` of p is among them.
   template <class F>
   void forEachWithin(const Vec3& p, double reach, F&& f) const {
     int64_t lo[3], hi[3];
@@ -41,7 +43,13 @@ class SphereGrid {
       for (int64_t y = lo[1]; y <= hi[1]; ++y)
         for (int64_t x = lo[0]; x <= hi[0]; ++x) {
           const int64_t id = x + dims_[0] * (y + dims_[1] * z);
-          for (int32_t k = start_[id]; k < start_[id + 1]; ++k) f(members_[k]);
+          for (int32_t k = start_[id]; k < start_[id + 1]; ++k) {
+            // A sphere listed in several visited cells is reported from the first of them.
+            const std::array<int32_t, 3>& first = first_cell_[members_[k]];
+            if (x == std::max<int64_t>(lo[0], first[0]) &&
+                y == std::max<int64_t>(lo[1], first[1]) && z == std::max<int64_t>(lo[2], first[2]))
+              f(members_[k]);
+          }
         }
   }
 
@@ -58,6 +66,7 @@ class SphereGrid {
   double cell_ = 1.0;
   int64_t dims_[3] = {1, 1, 1};
   std::vector<int32_t> start_, members_;
+  std::vector<std::array<int32_t, 3>> first_cell_;  // lowest cell of each sphere's box
 };
 
 // Whether one sphere holds all the points (then it holds their convex hull).
