@@ -6,13 +6,9 @@
 #   bash bench/tree_table.sh [MESH ...]   (default: spot and armadillo from ../shared/meshes)
 #   BRANCH=4 DEPTH=3 bash bench/tree_table.sh ...   (default 8 and 2)
 set -euo pipefail
-cd "$(dirname "$0")/.."
-[ -x build/apps/sphereset ] || cmake --build build --target sphereset_cli
-meshes=("$@")
-if [ ${#meshes[@]} -eq 0 ]; then
-  meshes=(../shared/meshes/organic/spot.obj ../shared/meshes/organic/armadillo_libigl.obj)
-fi
-mkdir -p bench/results
+args=("$@")
+source "$(dirname "$0")/common.sh"
+bench_meshes ../shared/meshes/organic/spot.obj ../shared/meshes/organic/armadillo_libigl.obj
 out=bench/results/tree.csv
 echo "mesh,branching,depth,level,spheres,er_sum_minimal,er_sum_outside,ratio,tree_s_minimal,tree_s_outside" >"$out"
 for mesh in "${meshes[@]}"; do
