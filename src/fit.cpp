@@ -116,10 +116,8 @@ void splitTwoMeans(const std::vector<Vec3>& pts, std::vector<Vec3>* a, std::vect
     for (const Vec3& p : pts)
       ((p - ca).squaredNorm() <= (p - cb).squaredNorm() ? a : b)->push_back(p);
     if (a->empty() || b->empty()) return;
-    ca = Vec3::Zero();
-    cb = Vec3::Zero();
-    for (const Vec3& p : *a) ca += p / static_cast<double>(a->size());
-    for (const Vec3& p : *b) cb += p / static_cast<double>(b->size());
+    ca = centroid(*a);
+    cb = centroid(*b);
   }
 }
 
@@ -526,10 +524,12 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
           std::vector<Vec3> a, b;
           splitTwoMeans(owned[j], &a, &b);
           if (a.empty() || b.empty()) return;
-          moved[j] = detail::updateSphere(index, a, a.front(), o.optimizer, o.optimizer_evaluations)
-                         .sphere;
-          moved[i] = detail::updateSphere(index, b, b.front(), o.optimizer, o.optimizer_evaluations)
-                         .sphere;
+          moved[j] =
+              detail::updateSphere(index, a, centroid(a), o.optimizer, o.optimizer_evaluations)
+                  .sphere;
+          moved[i] =
+              detail::updateSphere(index, b, centroid(b), o.optimizer, o.optimizer_evaluations)
+                  .sphere;
         });
         cands.push_back(std::move(moved));
       }
