@@ -215,6 +215,10 @@ void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
   cmd->add_option("--restarts", a->fit.restarts,
                   "Independent fits from derived seeds, best kept (default 1; --quality best: 4)")
       ->check(CLI::Range(1, 1000));
+  cmd->add_option("--decimation", a->fit.decimation,
+                  "Extra spheres to start with, as a fraction of N, removed cheapest first "
+                  "(default 0; --quality best: 0.5)")
+      ->check(CLI::Range(0.0, 16.0));
   cmd->add_option("--optimizer", a->optimizer,
                   "Sphere update: powell (derivative-free BOBYQA) or gradient (MMA with exact "
                   "derivatives)")
@@ -235,14 +239,15 @@ void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
 FitOptions fitOptions(const FitArgs& a, const CLI::App* cmd) {
   FitOptions fo = a.fit;
   // Quality presets: (points factor, rounds, optimiser evaluations per sphere, failed
-  // teleports before stopping, restarts).
-  const std::map<std::string, std::tuple<double, int, int, int, int>> presets = {
-      {"fast", {0.4, 30, 30, 2, 1}},
-      {"default", {1.0, 100, 60, 6, 1}},
-      {"best", {1.0, 100, 60, 6, 4}}};
-  const auto [pf, rounds, evals, failed, restarts] = presets.at(a.quality);
+  // teleports before stopping, restarts, decimation).
+  const std::map<std::string, std::tuple<double, int, int, int, int, double>> presets = {
+      {"fast", {0.4, 30, 30, 2, 1, 0.0}},
+      {"default", {1.0, 100, 60, 6, 1, 0.0}},
+      {"best", {1.0, 100, 60, 6, 4, 0.5}}};
+  const auto [pf, rounds, evals, failed, restarts, decimation] = presets.at(a.quality);
   if (cmd->count("--iterations") == 0) fo.max_iterations = rounds;
   if (cmd->count("--restarts") == 0) fo.restarts = restarts;
+  if (cmd->count("--decimation") == 0) fo.decimation = decimation;
   fo.optimizer_evaluations = evals;
   fo.max_failed_teleports = failed;
   fo.target_points = a.points > 0
@@ -502,6 +507,7 @@ int main(int argc, char** argv) {
                             {"bounding_interior_cells", r->bounding_interior_cells},
                             {"shrink_passes", r->shrink_passes},
                             {"idle_teleports", r->idle_teleports},
+                            {"decimated", r->decimated},
                             {"restart", r->restart},
                             {"seconds",
                              {{"total", r->seconds.total},

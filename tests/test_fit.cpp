@@ -181,6 +181,29 @@ TEST(Fit, RestartsKeepTheBestOfIndependentFits) {
   EXPECT_FALSE(fitSpheres(idx, o).ok());
 }
 
+// Decimation: the clustering starts with round(0.5 n) extra spheres and removes them; the
+// result has n spheres that cover, whatever the thread count.
+TEST(Fit, DecimationEndsWithNCoveringSpheres) {
+  const SolidIndex idx(test::makeTorus(1.0, 0.35, 48, 24));
+  FitOptions o;
+  o.num_spheres = 10;
+  o.target_points = 3000;
+  o.decimation = 0.5;
+  auto r = fitSpheres(idx, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_EQ(r->spheres.size(), 10u);
+  EXPECT_EQ(r->decimated, 5);
+  EvalOptions eo;
+  eo.union_samples = 0;
+  eo.proximity_segments = 0;
+  const EvalResult e = evaluateSpheres(idx, r->spheres, eo);
+  EXPECT_TRUE(e.surface_covered);
+  EXPECT_TRUE(e.interior_covered);
+  expectSameFitForAnyThreadCount(idx, o);
+  o.decimation = -0.5;
+  EXPECT_FALSE(fitSpheres(idx, o).ok());
+}
+
 }  // namespace
 
 // Teleports are kept only when they lower the clustering energy, and the best state of all

@@ -55,6 +55,11 @@ struct FitOptions {
   // After bounding, passes that refit each sphere around what it alone covers (variational
   // method only); they stop when a pass gains less than `tolerance`.
   int shrink_passes = 10;
+  // Decimation (variational method only): the clustering starts with round(decimation * n)
+  // extra spheres and removes the cheapest to remove (upper bound of the outside-volume
+  // change when its points join their neighbours) in a few batches, clustering again after
+  // each. 0 starts with n spheres, as the paper does.
+  double decimation = 0.0;
   // Independent fits (the first with `seed`, the others with seeds derived from it); the one
   // with the lowest final outside volume is returned. The clustering's local minima vary a lot
   // with the seed, so this buys quality for time.
@@ -62,9 +67,11 @@ struct FitOptions {
   std::function<void(const FitProgress&)> progress;  // called from the calling thread
 };
 
+// teleport: choosing the moves and the decimation's removals (their rounds count as
+// assignment and update).
 struct FitTimings {
   double sampling = 0.0, assignment = 0.0, update = 0.0, teleport = 0.0, bounding = 0.0,
-         total = 0.0;  // teleport: choosing the moves (their rounds count as assignment/update)
+         total = 0.0;
 };
 
 struct FitResult {
@@ -85,6 +92,7 @@ struct FitResult {
   int64_t bounding_queries = 0;         // outside-volume evaluations of the bounding step
   int64_t bounding_interior_cells = 0;  // interior cubes that made a sphere grow
   int shrink_passes = 0;                // shrinking passes kept
+  int decimated = 0;                    // spheres removed by the decimation
   int idle_teleports = 0;  // spheres that covered nothing alone, moved to split another
   int restart = 0;         // which restart won (0: the one with options.seed)
   FitTimings seconds;
