@@ -47,6 +47,10 @@ cli_test(fit_open_mesh 5 ARGS fit ${work}/open.off -n 5 -o ${work}/never1.txt -q
 cli_test(fit_zero_spheres 2 ARGS fit ${link} -n 0 -o ${work}/never2.txt -q FORBID ${work}/never2.txt)
 cli_test(fit_too_many 2 ARGS fit ${link} -n 50000 -o ${work}/never3.txt -q --points 1000
          STDERR "50000 spheres" FORBID ${work}/never3.txt)
+cli_test(fit_bad_decimation 2 ARGS fit ${link} -n 5 -o ${work}/never11.txt -q --decimation -1
+         STDERR "--decimation" FORBID ${work}/never11.txt)
+cli_test(fit_decimation 0 ARGS fit ${link} -n 5 -o ${work}/link5d.txt --quality fast --decimation 1
+         -q --json STDOUT "decimated.:5")
 cli_test(fit_yaml 0 ARGS fit ${link} -n 3 -o ${work}/link3.yaml --name link1 --quality fast -q)
 cli_test(fit_json 0 ARGS fit ${link} -n 4 -o ${work}/link4.sph --quality fast -q --json
          STDOUT "\"er_sum\":.*\"surface_covered\":true")
