@@ -15,6 +15,18 @@ Mesh link() {
   return m->mesh;
 }
 
+// The evaluation's coverage tests (no Monte Carlo, proximity or shadow work): surface and
+// interior covered.
+void expectCovers(const SolidIndex& idx, const std::vector<Sphere>& spheres) {
+  EvalOptions eo;
+  eo.union_samples = 0;
+  eo.proximity_segments = 0;
+  eo.shadow_resolution = 0;
+  const EvalResult e = evaluateSpheres(idx, spheres, eo);
+  EXPECT_TRUE(e.surface_covered);
+  EXPECT_TRUE(e.interior_covered);
+}
+
 TEST(Fit, WritesExactlyNSpheresThatCoverTheSurfaceAndInterior) {
   const SolidIndex idx(link());
   FitOptions o;
@@ -151,13 +163,7 @@ TEST(Fit, ShrinkingAfterTheBoundLowersTheEnergyAndKeepsTheCover) {
   EXPECT_GE(shrunk->shrink_passes, 1);
   EXPECT_LT(shrunk->energy, plain->energy);
   EXPECT_NEAR(shrunk->energy_before_bounding, plain->energy_before_bounding, 1e-15);
-  EvalOptions eo;
-  eo.union_samples = 0;
-  eo.proximity_segments = 0;
-  eo.shadow_resolution = 0;
-  const EvalResult e = evaluateSpheres(idx, shrunk->spheres, eo);
-  EXPECT_TRUE(e.surface_covered);
-  EXPECT_TRUE(e.interior_covered);
+  expectCovers(idx, shrunk->spheres);
 }
 
 TEST(Fit, RestartsKeepTheBestOfIndependentFits) {
@@ -193,12 +199,7 @@ TEST(Fit, DecimationEndsWithNCoveringSpheres) {
   ASSERT_TRUE(r.ok()) << r.error().message;
   ASSERT_EQ(r->spheres.size(), 10u);
   EXPECT_EQ(r->decimated, 5);
-  EvalOptions eo;
-  eo.union_samples = 0;
-  eo.proximity_segments = 0;
-  const EvalResult e = evaluateSpheres(idx, r->spheres, eo);
-  EXPECT_TRUE(e.surface_covered);
-  EXPECT_TRUE(e.interior_covered);
+  expectCovers(idx, r->spheres);
   expectSameFitForAnyThreadCount(idx, o);
   o.decimation = -0.5;
   EXPECT_FALSE(fitSpheres(idx, o).ok());
