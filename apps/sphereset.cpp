@@ -17,12 +17,15 @@
 #include <string>
 
 #include "sphereset/evaluate.hpp"
+#include "sphereset/export.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/query.hpp"
 #include "sphereset/render.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere.hpp"
+#include "sphereset/sphere_io.hpp"
+#include "sphereset/sphere_tree.hpp"
 #include "sphereset/tree.hpp"
 
 namespace {

@@ -14,6 +14,8 @@
 #include <random>
 
 #include "sphereset/query.hpp"
+#include "sphereset/sphere_tree.hpp"
+#include "tree/query_oracles.hpp"
 
 namespace {
 

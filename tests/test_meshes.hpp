@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "sphereset/export.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/sphere.hpp"
 

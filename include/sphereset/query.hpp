@@ -1,14 +1,14 @@
 // Queries on sphere sets and sphere trees (paper Sec. 7 "Proximity Application", and the
 // collision queries users run on sphere-trees). Tree queries visit a node's children only
 // when the node itself can matter, which is sound because every parent encloses its
-// children; the *BruteForce versions loop over all spheres and serve as oracles.
+// children. Their brute-force twins, the tests' oracles, are private (src/tree/query_oracles.hpp).
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "sphereset/sphere.hpp"
-#include "sphereset/tree.hpp"
+#include "sphereset/sphere_tree.hpp"
 
 namespace sphereset {
 
@@ -28,15 +28,11 @@ struct PointQuery {
   int64_t visited = 0;  // spheres or nodes examined
 };
 PointQuery pointDistance(const SphereTree& tree, const Vec3& p);
-PointQuery pointDistanceBruteForce(const std::vector<Sphere>& spheres, const Vec3& p);
 bool containsPoint(const SphereTree& tree, const Vec3& p);
-bool containsPointBruteForce(const std::vector<Sphere>& spheres, const Vec3& p);
 
 // Length of segment [a, b] outside the union of the leaf spheres (paper Sec. 7: the 1D
 // intervals where the segment is inside some sphere are merged, overlaps counted once).
 double segmentOutsideLength(const SphereTree& tree, const Vec3& a, const Vec3& b);
-double segmentOutsideLengthBruteForce(const std::vector<Sphere>& spheres, const Vec3& a,
-                                      const Vec3& b);
 
 // Between two sets, each under its own pose: the signed distance of the closest pair of leaf
 // spheres, min |c_a - c_b| - r_a - r_b (negative when they overlap; then the magnitude is the
@@ -48,14 +44,10 @@ struct PairQuery {
 };
 PairQuery separation(const SphereTree& a, const Pose& pose_a, const SphereTree& b,
                      const Pose& pose_b);
-PairQuery separationBruteForce(const std::vector<Sphere>& a, const Pose& pose_a,
-                               const std::vector<Sphere>& b, const Pose& pose_b);
 // Whether any two leaf spheres overlap (distance < 0); stops at the first such pair, which is
 // returned in *pair when given (its distance field is that pair's signed distance).
 bool overlaps(const SphereTree& a, const Pose& pose_a, const SphereTree& b, const Pose& pose_b,
               PairQuery* pair = nullptr);
-bool overlapsBruteForce(const std::vector<Sphere>& a, const Pose& pose_a,
-                        const std::vector<Sphere>& b, const Pose& pose_b);
 
 // A query tree over a plain set (minimal enclosing parents, branching 8, as deep as needed).
 SphereTree queryTree(const std::vector<Sphere>& spheres, int branching = 8);

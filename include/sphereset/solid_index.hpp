@@ -14,14 +14,6 @@ namespace sphereset {
 
 enum class Containment { kOutside, kInside, kBoundary };
 
-// Closed-form terms of one triangle t against the ball B(o, r); see outside_volume.hpp.
-struct TriangleBallTerms {
-  double h = 0.0;                   // signed distance of t's plane from o along t's outward normal
-  double area = 0.0;                // A = area(t ∩ B)
-  double solid_angle = 0.0;         // Ω = solid angle that t ∩ B subtends at o (unsigned, >= 0)
-  bool center_on_triangle = false;  // o lies on t (within kOnPlaneRelTol): SOTV undefined
-};
-
 // Result of one outside-volume query, with both derivatives from the same pass.
 struct OutsideVolume {
   double volume = 0.0;           // SOV(o, r): volume of the ball outside the solid
@@ -51,14 +43,10 @@ class SolidIndex {
 
   // Exact outside volume of a ball and its derivatives (paper Sec. 4, in closed form).
   OutsideVolume outsideVolume(const Sphere& ball) const;
-  // The same sum evaluated over every triangle with no hierarchy (the baseline and the oracle).
-  OutsideVolume outsideVolumeBruteForce(const Sphere& ball) const;
 
   // Point in solid by signed ray crossings (non-zero winding rule). Points within
   // boundaryTolerance() of the surface are kBoundary.
   Containment classify(const Vec3& p) const;
-  // Generalised winding number Σ Ω_t / 4π over all triangles (O(n); for tests and fallback).
-  double windingNumber(const Vec3& p) const;
 
   // Unsigned distance from p to the surface, and the closest triangle (original index).
   double distance(const Vec3& p, int32_t* closest_triangle = nullptr) const;
@@ -72,27 +60,16 @@ class SolidIndex {
   // Length of the part of segment [a, b] that lies outside the solid.
   double outsideLength(const Vec3& a, const Vec3& b) const;
 
-  // Original indices of triangles whose bounding boxes overlap the ball (for tests).
-  std::vector<int32_t> trianglesNearBall(const Sphere& ball) const;
-
   const Mesh& mesh() const;  // the original mesh
   const Aabb& bounds() const;
   double boundaryTolerance() const;
   int64_t nodeCount() const;
 
-  struct Impl;  // opaque; defined in the library's sources
+  struct Impl;                                 // opaque; defined in the library's sources
+  const Impl& impl() const { return *impl_; }  // for the library's own sources
 
  private:
   std::unique_ptr<Impl> impl_;
 };
-
-// The per-triangle closed form: triangle (a, b, c) counter-clockwise about its outward unit
-// normal n, ball (o, r). Exposed for tests.
-TriangleBallTerms triangleBallTerms(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n,
-                                    const Vec3& o, double r);
-
-// Signed solid angle of triangle (a, b, c) seen from o (Van Oosterom–Strackee); positive when
-// o lies behind the triangle (on the side opposite its counter-clockwise normal).
-double triangleSolidAngle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& o);
 
 }  // namespace sphereset

@@ -1,0 +1,58 @@
+// Sphere files: sphere sets and sphere trees in text, JSON, Bradshaw's .sph and cuRobo YAML.
+// Reading a file needs nothing of the fit.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sphereset/sphere.hpp"
+#include "sphereset/sphere_tree.hpp"
+#include "sphereset/status.hpp"
+
+namespace sphereset {
+
+enum class SphereFormat {
+  kText,  // "x y z r" per line, '#' starts a comment
+  kJson,  // {"spheres": [{"center": [x, y, z], "radius": r}, ...], ...metadata}
+  kSph,   // Bradshaw's sphere-tree layout; a flat set is written as root + one level
+  kYaml,  // cuRobo-style "collision_spheres:" list under a link name
+};
+
+// Format from a file name's extension (.txt/.xyzr, .json, .sph, .yaml/.yml); kInvalidArgument
+// for anything else.
+Expected<SphereFormat> sphereFormatFromPath(const std::string& path);
+
+struct SphereFileMeta {
+  std::string name = "object";  // link name for YAML output
+  std::string source_mesh;      // recorded in JSON output
+  std::string generator = "sphereset";
+};
+
+// Reads a sphere set in the format given by the extension. For .sph files the deepest level
+// with spheres of positive radius is returned. Errors: kUnreadable, kInvalidData (NaN, negative
+// radius, malformed line; the message names the line).
+Expected<std::vector<Sphere>> readSpheres(const std::string& path);
+
+// Writes atomically: to a temporary file beside the target, then renamed over it, so a failed
+// write never leaves a partial file.
+Status writeSpheres(const std::string& path, const std::vector<Sphere>& spheres,
+                    const SphereFileMeta& meta = {});
+
+// The same, into a string (tests and embedding).
+std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& spheres,
+                          const SphereFileMeta& meta = {});
+
+// Writes a whole file atomically (temporary file + rename). Used by every writer.
+Status writeFileAtomically(const std::string& path, const std::string& contents);
+
+// Tree files: Bradshaw's .sph ("levels branching" then one "x y z r error" line per slot) or
+// JSON with explicit parent/child links per node. Writes are atomic.
+Status writeSphereTree(const std::string& path, const SphereTree& tree,
+                       const SphereFileMeta& meta = {});
+std::string formatSphereTree(SphereFormat format, const SphereTree& tree,
+                             const SphereFileMeta& meta = {});
+// Reads a .sph tree, or a JSON file written by writeSphereTree. A plain sphere set (any format
+// readSpheres accepts) is returned as a one-level tree holding just those spheres.
+Expected<SphereTree> readSphereTree(const std::string& path);
+
+}  // namespace sphereset

@@ -1,0 +1,50 @@
+// Sphere hierarchies as plain data: a complete B-ary tree of spheres in Bradshaw's flat layout,
+// its invariants, and the minimal enclosing ball that makes parents. Building a tree from a
+// mesh is in tree.hpp; reading and writing tree files in sphere_io.hpp.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "sphereset/sphere.hpp"
+#include "sphereset/status.hpp"
+
+namespace sphereset {
+
+// The smallest ball that contains every given ball entirely (exact up to rounding: a
+// combinatorial pivoting method on support sets of at most four balls, no generic optimiser).
+// Radius grows by a few ulps so that containment holds in floating point. Empty input gives
+// a zero ball at the origin.
+Sphere minimalEnclosingBall(std::span<const Sphere> balls);
+
+// A complete B-ary tree stored flat in Bradshaw's layout: level l holds B^l slots starting at
+// (B^l - 1) / (B - 1); the children of node N are N·B + 1 + i, i < B. Unused slots have a
+// negative radius. `depth` counts levels below the root: depth + 1 levels, at most B^depth
+// leaves, all on the last level.
+struct SphereTree {
+  int branching = 8;
+  int depth = 0;
+  std::vector<Sphere> nodes;
+
+  // Largest layout accepted (slots over all levels), against absurd branching and depth.
+  static constexpr int64_t kMaxSlots = int64_t{1} << 26;
+  // Slots of a tree of this branching and depth, or -1 when above kMaxSlots.
+  static int64_t slotCount(int branching, int depth);
+
+  int levels() const { return depth + 1; }
+  int64_t levelBegin(int level) const;  // first slot of a level
+  int64_t levelSize(int level) const;   // B^level
+  bool used(int64_t node) const { return nodes[node].radius >= 0.0; }
+  int64_t child(int64_t node, int i) const { return node * branching + 1 + i; }
+  // The used spheres of one level, in slot order.
+  std::vector<Sphere> level(int level) const;
+  std::vector<Sphere> leaves() const { return level(depth); }
+};
+
+// Checks the structural invariants: slot count, every used node's children inside it
+// entirely (up to `tolerance`, a length), no used child under an unused parent. The message
+// names the first offending node.
+Status checkSphereTree(const SphereTree& tree, double tolerance = 0.0);
+
+}  // namespace sphereset

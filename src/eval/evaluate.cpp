@@ -1,0 +1,212 @@
+// Evaluation of a sphere set (paper Sec. 7 metrics, plus certified coverage).
+//
+// - E_r summed: Σ SOV(S_i) / vol, exact (paper eq. 4 divided by the mesh volume).
+// - E_r of the union: Monte Carlo. A sphere is picked in proportion to its volume and a point
+//   drawn uniformly in it; the estimator ΣV · [outside] / (number of spheres containing the
+//   point) is unbiased for the union's outside volume and samples only where spheres are.
+// - Surface coverage: each triangle is certified when it lies in one sphere (convexity: its
+//   three vertices do), otherwise split in four, down to a depth limit. Any vertex or centroid
+//   found outside every sphere refutes coverage and gives a gap.
+// - Interior coverage: the same on octree cells: a cell is certified when its corners share a
+//   sphere or it is free of surface and outside the solid.
+// - Proximity (paper Sec. 7, Fig. 14): outside length of random surface-to-surface segments
+//   against the mesh and against the union of spheres. The paper draws segments between two
+//   copies of the model; we draw both end points on the one mesh.
+// Work is split into fixed blocks with their own seeded generators, so results do not depend
+// on the number of threads.
+#include "sphereset/evaluate.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <numbers>
+
+#include "cover/cover_cells.hpp"
+#include "sphereset/query.hpp"
+#include "tree/query_oracles.hpp"
+#include "util/sampling.hpp"
+
+namespace sphereset {
+namespace {
+
+using detail::mixSeed;
+using detail::uniform01;
+
+// Coverage tests accept points within this fraction of the bounding-box diagonal outside a
+// sphere, so that a set built to touch the surface exactly (a circumscribed sphere) is not
+// refuted by the last bit of rounding.
+constexpr double kCoverRelTol = 1e-12;
+
+struct CoverStats {
+  double gap = 0.0;
+  double uncertified = 0.0;  // area (surface) or count (interior) left undecided
+};
+
+void coverTriangle(const detail::SphereGrid& spheres, const Vec3& a, const Vec3& b, const Vec3& c,
+                   int depth, int max_depth, CoverStats* st) {
+  const Vec3 pts[3] = {a, b, c};
+  if (detail::oneSphereHolds(spheres, pts, 3)) return;
+  const Vec3 g = (a + b + c) / 3.0;
+  double gap = 0.0;
+  for (const Vec3& p : {a, b, c, g}) gap = std::max(gap, detail::gapToUnion(spheres, p));
+  st->gap = std::max(st->gap, gap);
+  if (gap > 0.0 && depth >= max_depth / 2) return;  // refuted; refine the gap a little only
+  if (depth >= max_depth) {
+    st->uncertified += 0.5 * (b - a).cross(c - a).norm();
+    return;
+  }
+  const Vec3 ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
+  coverTriangle(spheres, a, ab, ca, depth + 1, max_depth, st);
+  coverTriangle(spheres, ab, b, bc, depth + 1, max_depth, st);
+  coverTriangle(spheres, ca, bc, c, depth + 1, max_depth, st);
+  coverTriangle(spheres, ab, bc, ca, depth + 1, max_depth, st);
+}
+
+}  // namespace
+
+EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& spheres,
+                           const EvalOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  EvalResult res;
+  const Mesh& mesh = index.mesh();
+  res.mesh_volume = signedVolume(mesh);
+  res.bbox_diagonal = index.bounds().diagonal();
+  const double diag = res.bbox_diagonal > 0.0 ? res.bbox_diagonal : 1.0;
+  const double vol = res.mesh_volume > 0.0 ? res.mesh_volume : 1.0;
+  const size_t n = spheres.size();
+
+  // Exact summed outside volume.
+  res.outside_volume.assign(n, 0.0);
+  tbb::parallel_for(size_t{0}, n, [&](size_t i) {
+    res.outside_volume[i] = index.outsideVolume(spheres[i]).volume;
+  });
+  double total = 0.0;
+  for (double v : res.outside_volume) total += v;
+  res.er_sum = total / vol;
+
+  // Union outside volume by Monte Carlo.
+  std::vector<double> cum(n);
+  double vsum = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    vsum += 4.0 / 3.0 * std::numbers::pi * std::pow(spheres[i].radius, 3);
+    cum[i] = vsum;
+  }
+  if (n > 0 && vsum > 0.0 && options.union_samples > 0) {
+    constexpr int64_t kBlock = 4096;
+    const int64_t blocks = (options.union_samples + kBlock - 1) / kBlock;
+    std::vector<std::pair<double, double>> part(blocks);  // (Σ x, Σ x²)
+    tbb::parallel_for(int64_t{0}, blocks, [&](int64_t blk) {
+      std::mt19937_64 rng(mixSeed(options.seed, 1000 + blk));
+      const int64_t count = std::min(kBlock, options.union_samples - blk * kBlock);
+      double sx = 0.0, sxx = 0.0;
+      for (int64_t k = 0; k < count; ++k) {
+        const double pick = uniform01(rng) * vsum;
+        const size_t i =
+            std::min<size_t>(std::upper_bound(cum.begin(), cum.end(), pick) - cum.begin(), n - 1);
+        Vec3 u;
+        do {
+          u = Vec3(2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1);
+        } while (u.squaredNorm() > 1.0);
+        const Vec3 p = spheres[i].center + spheres[i].radius * u;
+        double x = 0.0;
+        if (index.classify(p) == Containment::kOutside) {
+          int cover = 0;
+          for (const Sphere& s : spheres) cover += s.contains(p) ? 1 : 0;
+          x = vsum / std::max(cover, 1);
+        }
+        sx += x;
+        sxx += x * x;
+      }
+      part[blk] = {sx, sxx};
+    });
+    double sx = 0.0, sxx = 0.0;
+    for (const auto& [a, b] : part) {
+      sx += a;
+      sxx += b;
+    }
+    const double m = static_cast<double>(options.union_samples);
+    const double mean = sx / m;
+    const double var = std::max(0.0, sxx / m - mean * mean);
+    res.er_union = mean / vol;
+    res.er_union_stderr = std::sqrt(var / m) / vol;
+  }
+
+  // Coverage: spheres grown by the rounding tolerance.
+  std::vector<Sphere> grown = spheres;
+  for (Sphere& s : grown) s.radius += kCoverRelTol * diag;
+  const detail::SphereGrid grown_grid(grown);
+
+  // Surface coverage, certified per triangle.
+  {
+    const size_t nt = mesh.triangles.size();
+    std::vector<CoverStats> st(nt);
+    tbb::parallel_for(size_t{0}, nt, [&](size_t t) {
+      const auto& tri = mesh.triangles[t];
+      coverTriangle(grown_grid, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]],
+                    0, options.surface_max_depth, &st[t]);
+    });
+    for (const CoverStats& s : st) {
+      res.max_surface_gap = std::max(res.max_surface_gap, s.gap);
+      res.surface_uncertified_area += s.uncertified;
+      if (s.gap > 0.0 || s.uncertified > 0.0) ++res.uncovered_triangles;
+    }
+    res.max_surface_gap /= diag;
+    res.surface_covered = n > 0 && res.uncovered_triangles == 0;
+  }
+
+  // Interior coverage on an octree below an 8³ grid of cubes covering the bounds.
+  {
+    std::vector<CoverStats> st(detail::kRootCells);
+    tbb::parallel_for(0, detail::kRootCells, [&](int k) {
+      double size = 0.0;
+      const Vec3 mn = detail::rootCell(index.bounds(), k, &size);
+      detail::walkSolidCells(
+          index, grown_grid, mn, size, 0, options.interior_max_depth,
+          [&](const Vec3&, double, int, double gap) {
+            st[k].gap = std::max(st[k].gap, gap);
+            return false;  // refuted
+          },
+          [&](const Vec3&, double) { st[k].uncertified += 1.0; });
+    });
+    double gap = 0.0, unc = 0.0;
+    for (const CoverStats& s : st) {
+      gap = std::max(gap, s.gap);
+      unc += s.uncertified;
+    }
+    res.max_interior_gap = gap / diag;
+    res.interior_uncertified_cells = static_cast<int64_t>(unc);
+    res.interior_covered = n > 0 && gap == 0.0 && res.surface_covered;
+  }
+
+  // Proximity error over random surface-to-surface segments.
+  if (options.proximity_segments > 0 && n > 0) {
+    const detail::SurfaceSampler sampler(mesh);
+    const int segs = options.proximity_segments;
+    std::vector<double> err(segs);
+    tbb::parallel_for(0, segs, [&](int k) {
+      std::mt19937_64 rng(mixSeed(options.seed, 5000000 + k));
+      const Vec3 a = sampler.sample(rng), bb = sampler.sample(rng);
+      err[k] =
+          std::abs(index.outsideLength(a, bb) - segmentOutsideLengthBruteForce(spheres, a, bb));
+    });
+    double s = 0.0;
+    for (double e : err) s += e;
+    res.proximity_error = s / segs / diag;
+  }
+
+  if (options.shadow_resolution > 0 && n > 0) {
+    const ShadowResult sh = compareShadows(index, spheres, options.up_axis,
+                                           options.shadow_resolution, options.shadow_lights);
+    res.shadow_error_sky = sh.sky_rms;
+    res.shadow_error_lights = sh.lights_rms;
+  }
+
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+}  // namespace sphereset

@@ -1,0 +1,220 @@
+// Guaranteed bounding (beyond the paper, whose footnote 1 only enlarges spheres to contain
+// sampled points, edge midpoints and triangle centres). Every triangle is covered exactly:
+// a triangle lies in a ball as soon as its three vertices do, so each triangle is split
+// until every piece has that property, and pieces too small to split further (edge below
+// min_edge) make a sphere grow. Requests are collected in parallel against the radii before
+// the step and then applied as per-sphere maxima; radii only grow, so every piece stays
+// covered and the result does not depend on the order or the number of threads.
+#include "fit/bound.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "cover/cover_cells.hpp"
+
+namespace sphereset::detail {
+namespace {
+
+constexpr int kMaxDepth = 10;
+constexpr int kCandidates = 3;  // spheres whose outside-volume growth is compared per piece
+// Radii get this fraction of the bounding-box diagonal on top of the exact requirement, so
+// that the containment of vertices survives rounding.
+constexpr double kSlackRel = 1e-12;
+
+struct Request {
+  int32_t sphere;
+  double radius;
+  std::array<Vec3, 3> piece;
+};
+
+// The sphere whose outside volume grows least, to first order (dSOV/dr times the radius
+// increase), when enlarged to hold the points; among the kCandidates needing the least radius
+// increase. Writes its index and new radius (-1 when there are no spheres).
+void cheapestGrowth(const SphereGrid& grid, const std::vector<double>& sov_dr, const Vec3* pts,
+                    int npts, double slack, int32_t* sphere, double* radius) {
+  std::array<std::pair<double, int32_t>, kCandidates> cand;
+  const int m = leastGrowth(grid, pts, npts, kCandidates, cand.data());
+  double best_inc = std::numeric_limits<double>::infinity();
+  *sphere = -1;
+  // Candidates come in increasing order of radius growth, so a strict comparison breaks
+  // ties (spheres with no surface outside the solid, dSOV/dr = 0) by the smaller growth.
+  for (int k = 0; k < m; ++k) {
+    const auto [grow, i] = cand[k];
+    const double inc = sov_dr[i] * grow;
+    if (inc < best_inc) {
+      best_inc = inc;
+      *sphere = i;
+      *radius = grid.spheres()[i].radius + grow + slack;
+    }
+  }
+}
+
+// dSOV/dr of each sphere (its outside surface area): the growth of the outside volume for a
+// small enlargement dr is dSOV/dr * dr to first order, which ranks the candidates without a
+// query per piece (pieces are small, so the enlargements are).
+std::vector<double> radiusRates(const SolidIndex& index, const std::vector<Sphere>& sp,
+                                BoundStats* st) {
+  std::vector<double> sov_dr(sp.size());
+  tbb::parallel_for(size_t{0}, sp.size(),
+                    [&](size_t i) { sov_dr[i] = index.outsideVolume(sp[i]).d_radius; });
+  st->queries += static_cast<int64_t>(sp.size());
+  return sov_dr;
+}
+
+// Radii only grow: each sphere takes the largest radius requested for it.
+void growTo(std::vector<Sphere>* sp, const std::vector<double>& radius, BoundStats* st) {
+  for (size_t i = 0; i < sp->size(); ++i)
+    if (radius[i] > (*sp)[i].radius) {
+      (*sp)[i].radius = radius[i];
+      ++st->enlarged;
+    }
+}
+
+// Splits triangle (a, b, c) in four, recursively, until settled(piece) says a piece needs no
+// more work; a piece still unsettled when its longest edge is at most min_edge (or after
+// kMaxDepth splits) goes to small(piece).
+template <class Settled, class Small>
+void splitPieces(const Vec3& a, const Vec3& b, const Vec3& c, double min_edge, Settled&& settled,
+                 Small&& small) {
+  struct Piece {
+    std::array<Vec3, 3> v;
+    int depth;
+  };
+  std::vector<Piece> todo{{{a, b, c}, 0}};
+  while (!todo.empty()) {
+    const Piece pc = todo.back();
+    todo.pop_back();
+    if (settled(pc.v)) continue;
+    const auto& [p, q, r] = pc.v;
+    const double edge = std::max({(q - p).norm(), (r - q).norm(), (p - r).norm()});
+    if (edge <= min_edge || pc.depth >= kMaxDepth) {
+      small(pc.v);
+      continue;
+    }
+    const Vec3 pq = 0.5 * (p + q), qr = 0.5 * (q + r), rp = 0.5 * (r + p);
+    todo.push_back({{p, pq, rp}, pc.depth + 1});
+    todo.push_back({{pq, q, qr}, pc.depth + 1});
+    todo.push_back({{rp, qr, r}, pc.depth + 1});
+    todo.push_back({{pq, qr, rp}, pc.depth + 1});
+  }
+}
+
+}  // namespace
+
+BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, double min_edge,
+                        std::vector<std::vector<Vec3>>* held) {
+  BoundStats st;
+  std::vector<Sphere>& sp = *spheres;
+  const Mesh& mesh = index.mesh();
+  const double slack = kSlackRel * index.bounds().diagonal();
+  const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
+  const std::vector<double> sov_dr = radiusRates(index, sp, &st);
+  const SphereGrid grid(sp);
+  std::vector<std::vector<Request>> req(nt);
+  tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
+    const auto& tri = mesh.triangles[t];
+    splitPieces(
+        mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], min_edge,
+        [&](const std::array<Vec3, 3>& v) { return oneSphereHolds(grid, v.data(), 3); },
+        [&](const std::array<Vec3, 3>& v) {
+          Request best{-1, 0.0, v};
+          cheapestGrowth(grid, sov_dr, v.data(), 3, slack, &best.sphere, &best.radius);
+          if (best.sphere >= 0) req[t].push_back(best);
+        });
+  });
+  if (held) held->assign(sp.size(), {});
+  std::vector<double> radius(sp.size());
+  for (size_t i = 0; i < sp.size(); ++i) radius[i] = sp[i].radius;
+  for (int64_t t = 0; t < nt; ++t) {
+    for (const Request& r : req[t]) {
+      ++st.pieces;
+      radius[r.sphere] = std::max(radius[r.sphere], r.radius);
+      if (held) (*held)[r.sphere].insert((*held)[r.sphere].end(), r.piece.begin(), r.piece.end());
+    }
+  }
+  growTo(&sp, radius, &st);
+  return st;
+}
+
+BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth) {
+  BoundStats st;
+  std::vector<Sphere>& sp = *spheres;
+  const double slack = kSlackRel * index.bounds().diagonal();
+  const std::vector<double> sov_dr = radiusRates(index, sp, &st);
+  const SphereGrid grid(sp);
+  // An uncovered centre found above max_depth goes to the cheapest sphere and the walk
+  // descends; at max_depth the cheapest sphere takes the whole cube (its eight corners). Requests
+  // per root cube, applied as maxima afterwards.
+  std::vector<std::vector<std::pair<int32_t, double>>> req(kRootCells);
+  tbb::parallel_for(0, kRootCells, [&](int k) {
+    double size = 0.0;
+    const Vec3 mn = rootCell(index.bounds(), k, &size);
+    walkSolidCells(
+        index, grid, mn, size, 0, max_depth,
+        [&](const Vec3& lo, double s, int depth, double) {
+          int32_t i = -1;
+          double r = 0.0;
+          if (depth < max_depth) {
+            // The centre itself (the walk tests it), then the cubes below.
+            const Vec3 centre = lo + Vec3::Constant(0.5 * s);
+            cheapestGrowth(grid, sov_dr, &centre, 1, slack, &i, &r);
+            if (i >= 0) req[k].emplace_back(i, r);
+            return true;
+          }
+          Vec3 corners[8];
+          for (int c = 0; c < 8; ++c)
+            corners[c] = lo + s * Vec3((c & 1) ? 1 : 0, (c & 2) ? 1 : 0, (c & 4) ? 1 : 0);
+          cheapestGrowth(grid, sov_dr, corners, 8, slack, &i, &r);
+          if (i >= 0) req[k].emplace_back(i, r);
+          return false;
+        },
+        [](const Vec3&, double) {});
+  });
+  std::vector<double> radius(sp.size());
+  for (size_t i = 0; i < sp.size(); ++i) radius[i] = sp[i].radius;
+  for (const auto& list : req)
+    for (const auto& [i, r] : list) {
+      ++st.pieces;
+      radius[i] = std::max(radius[i], r);
+    }
+  growTo(&sp, radius, &st);
+  return st;
+}
+
+std::vector<std::vector<Vec3>> soleCover(const SolidIndex& index, const std::vector<Sphere>& sp,
+                                         const std::vector<Vec3>& interior, double min_edge) {
+  const Mesh& mesh = index.mesh();
+  const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
+  const int ns = static_cast<int>(sp.size());
+  const SphereGrid grid(sp);
+  // Per triangle, the pieces one sphere alone holds, as (sphere, vertices).
+  std::vector<std::vector<std::pair<int32_t, std::array<Vec3, 3>>>> own(nt);
+  tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
+    const auto& tri = mesh.triangles[t];
+    // Pieces held by no single sphere are split further (the spheres cover them together);
+    // tiny ones are left to the bounding step that follows.
+    splitPieces(
+        mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], min_edge,
+        [&](const std::array<Vec3, 3>& v) {
+          int32_t holder = -1;
+          const int h = holders(grid, v.data(), 3, &holder);
+          if (h == 1) own[t].push_back({holder, v});
+          return h > 0;
+        },
+        [](const std::array<Vec3, 3>&) {});
+  });
+  std::vector<std::vector<Vec3>> out(ns);
+  for (const auto& list : own)
+    for (const auto& [i, v] : list) out[i].insert(out[i].end(), v.begin(), v.end());
+  for (const Vec3& p : interior) {
+    int32_t holder = -1;
+    if (holders(grid, &p, 1, &holder) == 1) out[holder].push_back(p);
+  }
+  return out;
+}
+
+}  // namespace sphereset::detail

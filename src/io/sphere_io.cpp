@@ -1,0 +1,414 @@
+// Sphere-set and sphere-tree files: plain text, JSON, Bradshaw's .sph and cuRobo-style YAML.
+// Writes are atomic (temporary file in the same directory, then rename).
+#include "sphereset/sphere_io.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "sphereset/sphere.hpp"
+#include "sphereset/sphere_tree.hpp"
+#include "sphereset/tree.hpp"
+
+namespace sphereset {
+namespace {
+
+std::string extensionOf(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+Status checkSphere(const std::string& where, const Sphere& s) {
+  if (!s.center.allFinite() || !std::isfinite(s.radius))
+    return Error{ErrorCode::kInvalidData, where + ": NaN or infinite value"};
+  if (s.radius < 0.0) return Error{ErrorCode::kInvalidData, where + ": negative radius"};
+  return {};
+}
+
+std::string num(double x) {
+  std::ostringstream os;
+  os << std::setprecision(17) << x;
+  return os.str();
+}
+
+// The JSON document read from `in` (the file `path`).
+Expected<nlohmann::json> parseJson(std::istream& in, const std::string& path) {
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const std::exception& e) {
+    return Error{ErrorCode::kUnreadable, path + ": invalid JSON (" + e.what() + ")"};
+  }
+  return j;
+}
+
+}  // namespace
+
+Expected<SphereFormat> sphereFormatFromPath(const std::string& path) {
+  const std::string ext = extensionOf(path);
+  if (ext == ".txt" || ext == ".xyzr") return SphereFormat::kText;
+  if (ext == ".json") return SphereFormat::kJson;
+  if (ext == ".sph") return SphereFormat::kSph;
+  if (ext == ".yaml" || ext == ".yml") return SphereFormat::kYaml;
+  return Error{ErrorCode::kInvalidArgument, path + ": unknown sphere-set extension '" + ext +
+                                                "' (use .txt, .json, .sph or .yaml)"};
+}
+
+std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& spheres,
+                          const SphereFileMeta& meta) {
+  std::ostringstream os;
+  switch (format) {
+    case SphereFormat::kText:
+      os << "# " << meta.generator << ": " << spheres.size() << " spheres, x y z r\n";
+      for (const Sphere& s : spheres)
+        os << num(s.center.x()) << ' ' << num(s.center.y()) << ' ' << num(s.center.z()) << ' '
+           << num(s.radius) << '\n';
+      break;
+    case SphereFormat::kJson: {
+      nlohmann::json j;
+      j["generator"] = meta.generator;
+      if (!meta.source_mesh.empty()) j["mesh"] = meta.source_mesh;
+      j["count"] = spheres.size();
+      j["spheres"] = nlohmann::json::array();
+      for (const Sphere& s : spheres)
+        j["spheres"].push_back(
+            {{"center", {s.center.x(), s.center.y(), s.center.z()}}, {"radius", s.radius}});
+      os << j.dump(2) << '\n';
+      break;
+    }
+    case SphereFormat::kSph: {
+      // Two levels (root + leaves), branching factor = number of spheres. Each node line is
+      // "x y z r error"; the error column is not used and written as 0.
+      const Sphere root = minimalEnclosingBall(spheres);
+      os << 2 << ' ' << std::max<size_t>(spheres.size(), 1) << '\n';
+      os << num(root.center.x()) << ' ' << num(root.center.y()) << ' ' << num(root.center.z())
+         << ' ' << num(root.radius) << " 0\n";
+      for (const Sphere& s : spheres)
+        os << num(s.center.x()) << ' ' << num(s.center.y()) << ' ' << num(s.center.z()) << ' '
+           << num(s.radius) << " 0\n";
+      break;
+    }
+    case SphereFormat::kYaml:
+      os << "# " << meta.generator << ": " << spheres.size() << " spheres\n";
+      os << "collision_spheres:\n  " << meta.name << ":\n";
+      for (const Sphere& s : spheres)
+        os << "    - \"center\": [" << num(s.center.x()) << ", " << num(s.center.y()) << ", "
+           << num(s.center.z()) << "]\n      \"radius\": " << num(s.radius) << '\n';
+      break;
+  }
+  return os.str();
+}
+
+Status writeFileAtomically(const std::string& path, const std::string& contents) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  fs::path dir = target.parent_path();
+  if (dir.empty()) dir = ".";
+  std::string name = ".";
+  name += target.filename().string();
+  name += ".XXXXXX";
+  const std::string tmpl = (dir / name).string();
+  std::vector<char> buf(tmpl.begin(), tmpl.end());
+  buf.push_back('\0');
+  const int fd = mkstemp(buf.data());
+  if (fd < 0)
+    return Error{ErrorCode::kWriteFailed, path + ": cannot create a file in '" + dir.string() +
+                                              "' (" + std::strerror(errno) + ")"};
+  const std::string tmp(buf.data());
+  size_t done = 0;
+  while (done < contents.size()) {
+    const ssize_t w = ::write(fd, contents.data() + done, contents.size() - done);
+    if (w <= 0) {
+      const std::string why = std::strerror(errno);
+      ::close(fd);
+      std::remove(tmp.c_str());
+      return Error{ErrorCode::kWriteFailed, path + ": write failed (" + why + ")"};
+    }
+    done += static_cast<size_t>(w);
+  }
+  fchmod(fd, 0644);
+  if (::close(fd) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    std::remove(tmp.c_str());
+    return Error{ErrorCode::kWriteFailed, path + ": cannot write (" + why + ")"};
+  }
+  return {};
+}
+
+Status writeSpheres(const std::string& path, const std::vector<Sphere>& spheres,
+                    const SphereFileMeta& meta) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  for (size_t i = 0; i < spheres.size(); ++i) {
+    Status st = checkSphere(path + ": sphere " + std::to_string(i), spheres[i]);
+    if (!st) return st;
+  }
+  return writeFileAtomically(path, formatSpheres(*format, spheres, meta));
+}
+
+Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  std::ifstream in(path);
+  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+  std::vector<Sphere> out;
+
+  if (*format == SphereFormat::kJson) {
+    auto parsed = parseJson(in, path);
+    if (!parsed) return parsed.error();
+    nlohmann::json& j = *parsed;
+    const nlohmann::json* list = &j;
+    if (j.is_object()) {
+      if (!j.contains("spheres"))
+        return Error{ErrorCode::kInvalidData, path + ": no \"spheres\" array"};
+      list = &j["spheres"];
+    }
+    if (!list->is_array())
+      return Error{ErrorCode::kInvalidData, path + ": \"spheres\" is not an array"};
+    for (size_t i = 0; i < list->size(); ++i) {
+      const auto& e = (*list)[i];
+      const std::string where = path + ": sphere " + std::to_string(i);
+      if (!e.is_object() || !e.contains("center") || !e.contains("radius") ||
+          !e["center"].is_array() || e["center"].size() != 3 || !e["radius"].is_number())
+        return Error{ErrorCode::kInvalidData,
+                     where + ": needs \"center\": [x, y, z] and \"radius\""};
+      Sphere s;
+      for (int k = 0; k < 3; ++k) {
+        if (!e["center"][k].is_number())
+          return Error{ErrorCode::kInvalidData, where + ": center is not numeric"};
+        s.center[k] = e["center"][k].get<double>();
+      }
+      s.radius = e["radius"].get<double>();
+      Status st = checkSphere(where, s);
+      if (!st) return st.error();
+      out.push_back(s);
+    }
+    return out;
+  }
+
+  std::string line;
+  int lineno = 0;
+  if (*format == SphereFormat::kYaml) {
+    // The subset this project writes: "center": [x, y, z] then "radius": r.
+    Sphere s;
+    bool have_center = false;
+    while (std::getline(in, line)) {
+      ++lineno;
+      const std::string where = path + ":" + std::to_string(lineno);
+      const auto c = line.find("center");
+      const auto r = line.find("radius");
+      if (c != std::string::npos) {
+        const auto lb = line.find('['), rb = line.find(']');
+        if (lb == std::string::npos || rb == std::string::npos)
+          return Error{ErrorCode::kInvalidData, where + ": malformed center"};
+        std::string inner = line.substr(lb + 1, rb - lb - 1);
+        std::replace(inner.begin(), inner.end(), ',', ' ');
+        std::istringstream is(inner);
+        if (!(is >> s.center.x() >> s.center.y() >> s.center.z()))
+          return Error{ErrorCode::kInvalidData, where + ": malformed center"};
+        have_center = true;
+      } else if (r != std::string::npos) {
+        const auto colon = line.find(':', r);
+        std::istringstream is(line.substr(colon + 1));
+        if (!have_center || !(is >> s.radius))
+          return Error{ErrorCode::kInvalidData, where + ": malformed radius"};
+        Status st = checkSphere(where, s);
+        if (!st) return st.error();
+        out.push_back(s);
+        have_center = false;
+      }
+    }
+    return out;
+  }
+
+  if (*format == SphereFormat::kSph) {
+    // The deepest level of the tree that has spheres.
+    auto tree = readSphereTree(path);
+    if (!tree) return tree.error();
+    for (int l = tree->depth; l >= 0; --l) {
+      std::vector<Sphere> level = tree->level(l);
+      if (!level.empty()) return level;
+    }
+    return out;
+  }
+
+  while (std::getline(in, line)) {
+    ++lineno;
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream is(line);
+    Sphere s;
+    if (!(is >> s.center.x())) continue;  // blank line
+    std::string extra;
+    if (!(is >> s.center.y() >> s.center.z() >> s.radius) || (is >> extra))
+      return Error{ErrorCode::kInvalidData,
+                   path + ":" + std::to_string(lineno) + ": expected four numbers x y z r"};
+    Status st = checkSphere(path + ":" + std::to_string(lineno), s);
+    if (!st) return st.error();
+    out.push_back(s);
+  }
+  return out;
+}
+
+std::string formatSphereTree(SphereFormat format, const SphereTree& tree,
+                             const SphereFileMeta& meta) {
+  std::ostringstream os;
+  if (format == SphereFormat::kSph) {
+    // Bradshaw's layout: "levels branching", then every slot of every level as
+    // "x y z r error"; unused slots have radius -1. The error column is written as 0.
+    os << tree.levels() << ' ' << tree.branching << '\n';
+    for (const Sphere& s : tree.nodes)
+      os << num(s.center.x()) << ' ' << num(s.center.y()) << ' ' << num(s.center.z()) << ' '
+         << num(s.radius < 0.0 ? -1.0 : s.radius) << " 0\n";
+    return os.str();
+  }
+  // JSON: the used nodes with their Bradshaw slot as id, level, parent and children.
+  nlohmann::json j;
+  j["generator"] = meta.generator;
+  if (!meta.source_mesh.empty()) j["source_mesh"] = meta.source_mesh;
+  j["branching"] = tree.branching;
+  j["depth"] = tree.depth;
+  nlohmann::json nodes = nlohmann::json::array();
+  for (int l = 0; l <= tree.depth; ++l) {
+    const int64_t b = tree.levelBegin(l), e = b + tree.levelSize(l);
+    for (int64_t n = b; n < e; ++n) {
+      if (!tree.used(n)) continue;
+      nlohmann::json node;
+      node["id"] = n;
+      node["level"] = l;
+      node["center"] = {tree.nodes[n].center.x(), tree.nodes[n].center.y(),
+                        tree.nodes[n].center.z()};
+      node["radius"] = tree.nodes[n].radius;
+      node["parent"] = n == 0 ? nlohmann::json(nullptr) : nlohmann::json((n - 1) / tree.branching);
+      nlohmann::json ch = nlohmann::json::array();
+      if (l < tree.depth)
+        for (int i = 0; i < tree.branching; ++i)
+          if (tree.used(tree.child(n, i))) ch.push_back(tree.child(n, i));
+      node["children"] = ch;
+      nodes.push_back(node);
+    }
+  }
+  j["nodes"] = nodes;
+  os << j.dump(1) << '\n';
+  return os.str();
+}
+
+Status writeSphereTree(const std::string& path, const SphereTree& tree,
+                       const SphereFileMeta& meta) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  if (*format != SphereFormat::kSph && *format != SphereFormat::kJson)
+    return Error{ErrorCode::kInvalidArgument, path + ": a sphere tree is written as .sph or .json"};
+  Status st = checkSphereTree(tree, std::numeric_limits<double>::infinity());
+  if (!st) return st;
+  for (size_t i = 0; i < tree.nodes.size(); ++i)
+    if (tree.used(static_cast<int64_t>(i))) {
+      st = checkSphere(path + ": node " + std::to_string(i), tree.nodes[i]);
+      if (!st) return st;
+    }
+  return writeFileAtomically(path, formatSphereTree(*format, tree, meta));
+}
+
+namespace {
+
+// A flat set as a two-level tree: its minimal enclosing ball over the spheres.
+SphereTree flatTree(const std::vector<Sphere>& spheres) {
+  SphereTree t;
+  t.depth = 1;
+  t.branching = std::max<int>(2, static_cast<int>(spheres.size()));
+  t.nodes.assign(1 + t.branching, Sphere{Vec3::Zero(), -1.0});
+  t.nodes[0] = minimalEnclosingBall(spheres);
+  for (size_t i = 0; i < spheres.size(); ++i) t.nodes[1 + i] = spheres[i];
+  return t;
+}
+
+}  // namespace
+
+Expected<SphereTree> readSphereTree(const std::string& path) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  std::ifstream in(path);
+  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+  SphereTree t;
+  if (*format == SphereFormat::kSph) {
+    std::string line;
+    int levels = 0, branch = 0;
+    if (!std::getline(in, line) || !(std::istringstream(line) >> levels >> branch) || levels < 1 ||
+        branch < 1)
+      return Error{ErrorCode::kInvalidData, path + ":1: expected \"levels branching\""};
+    t.branching = branch;
+    t.depth = levels - 1;
+    const int64_t slots = SphereTree::slotCount(branch, t.depth);
+    if (slots < 0) return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
+    t.nodes.reserve(slots);
+    int lineno = 1;
+    while (static_cast<int64_t>(t.nodes.size()) < slots) {
+      if (!std::getline(in, line))
+        return Error{ErrorCode::kInvalidData, path + ": truncated after " +
+                                                  std::to_string(t.nodes.size()) + " of " +
+                                                  std::to_string(slots) + " nodes"};
+      ++lineno;
+      Sphere s;
+      if (!(std::istringstream(line) >> s.center.x() >> s.center.y() >> s.center.z() >> s.radius))
+        return Error{ErrorCode::kInvalidData,
+                     path + ":" + std::to_string(lineno) + ": expected x y z r"};
+      if (!s.center.allFinite() || !std::isfinite(s.radius))
+        return Error{ErrorCode::kInvalidData,
+                     path + ":" + std::to_string(lineno) + ": NaN or infinite value"};
+      if (s.radius <= 0.0) s = {Vec3::Zero(), -1.0};  // unused slot
+      t.nodes.push_back(s);
+    }
+    return t;
+  }
+  if (*format == SphereFormat::kJson) {
+    auto parsed = parseJson(in, path);
+    if (!parsed) return parsed.error();
+    nlohmann::json& j = *parsed;
+    if (j.is_object() && j.contains("nodes") && j.contains("branching") && j.contains("depth")) {
+      try {
+        t.branching = j["branching"].get<int>();
+        t.depth = j["depth"].get<int>();
+        if (t.branching < 1 || t.depth < 0 || t.depth > 26)
+          return Error{ErrorCode::kInvalidData, path + ": bad branching or depth"};
+        const int64_t slots = SphereTree::slotCount(t.branching, t.depth);
+        if (slots < 0) return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
+        t.nodes.assign(slots, Sphere{Vec3::Zero(), -1.0});
+        for (const auto& n : j["nodes"]) {
+          const int64_t id = n.at("id").get<int64_t>();
+          if (id < 0 || id >= slots)
+            return Error{ErrorCode::kInvalidData,
+                         path + ": node id " + std::to_string(id) + " outside the layout"};
+          Sphere s;
+          for (int k = 0; k < 3; ++k) s.center[k] = n.at("center").at(k).get<double>();
+          s.radius = n.at("radius").get<double>();
+          Status st = checkSphere(path + ": node " + std::to_string(id), s);
+          if (!st) return st.error();
+          t.nodes[id] = s;
+        }
+      } catch (const nlohmann::json::exception& e) {
+        return Error{ErrorCode::kInvalidData, path + ": malformed sphere tree (" + e.what() + ")"};
+      }
+      return t;
+    }
+  }
+  auto flat = readSpheres(path);
+  if (!flat) return flat.error();
+  if (flat->empty()) return Error{ErrorCode::kInvalidData, path + ": no spheres"};
+  return flatTree(*flat);
+}
+
+}  // namespace sphereset

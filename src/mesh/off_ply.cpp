@@ -1,0 +1,364 @@
+// Readers for OFF and PLY. They produce raw vertex and triangle arrays; welding, degenerate
+// removal and orientation happen in cleanMesh like for every other format.
+#include "mesh/off_ply.hpp"
+
+#include <bit>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace sphereset::detail {
+
+Expected<RawMesh> readOff(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+  std::string line;
+  int64_t lineno = 0;
+  // Next non-empty line with comments removed, split into tokens.
+  auto next = [&](std::vector<std::string>* tok) {
+    while (std::getline(in, line)) {
+      ++lineno;
+      const auto hash = line.find('#');
+      if (hash != std::string::npos) line.erase(hash);
+      std::istringstream is(line);
+      tok->clear();
+      std::string t;
+      while (is >> t) tok->push_back(t);
+      if (!tok->empty()) return true;
+    }
+    return false;
+  };
+  auto bad = [&](const std::string& what) {
+    return Error{ErrorCode::kUnreadable, path + ":" + std::to_string(lineno) + ": " + what};
+  };
+  std::vector<std::string> tok;
+  if (!next(&tok) || tok[0].find("OFF") == std::string::npos)
+    return bad("not an OFF file (no OFF header)");
+  tok.erase(tok.begin());
+  if (tok.empty() && !next(&tok)) return bad("missing vertex and face counts");
+  int64_t nv = 0, nf = 0;
+  try {
+    nv = std::stoll(tok.at(0));
+    nf = std::stoll(tok.at(1));
+  } catch (...) {
+    return bad("malformed vertex and face counts");
+  }
+  if (nv < 0 || nf < 0 || nv > (int64_t{1} << 31) - 1 || nf > (int64_t{1} << 31) - 1)
+    return bad("vertex or face count out of range");
+  std::vector<Vec3> verts;
+  verts.reserve(nv);
+  for (int64_t i = 0; i < nv; ++i) {
+    if (!next(&tok) || tok.size() < 3) return bad("expected a vertex \"x y z\"");
+    Vec3 p;
+    for (int k = 0; k < 3; ++k) {
+      char* end = nullptr;
+      p[k] = std::strtod(tok[k].c_str(), &end);
+      if (end == tok[k].c_str() || *end != '\0') return bad("malformed vertex coordinate");
+    }
+    verts.push_back(p);
+  }
+  std::vector<Triangle> tris;
+  tris.reserve(nf);
+  for (int64_t f = 0; f < nf; ++f) {
+    if (!next(&tok))
+      return bad("expected " + std::to_string(nf) + " faces, found " + std::to_string(f));
+    int64_t k = 0;
+    std::vector<int64_t> idx;
+    try {
+      k = std::stoll(tok[0]);
+      if (k < 0 || static_cast<size_t>(k) + 1 > tok.size()) return bad("malformed face");
+      for (int64_t j = 0; j < k; ++j) idx.push_back(std::stoll(tok[1 + j]));
+    } catch (...) {
+      return bad("malformed face");
+    }
+    for (int64_t v : idx)
+      if (v < 0 || v >= nv)
+        return Error{ErrorCode::kInvalidData, path + ":" + std::to_string(lineno) +
+                                                  ": face references vertex " + std::to_string(v) +
+                                                  " of " + std::to_string(nv)};
+    for (int64_t j = 1; j + 1 < k; ++j)
+      tris.push_back({static_cast<int32_t>(idx[0]), static_cast<int32_t>(idx[j]),
+                      static_cast<int32_t>(idx[j + 1])});
+  }
+  return RawMesh{std::move(verts), std::move(tris)};
+}
+
+namespace {
+
+enum class PlyType { kInt8, kUint8, kInt16, kUint16, kInt32, kUint32, kFloat32, kFloat64, kBad };
+
+PlyType plyType(const std::string& t) {
+  if (t == "char" || t == "int8") return PlyType::kInt8;
+  if (t == "uchar" || t == "uint8") return PlyType::kUint8;
+  if (t == "short" || t == "int16") return PlyType::kInt16;
+  if (t == "ushort" || t == "uint16") return PlyType::kUint16;
+  if (t == "int" || t == "int32") return PlyType::kInt32;
+  if (t == "uint" || t == "uint32") return PlyType::kUint32;
+  if (t == "float" || t == "float32") return PlyType::kFloat32;
+  if (t == "double" || t == "float64") return PlyType::kFloat64;
+  return PlyType::kBad;
+}
+
+int plySize(PlyType t) {
+  switch (t) {
+    case PlyType::kInt8:
+    case PlyType::kUint8:
+      return 1;
+    case PlyType::kInt16:
+    case PlyType::kUint16:
+      return 2;
+    case PlyType::kInt32:
+    case PlyType::kUint32:
+    case PlyType::kFloat32:
+      return 4;
+    case PlyType::kFloat64:
+      return 8;
+    case PlyType::kBad:
+      return 0;
+  }
+  return 0;
+}
+
+struct PlyProperty {
+  std::string name;
+  PlyType type = PlyType::kBad;
+  bool list = false;
+  PlyType count_type = PlyType::kBad;
+};
+
+struct PlyElement {
+  std::string name;
+  int64_t count = 0;
+  std::vector<PlyProperty> props;
+};
+
+// Cursor over the file's data section, ascii or binary.
+class PlyData {
+ public:
+  PlyData(const std::string& buf, size_t pos, int format) : buf_(buf), pos_(pos), format_(format) {}
+  bool ok() const { return ok_; }
+
+  double read(PlyType t) {
+    if (!ok_) return 0.0;
+    if (format_ == 0) {
+      const char* start = buf_.c_str() + pos_;
+      char* end = nullptr;
+      const double v = std::strtod(start, &end);
+      if (end == start) {
+        ok_ = false;
+        return 0.0;
+      }
+      pos_ += static_cast<size_t>(end - start);
+      return v;
+    }
+    const int n = plySize(t);
+    if (pos_ + n > buf_.size()) {
+      ok_ = false;
+      return 0.0;
+    }
+    unsigned char b[8];
+    std::memcpy(b, buf_.data() + pos_, n);
+    pos_ += n;
+    const bool swap = (format_ == 2) == (std::endian::native == std::endian::little);
+    if (swap)
+      for (int i = 0; i < n / 2; ++i) std::swap(b[i], b[n - 1 - i]);
+    switch (t) {
+      case PlyType::kInt8: {
+        int8_t v;
+        std::memcpy(&v, b, 1);
+        return v;
+      }
+      case PlyType::kUint8: {
+        uint8_t v;
+        std::memcpy(&v, b, 1);
+        return v;
+      }
+      case PlyType::kInt16: {
+        int16_t v;
+        std::memcpy(&v, b, 2);
+        return v;
+      }
+      case PlyType::kUint16: {
+        uint16_t v;
+        std::memcpy(&v, b, 2);
+        return v;
+      }
+      case PlyType::kInt32: {
+        int32_t v;
+        std::memcpy(&v, b, 4);
+        return v;
+      }
+      case PlyType::kUint32: {
+        uint32_t v;
+        std::memcpy(&v, b, 4);
+        return v;
+      }
+      case PlyType::kFloat32: {
+        float v;
+        std::memcpy(&v, b, 4);
+        return v;
+      }
+      case PlyType::kFloat64: {
+        double v;
+        std::memcpy(&v, b, 8);
+        return v;
+      }
+      case PlyType::kBad:
+        break;
+    }
+    ok_ = false;
+    return 0.0;
+  }
+
+ private:
+  const std::string& buf_;
+  size_t pos_;
+  int format_;  // 0 ascii, 1 binary little endian, 2 binary big endian
+  bool ok_ = true;
+};
+
+}  // namespace
+
+Expected<RawMesh> readPly(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+  const std::string buf((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto bad = [&](const std::string& what) {
+    return Error{ErrorCode::kUnreadable, path + ": " + what};
+  };
+
+  // Header.
+  size_t pos = 0;
+  auto line = [&](std::string* out) {
+    if (pos >= buf.size()) return false;
+    size_t e = buf.find('\n', pos);
+    if (e == std::string::npos) e = buf.size();
+    *out = buf.substr(pos, e - pos);
+    if (!out->empty() && out->back() == '\r') out->pop_back();
+    pos = e + 1;
+    return true;
+  };
+  std::string l;
+  if (!line(&l) || l != "ply") return bad("not a PLY file (no 'ply' magic)");
+  int format = -1;
+  std::vector<PlyElement> elements;
+  bool ended = false;
+  while (line(&l)) {
+    std::istringstream is(l);
+    std::string kw;
+    is >> kw;
+    if (kw == "format") {
+      std::string f;
+      is >> f;
+      format = f == "ascii"                  ? 0
+               : f == "binary_little_endian" ? 1
+               : f == "binary_big_endian"    ? 2
+                                             : -1;
+      if (format < 0) return bad("unknown PLY format '" + f + "'");
+    } else if (kw == "element") {
+      PlyElement e;
+      if (!(is >> e.name >> e.count) || e.count < 0 || e.count > (int64_t{1} << 31))
+        return bad("malformed element line '" + l + "'");
+      elements.push_back(e);
+    } else if (kw == "property") {
+      if (elements.empty()) return bad("property before any element");
+      PlyProperty p;
+      std::string t;
+      is >> t;
+      if (t == "list") {
+        std::string ct, it;
+        is >> ct >> it >> p.name;
+        p.list = true;
+        p.count_type = plyType(ct);
+        p.type = plyType(it);
+        if (p.count_type == PlyType::kBad) return bad("unknown PLY type '" + ct + "'");
+      } else {
+        p.type = plyType(t);
+        is >> p.name;
+      }
+      if (p.type == PlyType::kBad) return bad("unknown PLY property type in '" + l + "'");
+      elements.back().props.push_back(p);
+    } else if (kw == "end_header") {
+      ended = true;
+      break;
+    }  // comment, obj_info and blank lines are ignored
+  }
+  if (!ended || format < 0) return bad("incomplete PLY header");
+
+  RawMesh out;
+  PlyData data(buf, pos, format);
+  int64_t nv = -1;
+  std::vector<int64_t> list;
+  for (const PlyElement& e : elements) {
+    const bool is_vertex = e.name == "vertex";
+    const bool is_face = e.name == "face";
+    const bool is_strip = e.name == "tristrips";
+    int ix = -1, iy = -1, iz = -1, iidx = -1;
+    for (size_t k = 0; k < e.props.size(); ++k) {
+      const std::string& n = e.props[k].name;
+      if (n == "x") ix = static_cast<int>(k);
+      if (n == "y") iy = static_cast<int>(k);
+      if (n == "z") iz = static_cast<int>(k);
+      if (e.props[k].list && (n == "vertex_indices" || n == "vertex_index"))
+        iidx = static_cast<int>(k);
+    }
+    if (is_vertex) {
+      if (ix < 0 || iy < 0 || iz < 0) return bad("vertex element without x, y and z");
+      nv = e.count;
+      out.vertices.reserve(static_cast<size_t>(std::min<int64_t>(e.count, int64_t{1} << 26)));
+    }
+    for (int64_t i = 0; i < e.count; ++i) {
+      Vec3 p = Vec3::Zero();
+      for (size_t k = 0; k < e.props.size(); ++k) {
+        const PlyProperty& pr = e.props[k];
+        if (!pr.list) {
+          const double v = data.read(pr.type);
+          if (static_cast<int>(k) == ix) p.x() = v;
+          if (static_cast<int>(k) == iy) p.y() = v;
+          if (static_cast<int>(k) == iz) p.z() = v;
+          continue;
+        }
+        const double cnt = data.read(pr.count_type);
+        if (!data.ok() || cnt < 0 || cnt > 1e7)
+          return bad("malformed list in element '" + e.name + "'");
+        list.resize(static_cast<size_t>(cnt));
+        for (auto& x : list) x = static_cast<int64_t>(data.read(pr.type));
+        if (static_cast<int>(k) != iidx || !(is_face || is_strip)) continue;
+        for (int64_t x : list)
+          if (x >= nv || (x < 0 && !(is_strip && x == -1)))
+            return Error{ErrorCode::kInvalidData,
+                         path + ": " + e.name + " " + std::to_string(i) + " references vertex " +
+                             std::to_string(x) + " of " + std::to_string(std::max<int64_t>(nv, 0))};
+        if (is_face) {
+          for (size_t j = 1; j + 1 < list.size(); ++j)
+            out.triangles.push_back({static_cast<int32_t>(list[0]), static_cast<int32_t>(list[j]),
+                                     static_cast<int32_t>(list[j + 1])});
+        } else {
+          // Strip: triangle j is (s_j, s_j+1, s_j+2), with the first two swapped on odd j
+          // so that all triangles keep the strip's orientation; -1 restarts the strip.
+          size_t begin = 0;
+          for (size_t j = 0; j <= list.size(); ++j) {
+            if (j < list.size() && list[j] >= 0) continue;
+            for (size_t a = begin; a + 2 < j; ++a) {
+              const bool odd = (a - begin) % 2 == 1;
+              const int32_t s0 = static_cast<int32_t>(list[a]),
+                            s1 = static_cast<int32_t>(list[a + 1]),
+                            s2 = static_cast<int32_t>(list[a + 2]);
+              out.triangles.push_back(odd ? Triangle{s1, s0, s2} : Triangle{s0, s1, s2});
+            }
+            begin = j + 1;
+          }
+        }
+      }
+      if (!data.ok())
+        return bad("truncated data in element '" + e.name + "' at item " + std::to_string(i));
+      if (is_vertex) out.vertices.push_back(p);
+    }
+  }
+  if (nv < 0) return bad("no vertex element");
+  return out;
+}
+
+}  // namespace sphereset::detail

@@ -1,0 +1,17 @@
+// Private: vertex welding used by the mesh loader.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sphereset/mesh.hpp"
+
+namespace sphereset::detail {
+
+// Welds vertices and returns, for each input vertex, its index in *out. Exact mode (tol <= 0)
+// merges bit-identical positions (after -0 -> +0). Tolerance mode snaps to a grid of cell
+// `tol` and merges each vertex into the first kept vertex within `tol` in its own or a
+// neighbouring cell (deterministic: in input order).
+std::vector<int32_t> weldVertices(const std::vector<Vec3>& v, double tol, std::vector<Vec3>* out);
+
+}  // namespace sphereset::detail

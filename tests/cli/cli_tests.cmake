@@ -1,0 +1,83 @@
+# Command-line behaviour: exit codes and one-line messages for bad input.
+set(cli $<TARGET_FILE:sphereset_cli>)
+set(work ${CMAKE_CURRENT_BINARY_DIR}/cli)
+file(MAKE_DIRECTORY ${work})
+file(WRITE ${work}/open.off "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+file(WRITE ${work}/nan.off "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n")
+file(WRITE ${work}/garbage.stl "not a mesh at all")
+file(WRITE ${work}/bound.txt "# one sphere around the link\n0.0 -0.037 -0.068 0.17\n")
+file(WRITE ${work}/bad.txt "0 0 0\n")
+set(link ${CMAKE_CURRENT_SOURCE_DIR}/data/fr3_link1_collision.stl)
+
+function(cli_test name expect)
+  cmake_parse_arguments(A "" "STDERR;STDOUT;FORBID" "ARGS" ${ARGN})
+  set(defs -DEXPECT_EXIT=${expect})
+  if(A_STDERR)
+    list(APPEND defs "-DEXPECT_STDERR=${A_STDERR}")
+  endif()
+  if(A_STDOUT)
+    list(APPEND defs "-DEXPECT_STDOUT=${A_STDOUT}")
+  endif()
+  if(A_FORBID)
+    list(APPEND defs "-DFORBID_FILE=${A_FORBID}")
+  endif()
+  string(REPLACE ";" "|" cmd "${cli};${A_ARGS}")
+  add_test(NAME cli.${name}
+           COMMAND ${CMAKE_COMMAND} "-DCMD=${cmd}" ${defs} -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/run_cli.cmake)
+endfunction()
+
+cli_test(check_solid 0 ARGS check ${link} STDOUT "solid +yes")
+cli_test(check_json 0 ARGS check ${link} --json
+         STDOUT "\"vertices\":152.*\"triangles\":300|\"triangles\":300.*\"vertices\":152")
+cli_test(check_open 5 ARGS check ${work}/open.off STDOUT "closed +no")
+cli_test(check_missing 3 ARGS check ${work}/missing.obj STDERR "missing.obj: no such file")
+cli_test(check_garbage 3 ARGS check ${work}/garbage.stl STDERR "garbage.stl: ")
+cli_test(check_nan 4 ARGS check ${work}/nan.off STDERR "nan.off: vertex 1 has a NaN")
+cli_test(eval_open 5 ARGS eval ${work}/open.off ${work}/bound.txt STDERR "open.off: not a closed solid: 3 boundary edges")
+cli_test(eval_bad_spheres 4 ARGS eval ${link} ${work}/bad.txt STDERR "bad.txt:1: expected four numbers")
+cli_test(eval_json 0 ARGS eval ${link} ${work}/bound.txt --json --samples 20000 --segments 100
+         STDOUT "\"er_sum\":.*\"surface_covered\":true")
+cli_test(bad_option 2 ARGS eval ${link} ${work}/bound.txt --samples -5)
+cli_test(no_command 2 ARGS)
+cli_test(fit_txt 0 ARGS fit ${link} -n 5 -o ${work}/link5.txt --quality fast -q)
+cli_test(fit_bad_extension 2 ARGS fit ${link} -n 5 -o ${work}/link5.xyz -q
+         STDERR "link5.xyz: unknown sphere-set extension" FORBID ${work}/link5.xyz)
+cli_test(fit_open_mesh 5 ARGS fit ${work}/open.off -n 5 -o ${work}/never1.txt -q
+         STDERR "open.off: not a closed solid" FORBID ${work}/never1.txt)
+cli_test(fit_zero_spheres 2 ARGS fit ${link} -n 0 -o ${work}/never2.txt -q FORBID ${work}/never2.txt)
+cli_test(fit_too_many 2 ARGS fit ${link} -n 50000 -o ${work}/never3.txt -q --points 1000
+         STDERR "50000 spheres" FORBID ${work}/never3.txt)
+cli_test(fit_bad_decimation 2 ARGS fit ${link} -n 5 -o ${work}/never11.txt -q --decimation -1
+         STDERR "--decimation" FORBID ${work}/never11.txt)
+cli_test(fit_decimation 0 ARGS fit ${link} -n 5 -o ${work}/link5d.txt --quality fast --decimation 1
+         -q --json STDOUT "decimated.:5")
+cli_test(fit_yaml 0 ARGS fit ${link} -n 3 -o ${work}/link3.yaml --name link1 --quality fast -q)
+cli_test(fit_json 0 ARGS fit ${link} -n 4 -o ${work}/link4.sph --quality fast -q --json
+         STDOUT "\"er_sum\":.*\"surface_covered\":true")
+cli_test(tree_sph 0 ARGS tree ${link} --branch 3 --depth 2 -o ${work}/link_tree.sph --quality fast -q
+         --json STDOUT "\"leaves\":9")
+cli_test(tree_outside_json 0 ARGS tree ${link} --branch 2 --depth 2 -n 3 --parents outside
+         -o ${work}/link_tree.json --quality fast -q --json STDOUT "\"parents\":\"outside\"")
+cli_test(tree_bad_extension 2 ARGS tree ${link} -o ${work}/never4.yaml -q
+         STDERR "never4.yaml: a sphere tree is written as .sph or .json" FORBID ${work}/never4.yaml)
+cli_test(tree_too_many_leaves 2 ARGS tree ${link} --branch 2 --depth 2 -n 5 -o ${work}/never5.sph -q
+         STDERR "5 leaves do not fit" FORBID ${work}/never5.sph)
+cli_test(tree_absurd_depth 2 ARGS tree ${link} --branch 1000 --depth 20 -o ${work}/never6.sph -q
+         FORBID ${work}/never6.sph)
+cli_test(query_point 0 ARGS query ${work}/bound.txt --point 0,-0.037,-0.068 --point 1,1,1
+         STDOUT "inside, signed distance -0.17.*outside")
+cli_test(query_bad_point 2 ARGS query ${work}/bound.txt --point 0,0 STDERR "--point takes x,y,z")
+cli_test(query_pair_json 0 ARGS query ${work}/bound.txt --other ${work}/bound.txt
+         --pose 1,0,0,1,0,0,0 --json STDOUT "\"overlap\":false")
+cli_test(query_missing 3 ARGS query ${work}/missing.txt --point 0,0,0 STDERR "missing.txt")
+cli_test(render_png 0 ARGS render ${link} ${work}/bound.txt -o ${work}/link.png --size 160x120 --up z)
+cli_test(render_bad_size 2 ARGS render ${link} -o ${work}/never7.png --size 10 STDERR "--size: expected WxH"
+         FORBID ${work}/never7.png)
+cli_test(render_bad_view 2 ARGS render ${link} -o ${work}/never8.png --views front,back
+         STDERR "unknown view 'back'" FORBID ${work}/never8.png)
+cli_test(render_not_png 2 ARGS render ${link} -o ${work}/never9.jpg STDERR "must be .png"
+         FORBID ${work}/never9.jpg)
+cli_test(export_ply 0 ARGS export ${work}/bound.txt -o ${work}/bound_spheres.ply)
+cli_test(export_glb 0 ARGS export ${work}/bound.txt -o ${work}/bound_spheres.glb --subdivisions 1)
+cli_test(export_bad_extension 2 ARGS export ${work}/bound.txt -o ${work}/never10.stl
+         STDERR "never10.stl: unknown mesh extension" FORBID ${work}/never10.stl)
