@@ -15,11 +15,13 @@
 #include <limits>
 
 #include "cover/cover_cells.hpp"
+#include "sphereset/evaluate.hpp"
 
 namespace sphereset::detail {
 namespace {
 
-constexpr int kMaxDepth = 10;
+// The evaluation's certificate splits as deep, so it confirms what this step proves.
+constexpr int kMaxDepth = kSurfaceSplitDepth;
 constexpr int kCandidates = 3;  // spheres whose outside-volume growth is compared per piece
 // Radii get this fraction of the bounding-box diagonal on top of the exact requirement, so
 // that the containment of vertices survives rounding.

@@ -1,0 +1,47 @@
+// The guaranteed bound and the evaluation's coverage certificate agree: whatever the bound
+// proves covered, the certificate reports covered.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fit/bound.hpp"
+#include "sphereset/evaluate.hpp"
+#include "test_meshes.hpp"
+
+namespace sphereset {
+namespace {
+
+EvalResult coverageOnly(const SolidIndex& idx, const std::vector<Sphere>& spheres) {
+  EvalOptions eo;
+  eo.union_samples = 0;
+  eo.proximity_segments = 0;
+  eo.shadow_resolution = 0;
+  return evaluateSpheres(idx, spheres, eo);
+}
+
+// A long box and two spheres that meet exactly at the cross-section x = m (m = 100/3, on no
+// dyadic grid line): pieces of the long faces that straddle it are held by neither sphere at
+// any depth, so the bound splits them to its deepest level, where one sphere grows by a
+// sliver to hold them.
+TEST(Bound, TheCertificateAcceptsWhatTheBoundProvesAtItsDeepestSplit) {
+  const SolidIndex idx(test::makeBox(Vec3::Zero(), Vec3(100.0, 1.0, 1.0)));
+  const double m = 100.0 / 3.0, a = 0.5 * m, b = 0.5 * (100.0 - m);
+  const std::vector<Sphere> before = {{Vec3(a, 0.5, 0.5), std::sqrt(a * a + 0.5)},
+                                      {Vec3(m + b, 0.5, 0.5), std::sqrt(b * b + 0.5)}};
+  std::vector<Sphere> spheres = before;
+  EXPECT_FALSE(coverageOnly(idx, spheres).surface_covered);
+  const detail::BoundStats st = detail::boundSurface(idx, &spheres, /*min_edge=*/0.0);
+  EXPECT_GE(st.enlarged, 1);
+  // The pieces that made a sphere grow are 100 / 2^10 long: nothing shallower holds them.
+  const double growth =
+      std::max(spheres[0].radius - before[0].radius, spheres[1].radius - before[1].radius);
+  EXPECT_GT(growth, 0.0);
+  EXPECT_LT(growth, 100.0 / 1024.0);
+  const EvalResult e = coverageOnly(idx, spheres);
+  EXPECT_TRUE(e.surface_covered);
+  EXPECT_EQ(e.surface_uncertified_area, 0.0);
+  EXPECT_EQ(e.uncovered_triangles, 0);
+}
+
+}  // namespace
+}  // namespace sphereset
