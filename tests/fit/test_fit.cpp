@@ -5,6 +5,7 @@
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "test_meshes.hpp"
+#include "util/sampling.hpp"
 
 namespace sphereset {
 namespace {
@@ -104,6 +105,8 @@ TEST(Fit, PaddingIsAddedToEveryRadius) {
   o.padding = 0.01;
   auto b = fitSpheres(idx, o);
   ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_EQ(a->spheres.size(), 4u);
+  ASSERT_EQ(b->spheres.size(), 4u);
   for (size_t i = 0; i < a->spheres.size(); ++i)
     EXPECT_NEAR(b->spheres[i].radius, a->spheres[i].radius + 0.01, 1e-15);
 }
@@ -172,17 +175,38 @@ TEST(Fit, RestartsKeepTheBestOfIndependentFits) {
   o.num_spheres = 6;
   o.target_points = 1500;
   o.max_iterations = 8;
-  auto one = fitSpheres(idx, o);
-  o.restarts = 3;
-  auto three = fitSpheres(idx, o);
-  ASSERT_TRUE(one.ok() && three.ok());
-  EXPECT_LE(three->energy, one->energy);
-  EXPECT_GE(three->restart, 0);
-  EXPECT_LT(three->restart, 3);
-  EXPECT_GT(three->sov_queries, one->sov_queries);  // the counts add up over the restarts
-  if (three->restart == 0) {
-    EXPECT_EQ(three->energy, one->energy);
+  // The independent fits, run one by one: the first with the given seed, the others with
+  // seeds derived from it.
+  constexpr int kRestarts = 3;
+  std::vector<FitResult> single;
+  for (int r = 0; r < kRestarts; ++r) {
+    FitOptions one = o;
+    one.seed = r == 0 ? o.seed : detail::mixSeed(o.seed, 7000 + r);
+    auto f = fitSpheres(idx, one);
+    ASSERT_TRUE(f.ok()) << f.error().message;
+    single.push_back(std::move(*f));
   }
+  int best = 0;
+  for (int r = 1; r < kRestarts; ++r)
+    if (single[r].energy < single[best].energy) best = r;
+  // The restarts really differ and a later one wins here, so choosing among them is tested.
+  EXPECT_NE(best, 0);
+  EXPECT_NE(single[0].energy, single[1].energy);
+  EXPECT_NE(single[0].energy, single[2].energy);
+  o.restarts = kRestarts;
+  auto three = fitSpheres(idx, o);
+  ASSERT_TRUE(three.ok()) << three.error().message;
+  EXPECT_EQ(three->restart, best) << single[0].energy << " " << single[1].energy << " "
+                                  << single[2].energy;
+  EXPECT_EQ(three->energy, single[best].energy);
+  ASSERT_EQ(three->spheres.size(), single[best].spheres.size());
+  for (size_t i = 0; i < three->spheres.size(); ++i) {
+    EXPECT_EQ(three->spheres[i].center, single[best].spheres[i].center);
+    EXPECT_EQ(three->spheres[i].radius, single[best].spheres[i].radius);
+  }
+  int64_t queries = 0;
+  for (const FitResult& f : single) queries += f.sov_queries;
+  EXPECT_EQ(three->sov_queries, queries);  // the counts add up over the restarts
   o.restarts = 0;
   EXPECT_FALSE(fitSpheres(idx, o).ok());
 }
@@ -208,7 +232,8 @@ TEST(Fit, DecimationEndsWithNCoveringSpheres) {
 }  // namespace
 
 // Teleports are kept only when they lower the clustering energy, and the best state of all
-// rounds is the one bounded, so allowing them can only lower the energy before bounding.
+// rounds is the one bounded, so allowing them can only lower the energy before bounding; from
+// random seeds they must lower it markedly (here by 42 %).
 TEST(Fit, TeleportsLowerTheClusteringEnergy) {
   const SolidIndex idx(test::makeTorus(1.0, 0.35, 48, 24));
   FitOptions o;
@@ -222,7 +247,9 @@ TEST(Fit, TeleportsLowerTheClusteringEnergy) {
   ASSERT_TRUE(none.ok() && some.ok());
   EXPECT_EQ(none->teleports, 0);
   EXPECT_GE(some->teleports_accepted, 1);
-  EXPECT_LT(some->energy_before_bounding, none->energy_before_bounding);
+  EXPECT_LT(some->energy_before_bounding, 0.9 * none->energy_before_bounding)
+      << "with teleports " << some->energy_before_bounding << ", without "
+      << none->energy_before_bounding;
   EXPECT_LE(some->teleports_accepted, some->teleports);
 }
 
