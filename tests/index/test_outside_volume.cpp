@@ -85,6 +85,18 @@ TEST(OutsideVolume, SpheresFarLargerAndSmallerThanTheMesh) {
   EXPECT_NEAR(idx.outsideVolume({Vec3(0.5, 0.5, 1.0), r}).volume / ballVolume(r), 0.5, 1e-6);
 }
 
+TEST(OutsideVolume, SixCapsOfABallAboutTheUnitCube) {
+  // Centre 0.5, radius 0.55: six caps of height k = 0.05 stick out, one through each face,
+  // and no two overlap (the edges are 0.707 from the centre).
+  const SolidIndex idx(test::makeBox(Vec3::Zero(), Vec3::Ones()));
+  const double r = 0.55, k = 0.05;
+  const OutsideVolume ov = idx.outsideVolume({Vec3::Constant(0.5), r});
+  EXPECT_NEAR(ov.volume, 6.0 * kPi * k * k * (r - k / 3.0), 1e-12);
+  // dSOV/dr: the six caps' curved areas, 2 pi r k each.
+  EXPECT_NEAR(ov.d_radius, 6.0 * 2.0 * kPi * r * k, 1e-12);
+  EXPECT_LE(ov.gradient.norm(), 1e-12);  // symmetric
+}
+
 TEST(OutsideVolume, WindingConsistencyOnTorus) {
   // Σ sign(h) Ω over the triangles is 4π·[inside] when the sphere contains the mesh, so
   // dSOV/dr = 4π r² from any centre; and the generalised winding number is 0 or 1.
@@ -92,6 +104,9 @@ TEST(OutsideVolume, WindingConsistencyOnTorus) {
   for (const Vec3& c : {Vec3(1.0, 0, 0), Vec3(0, 0, 0), Vec3(0.2, 1.0, 0.1), Vec3(2, 2, 2)}) {
     const OutsideVolume ov = idx.outsideVolume({c, 10.0});
     EXPECT_NEAR(ov.d_radius, 4 * kPi * 100.0, 1e-8);
+    // The whole torus is inside the ball: the outside volume is the ball less the solid, a
+    // value away from the clamps to [0, ball volume].
+    EXPECT_NEAR(ov.volume, ballVolume(10.0) - signedVolume(idx.mesh()), 1e-10 * ballVolume(10.0));
     const double w = windingNumber(idx, c);
     EXPECT_NEAR(w, idx.classify(c) == Containment::kInside ? 1.0 : 0.0, 1e-9);
   }

@@ -172,14 +172,35 @@ TEST(SphereTriangle, CentreOnTriangleIsFlagged) {
 }
 
 TEST(SphereTriangle, NeedleAndSliverTriangles) {
-  // Needle: very long and thin, crossing the ball.
-  expectMatchesQuadrature(Vec3(-3, 0.1, 0.3), Vec3(3, 0.1, 0.3), Vec3(3, 0.1 + 1e-3, 0.3), O, 1.0);
-  // Sliver: three almost collinear vertices inside the ball; compare with Van Oosterom.
-  const Vec3 a(-0.5, 0, 0.4), b(0.5, 0, 0.4), c(0, 1e-7, 0.4);
+  // Needle: 6 long, at most 1e-3 wide, crossing the unit ball in the plane z = 0.3. Area and
+  // solid angle of t ∩ B by a fine midpoint rule along its length: across the needle the
+  // integrands are constant to about 1e-5 relative, so the sums are accurate to that.
+  const Vec3 a(-3, 0.1, 0.3), b(3, 0.1, 0.3), c(3, 0.1 + 1e-3, 0.3);
   const TriangleBallTerms t = terms(a, b, c, O, 1.0);
-  EXPECT_NEAR(t.area, 0.5e-7, 1e-15);
-  EXPECT_GE(t.solid_angle, 0.0);
-  EXPECT_LT(t.solid_angle, 1e-6);
+  constexpr int kSteps = 200000;
+  double area = 0.0, omega = 0.0;
+  const double dx = 6.0 / kSteps;
+  for (int i = 0; i < kSteps; ++i) {
+    const double x = -3.0 + (i + 0.5) * dx;
+    const double width = 1e-3 * (x + 3.0) / 6.0;  // y runs over [0.1, 0.1 + width]
+    const double y_max2 = 1.0 - 0.09 - x * x;     // the ball's section at this x
+    if (y_max2 <= 0.01) continue;
+    const double y1 = std::min(0.1 + width, std::sqrt(y_max2));
+    const double len = y1 - 0.1, y_mid = 0.5 * (0.1 + y1);
+    area += len * dx;
+    omega += len * dx * 0.3 / std::pow(x * x + y_mid * y_mid + 0.09, 1.5);
+  }
+  EXPECT_NEAR(t.area, area, 1e-5 * area);
+  EXPECT_NEAR(t.solid_angle, omega, 1e-5 * omega);
+  EXPECT_GT(area, 9e-4);  // the oracle integrated the needle (about 1e-3 x 0.95)
+  // Sliver: three almost collinear vertices inside the ball, so t ∩ B = t: its area, and the
+  // solid angle of the whole triangle (Van Oosterom–Strackee).
+  const Vec3 d(-0.5, 0, 0.4), e(0.5, 0, 0.4), f(0, 1e-7, 0.4);
+  const TriangleBallTerms sl = terms(d, e, f, O, 1.0);
+  EXPECT_NEAR(sl.area, 0.5e-7, 1e-15);
+  const double want = std::abs(triangleSolidAngle(d, e, f, O));
+  EXPECT_GT(want, 1e-8);
+  EXPECT_NEAR(sl.solid_angle, want, 1e-6 * want);
 }
 
 TEST(SphereTriangle, ScalesWithRadius) {
