@@ -58,6 +58,10 @@ TEST(Query, SegmentOutsideLengthMatchesBruteForceAndClosedForm) {
   // [-1, 2], so 3 of its 6 units are outside; overlaps count once.
   const std::vector<Sphere> two = {{Vec3(0, 0, 0), 1.0}, {Vec3(1, 0, 0), 1.0}};
   EXPECT_NEAR(segmentOutsideLength(queryTree(two), Vec3(-2, 0, 0), Vec3(4, 0, 0)), 3.0, 1e-12);
+  // A chord off the centre: at y = 0.6 the unit ball spans x in [-0.8, 0.8], so 4 - 1.6 of
+  // the segment from x = -2 to 2 is outside.
+  const std::vector<Sphere> unit = {{Vec3::Zero(), 1.0}};
+  EXPECT_NEAR(segmentOutsideLength(queryTree(unit), Vec3(-2, 0.6, 0), Vec3(2, 0.6, 0)), 2.4, 1e-12);
   const auto s = blob(300, 3);
   const SphereTree t = queryTree(s);
   std::mt19937_64 rng(11);

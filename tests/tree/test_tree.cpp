@@ -2,9 +2,12 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <random>
+#include <string>
+#include <tuple>
 
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/sphere_tree.hpp"
@@ -120,6 +123,37 @@ void expectValidTree(const SphereTree& t) {
   EXPECT_TRUE(st.ok()) << (st.ok() ? "" : st.error().message);
 }
 
+// The invariant check itself: each kind of broken tree is refused, naming the node.
+TEST(SphereTree, CheckRefusesBrokenTrees) {
+  auto r = buildSphereTree(randomBalls(9, 5), TreeOptions{3, 2});
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  const SphereTree good = r->tree;
+  ASSERT_TRUE(checkSphereTree(good).ok());
+  auto expectRefused = [](const SphereTree& t, const std::string& words) {
+    const Status st = checkSphereTree(t);
+    ASSERT_FALSE(st.ok()) << words;
+    EXPECT_NE(st.error().message.find(words), std::string::npos) << st.error().message;
+  };
+  // A used leaf pushed just outside its parent.
+  int64_t leaf = good.levelBegin(2);
+  while (!good.used(leaf)) ++leaf;
+  const int64_t parent = (leaf - 1) / good.branching;
+  SphereTree out = good;
+  const Vec3 dir = (out.nodes[leaf].center - out.nodes[parent].center).normalized();
+  const double reach =
+      (out.nodes[leaf].center - out.nodes[parent].center).norm() + out.nodes[leaf].radius;
+  out.nodes[leaf].center += (out.nodes[parent].radius - reach + 1e-9) * dir;
+  expectRefused(out, "node " + std::to_string(leaf) + " sticks out of its parent");
+  // A used child under an unused parent.
+  SphereTree orphan = good;
+  orphan.nodes[parent].radius = -1.0;
+  expectRefused(orphan, "but its parent " + std::to_string(parent) + " is not");
+  // A slot count that does not fit the layout.
+  SphereTree cut = good;
+  cut.nodes.pop_back();
+  expectRefused(cut, "the layout needs 13");
+}
+
 TEST(SphereTree, LayoutAndContainmentOnUnevenLeafCounts) {
   for (int leaves : {1, 2, 7, 8, 9, 50, 64}) {
     for (int branching : {2, 4, 8}) {
@@ -137,8 +171,16 @@ TEST(SphereTree, LayoutAndContainmentOnUnevenLeafCounts) {
       ASSERT_EQ(r->levels.size(), static_cast<size_t>(o.depth + 1));
       EXPECT_EQ(r->levels[0].nodes, 1);
       EXPECT_TRUE(t.used(0));
-      // Each level's node count fits the layout.
-      for (int l = 0; l <= t.depth; ++l) EXPECT_LE(t.level(l).size(), t.levelSize(l));
+      // The leaves are the input balls, each once.
+      auto key = [](const Sphere& b) {
+        return std::tuple(b.center.x(), b.center.y(), b.center.z(), b.radius);
+      };
+      std::vector<std::tuple<double, double, double, double>> got, want;
+      for (const Sphere& b : t.leaves()) got.push_back(key(b));
+      for (const Sphere& b : balls) want.push_back(key(b));
+      std::sort(got.begin(), got.end());
+      std::sort(want.begin(), want.end());
+      EXPECT_EQ(got, want);
     }
   }
 }
@@ -207,6 +249,28 @@ TEST(SphereTree, FitTreeBothParentKindsOnARobotLink) {
     EXPECT_LE(tight->levels[l].outside_volume, again->levels[l].outside_volume * (1 + 1e-12));
   // Leaves are the fit's spheres.
   EXPECT_NEAR(again->levels[2].outside_volume, minimal->fit.energy, 1e-9 * minimal->fit.energy);
+}
+
+// The optimiser starts at the minimal ball and keeps the best it sees, so "never more than
+// the minimal ball" holds even if it does nothing. Here the minimal ball is clearly not the
+// best: two leaves on the x axis inside a slab whose top is near; lowering the parent's
+// centre shrinks the cap above the slab at first order while the radius it needs grows only
+// at second order.
+TEST(SphereTree, OutsideVolumeParentsBeatTheMinimalBallWhereItIsNotBest) {
+  const SolidIndex slab(test::makeBox(Vec3(-5, -5, -1.5), Vec3(5, 5, 0.2)));
+  const std::vector<Sphere> leaves = {{Vec3(-1, 0, 0), 0.1}, {Vec3(1, 0, 0), 0.1}};
+  TreeOptions o;
+  o.branching = 2;
+  o.depth = 1;
+  auto minimal = buildSphereTree(leaves, o, &slab);
+  o.parents = TreeParents::kOutsideVolume;
+  auto tight = buildSphereTree(leaves, o, &slab);
+  ASSERT_TRUE(minimal.ok() && tight.ok());
+  expectValidTree(tight->tree);
+  EXPECT_NEAR(minimal->tree.nodes[0].radius, 1.1, 1e-12);
+  EXPECT_LT(tight->levels[0].outside_volume, 0.8 * minimal->levels[0].outside_volume)
+      << tight->levels[0].outside_volume << " vs " << minimal->levels[0].outside_volume;
+  EXPECT_LT(tight->tree.nodes[0].center.z(), -0.05);  // moved down, away from the top
 }
 
 TEST(SphereTree, SameTreeForAnyThreadCount) {
