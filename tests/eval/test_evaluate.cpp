@@ -131,6 +131,12 @@ TEST(Evaluate, ShadowsOfASphereMeshAndOfThatSphereAgree) {
   // The up axis only turns the scene: a sphere looks the same from every axis.
   const ShadowResult ay = compareShadows(idx, same, 1, 32, 48);
   EXPECT_NEAR(ay.sky_rms, a.sky_rms, 0.003);
+  // A flat plank is not: lying flat (up z) it shades the ground far more than standing on
+  // its thin edge (up y), so an ignored up axis would show.
+  const SolidIndex plank(test::makeBox(Vec3::Zero(), Vec3(4.0, 1.0, 0.2)));
+  const ShadowResult flat = compareShadows(plank, {}, 2, 32, 48);
+  const ShadowResult edge = compareShadows(plank, {}, 1, 32, 48);
+  EXPECT_GT(flat.sky_rms, 1.2 * edge.sky_rms) << flat.sky_rms << " vs " << edge.sky_rms;
 }
 
 TEST(Evaluate, HemisphereDirectionsAreUnitUpwardAndBalanced) {

@@ -65,9 +65,17 @@ TEST(Render, PngIsWrittenAndBadOptionsAreRefused) {
   const auto path = std::filesystem::temp_directory_path() / "sphereset_render_test.png";
   ASSERT_TRUE(writePng(path.string(), *img).ok());
   std::ifstream in(path, std::ios::binary);
-  char sig[8] = {};
-  in.read(sig, 8);
-  EXPECT_EQ(std::string(sig + 1, 3), "PNG");
+  unsigned char head[24] = {};
+  in.read(reinterpret_cast<char*>(head), 24);
+  EXPECT_EQ(std::string(reinterpret_cast<char*>(head) + 1, 3), "PNG");
+  // The IHDR chunk: width and height, big-endian, at bytes 16-23.
+  auto be32 = [&](int at) {
+    return (uint32_t{head[at]} << 24) | (uint32_t{head[at + 1]} << 16) |
+           (uint32_t{head[at + 2]} << 8) | uint32_t{head[at + 3]};
+  };
+  EXPECT_EQ(std::string(reinterpret_cast<char*>(head) + 12, 4), "IHDR");
+  EXPECT_EQ(be32(16), 64u);
+  EXPECT_EQ(be32(20), 48u);
   std::filesystem::remove(path);
   EXPECT_FALSE(renderScene(nullptr, {}, o).ok());
   o.width = 5;
