@@ -71,8 +71,4 @@ struct ShadowResult {
 ShadowResult compareShadows(const SolidIndex& index, const std::vector<Sphere>& spheres,
                             int up_axis, int resolution, int lights);
 
-// Directions over the hemisphere about the unit vector `up`, each standing for the same solid
-// angle (a deterministic spiral).
-std::vector<Vec3> hemisphereDirections(int count, const Vec3& up);
-
 }  // namespace sphereset

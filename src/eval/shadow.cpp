@@ -8,6 +8,8 @@
 // Two figures come out of the same visibility samples: uniform sky light (the irradiance
 // Σ_k V_k cos θ_k / Σ_k cos θ_k, i.e. ambient occlusion of the plane) and each light on its
 // own (the irradiance V_k cos θ_k), RMS over pixels and lights.
+#include "eval/shadow.hpp"
+
 #include <tbb/parallel_for.h>
 
 #include <cmath>

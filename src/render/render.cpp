@@ -13,6 +13,7 @@
 #include <limits>
 #include <numbers>
 
+#include "render/camera.hpp"
 #include "sphereset/export.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "util/ray_sphere.hpp"

@@ -4,6 +4,7 @@
 
 #include <numbers>
 
+#include "eval/shadow.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/query.hpp"
 #include "test_meshes.hpp"

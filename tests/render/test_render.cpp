@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "render/camera.hpp"
 #include "sphereset/render.hpp"
 #include "test_meshes.hpp"
 
