@@ -1,4 +1,5 @@
-// Shared pieces of the sphereset subcommands: error mapping, mesh loading, fit options.
+// Shared pieces of the sphereset subcommands: error mapping, mesh loading, fit options, the
+// coverage check of a result.
 #include "cli_common.hpp"
 
 #include <unistd.h>
@@ -160,6 +161,34 @@ FitOptions fitOptions(const FitArgs& a, const CLI::App* cmd) {
       if (tty && p.phase == "done") std::fprintf(stderr, "\n");
     };
   return fo;
+}
+
+std::string coverageGaps(const EvalResult& r) {
+  char buf[160];
+  std::string gaps;
+  if (!r.surface_covered) {
+    std::snprintf(buf, sizeof buf,
+                  "surface not covered (max gap %.3g of the diagonal, %lld triangles not covered)",
+                  r.max_surface_gap, static_cast<long long>(r.uncovered_triangles));
+    gaps = buf;
+  }
+  // The interior counts as uncovered whenever the surface is; report it when it has a gap of its
+  // own.
+  if (!r.interior_covered && (r.surface_covered || r.max_interior_gap > 0.0)) {
+    std::snprintf(buf, sizeof buf, "interior not covered (max gap %.3g of the diagonal)",
+                  r.max_interior_gap);
+    gaps += (gaps.empty() ? "" : ", ") + std::string(buf);
+  }
+  return gaps;
+}
+
+int coverageExit(const std::string& mesh, const std::string& what, const std::string& out,
+                 const EvalResult& r, std::ostream& err) {
+  const std::string gaps = coverageGaps(r);
+  if (gaps.empty()) return kOk;
+  err << "sphereset: " << mesh << ": " << what << " failed the coverage check: " << gaps
+      << " (written to " << out << " anyway)\n";
+  return kUncovered;
 }
 
 }  // namespace sphereset::cli

@@ -1,4 +1,5 @@
-// sphereset fit: fits N spheres that bound a mesh, writes them and reports the fit.
+// sphereset fit: fits N spheres that bound a mesh, writes them and reports the fit; exits with
+// kUncovered when they fail eval's coverage check.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -103,7 +104,8 @@ int runFit(const FitCommandArgs& c, const CLI::App* cmd) {
   const EvalResult ev = evaluateSpheres(index, r->spheres, eo);
   if (c.json) std::cout << fitJson(a, fo, *r, ev).dump() << '\n';
   if (!a.quiet) printFitSummary(a, *r, ev);
-  return kOk;
+  // The summary's evaluation is eval's coverage check (same certificate depths).
+  return coverageExit(a.mesh.path, "the fitted spheres", a.out_path, ev);
 }
 
 }  // namespace

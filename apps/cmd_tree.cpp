@@ -1,4 +1,5 @@
-// sphereset tree: fits a sphere set and builds a sphere tree over it (Bradshaw .sph or JSON).
+// sphereset tree: fits a sphere set and builds a sphere tree over it (Bradshaw .sph or JSON);
+// exits with kUncovered when its leaves fail eval's coverage check.
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -7,6 +8,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"
@@ -24,7 +26,7 @@ struct TreeArgs {
 
 // The summary printed by --json.
 nlohmann::json treeJson(const TreeArgs& a, const FitOptions& fo, const TreeFitResult& r,
-                        double volume) {
+                        double volume, const EvalResult& ev) {
   nlohmann::json lv = nlohmann::json::array();
   for (const TreeLevelStats& l : r.tree.levels)
     lv.push_back({{"level", l.level},
@@ -39,18 +41,23 @@ nlohmann::json treeJson(const TreeArgs& a, const FitOptions& fo, const TreeFitRe
           {"parents", a.parents},
           {"leaves", r.fit.spheres.size()},
           {"levels", lv},
+          {"surface_covered", ev.surface_covered},
+          {"interior_covered", ev.interior_covered},
           {"seconds", {{"fit", r.fit.seconds.total}, {"tree", r.tree.seconds}}},
           {"seed", fo.seed}};
 }
 
 // The summary on stderr unless --quiet.
-void printTreeSummary(const TreeArgs& a, const TreeFitResult& r, double volume) {
+void printTreeSummary(const TreeArgs& a, const TreeFitResult& r, double volume,
+                      const EvalResult& ev) {
   std::fprintf(stderr, "%s: tree of branching %d, depth %d (%s parents) -> %s\n",
                a.fit.mesh.path.c_str(), a.to.branching, a.to.depth, a.parents.c_str(),
                a.fit.out_path.c_str());
   for (const TreeLevelStats& l : r.tree.levels)
     std::fprintf(stderr, "  level %d: %4lld spheres, E_r summed %.4f\n", l.level,
                  static_cast<long long>(l.nodes), l.outside_volume / volume);
+  std::fprintf(stderr, "  leaves: surface covered %s, interior covered %s\n",
+               ev.surface_covered ? "yes" : "NO", ev.interior_covered ? "yes" : "NO");
   std::fprintf(stderr, "  time %.2f s fit + %.2f s tree\n", r.fit.seconds.total, r.tree.seconds);
 }
 
@@ -79,9 +86,16 @@ int runTree(TreeArgs a, const CLI::App* cmd) {
   Status st = writeSphereTree(a.fit.out_path, r->tree.tree, meta);
   if (!st) return fail(st.error());
   const double vol = signedVolume(m->mesh);
-  if (a.json) std::cout << treeJson(a, fo, *r, vol).dump() << '\n';
-  if (!a.fit.quiet) printTreeSummary(a, *r, vol);
-  return kOk;
+  // Eval's coverage check on the leaves as written; every parent encloses its children.
+  EvalOptions eo;
+  eo.seed = fo.seed;
+  eo.union_samples = 0;
+  eo.proximity_segments = 0;
+  eo.shadow_resolution = 0;
+  const EvalResult ev = evaluateSpheres(index, r->tree.tree.leaves(), eo);
+  if (a.json) std::cout << treeJson(a, fo, *r, vol, ev).dump() << '\n';
+  if (!a.fit.quiet) printTreeSummary(a, *r, vol, ev);
+  return coverageExit(a.fit.mesh.path, "the tree's leaves", a.fit.out_path, ev);
 }
 
 }  // namespace
