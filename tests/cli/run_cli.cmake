@@ -1,7 +1,29 @@
 # Runs one CLI invocation and checks its exit code and output.
 #   -DCMD="prog|arg|..." -DEXPECT_EXIT=N [-DEXPECT_STDERR=regex] [-DEXPECT_STDOUT=regex]
 #   [-DFORBID_FILE=path]  (a file that must not exist afterwards)
+#   [-DEXPECT_FILE=path]  (a file the command must write: removed before the run, then it must
+#                          exist and not be empty; a .png must start with the PNG signature)
+#   [-DREADER=prog -DEXPECT_SPHERES=N]    (EXPECT_FILE read as a sphere file through the
+#                                          library holds N spheres, a tree N leaves)
+#   [-DREADER=prog -DEXPECT_TRIANGLES=N]  (EXPECT_FILE read as a mesh holds N triangles)
 string(REPLACE "|" ";" CMD "${CMD}")
+
+# Reads EXPECT_FILE back with the READER helper in `mode` and checks the count it prints.
+function(read_back mode expected what)
+  execute_process(COMMAND ${READER} ${mode} ${EXPECT_FILE} RESULT_VARIABLE rc
+                  OUTPUT_VARIABLE count ERROR_VARIABLE err OUTPUT_STRIP_TRAILING_WHITESPACE
+                  TIMEOUT 60)
+  if(NOT rc STREQUAL "0")
+    message(FATAL_ERROR "${EXPECT_FILE} does not read back (exit ${rc}): ${err}")
+  endif()
+  if(NOT count STREQUAL "${expected}")
+    message(FATAL_ERROR "${EXPECT_FILE} holds ${count} ${what}, expected ${expected}")
+  endif()
+endfunction()
+
+if(DEFINED EXPECT_FILE)
+  file(REMOVE "${EXPECT_FILE}")
+endif()
 execute_process(COMMAND ${CMD} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
                 TIMEOUT 120)
 if(NOT rc STREQUAL "${EXPECT_EXIT}")
@@ -20,4 +42,26 @@ string(REGEX MATCHALL "\n" lines "${err}")
 list(LENGTH lines nlines)
 if(rc GREATER 0 AND nlines GREATER 1)
   message(FATAL_ERROR "an error must be one line on stderr, got ${nlines}: ${err}")
+endif()
+
+if(DEFINED EXPECT_FILE)
+  if(NOT EXISTS "${EXPECT_FILE}" OR IS_DIRECTORY "${EXPECT_FILE}")
+    message(FATAL_ERROR "${EXPECT_FILE} was not written")
+  endif()
+  file(SIZE "${EXPECT_FILE}" size)
+  if(size EQUAL 0)
+    message(FATAL_ERROR "${EXPECT_FILE} is empty")
+  endif()
+  if(EXPECT_FILE MATCHES "\\.png$")
+    file(READ "${EXPECT_FILE}" magic LIMIT 8 HEX)
+    if(NOT magic STREQUAL "89504e470d0a1a0a")
+      message(FATAL_ERROR "${EXPECT_FILE} does not start with the PNG signature: ${magic}")
+    endif()
+  endif()
+  if(DEFINED EXPECT_SPHERES)
+    read_back(spheres ${EXPECT_SPHERES} spheres)
+  endif()
+  if(DEFINED EXPECT_TRIANGLES)
+    read_back(mesh ${EXPECT_TRIANGLES} triangles)
+  endif()
 endif()

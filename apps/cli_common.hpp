@@ -1,0 +1,89 @@
+// Pieces shared by the sphereset subcommands: exit codes and how library errors map to them,
+// the one-line error printing, mesh loading, the fit options of `fit` and `tree`, the coverage
+// check of their results, and JSON helpers.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/mesh.hpp"
+#include "sphereset/sphere.hpp"
+#include "sphereset/status.hpp"
+
+namespace sphereset::cli {
+
+// Exit codes, listed under --help (kExitCodesHelp) and in the README.
+enum Exit {
+  kOk = 0,
+  kInternal = 1,
+  kUsage = 2,
+  kUnreadable = 3,
+  kInvalid = 4,
+  kNotSolid = 5,
+  kWrite = 6,
+  kUncovered = 7,  // fit, tree: the result failed its own coverage check (the file is written)
+};
+
+// The footer of --help.
+inline constexpr const char* kExitCodesHelp =
+    "Exit codes: 0 success, 1 internal error, 2 bad options, 3 unreadable input,\n"
+    "4 invalid data, 5 mesh is not a closed solid, 6 output could not be written,\n"
+    "7 the result failed its own coverage check (fit, tree: the file is still written).";
+
+// The exit code for a library error.
+int exitFor(const Error& e);
+
+// Prints the error as one line on stderr and returns its exit code.
+int fail(const Error& e);
+
+nlohmann::json vec(const Vec3& v);
+
+// The mesh argument and the weld tolerance of the commands that load a mesh.
+struct MeshArgs {
+  std::string path;
+  double weld = 0.0;
+};
+
+void addMeshArgs(CLI::App* cmd, MeshArgs* a);
+
+// If the mesh is open and welding within 1e-7 of its diagonal makes it a solid, the option to
+// pass ("--weld-tolerance X"); empty otherwise.
+std::string weldHint(const MeshArgs& a, const MeshDiagnosis& d);
+
+// Loads and requires a closed solid.
+Expected<LoadedMesh> loadSolid(const MeshArgs& a);
+
+// Fit options shared by `fit` and `tree`.
+struct FitArgs {
+  MeshArgs mesh;
+  FitOptions fit;
+  std::string out_path, link_name, quality = "default", optimizer = "powell", init = "fps",
+                                   method = "variational";
+  bool quiet = false;
+  int64_t points = 0;
+};
+
+// `count_option`: whether -n is added here (`fit`) or by the caller with its own meaning
+// (`tree`).
+void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option);
+
+// Turns the parsed options into FitOptions: quality presets, optimiser, seeding, progress.
+FitOptions fitOptions(const FitArgs& a, const CLI::App* cmd);
+
+// What eval's coverage certificate does not confirm in `r`, e.g. "surface not covered (max gap
+// 0.002 of the diagonal, 3 triangles not covered)"; empty when surface and interior are covered.
+std::string coverageGaps(const EvalResult& r);
+
+// The exit code of a command whose result `what` (fitted from `mesh`, written to `out`) was
+// evaluated as `r`: kOk when the surface and the interior are covered; otherwise kUncovered,
+// after one line on `err` naming the mesh and what is not covered.
+int coverageExit(const std::string& mesh, const std::string& what, const std::string& out,
+                 const EvalResult& r, std::ostream& err = std::cerr);
+
+}  // namespace sphereset::cli

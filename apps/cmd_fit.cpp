@@ -1,0 +1,123 @@
+// sphereset fit: fits N spheres that bound a mesh, writes them and reports the fit; exits with
+// kUncovered when they fail eval's coverage check.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/solid_index.hpp"
+#include "sphereset/sphere_io.hpp"
+
+namespace sphereset::cli {
+namespace {
+
+struct FitCommandArgs {
+  FitArgs fit;
+  bool json = false;
+};
+
+// The summary printed by --json.
+nlohmann::json fitJson(const FitArgs& a, const FitOptions& fo, const FitResult& r,
+                       const EvalResult& ev) {
+  return {{"mesh", a.mesh.path},
+          {"output", a.out_path},
+          {"spheres", r.spheres.size()},
+          {"er_sum", r.energy / ev.mesh_volume},
+          {"er_sum_before_bounding", r.energy_before_bounding / ev.mesh_volume},
+          {"er_union", ev.er_union},
+          {"er_union_stderr", ev.er_union_stderr},
+          {"surface_covered", ev.surface_covered},
+          {"interior_covered", ev.interior_covered},
+          {"points", r.points},
+          {"interior_points", r.interior_points},
+          {"rounds", r.iterations},
+          {"converged", r.converged},
+          {"teleports", r.teleports},
+          {"teleports_kept", r.teleports_accepted},
+          {"sov_queries", r.sov_queries},
+          {"sov_queries_culled", r.sov_queries_culled},
+          {"optimizer_queries", r.optimizer_queries},
+          {"bounding_enlarged", r.bounding_enlarged},
+          {"bounding_pieces", r.bounding_pieces},
+          {"bounding_queries", r.bounding_queries},
+          {"bounding_interior_cells", r.bounding_interior_cells},
+          {"shrink_passes", r.shrink_passes},
+          {"idle_teleports", r.idle_teleports},
+          {"decimated", r.decimated},
+          {"restart", r.restart},
+          {"seconds",
+           {{"total", r.seconds.total},
+            {"sampling", r.seconds.sampling},
+            {"assignment", r.seconds.assignment},
+            {"update", r.seconds.update},
+            {"teleport", r.seconds.teleport},
+            {"bounding", r.seconds.bounding}}},
+          {"seed", fo.seed}};
+}
+
+// The summary on stderr unless --quiet.
+void printFitSummary(const FitArgs& a, const FitResult& r, const EvalResult& ev) {
+  std::fprintf(stderr,
+               "%s: %zu spheres -> %s\n"
+               "  E_r summed %.4f (%.4f before bounding), E_r union %.4f +- %.4f\n"
+               "  surface covered %s, interior covered %s\n"
+               "  %lld points (%lld interior), %d rounds%s, %d teleports (%d kept), %lld SOV "
+               "queries in assignment (%lld culled)\n"
+               "  time %.2f s (sampling %.2f, assignment %.2f, update %.2f, teleport %.2f, "
+               "bounding %.2f)\n",
+               a.mesh.path.c_str(), r.spheres.size(), a.out_path.c_str(), r.energy / ev.mesh_volume,
+               r.energy_before_bounding / ev.mesh_volume, ev.er_union, ev.er_union_stderr,
+               ev.surface_covered ? "yes" : "NO", ev.interior_covered ? "yes" : "NO",
+               static_cast<long long>(r.points), static_cast<long long>(r.interior_points),
+               r.iterations, r.converged ? " (converged)" : "", r.teleports, r.teleports_accepted,
+               static_cast<long long>(r.sov_queries), static_cast<long long>(r.sov_queries_culled),
+               r.seconds.total, r.seconds.sampling, r.seconds.assignment, r.seconds.update,
+               r.seconds.teleport, r.seconds.bounding);
+}
+
+int runFit(const FitCommandArgs& c, const CLI::App* cmd) {
+  const FitArgs& a = c.fit;
+  auto format = sphereFormatFromPath(a.out_path);
+  if (!format) return fail(format.error());
+  auto m = loadSolid(a.mesh);
+  if (!m) return fail(m.error());
+  const FitOptions fo = fitOptions(a, cmd);
+  const SolidIndex index(m->mesh);
+  auto r = fitSpheres(index, fo);
+  if (!r) return fail(Error{r.error().code, a.mesh.path + ": " + r.error().message});
+  SphereFileMeta meta;
+  meta.name =
+      a.link_name.empty() ? std::filesystem::path(a.mesh.path).stem().string() : a.link_name;
+  meta.source_mesh = a.mesh.path;
+  Status st = writeSpheres(a.out_path, r->spheres, meta);
+  if (!st) return fail(st.error());
+  EvalOptions eo;
+  eo.seed = fo.seed;
+  eo.union_samples = 100000;
+  eo.proximity_segments = 0;
+  const EvalResult ev = evaluateSpheres(index, r->spheres, eo);
+  if (c.json) std::cout << fitJson(a, fo, *r, ev).dump() << '\n';
+  if (!a.quiet) printFitSummary(a, *r, ev);
+  // The summary's evaluation is eval's coverage check (same certificate depths).
+  return coverageExit(a.mesh.path, "the fitted spheres", a.out_path, ev);
+}
+
+}  // namespace
+
+Command registerFit(CLI::App& app) {
+  auto c = std::make_shared<FitCommandArgs>();
+  CLI::App* cmd = app.add_subcommand("fit", "Fit N spheres that bound the mesh");
+  addFitArgs(cmd, &c->fit, true);
+  cmd->add_option("--name", c->fit.link_name,
+                  "Link name for .yaml output (default: the mesh's stem)");
+  cmd->add_flag("--json", c->json, "Print the summary as one JSON object on stdout");
+  return {cmd, [c, cmd] { return runFit(*c, cmd); }};
+}
+
+}  // namespace sphereset::cli

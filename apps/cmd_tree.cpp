@@ -1,0 +1,127 @@
+// sphereset tree: fits a sphere set and builds a sphere tree over it (Bradshaw .sph or JSON);
+// exits with kUncovered when its leaves fail eval's coverage check.
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/solid_index.hpp"
+#include "sphereset/sphere_io.hpp"
+#include "sphereset/tree.hpp"
+
+namespace sphereset::cli {
+namespace {
+
+struct TreeArgs {
+  FitArgs fit;
+  TreeOptions to;
+  std::string parents = "minimal";
+  bool json = false;
+};
+
+// The summary printed by --json.
+nlohmann::json treeJson(const TreeArgs& a, const FitOptions& fo, const TreeFitResult& r,
+                        double volume, const EvalResult& ev) {
+  nlohmann::json lv = nlohmann::json::array();
+  for (const TreeLevelStats& l : r.tree.levels)
+    lv.push_back({{"level", l.level},
+                  {"spheres", l.nodes},
+                  {"er_sum", l.outside_volume / volume},
+                  {"rounds", l.iterations},
+                  {"converged", l.converged}});
+  return {{"mesh", a.fit.mesh.path},
+          {"output", a.fit.out_path},
+          {"branching", a.to.branching},
+          {"depth", a.to.depth},
+          {"parents", a.parents},
+          {"leaves", r.fit.spheres.size()},
+          {"levels", lv},
+          {"surface_covered", ev.surface_covered},
+          {"interior_covered", ev.interior_covered},
+          {"seconds", {{"fit", r.fit.seconds.total}, {"tree", r.tree.seconds}}},
+          {"seed", fo.seed}};
+}
+
+// The summary on stderr unless --quiet.
+void printTreeSummary(const TreeArgs& a, const TreeFitResult& r, double volume,
+                      const EvalResult& ev) {
+  std::fprintf(stderr, "%s: tree of branching %d, depth %d (%s parents) -> %s\n",
+               a.fit.mesh.path.c_str(), a.to.branching, a.to.depth, a.parents.c_str(),
+               a.fit.out_path.c_str());
+  for (const TreeLevelStats& l : r.tree.levels)
+    std::fprintf(stderr, "  level %d: %4lld spheres, E_r summed %.4f\n", l.level,
+                 static_cast<long long>(l.nodes), l.outside_volume / volume);
+  std::fprintf(stderr, "  leaves: surface covered %s, interior covered %s\n",
+               ev.surface_covered ? "yes" : "NO", ev.interior_covered ? "yes" : "NO");
+  std::fprintf(stderr, "  time %.2f s fit + %.2f s tree\n", r.fit.seconds.total, r.tree.seconds);
+}
+
+int runTree(TreeArgs a, const CLI::App* cmd) {
+  auto format = sphereFormatFromPath(a.fit.out_path);
+  if (!format) return fail(format.error());
+  if (*format != SphereFormat::kSph && *format != SphereFormat::kJson)
+    return fail(Error{ErrorCode::kInvalidArgument,
+                      a.fit.out_path + ": a sphere tree is written as .sph or .json"});
+  auto m = loadSolid(a.fit.mesh);
+  if (!m) return fail(m.error());
+  if (a.fit.fit.num_spheres == 0) {
+    // B^D leaves, when that is a sensible count (otherwise the library says why not).
+    int64_t leaves = 1;
+    for (int l = 0; l < a.to.depth && leaves <= (int64_t{1} << 16); ++l) leaves *= a.to.branching;
+    if (leaves <= (int64_t{1} << 16)) a.fit.fit.num_spheres = static_cast<int>(leaves);
+  }
+  const FitOptions fo = fitOptions(a.fit, cmd);
+  a.to.parents = a.parents == "outside" ? TreeParents::kOutsideVolume : TreeParents::kMinimal;
+  a.to.seed = fo.seed;
+  const SolidIndex index(m->mesh);
+  auto r = fitSphereTree(index, fo, a.to);
+  if (!r) return fail(Error{r.error().code, a.fit.mesh.path + ": " + r.error().message});
+  SphereFileMeta meta;
+  meta.source_mesh = a.fit.mesh.path;
+  Status st = writeSphereTree(a.fit.out_path, r->tree.tree, meta);
+  if (!st) return fail(st.error());
+  const double vol = signedVolume(m->mesh);
+  // Eval's coverage check on the leaves as written; every parent encloses its children.
+  EvalOptions eo;
+  eo.seed = fo.seed;
+  eo.union_samples = 0;
+  eo.proximity_segments = 0;
+  eo.shadow_resolution = 0;
+  const EvalResult ev = evaluateSpheres(index, r->tree.tree.leaves(), eo);
+  if (a.json) std::cout << treeJson(a, fo, *r, vol, ev).dump() << '\n';
+  if (!a.fit.quiet) printTreeSummary(a, *r, vol, ev);
+  return coverageExit(a.fit.mesh.path, "the tree's leaves", a.fit.out_path, ev);
+}
+
+}  // namespace
+
+Command registerTree(CLI::App& app) {
+  auto a = std::make_shared<TreeArgs>();
+  a->fit.fit.num_spheres = 0;  // B^D unless -n is given
+  CLI::App* cmd = app.add_subcommand(
+      "tree", "Fit a sphere set and build a sphere-tree over it (Bradshaw .sph or JSON)");
+  addFitArgs(cmd, &a->fit, false);
+  cmd->add_option("--branch", a->to.branching, "Children per node at most (B)")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 1024));
+  cmd->add_option("--depth", a->to.depth,
+                  "Levels below the root (D): D + 1 levels, at most B^D leaves")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 26));
+  cmd->add_option("-n,--spheres", a->fit.fit.num_spheres, "Leaves to fit (default 0: B^D)")
+      ->check(CLI::Range(0, 1000000));
+  cmd->add_option("--parents", a->parents,
+                  "minimal (smallest ball enclosing the children) or outside (least outside "
+                  "volume while enclosing them)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"minimal", "outside"}));
+  cmd->add_flag("--json", a->json, "Print the summary as one JSON object on stdout");
+  return {cmd, [a, cmd] { return runTree(*a, cmd); }};
+}
+
+}  // namespace sphereset::cli
