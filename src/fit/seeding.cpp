@@ -14,7 +14,12 @@
 namespace sphereset::detail {
 
 std::vector<Vec3> initialCentres(const PointSet& ps, int n, FitInit init, uint64_t seed) {
-  const int64_t pool = ps.interior > 0 ? ps.interior : static_cast<int64_t>(ps.points.size());
+  // The seeds are inner points as in the paper when there are at least n of them. Fewer
+  // happen with few points in all (half of them are inner by default), a low interior share
+  // or a solid too thin for its grid; then the seeds are drawn from all the points, so that
+  // every sphere gets one (fitSpheres asks for at most as many spheres as there are points).
+  const int64_t all = static_cast<int64_t>(ps.points.size());
+  const int64_t pool = ps.interior >= n ? ps.interior : all;
   std::mt19937_64 rng(mixSeed(seed, 11));
   std::vector<Vec3> out;
   if (init == FitInit::kRandom || pool <= n) {
