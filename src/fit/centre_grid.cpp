@@ -16,8 +16,7 @@ CentreGrid::CentreGrid(const std::vector<Cluster>& cl) {
   const Vec3 ext = (box.max - box.min).cwiseMax(Vec3::Constant(kMinExtentRel * box.diagonal()));
   cell_ = std::max(std::cbrt(ext.prod() / nc), std::numeric_limits<double>::min());
   origin_ = box.min;
-  for (int a = 0; a < 3; ++a)
-    dims_[a] = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(ext[a] / cell_)) + 1);
+  for (int a = 0; a < 3; ++a) dims_[a] = std::max<int64_t>(1, ceilCells(ext[a] / cell_) + 1);
   std::vector<int64_t> cell_of(cl.size());
   start_.assign(dims_[0] * dims_[1] * dims_[2] + 1, 0);
   for (size_t i = 0; i < cl.size(); ++i) {

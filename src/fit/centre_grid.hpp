@@ -7,11 +7,14 @@
 #include <vector>
 
 #include "fit/cluster_assign.hpp"
+#include "util/cell_key.hpp"
 
 namespace sphereset::detail {
 
 // The cluster centres (fixed during an assignment) bucketed in a dense grid of about one
 // centre per cell, to find the centres within a distance of a point without scanning all.
+// A dense grid over the centres' box, indexed by clamped coordinates: it shares the checked
+// conversion of cell_key.hpp with the hash grids, not their keys or hash.
 class CentreGrid {
  public:
   explicit CentreGrid(const std::vector<Cluster>& cl);
@@ -39,9 +42,9 @@ class CentreGrid {
   static constexpr double kMinExtentRel = 1e-3;
   // Query boxes are widened by this fraction of a cell, against rounding.
   static constexpr double kPadRel = 1e-6;
+  // The cell coordinate along axis a, clamped to the grid (checked conversion, cell_key.hpp).
   int64_t coord(const Vec3& p, int a) const {
-    const double c = std::floor((p[a] - origin_[a]) / cell_);
-    return std::clamp<int64_t>(static_cast<int64_t>(std::clamp(c, -1.0, 1e15)), 0, dims_[a] - 1);
+    return std::clamp<int64_t>(floorCell((p[a] - origin_[a]) / cell_), 0, dims_[a] - 1);
   }
   int64_t index(int64_t x, int64_t y, int64_t z) const { return x + dims_[0] * (y + dims_[1] * z); }
   Vec3 origin_;
