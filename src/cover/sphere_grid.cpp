@@ -86,6 +86,12 @@ SphereGrid::SphereGrid(const std::vector<Sphere>& spheres) : spheres_(&spheres) 
 }
 
 bool SphereGrid::cellOf(const Vec3& p, int64_t* c) const {
+  if (std::isinf(cell_)) {
+    // Extents beyond the double range (spheres near +-1.8e308) make one infinite cell, where
+    // p - origin can overflow: every point is in it.
+    c[0] = c[1] = c[2] = 0;
+    return true;
+  }
   for (int a = 0; a < 3; ++a) {
     // Range-checked before the conversion (NaN fails the test): outside the grid, no cell.
     const double f = std::floor((p[a] - origin_[a]) / cell_);

@@ -14,7 +14,13 @@ CentreGrid::CentreGrid(const std::vector<Cluster>& cl) {
   for (const Cluster& c : cl) box.extend(c.center);
   const double nc = static_cast<double>(cl.size());
   const Vec3 ext = (box.max - box.min).cwiseMax(Vec3::Constant(kMinExtentRel * box.diagonal()));
-  cell_ = std::max(std::cbrt(ext.prod() / nc), std::numeric_limits<double>::min());
+  double cell = std::cbrt(ext.prod() / nc);
+  if (!(cell >= kMinCellRel * ext.maxCoeff())) {
+    // ext.prod() underflowed (extents of about 1e-100 and below): the same cell from the
+    // extents relative to the largest.
+    cell = ext.maxCoeff() * std::cbrt((ext / ext.maxCoeff()).prod() / nc);
+  }
+  cell_ = std::max(std::numeric_limits<double>::min(), cell);  // NaN (NaN centres): min
   origin_ = box.min;
   for (int a = 0; a < 3; ++a) dims_[a] = std::max<int64_t>(1, ceilCells(ext[a] / cell_) + 1);
   std::vector<int64_t> cell_of(cl.size());

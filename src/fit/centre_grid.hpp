@@ -42,6 +42,11 @@ class CentreGrid {
   static constexpr double kMinExtentRel = 1e-3;
   // Query boxes are widened by this fraction of a cell, against rounding.
   static constexpr double kPadRel = 1e-6;
+  // Cells are never below this fraction of the largest extent. Extents are at least
+  // kMinExtentRel of the diagonal, so the cell (the cube root of the box volume per centre) is
+  // at least 1e-2 / cbrt(centres) >= 7.7e-6 of the largest extent for up to 2^31 centres; a
+  // smaller one means the volume underflowed, and would make the grid astronomically large.
+  static constexpr double kMinCellRel = 1e-6;
   // The cell coordinate along axis a, clamped to the grid (checked conversion, cell_key.hpp).
   int64_t coord(const Vec3& p, int a) const {
     return std::clamp<int64_t>(floorCell((p[a] - origin_[a]) / cell_), 0, dims_[a] - 1);
