@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "util/cell_key.hpp"
+
 namespace sphereset::detail {
 namespace {
 
@@ -45,8 +47,7 @@ SphereGrid::SphereGrid(const std::vector<Sphere>& spheres) : spheres_(&spheres) 
   cell_ = std::max({radii[n / 2], std::cbrt(ext.prod() / max_cells), ext.maxCoeff() / 1024.0,
                     std::numeric_limits<double>::min()});
   while (true) {
-    for (int a = 0; a < 3; ++a)
-      dims_[a] = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(ext[a] / cell_)));
+    for (int a = 0; a < 3; ++a) dims_[a] = std::max<int64_t>(1, ceilCells(ext[a] / cell_));
     int64_t listed = 0;
     for (const Sphere& s : spheres) {
       int64_t count = 1;
@@ -85,7 +86,14 @@ SphereGrid::SphereGrid(const std::vector<Sphere>& spheres) : spheres_(&spheres) 
 }
 
 bool SphereGrid::cellOf(const Vec3& p, int64_t* c) const {
+  if (std::isinf(cell_)) {
+    // Extents beyond the double range (spheres near +-1.8e308) make one infinite cell, where
+    // p - origin can overflow: every point is in it.
+    c[0] = c[1] = c[2] = 0;
+    return true;
+  }
   for (int a = 0; a < 3; ++a) {
+    // Range-checked before the conversion (NaN fails the test): outside the grid, no cell.
     const double f = std::floor((p[a] - origin_[a]) / cell_);
     if (!(f >= 0.0 && f < static_cast<double>(dims_[a]))) return false;
     c[a] = static_cast<int64_t>(f);
@@ -94,8 +102,7 @@ bool SphereGrid::cellOf(const Vec3& p, int64_t* c) const {
 }
 
 int64_t SphereGrid::clampedCell(double x, int axis) const {
-  const double f = std::floor((x - origin_[axis]) / cell_);
-  return static_cast<int64_t>(std::clamp(f, 0.0, static_cast<double>(dims_[axis] - 1)));
+  return std::clamp<int64_t>(floorCell((x - origin_[axis]) / cell_), 0, dims_[axis] - 1);
 }
 
 bool SphereGrid::coveredBy(const Vec3& p, double reach) const {

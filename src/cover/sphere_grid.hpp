@@ -12,6 +12,8 @@
 
 namespace sphereset::detail {
 
+// A dense grid over the spheres' box, indexed by clamped coordinates: it shares the checked
+// conversion of cell_key.hpp (util) with the hash grids, not their keys or hash.
 class SphereGrid {
  public:
   // Each sphere is listed in every cell its bounding box (slightly widened) meets.

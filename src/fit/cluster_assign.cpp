@@ -23,36 +23,28 @@
 // finds it among the few centres near the point instead of all of them, and a grid of the
 // points finds each centre's seed point. Same labels; spot n = 1024, assignment 34.1 s ->
 // 23.1 s; n = 2048, 133.7 s -> 67.5 s.
+//
+// This file is the fill: the clusters' reset, the seeds, the queue and the sequential decision
+// of each point; assign_prepare.cpp prepares the batches.
 #include "fit/cluster_assign.hpp"
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <deque>
 #include <limits>
 #include <memory>
-#include <numeric>
 #include <tuple>
+
+#include "fit/assign_prepare.hpp"
+#include "fit/centre_grid.hpp"
 
 namespace sphereset::detail {
 namespace {
 
-double lowerBoundSov(const Cluster& c, double radius) {
-  // Largest tabulated radius not above `radius`; far points are usually beyond the table.
-  if (!c.table.empty() && radius >= c.table.back().first) return c.table.back().second;
-  auto it =
-      std::upper_bound(c.table.begin(), c.table.end(), radius,
-                       [](double r, const std::pair<double, double>& e) { return r < e.first; });
-  return it == c.table.begin() ? 0.0 : std::prev(it)->second;
-}
-
-// Lower bound of the outside-volume increase when cluster c grows to `radius`.
-double increaseBound(const Cluster& c, double radius) {
-  return std::max(0.0, lowerBoundSov(c, radius) - c.sov);
-}
+// A table longer than this is dropped instead of grown (it is only a cache).
+constexpr size_t kMaxTable = 1 << 14;
 
 // Examination order of candidate clusters: increasing lower bound, then distance, then index.
 bool examinedBefore(const std::vector<double>& bound, const std::vector<double>& dist, int32_t a,
@@ -60,9 +52,6 @@ bool examinedBefore(const std::vector<double>& bound, const std::vector<double>&
   return bound[a] < bound[b] || (bound[a] == bound[b] && dist[a] < dist[b]) ||
          (bound[a] == bound[b] && dist[a] == dist[b] && a < b);
 }
-
-// A table longer than this is dropped instead of grown (it is only a cache).
-constexpr size_t kMaxTable = 1 << 14;
 
 // First table entry whose radius is not below `radius`.
 auto tableEntry(const Cluster& c, double radius) {
@@ -83,179 +72,9 @@ void remember(Cluster* c, double radius, double sov) {
   c->table.insert(it, {radius, sov});
 }
 
-// Points of the fill prepared together, in parallel, against the clusters as they were when
-// the batch began: distances, whether a sphere already holds the point, and the clusters of
-// smallest lower bound. The decisions are then made in queue order with the tables and radii
-// of that moment, so the labels are the sequential fill's whatever the batch size; only the
-// O(clusters) scan per point runs in parallel (outside-volume queries are made when a point is
-// decided, where the latest tables cull best). A function of the cluster count only.
-constexpr int32_t kParallelClusters = 64;
-constexpr size_t kMaxBatch = 128;
-constexpr int kShortList = 8;  // clusters of smallest lower bound kept per prepared point
-size_t batchSize(int32_t nc) {
-  return nc < kParallelClusters ? 1 : std::min<size_t>(kMaxBatch, static_cast<size_t>(nc) / 8);
-}
-
-struct Prepared {
-  int32_t inside = -1;  // nearest cluster whose sphere held the point, or -1
-  double inside_dist = 0.0;
-  int count = 0;  // short list: clusters in examination order, their distances and bounds
-  std::array<int32_t, kShortList> cluster;
-  std::array<double, kShortList> dist, bound;
-  double rest_bound = std::numeric_limits<double>::infinity();  // least bound of the others
-};
-
-struct Scratch {
-  std::vector<double> dist;
-};
-
-// The cluster centres (fixed during an assignment) bucketed in a dense grid of about one
-// centre per cell, to find the centres within a distance of a point without scanning all.
-class CentreGrid {
- public:
-  explicit CentreGrid(const std::vector<Cluster>& cl) {
-    Aabb box;
-    for (const Cluster& c : cl) box.extend(c.center);
-    const double nc = static_cast<double>(cl.size());
-    const Vec3 ext = (box.max - box.min).cwiseMax(Vec3::Constant(kMinExtentRel * box.diagonal()));
-    cell_ = std::max(std::cbrt(ext.prod() / nc), std::numeric_limits<double>::min());
-    origin_ = box.min;
-    for (int a = 0; a < 3; ++a)
-      dims_[a] = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(ext[a] / cell_)) + 1);
-    std::vector<int64_t> cell_of(cl.size());
-    start_.assign(dims_[0] * dims_[1] * dims_[2] + 1, 0);
-    for (size_t i = 0; i < cl.size(); ++i) {
-      cell_of[i] = index(coord(cl[i].center, 0), coord(cl[i].center, 1), coord(cl[i].center, 2));
-      ++start_[cell_of[i] + 1];
-    }
-    std::partial_sum(start_.begin(), start_.end(), start_.begin());
-    members_.resize(cl.size());
-    std::vector<int32_t> fill(start_.begin(), start_.end() - 1);
-    for (size_t i = 0; i < cl.size(); ++i) members_[fill[cell_of[i]]++] = static_cast<int32_t>(i);
-  }
-
-  // Calls f(cluster) for every centre within `reach` of q (and some a little farther).
-  template <class F>
-  void forEachWithin(const Vec3& q, double reach, F&& f) const {
-    const double pad = reach + kPadRel * cell_;
-    int64_t lo[3], hi[3];
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = coord(q - Vec3::Constant(pad), a);
-      hi[a] = coord(q + Vec3::Constant(pad), a);
-    }
-    for (int64_t z = lo[2]; z <= hi[2]; ++z)
-      for (int64_t y = lo[1]; y <= hi[1]; ++y) {
-        const int64_t row = index(lo[0], y, z);
-        for (int32_t k = start_[row]; k < start_[row + hi[0] - lo[0] + 1]; ++k) f(members_[k]);
-      }
-  }
-
-  double cell() const { return cell_; }
-
- private:
-  // Extents below this fraction of the diagonal are widened (flat or collinear centres).
-  static constexpr double kMinExtentRel = 1e-3;
-  // Query boxes are widened by this fraction of a cell, against rounding.
-  static constexpr double kPadRel = 1e-6;
-  int64_t coord(const Vec3& p, int a) const {
-    const double c = std::floor((p[a] - origin_[a]) / cell_);
-    return std::clamp<int64_t>(static_cast<int64_t>(std::clamp(c, -1.0, 1e15)), 0, dims_[a] - 1);
-  }
-  int64_t index(int64_t x, int64_t y, int64_t z) const { return x + dims_[0] * (y + dims_[1] * z); }
-  Vec3 origin_;
-  double cell_ = 1.0;
-  int64_t dims_[3] = {1, 1, 1};
-  std::vector<int32_t> start_, members_;
-};
-
-// The first ball searched for a holder has at least this fraction of the largest radius.
-constexpr double kFirstReachRel = 1.0 / 64.0;
-
-// The nearest centre whose sphere holds x (ties: the lower index), or -1 if none does; no
-// sphere is larger than max_radius. Once some sphere holds x, only centres at most that far
-// can be nearer, and the grid lists those; the first holder is looked for among the clusters
-// of x's labelled neighbours, then in balls of doubling size about x.
-int32_t nearestHolder(const std::vector<Cluster>& cl, const CentreGrid& grid, const PointSet& ps,
-                      const std::vector<int32_t>& labels, int64_t p, double max_radius,
-                      double* dist) {
-  const Vec3& x = ps.points[p];
-  int32_t h = -1;
-  double dh = std::numeric_limits<double>::infinity();
-  auto consider = [&](int32_t ci) {
-    const double d = (x - cl[ci].center).norm();
-    if (d <= cl[ci].radius && (d < dh || (d == dh && ci < h))) {
-      h = ci;
-      dh = d;
-    }
-  };
-  for (int32_t k = ps.adj_start[p]; k < ps.adj_start[p + 1]; ++k)
-    if (labels[ps.adj[k]] >= 0) consider(labels[ps.adj[k]]);
-  for (double reach = std::max(grid.cell(), kFirstReachRel * max_radius); h < 0; reach *= 2.0) {
-    grid.forEachWithin(x, reach, consider);
-    if (reach >= max_radius) break;
-  }
-  if (h < 0) return -1;
-  grid.forEachWithin(x, dh, consider);
-  *dist = dh;
-  return h;
-}
-
-void prepare(const std::vector<Cluster>& cl, const CentreGrid* grid, double max_radius,
-             const PointSet& ps, const std::vector<int32_t>& labels, int64_t p, Scratch* s,
-             Prepared* pr) {
-  if (grid) {
-    pr->inside = nearestHolder(cl, *grid, ps, labels, p, max_radius, &pr->inside_dist);
-    if (pr->inside >= 0) return;
-  }
-  const Vec3& x = ps.points[p];
-  const int32_t nc = static_cast<int32_t>(cl.size());
-  s->dist.resize(nc);
-  for (int32_t ci = 0; ci < nc; ++ci) {
-    s->dist[ci] = (x - cl[ci].center).norm();
-    if (s->dist[ci] <= cl[ci].radius && (pr->inside < 0 || s->dist[ci] < s->dist[pr->inside]))
-      pr->inside = ci;
-  }
-  if (pr->inside >= 0) {
-    pr->inside_dist = s->dist[pr->inside];
-    return;
-  }
-  // The kShortList first clusters in examination order (increasing bound, distance, index),
-  // kept sorted in one pass; whatever is not kept lowers rest_bound.
-  auto before = [](double b0, double d0, int32_t i0, double b1, double d1, int32_t i1) {
-    return b0 < b1 || (b0 == b1 && (d0 < d1 || (d0 == d1 && i0 < i1)));
-  };
-  int& m = pr->count;
-  for (int32_t ci = 0; ci < nc; ++ci) {
-    const double b = increaseBound(cl[ci], s->dist[ci]), d = s->dist[ci];
-    if (m == kShortList) {
-      if (!before(b, d, ci, pr->bound[m - 1], pr->dist[m - 1], pr->cluster[m - 1])) {
-        pr->rest_bound = std::min(pr->rest_bound, b);
-        continue;
-      }
-      pr->rest_bound = std::min(pr->rest_bound, pr->bound[m - 1]);
-      --m;
-    }
-    int k = m++;
-    for (; k > 0 && before(b, d, ci, pr->bound[k - 1], pr->dist[k - 1], pr->cluster[k - 1]); --k) {
-      pr->bound[k] = pr->bound[k - 1];
-      pr->dist[k] = pr->dist[k - 1];
-      pr->cluster[k] = pr->cluster[k - 1];
-    }
-    pr->bound[k] = b;
-    pr->dist[k] = d;
-    pr->cluster[k] = ci;
-  }
-}
-
-}  // namespace
-
-void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Cluster>* clusters,
-                  std::vector<int32_t>* labels, AssignStats* stats) {
-  std::vector<Cluster>& cl = *clusters;
-  const int32_t nc = static_cast<int32_t>(cl.size());
-  const int64_t np = static_cast<int64_t>(ps.points.size());
-  labels->assign(np, -1);
-  for (Cluster& c : cl) {
+// Radii start at zero; a cluster keeps its table only while its centre stays where it was.
+void resetClusters(std::vector<Cluster>* clusters) {
+  for (Cluster& c : *clusters) {
     c.radius = 0.0;
     c.sov = 0.0;
     if (c.table.empty() || c.table_center != c.center) {
@@ -263,170 +82,240 @@ void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Clust
       c.table_center = c.center;
     }
   }
-  std::deque<int32_t> queue;
-  auto place = [&](int64_t p, int32_t ci, double d, double sov) {
-    (*labels)[p] = ci;
-    if (d > cl[ci].radius) {
-      cl[ci].radius = d;
-      cl[ci].sov = sov;
-    }
-    for (int32_t k = ps.adj_start[p]; k < ps.adj_start[p + 1]; ++k)
-      if ((*labels)[ps.adj[k]] < 0) queue.push_back(ps.adj[k]);
-  };
-  auto query = [&](int32_t ci, double radius) {
-    if (const double known = tabulated(cl[ci], radius); known >= 0.0) {
-      ++stats->reused;
-      return known;
-    }
-    const double v = index.outsideVolume({cl[ci].center, radius}).volume;
-    ++stats->queries;
-    remember(&cl[ci], radius, v);
-    return v;
-  };
+}
 
-  // Seeds: the point nearest each centre (clusters whose nearest point is taken keep none).
-  std::vector<int64_t> nearest(nc, -1);
-  tbb::parallel_for(int32_t{0}, nc,
-                    [&](int32_t ci) { nearest[ci] = ps.grid.nearest(ps.points, cl[ci].center); });
-  for (int32_t ci = 0; ci < nc; ++ci) {
+// The best cluster found so far for a point: least increase, ties to the nearest centre.
+struct Candidate {
+  int32_t cluster = -1;
+  double inc = std::numeric_limits<double>::infinity(), sov = 0.0, dist = 0.0;
+};
+
+// The flood fill of one assignment (paper Sec. 5: "The algorithm starts from the cluster
+// centers and progresses to adjacent points"), first in, first out.
+class Fill {
+ public:
+  Fill(const SolidIndex& index, const PointSet& ps, std::vector<Cluster>* clusters,
+       std::vector<int32_t>* labels, AssignStats* stats)
+      : index_(index),
+        ps_(ps),
+        cl_(*clusters),
+        labels_(*labels),
+        stats_(stats),
+        nc_(static_cast<int32_t>(cl_.size())),
+        np_(static_cast<int64_t>(ps.points.size())) {}
+
+  void seed();
+  void run();
+
+ private:
+  void place(int64_t p, int32_t ci, double d, double sov);
+  double query(int32_t ci, double radius);
+  bool nextBatch();
+  int32_t holder(const Vec3& x, const Prepared& pr, double* dist) const;
+  void consider(int32_t ci, double d, Candidate* best, int64_t* looked);
+  Candidate leastIncrease(const Vec3& x, const Prepared& pr);
+  void decide(int32_t p, const Prepared& pr);
+
+  const SolidIndex& index_;
+  const PointSet& ps_;
+  std::vector<Cluster>& cl_;
+  std::vector<int32_t>& labels_;
+  AssignStats* stats_;
+  const int32_t nc_;
+  const int64_t np_;
+  std::deque<int32_t> queue_;
+  std::unique_ptr<CentreGrid> grid_;
+  std::vector<int32_t> batch_;
+  std::vector<Prepared> prepared_;
+  std::vector<char> queued_, changed_, examined_;
+  std::vector<int32_t> changed_list_;  // clusters that grew since the batch was prepared
+  Scratch serial_;
+  std::vector<double> dist_, bound_;
+  std::vector<int32_t> order_;
+  std::vector<std::tuple<double, double, int32_t>> merged_;
+  int64_t scan_ = 0;  // points before this one are all labelled
+};
+
+// Point p joins cluster ci at distance d (whose sphere then has outside volume `sov` if it
+// grows), and its unlabelled neighbours join the queue (Sec. 5: "Once a point is assigned,
+// the bounding sphere radius of its cluster is updated, and its adjacent points are pushed").
+void Fill::place(int64_t p, int32_t ci, double d, double sov) {
+  labels_[p] = ci;
+  if (d > cl_[ci].radius) {
+    cl_[ci].radius = d;
+    cl_[ci].sov = sov;
+  }
+  for (int32_t k = ps_.adj_start[p]; k < ps_.adj_start[p + 1]; ++k)
+    if (labels_[ps_.adj[k]] < 0) queue_.push_back(ps_.adj[k]);
+}
+
+// SOV of cluster ci's centre at `radius`, from its table if known (then recorded there).
+double Fill::query(int32_t ci, double radius) {
+  if (const double known = tabulated(cl_[ci], radius); known >= 0.0) {
+    ++stats_->reused;
+    return known;
+  }
+  const double v = index_.outsideVolume({cl_[ci].center, radius}).volume;
+  ++stats_->queries;
+  remember(&cl_[ci], radius, v);
+  return v;
+}
+
+// Seeds: the point nearest each centre (clusters whose nearest point is taken keep none).
+void Fill::seed() {
+  std::vector<int64_t> nearest(nc_, -1);
+  tbb::parallel_for(int32_t{0}, nc_, [&](int32_t ci) {
+    nearest[ci] = ps_.grid.nearest(ps_.points, cl_[ci].center);
+  });
+  for (int32_t ci = 0; ci < nc_; ++ci) {
     const int64_t p = nearest[ci];
-    if (p >= 0 && (*labels)[p] < 0) {
-      const double d = (ps.points[p] - cl[ci].center).norm();
+    if (p >= 0 && labels_[p] < 0) {
+      const double d = (ps_.points[p] - cl_[ci].center).norm();
       place(p, ci, d, query(ci, d));
     }
   }
+}
 
-  const size_t batch_size = batchSize(nc);
-  const std::unique_ptr<CentreGrid> grid =
-      nc >= kParallelClusters ? std::make_unique<CentreGrid>(cl) : nullptr;
-  std::vector<int32_t> batch;
-  std::vector<Prepared> prepared;
-  std::vector<char> queued(np, 0), changed(nc, 0), examined(nc, 0);
-  std::vector<int32_t> changed_list;
-  Scratch serial;
-  std::vector<double> dist(nc), bound(nc);
-  std::vector<int32_t> order;
-  std::vector<std::tuple<double, double, int32_t>> merged;
-  int64_t scan = 0;
-  while (true) {
-    // The next points of the fill: the first unlabelled entries of the queue, or, when it
-    // runs dry, the first point of a part not reached from any centre.
-    batch.clear();
-    while (!queue.empty() && batch.size() < batch_size) {
-      const int32_t q = queue.front();
-      queue.pop_front();
-      if ((*labels)[q] < 0 && !queued[q]) {
-        queued[q] = 1;
-        batch.push_back(q);
-      }
+// The next points of the fill: the first unlabelled entries of the queue, or, when it runs
+// dry, the first point of a part not reached from any centre. False when all are labelled.
+bool Fill::nextBatch() {
+  const size_t batch_size = batchSize(nc_);
+  batch_.clear();
+  while (!queue_.empty() && batch_.size() < batch_size) {
+    const int32_t q = queue_.front();
+    queue_.pop_front();
+    if (labels_[q] < 0 && !queued_[q]) {
+      queued_[q] = 1;
+      batch_.push_back(q);
     }
-    if (batch.empty()) {
-      while (scan < np && (*labels)[scan] >= 0) ++scan;
-      if (scan == np) break;
-      batch.push_back(static_cast<int32_t>(scan));
-    }
-    prepared.assign(batch.size(), Prepared{});
-    double max_radius = 0.0;
-    if (grid)
-      for (const Cluster& c : cl) max_radius = std::max(max_radius, c.radius);
-    if (batch.size() == 1) {
-      prepare(cl, grid.get(), max_radius, ps, *labels, batch[0], &serial, &prepared[0]);
-    } else {
-      tbb::parallel_for(
-          tbb::blocked_range<size_t>(0, batch.size()), [&](const tbb::blocked_range<size_t>& r) {
-            Scratch local;
-            for (size_t k = r.begin(); k < r.end(); ++k)
-              prepare(cl, grid.get(), max_radius, ps, *labels, batch[k], &local, &prepared[k]);
-          });
-    }
-    for (size_t k = 0; k < batch.size(); ++k) {
-      const int32_t p = batch[k];
-      queued[p] = 0;
-      const Prepared& pr = prepared[k];
-      const Vec3& x = ps.points[p];
-      // Already inside a sphere: no increase; the nearest such centre wins. Spheres only
-      // grow, so only those that grew since the preparation can newly hold the point.
-      int32_t inside = pr.inside;
-      double inside_dist = pr.inside_dist;
-      for (const int32_t j : changed_list) {
-        const double dj = (x - cl[j].center).norm();
-        if (dj <= cl[j].radius &&
-            (inside < 0 || dj < inside_dist || (dj == inside_dist && j < inside))) {
-          inside = j;
-          inside_dist = dj;
-        }
-      }
-      if (inside >= 0) {
-        place(p, inside, inside_dist, cl[inside].sov);
-        continue;
-      }
-      // Least increase (ties: nearest centre). A cluster is dismissed when its lower bound
-      // exceeds the best exact increase found; the result does not depend on the order in
-      // which clusters are examined. Unchanged clusters: the prepared bounds are still lower
-      // bounds (tables only gain entries), so the short list is examined in their order and
-      // the rest only if the least other bound does not exceed the best increase. Clusters
-      // that grew meanwhile (their bound can have dropped) are examined afresh.
-      int32_t best = -1;
-      double best_inc = std::numeric_limits<double>::infinity(), best_sov = 0.0, best_dist = 0.0;
-      int64_t looked = 0;
-      auto consider = [&](int32_t ci, double d) {
-        examined[ci] = 1;
-        ++looked;
-        if (increaseBound(cl[ci], d) > best_inc) return;
-        const double v = query(ci, d);
-        const double inc = v - cl[ci].sov;
-        if (inc < best_inc || (inc == best_inc && d < best_dist)) {
-          best = ci;
-          best_inc = inc;
-          best_sov = v;
-          best_dist = d;
-        }
-      };
-      // The short list's unchanged clusters and the grown ones, merged by lower bound.
-      merged.clear();
-      for (int i = 0; i < pr.count; ++i)
-        if (!changed[pr.cluster[i]]) merged.push_back({pr.bound[i], pr.dist[i], pr.cluster[i]});
-      for (const int32_t j : changed_list) {
-        const double dj = (x - cl[j].center).norm();
-        merged.push_back({increaseBound(cl[j], dj), dj, j});
-      }
-      std::sort(merged.begin(), merged.end());
-      for (const auto& [b, d, ci] : merged) {
-        if (b > best_inc) break;
-        consider(ci, d);
-      }
-      for (const int32_t j : changed_list) examined[j] = 1;  // examined or dismissed
-      if (pr.rest_bound <= best_inc) {
-        // The short list did not settle it: every other cluster, in order of lower bound.
-        order.clear();
-        for (int32_t ci = 0; ci < nc; ++ci) {
-          if (examined[ci]) continue;
-          dist[ci] = (x - cl[ci].center).norm();
-          bound[ci] = increaseBound(cl[ci], dist[ci]);
-          if (bound[ci] <= best_inc) order.push_back(ci);
-        }
-        std::sort(order.begin(), order.end(),
-                  [&](int32_t a, int32_t b) { return examinedBefore(bound, dist, a, b); });
-        for (const int32_t ci : order) {
-          if (bound[ci] > best_inc) break;
-          consider(ci, dist[ci]);
-        }
-      }
-      for (const int32_t j : changed_list) examined[j] = 0;
-      for (int i = 0; i < pr.count; ++i) examined[pr.cluster[i]] = 0;
-      for (const int32_t ci : order) examined[ci] = 0;
-      order.clear();
-      stats->culled += nc - looked;
-      const double before_radius = cl[best].radius;
-      place(p, best, best_dist, best_sov);
-      if (cl[best].radius != before_radius && !changed[best]) {
-        changed[best] = 1;
-        changed_list.push_back(best);
-      }
-    }
-    for (const int32_t j : changed_list) changed[j] = 0;
-    changed_list.clear();
   }
+  if (batch_.empty()) {
+    while (scan_ < np_ && labels_[scan_] >= 0) ++scan_;
+    if (scan_ == np_) return false;
+    batch_.push_back(static_cast<int32_t>(scan_));
+  }
+  return true;
+}
+
+// The nearest cluster whose sphere holds x (ties: lower index), or -1. Spheres only grow, so
+// only those that grew since the preparation can newly hold the point.
+int32_t Fill::holder(const Vec3& x, const Prepared& pr, double* dist) const {
+  int32_t inside = pr.inside;
+  double inside_dist = pr.inside_dist;
+  for (const int32_t j : changed_list_) {
+    const double dj = (x - cl_[j].center).norm();
+    if (dj <= cl_[j].radius &&
+        (inside < 0 || dj < inside_dist || (dj == inside_dist && j < inside))) {
+      inside = j;
+      inside_dist = dj;
+    }
+  }
+  *dist = inside_dist;
+  return inside;
+}
+
+// Examines cluster ci at distance d, unless its lower bound exceeds the best exact increase
+// found: one SOV query (or a table entry).
+void Fill::consider(int32_t ci, double d, Candidate* best, int64_t* looked) {
+  examined_[ci] = 1;
+  ++*looked;
+  if (increaseBound(cl_[ci], d) > best->inc) return;
+  const double v = query(ci, d);
+  const double inc = v - cl_[ci].sov;
+  if (inc < best->inc || (inc == best->inc && d < best->dist)) *best = {ci, inc, v, d};
+}
+
+// Least increase (paper Sec. 5: "p is assigned to that cluster whose outside volume increases
+// least. In case of a tie, p is assigned to the cluster whose sphere center is closest"). A
+// cluster is dismissed when its lower bound exceeds the best exact increase found; the result
+// does not depend on the order in which clusters are examined. Unchanged clusters: the
+// prepared bounds are still lower bounds (tables only gain entries), so the short list is
+// examined in their order and the rest only if the least other bound does not exceed the best
+// increase. Clusters that grew meanwhile (their bound can have dropped) are examined afresh.
+Candidate Fill::leastIncrease(const Vec3& x, const Prepared& pr) {
+  Candidate best;
+  int64_t looked = 0;
+  // The short list's unchanged clusters and the grown ones, merged by lower bound.
+  merged_.clear();
+  for (int i = 0; i < pr.count; ++i)
+    if (!changed_[pr.cluster[i]]) merged_.push_back({pr.bound[i], pr.dist[i], pr.cluster[i]});
+  for (const int32_t j : changed_list_) {
+    const double dj = (x - cl_[j].center).norm();
+    merged_.push_back({increaseBound(cl_[j], dj), dj, j});
+  }
+  std::sort(merged_.begin(), merged_.end());
+  for (const auto& [b, d, ci] : merged_) {
+    if (b > best.inc) break;
+    consider(ci, d, &best, &looked);
+  }
+  for (const int32_t j : changed_list_) examined_[j] = 1;  // examined or dismissed
+  if (pr.rest_bound <= best.inc) {
+    // The short list did not settle it: every other cluster, in order of lower bound.
+    order_.clear();
+    for (int32_t ci = 0; ci < nc_; ++ci) {
+      if (examined_[ci]) continue;
+      dist_[ci] = (x - cl_[ci].center).norm();
+      bound_[ci] = increaseBound(cl_[ci], dist_[ci]);
+      if (bound_[ci] <= best.inc) order_.push_back(ci);
+    }
+    std::sort(order_.begin(), order_.end(),
+              [&](int32_t a, int32_t b) { return examinedBefore(bound_, dist_, a, b); });
+    for (const int32_t ci : order_) {
+      if (bound_[ci] > best.inc) break;
+      consider(ci, dist_[ci], &best, &looked);
+    }
+  }
+  for (const int32_t j : changed_list_) examined_[j] = 0;
+  for (int i = 0; i < pr.count; ++i) examined_[pr.cluster[i]] = 0;
+  for (const int32_t ci : order_) examined_[ci] = 0;
+  order_.clear();
+  stats_->culled += nc_ - looked;
+  return best;
+}
+
+// Assigns point p, prepared as `pr`, with the clusters as they are now.
+void Fill::decide(int32_t p, const Prepared& pr) {
+  queued_[p] = 0;
+  const Vec3& x = ps_.points[p];
+  // Already inside a sphere: no increase; the nearest such centre wins.
+  double inside_dist = 0.0;
+  if (const int32_t inside = holder(x, pr, &inside_dist); inside >= 0) {
+    place(p, inside, inside_dist, cl_[inside].sov);
+    return;
+  }
+  const Candidate best = leastIncrease(x, pr);
+  const double before_radius = cl_[best.cluster].radius;
+  place(p, best.cluster, best.dist, best.sov);
+  if (cl_[best.cluster].radius != before_radius && !changed_[best.cluster]) {
+    changed_[best.cluster] = 1;
+    changed_list_.push_back(best.cluster);
+  }
+}
+
+void Fill::run() {
+  if (nc_ >= kParallelClusters) grid_ = std::make_unique<CentreGrid>(cl_);
+  queued_.assign(np_, 0);
+  changed_.assign(nc_, 0);
+  examined_.assign(nc_, 0);
+  dist_.resize(nc_);
+  bound_.resize(nc_);
+  while (nextBatch()) {
+    prepareBatch(cl_, grid_.get(), ps_, labels_, batch_, &prepared_, &serial_);
+    for (size_t k = 0; k < batch_.size(); ++k) decide(batch_[k], prepared_[k]);
+    for (const int32_t j : changed_list_) changed_[j] = 0;
+    changed_list_.clear();
+  }
+}
+
+}  // namespace
+
+void assignPoints(const SolidIndex& index, const PointSet& ps, std::vector<Cluster>* clusters,
+                  std::vector<int32_t>* labels, AssignStats* stats) {
+  labels->assign(ps.points.size(), -1);
+  resetClusters(clusters);
+  Fill fill(index, ps, clusters, labels, stats);
+  fill.seed();
+  fill.run();
 }
 
 }  // namespace sphereset::detail

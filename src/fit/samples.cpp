@@ -11,6 +11,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "util/cell_key.hpp"
 #include "util/sampling.hpp"
 
 namespace sphereset::detail {
@@ -23,9 +24,9 @@ constexpr int kMaxRefinements = 4;
 std::vector<Vec3> interiorGrid(const SolidIndex& index, double h) {
   const Aabb& b = index.bounds();
   const Vec3 ext = b.max - b.min;
-  const int64_t nx = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(ext.x() / h)));
-  const int64_t ny = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(ext.y() / h)));
-  const int64_t nz = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(ext.z() / h)));
+  const int64_t nx = std::max<int64_t>(1, ceilCells(ext.x() / h));
+  const int64_t ny = std::max<int64_t>(1, ceilCells(ext.y() / h));
+  const int64_t nz = std::max<int64_t>(1, ceilCells(ext.z() / h));
   // Centre the grid in the box.
   const Vec3 origin = b.center() - 0.5 * h * Vec3(nx - 1, ny - 1, nz - 1);
   std::vector<std::vector<Vec3>> slabs(nz);
@@ -47,20 +48,10 @@ constexpr int64_t kMaxRings = 8;
 
 }  // namespace
 
-size_t PointGrid::KeyHash::operator()(const std::array<int64_t, 3>& k) const {
-  return static_cast<size_t>(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
-}
-
-std::array<int64_t, 3> PointGrid::key(const Vec3& p) const {
-  return {static_cast<int64_t>(std::floor(p.x() / cell_)),
-          static_cast<int64_t>(std::floor(p.y() / cell_)),
-          static_cast<int64_t>(std::floor(p.z() / cell_))};
-}
-
 PointGrid::PointGrid(const std::vector<Vec3>& points, double cell) : cell_(cell) {
   const int32_t n = static_cast<int32_t>(points.size());
-  std::vector<std::pair<std::array<int64_t, 3>, int32_t>> keyed(n);
-  for (int32_t i = 0; i < n; ++i) keyed[i] = {key(points[i]), i};
+  std::vector<std::pair<CellKey, int32_t>> keyed(n);
+  for (int32_t i = 0; i < n; ++i) keyed[i] = {cellKey(points[i], cell_), i};
   std::sort(keyed.begin(), keyed.end());
   sorted_.resize(n);
   lo_.fill(std::numeric_limits<int64_t>::max());
@@ -87,7 +78,7 @@ int64_t PointGrid::nearest(const std::vector<Vec3>& pts, const Vec3& q) const {
       best = i;
     }
   };
-  const std::array<int64_t, 3> k = key(q);
+  const CellKey k = cellKey(q, cell_);
   for (int64_t ring = 0; ring <= kMaxRings; ++ring) {
     // Cells of Chebyshev distance `ring` from the query's cell, within the occupied range.
     for (int64_t x = std::max(k[0] - ring, lo_[0]); x <= std::min(k[0] + ring, hi_[0]); ++x)
@@ -112,25 +103,19 @@ void buildAdjacency(PointSet* ps, double cell) {
   const int64_t n = static_cast<int64_t>(ps->points.size());
   ps->cell = cell;
   const double reach2 = (1.8 * cell) * (1.8 * cell);
-  std::unordered_map<std::array<int64_t, 3>, std::vector<int32_t>, PointGrid::KeyHash> grid;
-  auto key = [&](const Vec3& p) {
-    return std::array<int64_t, 3>{static_cast<int64_t>(std::floor(p.x() / cell)),
-                                  static_cast<int64_t>(std::floor(p.y() / cell)),
-                                  static_cast<int64_t>(std::floor(p.z() / cell))};
-  };
-  for (int64_t i = 0; i < n; ++i) grid[key(ps->points[i])].push_back(static_cast<int32_t>(i));
+  std::unordered_map<CellKey, std::vector<int32_t>, CellKeyHash> grid;
+  for (int64_t i = 0; i < n; ++i)
+    grid[cellKey(ps->points[i], cell)].push_back(static_cast<int32_t>(i));
   std::vector<std::vector<int32_t>> nb(n);
   tbb::parallel_for(int64_t{0}, n, [&](int64_t i) {
-    const auto k = key(ps->points[i]);
-    for (int dx = -2; dx <= 2; ++dx)
-      for (int dy = -2; dy <= 2; ++dy)
-        for (int dz = -2; dz <= 2; ++dz) {
-          auto it = grid.find({k[0] + dx, k[1] + dy, k[2] + dz});
-          if (it == grid.end()) continue;
-          for (int32_t j : it->second)
-            if (j != i && (ps->points[j] - ps->points[i]).squaredNorm() <= reach2)
-              nb[i].push_back(j);
-        }
+    // Neighbours are closer than 1.8 cells: in the 5 x 5 x 5 cells about the point's.
+    anyCellAround(cellKey(ps->points[i], cell), 2, [&](const CellKey& c) {
+      const auto it = grid.find(c);
+      if (it == grid.end()) return false;
+      for (int32_t j : it->second)
+        if (j != i && (ps->points[j] - ps->points[i]).squaredNorm() <= reach2) nb[i].push_back(j);
+      return false;
+    });
     std::sort(nb[i].begin(), nb[i].end());
   });
   ps->adj_start.assign(n + 1, 0);

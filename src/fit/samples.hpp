@@ -7,10 +7,11 @@
 #include <vector>
 
 #include "sphereset/solid_index.hpp"
+#include "util/cell_key.hpp"
 
 namespace sphereset::detail {
 
-// Points bucketed in a uniform grid of cubic cells, for nearest-point queries.
+// Points bucketed in a uniform grid of cubic cells (cell_key.hpp), for nearest-point queries.
 class PointGrid {
  public:
   PointGrid() = default;
@@ -19,17 +20,11 @@ class PointGrid {
   // among equally near ones, as a scan of all points would find it; -1 if there are none.
   int64_t nearest(const std::vector<Vec3>& points, const Vec3& q) const;
 
-  // Hash of integer cell coordinates.
-  struct KeyHash {
-    size_t operator()(const std::array<int64_t, 3>& k) const;
-  };
-
  private:
-  std::array<int64_t, 3> key(const Vec3& p) const;
   double cell_ = 0.0;
-  std::array<int64_t, 3> lo_{}, hi_{};  // occupied cell range
-  std::vector<int32_t> sorted_;         // point indices grouped by cell
-  std::unordered_map<std::array<int64_t, 3>, std::pair<int32_t, int32_t>, KeyHash> cells_;
+  CellKey lo_{}, hi_{};          // occupied cell range
+  std::vector<int32_t> sorted_;  // point indices grouped by cell
+  std::unordered_map<CellKey, std::pair<int32_t, int32_t>, CellKeyHash> cells_;
 };
 
 struct PointSet {

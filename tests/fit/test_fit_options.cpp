@@ -1,0 +1,84 @@
+// The fit with unusual counts: few points per sphere, few or no interior points.
+#include <gtest/gtest.h>
+
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "test_meshes.hpp"
+
+namespace sphereset {
+namespace {
+
+void expectCovers(const SolidIndex& idx, const std::vector<Sphere>& spheres) {
+  EvalOptions eo;
+  eo.union_samples = 0;
+  eo.proximity_segments = 0;
+  eo.shadow_resolution = 0;
+  const EvalResult e = evaluateSpheres(idx, spheres, eo);
+  EXPECT_TRUE(e.surface_covered);
+  EXPECT_TRUE(e.interior_covered);
+}
+
+// Fits n spheres from about `points` points (half of them interior by default) with each
+// method and expects n covering spheres.
+void expectNSpheres(const SolidIndex& idx, FitOptions o) {
+  for (const FitMethod m : {FitMethod::kKMeans, FitMethod::kVariational}) {
+    o.method = m;
+    const auto r = fitSpheres(idx, o);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    ASSERT_LT(r->interior_points, o.num_spheres);  // the case under test
+    ASSERT_EQ(r->spheres.size(), static_cast<size_t>(o.num_spheres));
+    ASSERT_EQ(r->outside_volume.size(), r->spheres.size());
+    expectCovers(idx, r->spheres);
+  }
+}
+
+TEST(FitOptions, FewerInteriorPointsThanSpheresStillGiveNSpheres) {
+  const SolidIndex idx(test::makeIcosphere(1.0, 2));
+  FitOptions o;
+  o.num_spheres = 40;
+  o.target_points = 50;  // about 25 interior points
+  o.max_iterations = 20;
+  expectNSpheres(idx, o);
+  o.init = FitInit::kRandom;
+  expectNSpheres(idx, o);
+}
+
+TEST(FitOptions, NoInteriorShareSeedsOnTheSurface) {
+  const SolidIndex idx(test::makeBox(Vec3::Zero(), Vec3(2.0, 1.0, 0.5)));
+  FitOptions o;
+  o.num_spheres = 8;
+  o.target_points = 400;
+  o.interior_share = 0.0;  // at most a few interior points
+  o.max_iterations = 20;
+  expectNSpheres(idx, o);
+}
+
+TEST(FitOptions, DecimationWithFewPointsEndsWithNSpheres) {
+  const SolidIndex idx(test::makeIcosphere(1.0, 2));
+  FitOptions o;
+  o.num_spheres = 30;
+  o.target_points = 50;
+  o.decimation = 1.0;  // asks for 30 extra spheres; only the points beyond n can be extra
+  o.max_iterations = 20;
+  const auto r = fitSpheres(idx, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_EQ(r->spheres.size(), 30u);
+  expectCovers(idx, r->spheres);
+}
+
+TEST(FitOptions, MoreSpheresThanPointsIsRefusedWithAdvice) {
+  const SolidIndex idx(test::makeIcosphere(1.0, 2));
+  FitOptions o;
+  o.num_spheres = 80;
+  o.target_points = 50;
+  for (const FitMethod m : {FitMethod::kVariational, FitMethod::kKMeans, FitMethod::kOctree}) {
+    o.method = m;
+    const auto r = fitSpheres(idx, o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, ErrorCode::kInvalidArgument);
+    EXPECT_NE(r.error().message.find("--points"), std::string::npos) << r.error().message;
+  }
+}
+
+}  // namespace
+}  // namespace sphereset
