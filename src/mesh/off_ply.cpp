@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -23,6 +24,13 @@ Expected<std::string> readWholeFile(const std::string& path) {
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) return Error{ErrorCode::kUnreadable, path + ": read error"};
   return text;
+}
+
+// The shortest text that reads back as `x` ("7", "1.5", "1e+30", "nan").
+std::string shortest(double x) {
+  char buf[32];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
+  return ec == std::errc() ? std::string(buf, end) : std::string("?");
 }
 
 bool isSpace(char c) {
@@ -181,6 +189,7 @@ class PlyData {
  public:
   PlyData(const std::string& buf, size_t pos, int format) : buf_(buf), pos_(pos), format_(format) {}
   bool ok() const { return ok_; }
+  size_t remaining() const { return buf_.size() - std::min(pos_, buf_.size()); }
 
   double read(PlyType t) {
     if (!ok_) return 0.0;
@@ -335,6 +344,7 @@ Expected<RawMesh> parsePly(const std::string& buf, const std::string& path) {
   RawMesh out;
   PlyData data(buf, pos, format);
   int64_t nv = -1;
+  std::vector<double> values;
   std::vector<int64_t> list;
   for (const PlyElement& e : elements) {
     const bool is_vertex = e.name == "vertex";
@@ -352,8 +362,15 @@ Expected<RawMesh> parsePly(const std::string& buf, const std::string& path) {
     if (is_vertex) {
       if (ix < 0 || iy < 0 || iz < 0) return bad("vertex element without x, y and z");
       nv = e.count;
-      out.vertices.reserve(static_cast<size_t>(std::min<int64_t>(e.count, int64_t{1} << 26)));
+      // Reserve no more items than the rest of the file can hold: in binary each takes the
+      // bytes of its scalars and list counts, in ascii two characters per property at least.
+      int64_t item_bytes = 0;
+      for (const PlyProperty& pr : e.props)
+        item_bytes += format == 0 ? 2 : plySize(pr.list ? pr.count_type : pr.type);
+      const int64_t fit = static_cast<int64_t>(data.remaining()) / std::max<int64_t>(item_bytes, 1);
+      out.vertices.reserve(static_cast<size_t>(std::min(e.count, fit + 1)));
     }
+    if (e.props.empty()) continue;  // nothing to read, whatever the count
     for (int64_t i = 0; i < e.count; ++i) {
       Vec3 p = Vec3::Zero();
       for (size_t k = 0; k < e.props.size(); ++k) {
@@ -365,17 +382,30 @@ Expected<RawMesh> parsePly(const std::string& buf, const std::string& path) {
           if (static_cast<int>(k) == iz) p.z() = v;
           continue;
         }
+        // A count is a whole number, and every item takes at least one byte of what is left.
         const double cnt = data.read(pr.count_type);
-        if (!data.ok() || cnt < 0 || cnt > 1e7)
+        if (!data.ok() || !(cnt >= 0.0 && cnt <= 1e7) || cnt != std::floor(cnt) ||
+            cnt > static_cast<double>(data.remaining()))
           return bad("malformed list in element '" + e.name + "'");
-        list.resize(static_cast<size_t>(cnt));
-        for (auto& x : list) x = static_cast<int64_t>(data.read(pr.type));
+        values.resize(static_cast<size_t>(cnt));
+        for (double& x : values) x = data.read(pr.type);
         if (static_cast<int>(k) != iidx || !(is_face || is_strip)) continue;
-        for (int64_t x : list)
-          if (x >= nv || (x < 0 && !(is_strip && x == -1)))
+        // Indices may be stored as floating-point values: check them as such before the
+        // conversion to an integer (NaN or out-of-range values would make it undefined).
+        list.resize(values.size());
+        for (size_t j = 0; j < values.size(); ++j) {
+          const double x = values[j];
+          auto invalid = [&](const std::string& what) {
             return Error{ErrorCode::kInvalidData,
-                         path + ": " + e.name + " " + std::to_string(i) + " references vertex " +
-                             std::to_string(x) + " of " + std::to_string(std::max<int64_t>(nv, 0))};
+                         path + ": " + e.name + " " + std::to_string(i) + what};
+          };
+          if (!std::isfinite(x) || x != std::floor(x))
+            return invalid(": vertex index " + shortest(x) + " is not an integer");
+          if (x >= static_cast<double>(nv) || (x < 0.0 && !(is_strip && x == -1.0)))
+            return invalid(" references vertex " + shortest(x) + " of " +
+                           std::to_string(std::max<int64_t>(nv, 0)));
+          list[j] = static_cast<int64_t>(x);
+        }
         if (is_face) {
           for (size_t j = 1; j + 1 < list.size(); ++j)
             out.triangles.push_back({static_cast<int32_t>(list[0]), static_cast<int32_t>(list[j]),
