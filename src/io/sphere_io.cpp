@@ -15,6 +15,7 @@
 #include <iomanip>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "sphereset/sphere.hpp"
@@ -53,6 +54,29 @@ Expected<nlohmann::json> parseJson(std::istream& in, const std::string& path) {
     return Error{ErrorCode::kUnreadable, path + ": invalid JSON (" + e.what() + ")"};
   }
   return j;
+}
+
+// A JSON number that is an integer in [lo, hi], written as an integer or as an integral
+// float ("2.0"); anything else is nullopt. Converting first would be undefined behaviour for
+// floats out of range and would wrap or truncate the others into valid-looking values.
+std::optional<int64_t> jsonInteger(const nlohmann::json& v, int64_t lo, int64_t hi) {
+  if (v.is_number_unsigned()) {
+    const uint64_t u = v.get<uint64_t>();
+    if (u > static_cast<uint64_t>(hi)) return std::nullopt;
+    return static_cast<int64_t>(u);
+  }
+  if (v.is_number_integer()) {
+    const int64_t i = v.get<int64_t>();
+    if (i < lo || i > hi) return std::nullopt;
+    return i;
+  }
+  if (v.is_number_float()) {
+    const double d = v.get<double>();
+    if (!(d >= static_cast<double>(lo) && d <= static_cast<double>(hi)) || d != std::floor(d))
+      return std::nullopt;
+    return static_cast<int64_t>(d);
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -354,7 +378,11 @@ Expected<SphereTree> readSphereTree(const std::string& path) {
     t.depth = levels - 1;
     const int64_t slots = SphereTree::slotCount(branch, t.depth);
     if (slots < 0) return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
-    t.nodes.reserve(slots);
+    // Each slot takes a line of at least 8 bytes ("0 0 0 0\n"): reserve no more than that.
+    std::error_code ec;
+    const auto bytes = std::filesystem::file_size(path, ec);
+    t.nodes.reserve(static_cast<size_t>(
+        std::min<int64_t>(slots, ec ? int64_t{1} << 16 : static_cast<int64_t>(bytes / 8) + 1)));
     int lineno = 1;
     while (static_cast<int64_t>(t.nodes.size()) < slots) {
       if (!std::getline(in, line))
@@ -380,24 +408,34 @@ Expected<SphereTree> readSphereTree(const std::string& path) {
     nlohmann::json& j = *parsed;
     if (j.is_object() && j.contains("nodes") && j.contains("branching") && j.contains("depth")) {
       try {
-        t.branching = j["branching"].get<int>();
-        t.depth = j["depth"].get<int>();
-        if (t.branching < 1 || t.depth < 0 || t.depth > 26)
-          return Error{ErrorCode::kInvalidData, path + ": bad branching or depth"};
+        const auto branching = jsonInteger(j["branching"], 1, std::numeric_limits<int>::max());
+        if (!branching)
+          return Error{ErrorCode::kInvalidData,
+                       path + ": \"branching\" must be an integer from 1 to " +
+                           std::to_string(std::numeric_limits<int>::max())};
+        const auto depth = jsonInteger(j["depth"], 0, 26);
+        if (!depth)
+          return Error{ErrorCode::kInvalidData,
+                       path + ": \"depth\" must be an integer from 0 to 26"};
+        t.branching = static_cast<int>(*branching);
+        t.depth = static_cast<int>(*depth);
         const int64_t slots = SphereTree::slotCount(t.branching, t.depth);
         if (slots < 0) return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
         t.nodes.assign(slots, Sphere{Vec3::Zero(), -1.0});
         for (const auto& n : j["nodes"]) {
-          const int64_t id = n.at("id").get<int64_t>();
-          if (id < 0 || id >= slots)
+          const auto id = jsonInteger(n.at("id"), 0, slots - 1);
+          if (!id)
             return Error{ErrorCode::kInvalidData,
-                         path + ": node id " + std::to_string(id) + " outside the layout"};
+                         path + ": node \"id\" " +
+                             (n.at("id").is_number() ? n.at("id").dump() + " " : std::string()) +
+                             "is not a slot of the layout (an integer from 0 to " +
+                             std::to_string(slots - 1) + ")"};
           Sphere s;
           for (int k = 0; k < 3; ++k) s.center[k] = n.at("center").at(k).get<double>();
           s.radius = n.at("radius").get<double>();
-          Status st = checkSphere(path + ": node " + std::to_string(id), s);
+          Status st = checkSphere(path + ": node " + std::to_string(*id), s);
           if (!st) return st.error();
-          t.nodes[id] = s;
+          t.nodes[*id] = s;
         }
       } catch (const nlohmann::json::exception& e) {
         return Error{ErrorCode::kInvalidData, path + ": malformed sphere tree (" + e.what() + ")"};
