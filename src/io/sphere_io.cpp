@@ -18,6 +18,7 @@
 #include <optional>
 #include <sstream>
 
+#include "io/sphere_parse.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_tree.hpp"
 #include "sphereset/tree.hpp"
@@ -183,14 +184,43 @@ Status writeSpheres(const std::string& path, const std::vector<Sphere>& spheres,
   return writeFileAtomically(path, formatSpheres(*format, spheres, meta));
 }
 
+namespace {
+
+// A whole file as a string.
+Expected<std::string> readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return Error{ErrorCode::kUnreadable, path + ": read error"};
+  return text;
+}
+
+}  // namespace
+
 Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
   auto format = sphereFormatFromPath(path);
   if (!format) return format.error();
-  std::ifstream in(path);
-  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+  auto text = readText(path);
+  if (!text) return text.error();
+  return detail::parseSpheres(*format, *text, path);
+}
+
+Expected<SphereTree> readSphereTree(const std::string& path) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  auto text = readText(path);
+  if (!text) return text.error();
+  return detail::parseSphereTree(*format, *text, path);
+}
+
+namespace detail {
+
+Expected<std::vector<Sphere>> parseSpheres(SphereFormat format, const std::string& text,
+                                           const std::string& path) {
+  std::istringstream in(text);
   std::vector<Sphere> out;
 
-  if (*format == SphereFormat::kJson) {
+  if (format == SphereFormat::kJson) {
     auto parsed = parseJson(in, path);
     if (!parsed) return parsed.error();
     nlohmann::json& j = *parsed;
@@ -225,7 +255,7 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
 
   std::string line;
   int lineno = 0;
-  if (*format == SphereFormat::kYaml) {
+  if (format == SphereFormat::kYaml) {
     // The subset this project writes: "center": [x, y, z] then "radius": r.
     Sphere s;
     bool have_center = false;
@@ -258,9 +288,9 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
     return out;
   }
 
-  if (*format == SphereFormat::kSph) {
+  if (format == SphereFormat::kSph) {
     // The deepest level of the tree that has spheres.
-    auto tree = readSphereTree(path);
+    auto tree = parseSphereTree(format, text, path);
     if (!tree) return tree.error();
     for (int l = tree->depth; l >= 0; --l) {
       std::vector<Sphere> level = tree->level(l);
@@ -287,6 +317,8 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
   }
   return out;
 }
+
+}  // namespace detail
 
 std::string formatSphereTree(SphereFormat format, const SphereTree& tree,
                              const SphereFileMeta& meta) {
@@ -362,13 +394,13 @@ SphereTree flatTree(const std::vector<Sphere>& spheres) {
 
 }  // namespace
 
-Expected<SphereTree> readSphereTree(const std::string& path) {
-  auto format = sphereFormatFromPath(path);
-  if (!format) return format.error();
-  std::ifstream in(path);
-  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+namespace detail {
+
+Expected<SphereTree> parseSphereTree(SphereFormat format, const std::string& text,
+                                     const std::string& path) {
+  std::istringstream in(text);
   SphereTree t;
-  if (*format == SphereFormat::kSph) {
+  if (format == SphereFormat::kSph) {
     std::string line;
     int levels = 0, branch = 0;
     if (!std::getline(in, line) || !(std::istringstream(line) >> levels >> branch) || levels < 1 ||
@@ -379,10 +411,8 @@ Expected<SphereTree> readSphereTree(const std::string& path) {
     const int64_t slots = SphereTree::slotCount(branch, t.depth);
     if (slots < 0) return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
     // Each slot takes a line of at least 8 bytes ("0 0 0 0\n"): reserve no more than that.
-    std::error_code ec;
-    const auto bytes = std::filesystem::file_size(path, ec);
-    t.nodes.reserve(static_cast<size_t>(
-        std::min<int64_t>(slots, ec ? int64_t{1} << 16 : static_cast<int64_t>(bytes / 8) + 1)));
+    t.nodes.reserve(
+        static_cast<size_t>(std::min<int64_t>(slots, static_cast<int64_t>(text.size() / 8) + 1)));
     int lineno = 1;
     while (static_cast<int64_t>(t.nodes.size()) < slots) {
       if (!std::getline(in, line))
@@ -402,7 +432,7 @@ Expected<SphereTree> readSphereTree(const std::string& path) {
     }
     return t;
   }
-  if (*format == SphereFormat::kJson) {
+  if (format == SphereFormat::kJson) {
     auto parsed = parseJson(in, path);
     if (!parsed) return parsed.error();
     nlohmann::json& j = *parsed;
@@ -443,10 +473,11 @@ Expected<SphereTree> readSphereTree(const std::string& path) {
       return t;
     }
   }
-  auto flat = readSpheres(path);
+  auto flat = parseSpheres(format, text, path);
   if (!flat) return flat.error();
   if (flat->empty()) return Error{ErrorCode::kInvalidData, path + ": no spheres"};
   return flatTree(*flat);
 }
 
+}  // namespace detail
 }  // namespace sphereset
