@@ -10,6 +10,7 @@ packages=(
   libtbb-dev           # parallel loops
   libcli11-dev         # command-line parsing
   nlohmann-json3-dev   # JSON input and output
+  libyaml-cpp-dev      # YAML sphere files (cuRobo)
   libnlopt-cxx-dev     # derivative-free and gradient optimisers
   libgtest-dev         # unit tests
   libbenchmark-dev     # micro-benchmarks

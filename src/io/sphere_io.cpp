@@ -18,7 +18,7 @@
 #include <optional>
 #include <sstream>
 
-#include "io/sphere_parse.hpp"
+#include "io/sphere_formats.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_tree.hpp"
 #include "sphereset/tree.hpp"
@@ -40,11 +40,7 @@ Status checkSphere(const std::string& where, const Sphere& s) {
   return {};
 }
 
-std::string num(double x) {
-  std::ostringstream os;
-  os << std::setprecision(17) << x;
-  return os.str();
-}
+std::string num(double x) { return detail::formatNumber(x); }
 
 // The JSON document read from `in` (the file `path`).
 Expected<nlohmann::json> parseJson(std::istream& in, const std::string& path) {
@@ -81,6 +77,12 @@ std::optional<int64_t> jsonInteger(const nlohmann::json& v, int64_t lo, int64_t 
 }
 
 }  // namespace
+
+std::string detail::formatNumber(double x) {
+  std::ostringstream os;
+  os << std::setprecision(17) << x;
+  return os.str();
+}
 
 Expected<SphereFormat> sphereFormatFromPath(const std::string& path) {
   const std::string ext = extensionOf(path);
@@ -128,7 +130,7 @@ std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& sphere
     }
     case SphereFormat::kYaml:
       os << "# " << meta.generator << ": " << spheres.size() << " spheres\n";
-      os << "collision_spheres:\n  " << meta.name << ":\n";
+      os << "collision_spheres:\n  " << detail::yamlKey(meta.name) << ":\n";
       for (const Sphere& s : spheres)
         os << "    - \"center\": [" << num(s.center.x()) << ", " << num(s.center.y()) << ", "
            << num(s.center.z()) << "]\n      \"radius\": " << num(s.radius) << '\n';
@@ -205,6 +207,42 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
   return detail::parseSpheres(*format, *text, path);
 }
 
+Expected<std::vector<LinkSpheres>> readLinkSpheres(const std::string& path) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  auto text = readText(path);
+  if (!text) return text.error();
+  return detail::parseLinkSpheres(*format, *text, path);
+}
+
+std::string formatLinkSpheres(const std::vector<LinkSpheres>& links, const SphereFileMeta& meta) {
+  return detail::formatYamlLinks(links, meta);
+}
+
+Status writeLinkSpheres(const std::string& path, const std::vector<LinkSpheres>& links,
+                        const SphereFileMeta& meta) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  if (*format != SphereFormat::kYaml)
+    return Error{ErrorCode::kInvalidArgument,
+                 path + ": the spheres of several links are written as YAML (.yaml or .yml)"};
+  for (size_t l = 0; l < links.size(); ++l) {
+    if (links[l].link.empty())
+      return Error{ErrorCode::kInvalidArgument,
+                   path + ": link " + std::to_string(l) + " has no name"};
+    for (size_t k = 0; k < l; ++k)
+      if (links[k].link == links[l].link)
+        return Error{ErrorCode::kInvalidArgument,
+                     path + ": link '" + links[l].link + "' appears twice"};
+    for (size_t i = 0; i < links[l].spheres.size(); ++i) {
+      Status st = checkSphere(path + ": link '" + links[l].link + "' sphere " + std::to_string(i),
+                              links[l].spheres[i]);
+      if (!st) return st;
+    }
+  }
+  return writeFileAtomically(path, formatLinkSpheres(links, meta));
+}
+
 Expected<SphereTree> readSphereTree(const std::string& path) {
   auto format = sphereFormatFromPath(path);
   if (!format) return format.error();
@@ -256,36 +294,17 @@ Expected<std::vector<Sphere>> parseSpheres(SphereFormat format, const std::strin
   std::string line;
   int lineno = 0;
   if (format == SphereFormat::kYaml) {
-    // The subset this project writes: "center": [x, y, z] then "radius": r.
-    Sphere s;
-    bool have_center = false;
-    while (std::getline(in, line)) {
-      ++lineno;
-      const std::string where = path + ":" + std::to_string(lineno);
-      const auto c = line.find("center");
-      const auto r = line.find("radius");
-      if (c != std::string::npos) {
-        const auto lb = line.find('['), rb = line.find(']');
-        if (lb == std::string::npos || rb == std::string::npos)
-          return Error{ErrorCode::kInvalidData, where + ": malformed center"};
-        std::string inner = line.substr(lb + 1, rb - lb - 1);
-        std::replace(inner.begin(), inner.end(), ',', ' ');
-        std::istringstream is(inner);
-        if (!(is >> s.center.x() >> s.center.y() >> s.center.z()))
-          return Error{ErrorCode::kInvalidData, where + ": malformed center"};
-        have_center = true;
-      } else if (r != std::string::npos) {
-        const auto colon = line.find(':', r);
-        std::istringstream is(line.substr(colon + 1));
-        if (!have_center || !(is >> s.radius))
-          return Error{ErrorCode::kInvalidData, where + ": malformed radius"};
-        Status st = checkSphere(where, s);
-        if (!st) return st.error();
-        out.push_back(s);
-        have_center = false;
-      }
-    }
-    return out;
+    // One link: a file with several is refused rather than merged into one set.
+    auto links = parseYamlLinks(text, path);
+    if (!links) return links.error();
+    if (links->size() == 1) return std::move(links->front().spheres);
+    if (links->empty())
+      return Error{ErrorCode::kInvalidData, path + ": collision_spheres is empty"};
+    std::string names;
+    for (size_t i = 0; i < links->size() && i < 8; ++i) names += (i ? ", " : "") + (*links)[i].link;
+    if (links->size() > 8) names += ", ...";
+    return Error{ErrorCode::kInvalidData, path + ": " + std::to_string(links->size()) + " links (" +
+                                              names + "); a sphere set is the spheres of one link"};
   }
 
   if (format == SphereFormat::kSph) {
@@ -315,6 +334,18 @@ Expected<std::vector<Sphere>> parseSpheres(SphereFormat format, const std::strin
     if (!st) return st.error();
     out.push_back(s);
   }
+  return out;
+}
+
+Expected<std::vector<LinkSpheres>> parseLinkSpheres(SphereFormat format, const std::string& text,
+                                                    const std::string& path) {
+  if (format == SphereFormat::kYaml) return parseYamlLinks(text, path);
+  // Other formats hold one set: one link, named after the file.
+  auto spheres = parseSpheres(format, text, path);
+  if (!spheres) return spheres.error();
+  std::vector<LinkSpheres> out(1);
+  out[0].link = std::filesystem::path(path).stem().string();
+  out[0].spheres = std::move(spheres).value();
   return out;
 }
 
