@@ -15,6 +15,8 @@ packages=(
   libgtest-dev         # unit tests
   libbenchmark-dev     # micro-benchmarks
   libpng-dev           # PNG pictures
+  clang                # fuzzing (fuzz/run.sh): libFuzzer needs clang
+  libclang-rt-14-dev   # libFuzzer and the sanitizer runtimes for clang 14
   python3              # benchmark scripts (CSV tables)
   python3-matplotlib   # benchmark plots (PNG)
 )
