@@ -25,6 +25,9 @@ std::string formatYamlLinks(const std::vector<LinkSpheres>& links, const SphereF
 // A link name as a YAML mapping key: as it is when it reads back as the same string, else
 // double-quoted with escapes.
 std::string yamlKey(const std::string& name);
+// The same followed by ':', in the explicit form "? key" then ':' on the next line (indented by
+// `indent`) when the key is too long for an implicit one.
+std::string yamlMappingKey(const std::string& name, int indent);
 
 // `x` with 17 significant digits, so that it reads back exactly: how every sphere writer
 // prints numbers.

@@ -130,7 +130,7 @@ std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& sphere
     }
     case SphereFormat::kYaml:
       os << "# " << meta.generator << ": " << spheres.size() << " spheres\n";
-      os << "collision_spheres:\n  " << detail::yamlKey(meta.name) << ":\n";
+      os << "collision_spheres:\n  " << detail::yamlMappingKey(meta.name, 2) << "\n";
       for (const Sphere& s : spheres)
         os << "    - \"center\": [" << num(s.center.x()) << ", " << num(s.center.y()) << ", "
            << num(s.center.z()) << "]\n      \"radius\": " << num(s.radius) << '\n';

@@ -205,6 +205,13 @@ std::string yamlKey(const std::string& name) {
   return out + "\"";
 }
 
+std::string yamlMappingKey(const std::string& name, int indent) {
+  // YAML limits implicit keys to 1024 characters; longer ones take the explicit "? key" form.
+  const std::string key = yamlKey(name);
+  if (key.size() <= 1000) return key + ":";
+  return "? " + key + "\n" + std::string(static_cast<size_t>(indent), ' ') + ":";
+}
+
 std::string formatYamlLinks(const std::vector<LinkSpheres>& links, const SphereFileMeta& meta) {
   size_t total = 0;
   for (const LinkSpheres& l : links) total += l.spheres.size();
@@ -212,7 +219,7 @@ std::string formatYamlLinks(const std::vector<LinkSpheres>& links, const SphereF
   os << "# " << meta.generator << ": " << total << " spheres in " << links.size() << " links\n";
   os << "collision_spheres:" << (links.empty() ? " {}\n" : "\n");
   for (const LinkSpheres& l : links) {
-    os << "  " << yamlKey(l.link) << ':' << (l.spheres.empty() ? " []\n" : "\n");
+    os << "  " << yamlMappingKey(l.link, 2) << (l.spheres.empty() ? " []\n" : "\n");
     for (const Sphere& s : l.spheres)
       os << "    - \"center\": [" << formatNumber(s.center.x()) << ", "
          << formatNumber(s.center.y()) << ", " << formatNumber(s.center.z())
