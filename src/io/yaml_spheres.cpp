@@ -3,9 +3,11 @@
 // yaml-cpp reports errors by throwing; nothing thrown leaves this file.
 #include <yaml-cpp/yaml.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <string>
 #include <unordered_set>
 #include <vector>
 
