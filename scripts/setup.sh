@@ -10,10 +10,13 @@ packages=(
   libtbb-dev           # parallel loops
   libcli11-dev         # command-line parsing
   nlohmann-json3-dev   # JSON input and output
+  libyaml-cpp-dev      # YAML sphere files (cuRobo)
   libnlopt-cxx-dev     # derivative-free and gradient optimisers
   libgtest-dev         # unit tests
   libbenchmark-dev     # micro-benchmarks
   libpng-dev           # PNG pictures
+  clang                # fuzzing (fuzz/run.sh): libFuzzer needs clang
+  libclang-rt-14-dev   # libFuzzer and the sanitizer runtimes for clang 14
   python3              # benchmark scripts (CSV tables)
   python3-matplotlib   # benchmark plots (PNG)
 )

@@ -15,7 +15,7 @@ enum class SphereFormat {
   kText,  // "x y z r" per line, '#' starts a comment
   kJson,  // {"spheres": [{"center": [x, y, z], "radius": r}, ...], ...metadata}
   kSph,   // Bradshaw's sphere-tree layout; a flat set is written as root + one level
-  kYaml,  // cuRobo-style "collision_spheres:" list under a link name
+  kYaml,  // cuRobo's "collision_spheres:" mapping of link names to lists of spheres
 };
 
 // Format from a file name's extension (.txt/.xyzr, .json, .sph, .yaml/.yml); kInvalidArgument
@@ -29,9 +29,26 @@ struct SphereFileMeta {
 };
 
 // Reads a sphere set in the format given by the extension. For .sph files the deepest level
-// with spheres of positive radius is returned. Errors: kUnreadable, kInvalidData (NaN, negative
-// radius, malformed line; the message names the line).
+// with spheres of positive radius is returned. A YAML file must hold one link (see
+// readLinkSpheres for several). Errors: kUnreadable, kInvalidData (NaN, negative radius,
+// malformed line, several links; the message names the line or the links).
 Expected<std::vector<Sphere>> readSpheres(const std::string& path);
+
+// The spheres of one link of a robot.
+struct LinkSpheres {
+  std::string link;
+  std::vector<Sphere> spheres;
+};
+
+// Reads every link of a YAML file in file order, as cuRobo writes them: a "collision_spheres:"
+// mapping of link names to lists of spheres {center: [x, y, z], radius: r} (flow or block
+// style) at the top level, or nested as robot_cfg: kinematics: collision_spheres:. A link
+// with an empty entry has no spheres. Any other format holds one set, returned as one link
+// named after the file's stem. Errors: kUnreadable (not YAML), kInvalidData (no
+// collision_spheres, a link that is not a list, a sphere without center or radius, a value
+// that is not a number, NaN, negative radius; the message names the file, line, link and
+// sphere index).
+Expected<std::vector<LinkSpheres>> readLinkSpheres(const std::string& path);
 
 // Writes atomically: to a temporary file beside the target, then renamed over it, so a failed
 // write never leaves a partial file.
@@ -41,6 +58,14 @@ Status writeSpheres(const std::string& path, const std::vector<Sphere>& spheres,
 // The same, into a string (tests and embedding).
 std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& spheres,
                           const SphereFileMeta& meta = {});
+
+// The spheres of several links in one YAML file (.yaml/.yml, else kInvalidArgument), in the
+// layout writeSpheres uses for one link; a link without spheres is written as "[]". Link names
+// must be non-empty and distinct. Written atomically.
+Status writeLinkSpheres(const std::string& path, const std::vector<LinkSpheres>& links,
+                        const SphereFileMeta& meta = {});
+std::string formatLinkSpheres(const std::vector<LinkSpheres>& links,
+                              const SphereFileMeta& meta = {});
 
 // Writes a whole file atomically (temporary file + rename). Used by every writer.
 Status writeFileAtomically(const std::string& path, const std::string& contents);

@@ -15,8 +15,10 @@
 #include <iomanip>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
+#include "io/sphere_formats.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_tree.hpp"
 #include "sphereset/tree.hpp"
@@ -38,11 +40,7 @@ Status checkSphere(const std::string& where, const Sphere& s) {
   return {};
 }
 
-std::string num(double x) {
-  std::ostringstream os;
-  os << std::setprecision(17) << x;
-  return os.str();
-}
+std::string num(double x) { return detail::formatNumber(x); }
 
 // The JSON document read from `in` (the file `path`).
 Expected<nlohmann::json> parseJson(std::istream& in, const std::string& path) {
@@ -55,7 +53,36 @@ Expected<nlohmann::json> parseJson(std::istream& in, const std::string& path) {
   return j;
 }
 
+// A JSON number that is an integer in [lo, hi], written as an integer or as an integral
+// float ("2.0"); anything else is nullopt. Converting first would be undefined behaviour for
+// floats out of range and would wrap or truncate the others into valid-looking values.
+std::optional<int64_t> jsonInteger(const nlohmann::json& v, int64_t lo, int64_t hi) {
+  if (v.is_number_unsigned()) {
+    const uint64_t u = v.get<uint64_t>();
+    if (u > static_cast<uint64_t>(hi)) return std::nullopt;
+    return static_cast<int64_t>(u);
+  }
+  if (v.is_number_integer()) {
+    const int64_t i = v.get<int64_t>();
+    if (i < lo || i > hi) return std::nullopt;
+    return i;
+  }
+  if (v.is_number_float()) {
+    const double d = v.get<double>();
+    if (!(d >= static_cast<double>(lo) && d <= static_cast<double>(hi)) || d != std::floor(d))
+      return std::nullopt;
+    return static_cast<int64_t>(d);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+std::string detail::formatNumber(double x) {
+  std::ostringstream os;
+  os << std::setprecision(17) << x;
+  return os.str();
+}
 
 Expected<SphereFormat> sphereFormatFromPath(const std::string& path) {
   const std::string ext = extensionOf(path);
@@ -103,7 +130,7 @@ std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& sphere
     }
     case SphereFormat::kYaml:
       os << "# " << meta.generator << ": " << spheres.size() << " spheres\n";
-      os << "collision_spheres:\n  " << meta.name << ":\n";
+      os << "collision_spheres:\n  " << detail::yamlMappingKey(meta.name, 2) << "\n";
       for (const Sphere& s : spheres)
         os << "    - \"center\": [" << num(s.center.x()) << ", " << num(s.center.y()) << ", "
            << num(s.center.z()) << "]\n      \"radius\": " << num(s.radius) << '\n';
@@ -159,14 +186,79 @@ Status writeSpheres(const std::string& path, const std::vector<Sphere>& spheres,
   return writeFileAtomically(path, formatSpheres(*format, spheres, meta));
 }
 
+namespace {
+
+// A whole file as a string.
+Expected<std::string> readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return Error{ErrorCode::kUnreadable, path + ": read error"};
+  return text;
+}
+
+}  // namespace
+
 Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
   auto format = sphereFormatFromPath(path);
   if (!format) return format.error();
-  std::ifstream in(path);
-  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+  auto text = readText(path);
+  if (!text) return text.error();
+  return detail::parseSpheres(*format, *text, path);
+}
+
+Expected<std::vector<LinkSpheres>> readLinkSpheres(const std::string& path) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  auto text = readText(path);
+  if (!text) return text.error();
+  return detail::parseLinkSpheres(*format, *text, path);
+}
+
+std::string formatLinkSpheres(const std::vector<LinkSpheres>& links, const SphereFileMeta& meta) {
+  return detail::formatYamlLinks(links, meta);
+}
+
+Status writeLinkSpheres(const std::string& path, const std::vector<LinkSpheres>& links,
+                        const SphereFileMeta& meta) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  if (*format != SphereFormat::kYaml)
+    return Error{ErrorCode::kInvalidArgument,
+                 path + ": the spheres of several links are written as YAML (.yaml or .yml)"};
+  for (size_t l = 0; l < links.size(); ++l) {
+    if (links[l].link.empty())
+      return Error{ErrorCode::kInvalidArgument,
+                   path + ": link " + std::to_string(l) + " has no name"};
+    for (size_t k = 0; k < l; ++k)
+      if (links[k].link == links[l].link)
+        return Error{ErrorCode::kInvalidArgument,
+                     path + ": link '" + links[l].link + "' appears twice"};
+    for (size_t i = 0; i < links[l].spheres.size(); ++i) {
+      Status st = checkSphere(path + ": link '" + links[l].link + "' sphere " + std::to_string(i),
+                              links[l].spheres[i]);
+      if (!st) return st;
+    }
+  }
+  return writeFileAtomically(path, formatLinkSpheres(links, meta));
+}
+
+Expected<SphereTree> readSphereTree(const std::string& path) {
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  auto text = readText(path);
+  if (!text) return text.error();
+  return detail::parseSphereTree(*format, *text, path);
+}
+
+namespace detail {
+
+Expected<std::vector<Sphere>> parseSpheres(SphereFormat format, const std::string& text,
+                                           const std::string& path) {
+  std::istringstream in(text);
   std::vector<Sphere> out;
 
-  if (*format == SphereFormat::kJson) {
+  if (format == SphereFormat::kJson) {
     auto parsed = parseJson(in, path);
     if (!parsed) return parsed.error();
     nlohmann::json& j = *parsed;
@@ -201,42 +293,23 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
 
   std::string line;
   int lineno = 0;
-  if (*format == SphereFormat::kYaml) {
-    // The subset this project writes: "center": [x, y, z] then "radius": r.
-    Sphere s;
-    bool have_center = false;
-    while (std::getline(in, line)) {
-      ++lineno;
-      const std::string where = path + ":" + std::to_string(lineno);
-      const auto c = line.find("center");
-      const auto r = line.find("radius");
-      if (c != std::string::npos) {
-        const auto lb = line.find('['), rb = line.find(']');
-        if (lb == std::string::npos || rb == std::string::npos)
-          return Error{ErrorCode::kInvalidData, where + ": malformed center"};
-        std::string inner = line.substr(lb + 1, rb - lb - 1);
-        std::replace(inner.begin(), inner.end(), ',', ' ');
-        std::istringstream is(inner);
-        if (!(is >> s.center.x() >> s.center.y() >> s.center.z()))
-          return Error{ErrorCode::kInvalidData, where + ": malformed center"};
-        have_center = true;
-      } else if (r != std::string::npos) {
-        const auto colon = line.find(':', r);
-        std::istringstream is(line.substr(colon + 1));
-        if (!have_center || !(is >> s.radius))
-          return Error{ErrorCode::kInvalidData, where + ": malformed radius"};
-        Status st = checkSphere(where, s);
-        if (!st) return st.error();
-        out.push_back(s);
-        have_center = false;
-      }
-    }
-    return out;
+  if (format == SphereFormat::kYaml) {
+    // One link: a file with several is refused rather than merged into one set.
+    auto links = parseYamlLinks(text, path);
+    if (!links) return links.error();
+    if (links->size() == 1) return std::move(links->front().spheres);
+    if (links->empty())
+      return Error{ErrorCode::kInvalidData, path + ": collision_spheres is empty"};
+    std::string names;
+    for (size_t i = 0; i < links->size() && i < 8; ++i) names += (i ? ", " : "") + (*links)[i].link;
+    if (links->size() > 8) names += ", ...";
+    return Error{ErrorCode::kInvalidData, path + ": " + std::to_string(links->size()) + " links (" +
+                                              names + "); a sphere set is the spheres of one link"};
   }
 
-  if (*format == SphereFormat::kSph) {
+  if (format == SphereFormat::kSph) {
     // The deepest level of the tree that has spheres.
-    auto tree = readSphereTree(path);
+    auto tree = parseSphereTree(format, text, path);
     if (!tree) return tree.error();
     for (int l = tree->depth; l >= 0; --l) {
       std::vector<Sphere> level = tree->level(l);
@@ -263,6 +336,20 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
   }
   return out;
 }
+
+Expected<std::vector<LinkSpheres>> parseLinkSpheres(SphereFormat format, const std::string& text,
+                                                    const std::string& path) {
+  if (format == SphereFormat::kYaml) return parseYamlLinks(text, path);
+  // Other formats hold one set: one link, named after the file.
+  auto spheres = parseSpheres(format, text, path);
+  if (!spheres) return spheres.error();
+  std::vector<LinkSpheres> out(1);
+  out[0].link = std::filesystem::path(path).stem().string();
+  out[0].spheres = std::move(spheres).value();
+  return out;
+}
+
+}  // namespace detail
 
 std::string formatSphereTree(SphereFormat format, const SphereTree& tree,
                              const SphereFileMeta& meta) {
@@ -338,13 +425,13 @@ SphereTree flatTree(const std::vector<Sphere>& spheres) {
 
 }  // namespace
 
-Expected<SphereTree> readSphereTree(const std::string& path) {
-  auto format = sphereFormatFromPath(path);
-  if (!format) return format.error();
-  std::ifstream in(path);
-  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
+namespace detail {
+
+Expected<SphereTree> parseSphereTree(SphereFormat format, const std::string& text,
+                                     const std::string& path) {
+  std::istringstream in(text);
   SphereTree t;
-  if (*format == SphereFormat::kSph) {
+  if (format == SphereFormat::kSph) {
     std::string line;
     int levels = 0, branch = 0;
     if (!std::getline(in, line) || !(std::istringstream(line) >> levels >> branch) || levels < 1 ||
@@ -354,7 +441,9 @@ Expected<SphereTree> readSphereTree(const std::string& path) {
     t.depth = levels - 1;
     const int64_t slots = SphereTree::slotCount(branch, t.depth);
     if (slots < 0) return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
-    t.nodes.reserve(slots);
+    // Each slot takes a line of at least 8 bytes ("0 0 0 0\n"): reserve no more than that.
+    t.nodes.reserve(
+        static_cast<size_t>(std::min<int64_t>(slots, static_cast<int64_t>(text.size() / 8) + 1)));
     int lineno = 1;
     while (static_cast<int64_t>(t.nodes.size()) < slots) {
       if (!std::getline(in, line))
@@ -374,30 +463,40 @@ Expected<SphereTree> readSphereTree(const std::string& path) {
     }
     return t;
   }
-  if (*format == SphereFormat::kJson) {
+  if (format == SphereFormat::kJson) {
     auto parsed = parseJson(in, path);
     if (!parsed) return parsed.error();
     nlohmann::json& j = *parsed;
     if (j.is_object() && j.contains("nodes") && j.contains("branching") && j.contains("depth")) {
       try {
-        t.branching = j["branching"].get<int>();
-        t.depth = j["depth"].get<int>();
-        if (t.branching < 1 || t.depth < 0 || t.depth > 26)
-          return Error{ErrorCode::kInvalidData, path + ": bad branching or depth"};
+        const auto branching = jsonInteger(j["branching"], 1, std::numeric_limits<int>::max());
+        if (!branching)
+          return Error{ErrorCode::kInvalidData,
+                       path + ": \"branching\" must be an integer from 1 to " +
+                           std::to_string(std::numeric_limits<int>::max())};
+        const auto depth = jsonInteger(j["depth"], 0, 26);
+        if (!depth)
+          return Error{ErrorCode::kInvalidData,
+                       path + ": \"depth\" must be an integer from 0 to 26"};
+        t.branching = static_cast<int>(*branching);
+        t.depth = static_cast<int>(*depth);
         const int64_t slots = SphereTree::slotCount(t.branching, t.depth);
         if (slots < 0) return Error{ErrorCode::kInvalidData, path + ": sphere tree too large"};
         t.nodes.assign(slots, Sphere{Vec3::Zero(), -1.0});
         for (const auto& n : j["nodes"]) {
-          const int64_t id = n.at("id").get<int64_t>();
-          if (id < 0 || id >= slots)
+          const auto id = jsonInteger(n.at("id"), 0, slots - 1);
+          if (!id)
             return Error{ErrorCode::kInvalidData,
-                         path + ": node id " + std::to_string(id) + " outside the layout"};
+                         path + ": node \"id\" " +
+                             (n.at("id").is_number() ? n.at("id").dump() + " " : std::string()) +
+                             "is not a slot of the layout (an integer from 0 to " +
+                             std::to_string(slots - 1) + ")"};
           Sphere s;
           for (int k = 0; k < 3; ++k) s.center[k] = n.at("center").at(k).get<double>();
           s.radius = n.at("radius").get<double>();
-          Status st = checkSphere(path + ": node " + std::to_string(id), s);
+          Status st = checkSphere(path + ": node " + std::to_string(*id), s);
           if (!st) return st.error();
-          t.nodes[id] = s;
+          t.nodes[*id] = s;
         }
       } catch (const nlohmann::json::exception& e) {
         return Error{ErrorCode::kInvalidData, path + ": malformed sphere tree (" + e.what() + ")"};
@@ -405,10 +504,11 @@ Expected<SphereTree> readSphereTree(const std::string& path) {
       return t;
     }
   }
-  auto flat = readSpheres(path);
+  auto flat = parseSpheres(format, text, path);
   if (!flat) return flat.error();
   if (flat->empty()) return Error{ErrorCode::kInvalidData, path + ": no spheres"};
   return flatTree(*flat);
 }
 
+}  // namespace detail
 }  // namespace sphereset

@@ -2,80 +2,130 @@
 // removal and orientation happen in cleanMesh like for every other format.
 #include "mesh/off_ply.hpp"
 
+#include <algorithm>
 #include <bit>
+#include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 namespace sphereset::detail {
 
-Expected<RawMesh> readOff(const std::string& path) {
-  std::ifstream in(path);
+namespace {
+
+// The whole file as a string (NUL-terminated, so that strtod may run over its data).
+Expected<std::string> readWholeFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
   if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
-  std::string line;
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return Error{ErrorCode::kUnreadable, path + ": read error"};
+  return text;
+}
+
+// The shortest text that reads back as `x` ("7", "1.5", "1e+30", "nan").
+std::string shortest(double x) {
+  char buf[32];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
+  return ec == std::errc() ? std::string(buf, end) : std::string("?");
+}
+
+bool isSpace(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+}
+
+// A whole token as an integer (an optional sign, then digits only).
+bool parseInteger(std::string_view t, int64_t* out) {
+  if (!t.empty() && t[0] == '+') t.remove_prefix(1);
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), *out);
+  return ec == std::errc() && end == t.data() + t.size() && !t.empty();
+}
+
+}  // namespace
+
+Expected<RawMesh> readOff(const std::string& path) {
+  auto text = readWholeFile(path);
+  if (!text) return text.error();
+  return parseOff(*text, path);
+}
+
+Expected<RawMesh> parseOff(const std::string& text, const std::string& name) {
+  size_t pos = 0;
   int64_t lineno = 0;
+  std::vector<std::string_view> tok;
   // Next non-empty line with comments removed, split into tokens.
-  auto next = [&](std::vector<std::string>* tok) {
-    while (std::getline(in, line)) {
+  auto next = [&]() {
+    while (pos < text.size()) {
+      size_t e = text.find('\n', pos);
+      if (e == std::string::npos) e = text.size();
+      std::string_view line(text.data() + pos, e - pos);
+      pos = std::min(e + 1, text.size());
       ++lineno;
-      const auto hash = line.find('#');
-      if (hash != std::string::npos) line.erase(hash);
-      std::istringstream is(line);
-      tok->clear();
-      std::string t;
-      while (is >> t) tok->push_back(t);
-      if (!tok->empty()) return true;
+      const size_t hash = line.find('#');
+      if (hash != std::string_view::npos) line = line.substr(0, hash);
+      tok.clear();
+      size_t i = 0;
+      while (i < line.size()) {
+        while (i < line.size() && isSpace(line[i])) ++i;
+        const size_t b = i;
+        while (i < line.size() && !isSpace(line[i])) ++i;
+        if (i > b) tok.push_back(line.substr(b, i - b));
+      }
+      if (!tok.empty()) return true;
     }
     return false;
   };
   auto bad = [&](const std::string& what) {
-    return Error{ErrorCode::kUnreadable, path + ":" + std::to_string(lineno) + ": " + what};
+    return Error{ErrorCode::kUnreadable, name + ":" + std::to_string(lineno) + ": " + what};
   };
-  std::vector<std::string> tok;
-  if (!next(&tok) || tok[0].find("OFF") == std::string::npos)
+  if (!next() || tok[0].find("OFF") == std::string_view::npos)
     return bad("not an OFF file (no OFF header)");
   tok.erase(tok.begin());
-  if (tok.empty() && !next(&tok)) return bad("missing vertex and face counts");
+  if (tok.empty() && !next()) return bad("missing vertex and face counts");
   int64_t nv = 0, nf = 0;
-  try {
-    nv = std::stoll(tok.at(0));
-    nf = std::stoll(tok.at(1));
-  } catch (...) {
+  if (tok.size() < 2 || !parseInteger(tok[0], &nv) || !parseInteger(tok[1], &nf))
     return bad("malformed vertex and face counts");
-  }
   if (nv < 0 || nf < 0 || nv > (int64_t{1} << 31) - 1 || nf > (int64_t{1} << 31) - 1)
     return bad("vertex or face count out of range");
+  // Each vertex takes a line of at least 6 bytes ("0 0 0\n") and each face one of at least 2:
+  // the counts reserve no more than what the rest of the file can hold.
+  const int64_t rest = static_cast<int64_t>(text.size() - pos);
   std::vector<Vec3> verts;
-  verts.reserve(nv);
+  verts.reserve(static_cast<size_t>(std::min(nv, rest / 6 + 1)));
+  std::string number;
   for (int64_t i = 0; i < nv; ++i) {
-    if (!next(&tok) || tok.size() < 3) return bad("expected a vertex \"x y z\"");
+    if (!next())
+      return bad("expected a vertex \"x y z\", found the end of the file after " +
+                 std::to_string(i) + " of " + std::to_string(nv) + " vertices");
+    if (tok.size() < 3) return bad("expected a vertex \"x y z\"");
     Vec3 p;
     for (int k = 0; k < 3; ++k) {
+      number.assign(tok[k]);
       char* end = nullptr;
-      p[k] = std::strtod(tok[k].c_str(), &end);
-      if (end == tok[k].c_str() || *end != '\0') return bad("malformed vertex coordinate");
+      p[k] = std::strtod(number.c_str(), &end);
+      if (end == number.c_str() || *end != '\0') return bad("malformed vertex coordinate");
     }
     verts.push_back(p);
   }
   std::vector<Triangle> tris;
-  tris.reserve(nf);
+  tris.reserve(static_cast<size_t>(std::min(nf, static_cast<int64_t>(text.size() - pos) / 2 + 1)));
+  std::vector<int64_t> idx;
   for (int64_t f = 0; f < nf; ++f) {
-    if (!next(&tok))
-      return bad("expected " + std::to_string(nf) + " faces, found " + std::to_string(f));
+    if (!next())
+      return bad("expected a face, found the end of the file after " + std::to_string(f) + " of " +
+                 std::to_string(nf) + " faces");
     int64_t k = 0;
-    std::vector<int64_t> idx;
-    try {
-      k = std::stoll(tok[0]);
-      if (k < 0 || static_cast<size_t>(k) + 1 > tok.size()) return bad("malformed face");
-      for (int64_t j = 0; j < k; ++j) idx.push_back(std::stoll(tok[1 + j]));
-    } catch (...) {
+    if (!parseInteger(tok[0], &k) || k < 0 || static_cast<uint64_t>(k) + 1 > tok.size())
       return bad("malformed face");
-    }
+    idx.resize(static_cast<size_t>(k));
+    for (int64_t j = 0; j < k; ++j)
+      if (!parseInteger(tok[1 + j], &idx[j])) return bad("malformed face");
     for (int64_t v : idx)
       if (v < 0 || v >= nv)
-        return Error{ErrorCode::kInvalidData, path + ":" + std::to_string(lineno) +
+        return Error{ErrorCode::kInvalidData, name + ":" + std::to_string(lineno) +
                                                   ": face references vertex " + std::to_string(v) +
                                                   " of " + std::to_string(nv)};
     for (int64_t j = 1; j + 1 < k; ++j)
@@ -139,6 +189,7 @@ class PlyData {
  public:
   PlyData(const std::string& buf, size_t pos, int format) : buf_(buf), pos_(pos), format_(format) {}
   bool ok() const { return ok_; }
+  size_t remaining() const { return buf_.size() - std::min(pos_, buf_.size()); }
 
   double read(PlyType t) {
     if (!ok_) return 0.0;
@@ -222,9 +273,12 @@ class PlyData {
 }  // namespace
 
 Expected<RawMesh> readPly(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
-  const std::string buf((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto text = readWholeFile(path);
+  if (!text) return text.error();
+  return parsePly(*text, path);
+}
+
+Expected<RawMesh> parsePly(const std::string& buf, const std::string& path) {
   auto bad = [&](const std::string& what) {
     return Error{ErrorCode::kUnreadable, path + ": " + what};
   };
@@ -290,6 +344,7 @@ Expected<RawMesh> readPly(const std::string& path) {
   RawMesh out;
   PlyData data(buf, pos, format);
   int64_t nv = -1;
+  std::vector<double> values;
   std::vector<int64_t> list;
   for (const PlyElement& e : elements) {
     const bool is_vertex = e.name == "vertex";
@@ -307,8 +362,15 @@ Expected<RawMesh> readPly(const std::string& path) {
     if (is_vertex) {
       if (ix < 0 || iy < 0 || iz < 0) return bad("vertex element without x, y and z");
       nv = e.count;
-      out.vertices.reserve(static_cast<size_t>(std::min<int64_t>(e.count, int64_t{1} << 26)));
+      // Reserve no more items than the rest of the file can hold: in binary each takes the
+      // bytes of its scalars and list counts, in ascii two characters per property at least.
+      int64_t item_bytes = 0;
+      for (const PlyProperty& pr : e.props)
+        item_bytes += format == 0 ? 2 : plySize(pr.list ? pr.count_type : pr.type);
+      const int64_t fit = static_cast<int64_t>(data.remaining()) / std::max<int64_t>(item_bytes, 1);
+      out.vertices.reserve(static_cast<size_t>(std::min(e.count, fit + 1)));
     }
+    if (e.props.empty()) continue;  // nothing to read, whatever the count
     for (int64_t i = 0; i < e.count; ++i) {
       Vec3 p = Vec3::Zero();
       for (size_t k = 0; k < e.props.size(); ++k) {
@@ -320,17 +382,30 @@ Expected<RawMesh> readPly(const std::string& path) {
           if (static_cast<int>(k) == iz) p.z() = v;
           continue;
         }
+        // A count is a whole number, and every item takes at least one byte of what is left.
         const double cnt = data.read(pr.count_type);
-        if (!data.ok() || cnt < 0 || cnt > 1e7)
+        if (!data.ok() || !(cnt >= 0.0 && cnt <= 1e7) || cnt != std::floor(cnt) ||
+            cnt > static_cast<double>(data.remaining()))
           return bad("malformed list in element '" + e.name + "'");
-        list.resize(static_cast<size_t>(cnt));
-        for (auto& x : list) x = static_cast<int64_t>(data.read(pr.type));
+        values.resize(static_cast<size_t>(cnt));
+        for (double& x : values) x = data.read(pr.type);
         if (static_cast<int>(k) != iidx || !(is_face || is_strip)) continue;
-        for (int64_t x : list)
-          if (x >= nv || (x < 0 && !(is_strip && x == -1)))
+        // Indices may be stored as floating-point values: check them as such before the
+        // conversion to an integer (NaN or out-of-range values would make it undefined).
+        list.resize(values.size());
+        for (size_t j = 0; j < values.size(); ++j) {
+          const double x = values[j];
+          auto invalid = [&](const std::string& what) {
             return Error{ErrorCode::kInvalidData,
-                         path + ": " + e.name + " " + std::to_string(i) + " references vertex " +
-                             std::to_string(x) + " of " + std::to_string(std::max<int64_t>(nv, 0))};
+                         path + ": " + e.name + " " + std::to_string(i) + what};
+          };
+          if (!std::isfinite(x) || x != std::floor(x))
+            return invalid(": vertex index " + shortest(x) + " is not an integer");
+          if (x >= static_cast<double>(nv) || (x < 0.0 && !(is_strip && x == -1.0)))
+            return invalid(" references vertex " + shortest(x) + " of " +
+                           std::to_string(std::max<int64_t>(nv, 0)));
+          list[j] = static_cast<int64_t>(x);
+        }
         if (is_face) {
           for (size_t j = 1; j + 1 < list.size(); ++j)
             out.triangles.push_back({static_cast<int32_t>(list[0]), static_cast<int32_t>(list[j]),

@@ -1,0 +1,36 @@
+// Private: the sphere-file formats on text held in memory. The public readers (sphere_io.hpp)
+// read the file and call these; the fuzzers call them directly. `name` stands for the file in
+// error messages.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sphereset/sphere_io.hpp"
+
+namespace sphereset::detail {
+
+Expected<std::vector<Sphere>> parseSpheres(SphereFormat format, const std::string& text,
+                                           const std::string& name);
+Expected<std::vector<LinkSpheres>> parseLinkSpheres(SphereFormat format, const std::string& text,
+                                                    const std::string& name);
+Expected<SphereTree> parseSphereTree(SphereFormat format, const std::string& text,
+                                     const std::string& name);
+
+// cuRobo's YAML (yaml_spheres.cpp): every link of the collision_spheres mapping, in file order,
+// found at the top level or under robot_cfg: kinematics: (or kinematics:).
+Expected<std::vector<LinkSpheres>> parseYamlLinks(const std::string& text, const std::string& name);
+// Several links in the layout the single-link YAML writer uses; an empty link as "[]".
+std::string formatYamlLinks(const std::vector<LinkSpheres>& links, const SphereFileMeta& meta);
+// A link name as a YAML mapping key: as it is when it reads back as the same string, else
+// double-quoted with escapes.
+std::string yamlKey(const std::string& name);
+// The same followed by ':', in the explicit form "? key" then ':' on the next line (indented by
+// `indent`) when the key is too long for an implicit one.
+std::string yamlMappingKey(const std::string& name, int indent);
+
+// `x` with 17 significant digits, so that it reads back exactly: how every sphere writer
+// prints numbers.
+std::string formatNumber(double x);
+
+}  // namespace sphereset::detail

@@ -1,0 +1,86 @@
+// Hostile sphere-set and sphere-tree files: numbers that do not fit the integers they stand
+// for, layouts larger than the file. Each must give a one-line error naming the file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "sphereset/sphere_io.hpp"
+
+namespace sphereset {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SphereHostile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("sphereset_sphhostile_" +
+            std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& contents) {
+    const std::string p = (dir_ / name).string();
+    std::ofstream(p, std::ios::binary) << contents;
+    return p;
+  }
+  fs::path dir_;
+};
+
+template <class T>
+void expectError(const Expected<T>& r, ErrorCode code, const std::string& path,
+                 const std::string& words) {
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().code, code) << r.error().message;
+  EXPECT_NE(r.error().message.find(path), std::string::npos) << r.error().message;
+  EXPECT_NE(r.error().message.find(words), std::string::npos) << r.error().message;
+  EXPECT_EQ(r.error().message.find('\n'), std::string::npos) << r.error().message;
+}
+
+std::string jsonTree(const std::string& branching, const std::string& depth,
+                     const std::string& id) {
+  return "{\"branching\": " + branching + ", \"depth\": " + depth + ", \"nodes\": [{\"id\": " + id +
+         ", \"center\": [0, 0, 0], \"radius\": 1}]}";
+}
+
+TEST_F(SphereHostile, JsonTreeIntegersMustBeIntegersInRange) {
+  // Converting 1e30 or NaN-like values to int would be undefined behaviour; a fraction or a
+  // value beyond 32 bits must not be truncated or wrapped into a valid-looking one.
+  const std::pair<std::string, std::string> cases[] = {
+      {jsonTree("1e30", "1", "0"), "\"branching\""},
+      {jsonTree("-1e30", "1", "0"), "\"branching\""},
+      {jsonTree("4294967298", "1", "0"), "\"branching\""},
+      {jsonTree("2.5", "1", "0"), "\"branching\""},
+      {jsonTree("2", "1e300", "0"), "\"depth\""},
+      {jsonTree("2", "1.5", "0"), "\"depth\""},
+      {jsonTree("2", "1", "1e300"), "\"id\""},
+      {jsonTree("2", "1", "0.5"), "\"id\""},
+      {jsonTree("2", "1", "18446744073709551615"), "\"id\""},
+  };
+  for (const auto& [text, words] : cases) {
+    const std::string p = write("t.json", text);
+    expectError(readSphereTree(p), ErrorCode::kInvalidData, p, words);
+  }
+  // Integral values written as floats are integers.
+  auto ok = readSphereTree(write("ok.json", jsonTree("2.0", "1", "0e0")));
+  ASSERT_TRUE(ok.ok()) << ok.error().message;
+  EXPECT_EQ(ok->branching, 2);
+  EXPECT_EQ(ok->nodes.size(), 3u);
+}
+
+TEST_F(SphereHostile, SphTreeLargerThanTheFileIsTruncated) {
+  // 2^26 - 1 slots declared in six bytes.
+  const std::string p = write("big.sph", "26 2\n");
+  expectError(readSphereTree(p), ErrorCode::kInvalidData, p, "truncated after 0 of 67108863");
+  const std::string q = write("huge.sph", "2000000000 1\n0 0 0 1\n");
+  expectError(readSphereTree(q), ErrorCode::kInvalidData, q, "too large");
+  const std::string r = write("over.sph", "99999999999 2\n0 0 0 1\n");
+  expectError(readSphereTree(r), ErrorCode::kInvalidData, r, "levels branching");
+}
+
+}  // namespace
+}  // namespace sphereset

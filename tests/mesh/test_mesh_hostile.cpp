@@ -1,0 +1,113 @@
+// Hostile OFF and PLY files: headers that promise more data than the file holds, indices that
+// are not integers. Each must give a one-line error naming the file, never an exception or
+// undefined behaviour.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
+
+#include "sphereset/mesh.hpp"
+
+namespace sphereset {
+namespace {
+
+namespace fs = std::filesystem;
+
+class MeshHostile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ =
+        fs::temp_directory_path() /
+        ("sphereset_hostile_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+         "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& contents) {
+    const std::string p = (dir_ / name).string();
+    std::ofstream(p, std::ios::binary) << contents;
+    return p;
+  }
+  fs::path dir_;
+};
+
+// The load fails with `code`, and the one-line message names the file and holds `words`.
+void expectError(const Expected<LoadedMesh>& m, ErrorCode code, const std::string& path,
+                 const std::string& words) {
+  ASSERT_FALSE(m.ok());
+  EXPECT_EQ(m.error().code, code) << m.error().message;
+  EXPECT_NE(m.error().message.find(path), std::string::npos) << m.error().message;
+  EXPECT_NE(m.error().message.find(words), std::string::npos) << m.error().message;
+  EXPECT_EQ(m.error().message.find('\n'), std::string::npos) << m.error().message;
+}
+
+TEST_F(MeshHostile, OffCountsBeyondTheFileAreRefusedWithoutReserving) {
+  // 20 bytes that declare two billion vertices: nothing may be reserved for them.
+  const std::string huge = write("huge.off", "OFF\n2000000000 1 0\n");
+  expectError(loadMesh(huge), ErrorCode::kUnreadable, huge, "0 of 2000000000 vertices");
+  const std::string faces =
+      write("faces.off", "OFF\n3 2000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  expectError(loadMesh(faces), ErrorCode::kUnreadable, faces, "1 of 2000000000 faces");
+}
+
+// An ascii PLY triangle whose face indices are stored as `type` values.
+std::string plyTriangle(const std::string& type, const std::string& face) {
+  return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uchar " +
+         type + " vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n" + face + "\n";
+}
+
+TEST_F(MeshHostile, PlyFloatIndicesMustBeIntegersInRange) {
+  // Casting these to an integer would be undefined behaviour.
+  const std::pair<const char*, const char*> cases[] = {
+      {"3 0 1 nan", "index nan is not an integer"},
+      {"3 0 1e30 2", "references vertex 1e+30 of 3"},
+      {"3 -1e30 1 2", "references vertex -1e+30 of 3"},
+      {"3 0 1 inf", "index inf is not an integer"},
+      {"3 0 1.5 2", "index 1.5 is not an integer"},
+  };
+  for (const auto& [face, words] : cases) {
+    const std::string p = write("f.ply", plyTriangle("double", face));
+    expectError(loadMesh(p), ErrorCode::kInvalidData, p + ": face 0", words);
+  }
+  // Integral float indices are indices like any other.
+  const std::string ok = write("ok.ply", plyTriangle("float", "3 0 1.0 2e0"));
+  auto m = loadMesh(ok);
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  EXPECT_EQ(m->mesh.triangles.size(), 1u);
+
+  // The same in binary: a double index of 1e30.
+  std::string b =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty double x\n"
+      "property double y\nproperty double z\nelement face 1\n"
+      "property list uchar double vertex_indices\nend_header\n";
+  const double xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  b.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  const double idx[3] = {0, 1, 1e30};
+  b.push_back(3);
+  b.append(reinterpret_cast<const char*>(idx), sizeof idx);
+  const std::string bin = write("b.ply", b);
+  expectError(loadMesh(bin), ErrorCode::kInvalidData, bin + ": face 0",
+              "references vertex 1e+30 of 3");
+}
+
+TEST_F(MeshHostile, PlyListCountsMustBeCountsTheDataCanHold) {
+  // A float list count of NaN, a negative one, a fraction and one beyond the data.
+  for (const char* face : {"nan 0 1 2", "-3 0 1 2", "2.5 0 1 2", "1000000 0 1 2"}) {
+    std::string text = plyTriangle("int", face);
+    text.replace(text.find("list uchar"), 10, "list float");
+    const std::string p = write("c.ply", text);
+    expectError(loadMesh(p), ErrorCode::kUnreadable, p, "malformed list in element 'face'");
+  }
+  // Two billion vertices declared in a few bytes: a clear error, no reservation.
+  const std::string huge =
+      write("huge.ply",
+            "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n"
+            "property float y\nproperty float z\nend_header\n");
+  expectError(loadMesh(huge), ErrorCode::kUnreadable, huge, "truncated data in element 'vertex'");
+}
+
+}  // namespace
+}  // namespace sphereset
