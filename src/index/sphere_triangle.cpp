@@ -33,7 +33,6 @@
 namespace sphereset {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // |h| below this fraction of r means o lies in t's plane; the triangle's SOTV is then

@@ -183,8 +183,9 @@ Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& option
     if (probe.peek() == std::ifstream::traits_type::eof())
       return Error{ErrorCode::kUnreadable, path + ": the file is empty"};
   }
-  // OFF and PLY are parsed here: assimp 5.2 miscounts OFF faces after comment lines and
-  // drops the first triangle of every PLY triangle strip.
+  // OFF and PLY are parsed by the project's own readers: Debian 12's assimp (5.2) reads one
+  // face too few from an OFF file with comment lines between its header and its faces, and
+  // keeps only part of a PLY triangle strip (one triangle of a five-vertex strip).
   const std::string ext = lowerExtension(path);
   if (ext == "off" || ext == "ply") {
     auto raw = ext == "off" ? detail::readOff(path) : detail::readPly(path);
