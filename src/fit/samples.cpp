@@ -20,6 +20,25 @@ namespace {
 // Fewest interior points accepted before the grid is refined (thin parts, small targets).
 constexpr double kMinInteriorShare = 0.5;
 constexpr int kMaxRefinements = 4;
+// The interior grid classifies every cell of the bounding box, so a solid that fills a tiny
+// part of its box (a thin rod along the box's diagonal) would ask for billions of cells and
+// run for hours. Past this many cells the spacing is widened instead and the interior is
+// represented by fewer points; the surface samples and the guaranteed bound do not depend on
+// it. Benchmark meshes need at most a few hundred thousand cells.
+constexpr double kMaxGridCells = 16777216.0;  // 2^24
+
+double gridCells(const Aabb& b, double h) {
+  const Vec3 ext = b.max - b.min;
+  double cells = 1.0;
+  for (int k = 0; k < 3; ++k) cells *= std::max(1.0, std::ceil(ext[k] / h));
+  return cells;
+}
+
+// h, or the smallest spacing tried above it that keeps the grid within kMaxGridCells.
+double cappedSpacing(const Aabb& b, double h) {
+  while (gridCells(b, h) > kMaxGridCells) h *= 1.01 * std::cbrt(gridCells(b, h) / kMaxGridCells);
+  return h;
+}
 
 std::vector<Vec3> interiorGrid(const SolidIndex& index, double h) {
   const Aabb& b = index.bounds();
@@ -133,11 +152,12 @@ PointSet samplePoints(const SolidIndex& index, int64_t target, double interior_s
   const Mesh& mesh = index.mesh();
   const double volume = std::max(signedVolume(mesh), 1e-300);
   const int64_t want_inside = std::max<int64_t>(1, std::llround(target * interior_share));
-  double h = std::cbrt(volume / static_cast<double>(want_inside));
+  double h = cappedSpacing(index.bounds(), std::cbrt(volume / static_cast<double>(want_inside)));
   std::vector<Vec3> inside;
   for (int refine = 0; refine <= kMaxRefinements; ++refine) {
     inside = interiorGrid(index, h);
     if (static_cast<double>(inside.size()) >= kMinInteriorShare * want_inside) break;
+    if (gridCells(index.bounds(), 0.5 * h) > kMaxGridCells) break;
     h *= 0.5;
   }
   ps.spacing = h;

@@ -80,5 +80,26 @@ TEST(FitOptions, MoreSpheresThanPointsIsRefusedWithAdvice) {
   }
 }
 
+// A rod 1e-4 thick along its bounding box's diagonal fills 1e-8 of the box: an interior grid
+// spaced for the requested points would have some 1e11 cells. The grid is capped instead, and
+// the fit completes with its n covering spheres.
+TEST(FitOptions, ThinRodAlongTheBoxDiagonalSamplesABoundedGrid) {
+  const Mesh bar = test::makeBox(Vec3::Zero(), Vec3(std::sqrt(3.0), 1e-4, 1e-4));
+  const Eigen::Matrix3d turn =
+      Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), Vec3::Ones()).toRotationMatrix();
+  const SolidIndex idx(test::transformed(bar, turn, Vec3::Zero(), 1.0));
+  const Aabb& box = idx.bounds();
+  ASSERT_LT(signedVolume(idx.mesh()), 1e-7 * (box.max - box.min).prod());
+  FitOptions o;
+  o.num_spheres = 4;
+  o.target_points = 1000;
+  o.max_iterations = 10;
+  const auto r = fitSpheres(idx, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_EQ(r->spheres.size(), 4u);
+  EXPECT_GT(r->points, 500);  // the surface samples at least
+  expectCovers(idx, r->spheres);
+}
+
 }  // namespace
 }  // namespace sphereset
