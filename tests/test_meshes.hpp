@@ -18,6 +18,12 @@ inline std::string examplePath(const std::string& name) {
   return std::string(SPHERESET_EXAMPLE_DIR) + "/" + name;
 }
 
+// The bundled robot link (tests/data/fr3_link1_collision.stl), a closed solid of 300 triangles.
+inline Mesh robotLink() {
+  auto m = loadMesh(dataPath("fr3_link1_collision.stl"));
+  return m.ok() ? m->mesh : Mesh{};
+}
+
 // Axis-aligned box, outward orientation, 12 triangles.
 inline Mesh makeBox(const Vec3& lo, const Vec3& hi) {
   Mesh m;

@@ -7,17 +7,12 @@
 #include "fit/bound.hpp"
 #include "sphereset/evaluate.hpp"
 #include "test_meshes.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
 
-EvalResult coverageOnly(const SolidIndex& idx, const std::vector<Sphere>& spheres) {
-  EvalOptions eo;
-  eo.union_samples = 0;
-  eo.proximity_segments = 0;
-  eo.shadow_resolution = 0;
-  return evaluateSpheres(idx, spheres, eo);
-}
+using test::coverageOnly;
 
 // A long box and two spheres that meet exactly at the cross-section x = m (m = 100/3, on no
 // dyadic grid line): pieces of the long faces that straddle it are held by neither sphere at

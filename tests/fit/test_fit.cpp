@@ -5,31 +5,16 @@
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "test_meshes.hpp"
+#include "test_support.hpp"
 #include "util/sampling.hpp"
 
 namespace sphereset {
 namespace {
 
-Mesh link() {
-  auto m = loadMesh(test::dataPath("fr3_link1_collision.stl"));
-  EXPECT_TRUE(m.ok());
-  return m->mesh;
-}
-
-// The evaluation's coverage tests (no Monte Carlo, proximity or shadow work): surface and
-// interior covered.
-void expectCovers(const SolidIndex& idx, const std::vector<Sphere>& spheres) {
-  EvalOptions eo;
-  eo.union_samples = 0;
-  eo.proximity_segments = 0;
-  eo.shadow_resolution = 0;
-  const EvalResult e = evaluateSpheres(idx, spheres, eo);
-  EXPECT_TRUE(e.surface_covered);
-  EXPECT_TRUE(e.interior_covered);
-}
+using test::expectCovers;
 
 TEST(Fit, WritesExactlyNSpheresThatCoverTheSurfaceAndInterior) {
-  const SolidIndex idx(link());
+  const SolidIndex idx(test::robotLink());
   FitOptions o;
   o.num_spheres = 8;
   o.target_points = 2000;
@@ -84,7 +69,7 @@ TEST(Fit, SameSpheresForAnyThreadCount) {
   FitOptions o;
   o.num_spheres = 6;
   o.target_points = 1500;
-  expectSameFitForAnyThreadCount(SolidIndex(link()), o);
+  expectSameFitForAnyThreadCount(SolidIndex(test::robotLink()), o);
 }
 
 // Enough spheres for the assignment to prepare points in parallel batches.
@@ -97,7 +82,7 @@ TEST(Fit, ManySpheresSameForAnyThreadCount) {
 }
 
 TEST(Fit, PaddingIsAddedToEveryRadius) {
-  const SolidIndex idx(link());
+  const SolidIndex idx(test::robotLink());
   FitOptions o;
   o.num_spheres = 4;
   o.target_points = 1000;
@@ -112,7 +97,7 @@ TEST(Fit, PaddingIsAddedToEveryRadius) {
 }
 
 TEST(Fit, BadRequestsGiveErrors) {
-  const SolidIndex idx(link());
+  const SolidIndex idx(test::robotLink());
   FitOptions o;
   o.num_spheres = 0;
   auto a = fitSpheres(idx, o);
@@ -129,7 +114,7 @@ TEST(Fit, BadRequestsGiveErrors) {
 }
 
 TEST(Fit, BaselinesGiveNCoveringSpheresAndTheVariationalFitIsTighter) {
-  const SolidIndex idx(link());
+  const SolidIndex idx(test::robotLink());
   EvalOptions eo;
   eo.union_samples = 10000;
   eo.proximity_segments = 0;
@@ -170,7 +155,7 @@ TEST(Fit, ShrinkingAfterTheBoundLowersTheEnergyAndKeepsTheCover) {
 }
 
 TEST(Fit, RestartsKeepTheBestOfIndependentFits) {
-  const SolidIndex idx(link());
+  const SolidIndex idx(test::robotLink());
   FitOptions o;
   o.num_spheres = 6;
   o.target_points = 1500;

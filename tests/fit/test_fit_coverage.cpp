@@ -71,17 +71,11 @@ void expectFitCovers(const Mesh& mesh, FitOptions o, int min_interior) {
   EXPECT_GE(c.interior, min_interior);  // the interior was really sampled
 }
 
-Mesh link() {
-  auto m = loadMesh(test::dataPath("fr3_link1_collision.stl"));
-  EXPECT_TRUE(m.ok());
-  return m->mesh;
-}
-
 TEST(FitCoverage, RobotLinkSurfaceAndInteriorByBruteForce) {
   FitOptions o;
   o.num_spheres = 8;
   o.target_points = 2000;
-  expectFitCovers(link(), o, 200);
+  expectFitCovers(test::robotLink(), o, 200);
 }
 
 TEST(FitCoverage, TorusWithDecimationByBruteForce) {
@@ -106,7 +100,7 @@ TEST(FitCoverage, BaselinesByBruteForce) {
     o.num_spheres = 10;
     o.target_points = 2000;
     o.method = method;
-    expectFitCovers(link(), o, 200);
+    expectFitCovers(test::robotLink(), o, 200);
   }
 }
 

@@ -4,19 +4,12 @@
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "test_meshes.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
 
-void expectCovers(const SolidIndex& idx, const std::vector<Sphere>& spheres) {
-  EvalOptions eo;
-  eo.union_samples = 0;
-  eo.proximity_segments = 0;
-  eo.shadow_resolution = 0;
-  const EvalResult e = evaluateSpheres(idx, spheres, eo);
-  EXPECT_TRUE(e.surface_covered);
-  EXPECT_TRUE(e.interior_covered);
-}
+using test::expectCovers;
 
 // Fits n spheres from about `points` points (half of them interior by default) with each
 // method and expects n covering spheres.

@@ -7,39 +7,14 @@
 #include <string>
 
 #include "sphereset/sphere_io.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
 
-namespace fs = std::filesystem;
+using test::expectError;
 
-class SphereHostile : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("sphereset_sphhostile_" +
-            std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& contents) {
-    const std::string p = (dir_ / name).string();
-    std::ofstream(p, std::ios::binary) << contents;
-    return p;
-  }
-  fs::path dir_;
-};
-
-template <class T>
-void expectError(const Expected<T>& r, ErrorCode code, const std::string& path,
-                 const std::string& words) {
-  ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.error().code, code) << r.error().message;
-  EXPECT_NE(r.error().message.find(path), std::string::npos) << r.error().message;
-  EXPECT_NE(r.error().message.find(words), std::string::npos) << r.error().message;
-  EXPECT_EQ(r.error().message.find('\n'), std::string::npos) << r.error().message;
-}
+class SphereHostile : public test::TempDirTest {};
 
 std::string jsonTree(const std::string& branching, const std::string& depth,
                      const std::string& id) {

@@ -7,28 +7,14 @@
 #include "sphereset/export.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_io.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
 
 namespace fs = std::filesystem;
 
-class SphereIo : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("sphereset_sph_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) { return (dir_ / name).string(); }
-  std::string write(const std::string& name, const std::string& contents) {
-    std::ofstream(path(name)) << contents;
-    return path(name);
-  }
-  fs::path dir_;
-};
+class SphereIo : public test::TempDirTest {};
 
 const std::vector<Sphere> kSet = {{Vec3(0.1, -2.5, 3.0), 0.75},
                                   {Vec3(1.0 / 3.0, 1e-9, -7.0), 1e-3},

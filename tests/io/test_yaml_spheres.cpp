@@ -9,28 +9,14 @@
 
 #include "sphereset/sphere_io.hpp"
 #include "test_meshes.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
 
 namespace fs = std::filesystem;
 
-class YamlSpheres : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("sphereset_yaml_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) { return (dir_ / name).string(); }
-  std::string write(const std::string& name, const std::string& contents) {
-    std::ofstream(path(name), std::ios::binary) << contents;
-    return path(name);
-  }
-  fs::path dir_;
-};
+class YamlSpheres : public test::TempDirTest {};
 
 void expectSphere(const Sphere& s, double x, double y, double z, double r) {
   EXPECT_EQ(s.center, Vec3(x, y, z));

@@ -9,40 +9,16 @@
 #include <utility>
 
 #include "sphereset/mesh.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
 
-namespace fs = std::filesystem;
+using test::expectError;
 
-class MeshHostile : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ =
-        fs::temp_directory_path() /
-        ("sphereset_hostile_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-         "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& contents) {
-    const std::string p = (dir_ / name).string();
-    std::ofstream(p, std::ios::binary) << contents;
-    return p;
-  }
-  fs::path dir_;
-};
+class MeshHostile : public test::TempDirTest {};
 
 // The load fails with `code`, and the one-line message names the file and holds `words`.
-void expectError(const Expected<LoadedMesh>& m, ErrorCode code, const std::string& path,
-                 const std::string& words) {
-  ASSERT_FALSE(m.ok());
-  EXPECT_EQ(m.error().code, code) << m.error().message;
-  EXPECT_NE(m.error().message.find(path), std::string::npos) << m.error().message;
-  EXPECT_NE(m.error().message.find(words), std::string::npos) << m.error().message;
-  EXPECT_EQ(m.error().message.find('\n'), std::string::npos) << m.error().message;
-}
-
 TEST_F(MeshHostile, OffCountsBeyondTheFileAreRefusedWithoutReserving) {
   // 20 bytes that declare two billion vertices: nothing may be reserved for them.
   const std::string huge = write("huge.off", "OFF\n2000000000 1 0\n");

@@ -10,28 +10,14 @@
 
 #include "sphereset/mesh.hpp"
 #include "test_meshes.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
 
-namespace fs = std::filesystem;
+using test::expectError;
 
-class MeshIo : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("sphereset_io_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& contents) {
-    const std::string p = (dir_ / name).string();
-    std::ofstream(p, std::ios::binary) << contents;
-    return p;
-  }
-  fs::path dir_;
-};
+class MeshIo : public test::TempDirTest {};
 
 const Mesh kCube = test::makeBox(Vec3::Zero(), Vec3::Ones());
 
@@ -311,15 +297,6 @@ TEST_F(MeshIo, WeldToleranceMergesNearbyVertices) {
   ASSERT_TRUE(tol.ok());
   EXPECT_TRUE(diagnoseMesh(tol->mesh).isSolid());
   EXPECT_EQ(tol->report.welded_vertices, 1);
-}
-
-void expectError(const Expected<LoadedMesh>& m, ErrorCode code, const std::string& path,
-                 const std::string& words) {
-  ASSERT_FALSE(m.ok());
-  EXPECT_EQ(m.error().code, code) << m.error().message;
-  EXPECT_NE(m.error().message.find(path), std::string::npos) << m.error().message;
-  EXPECT_NE(m.error().message.find(words), std::string::npos) << m.error().message;
-  EXPECT_EQ(m.error().message.find('\n'), std::string::npos);
 }
 
 TEST_F(MeshIo, BadFilesGiveClearErrors) {
