@@ -66,6 +66,116 @@ void coverTriangle(const detail::SphereGrid& spheres, const Vec3& a, const Vec3&
   coverTriangle(spheres, ab, bc, ca, depth + 1, max_depth, st);
 }
 
+// E_r of the union by Monte Carlo: sets er_union and its standard error.
+void unionOutsideVolume(const SolidIndex& index, const std::vector<Sphere>& spheres,
+                        const EvalOptions& options, double vol, EvalResult* res) {
+  const size_t n = spheres.size();
+  std::vector<double> cum(n);
+  double vsum = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    vsum += 4.0 / 3.0 * std::numbers::pi * std::pow(spheres[i].radius, 3);
+    cum[i] = vsum;
+  }
+  if (n == 0 || !(vsum > 0.0) || options.union_samples <= 0) return;
+  constexpr int64_t kBlock = 4096;
+  const int64_t blocks = (options.union_samples + kBlock - 1) / kBlock;
+  std::vector<std::pair<double, double>> part(blocks);  // (Σ x, Σ x²)
+  tbb::parallel_for(int64_t{0}, blocks, [&](int64_t blk) {
+    std::mt19937_64 rng(mixSeed(options.seed, 1000 + blk));
+    const int64_t count = std::min(kBlock, options.union_samples - blk * kBlock);
+    double sx = 0.0, sxx = 0.0;
+    for (int64_t k = 0; k < count; ++k) {
+      const double pick = uniform01(rng) * vsum;
+      const size_t i =
+          std::min<size_t>(std::upper_bound(cum.begin(), cum.end(), pick) - cum.begin(), n - 1);
+      Vec3 u;
+      do {
+        u = Vec3(2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1);
+      } while (u.squaredNorm() > 1.0);
+      const Vec3 p = spheres[i].center + spheres[i].radius * u;
+      double x = 0.0;
+      if (index.classify(p) == Containment::kOutside) {
+        int cover = 0;
+        for (const Sphere& s : spheres) cover += s.contains(p) ? 1 : 0;
+        x = vsum / std::max(cover, 1);
+      }
+      sx += x;
+      sxx += x * x;
+    }
+    part[blk] = {sx, sxx};
+  });
+  double sx = 0.0, sxx = 0.0;
+  for (const auto& [a, b] : part) {
+    sx += a;
+    sxx += b;
+  }
+  const double m = static_cast<double>(options.union_samples);
+  const double mean = sx / m;
+  const double var = std::max(0.0, sxx / m - mean * mean);
+  res->er_union = mean / vol;
+  res->er_union_stderr = std::sqrt(var / m) / vol;
+}
+
+// Surface coverage, certified per triangle.
+void surfaceCoverage(const Mesh& mesh, const detail::SphereGrid& grown_grid, size_t n,
+                     const EvalOptions& options, double diag, EvalResult* res) {
+  const size_t nt = mesh.triangles.size();
+  std::vector<CoverStats> st(nt);
+  tbb::parallel_for(size_t{0}, nt, [&](size_t t) {
+    const auto& tri = mesh.triangles[t];
+    coverTriangle(grown_grid, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]],
+                  0, options.surface_max_depth, &st[t]);
+  });
+  for (const CoverStats& s : st) {
+    res->max_surface_gap = std::max(res->max_surface_gap, s.gap);
+    res->surface_uncertified_area += s.uncertified;
+    if (s.gap > 0.0 || s.uncertified > 0.0) ++res->uncovered_triangles;
+  }
+  res->max_surface_gap /= diag;
+  res->surface_covered = n > 0 && res->uncovered_triangles == 0;
+}
+
+// Interior coverage on an octree below an 8³ grid of cubes covering the bounds.
+void interiorCoverage(const SolidIndex& index, const detail::SphereGrid& grown_grid, size_t n,
+                      const EvalOptions& options, double diag, EvalResult* res) {
+  std::vector<CoverStats> st(detail::kRootCells);
+  tbb::parallel_for(0, detail::kRootCells, [&](int k) {
+    double size = 0.0;
+    const Vec3 mn = detail::rootCell(index.bounds(), k, &size);
+    detail::walkSolidCells(
+        index, grown_grid, mn, size, 0, options.interior_max_depth,
+        [&](const Vec3&, double, int, double gap) {
+          st[k].gap = std::max(st[k].gap, gap);
+          return false;  // refuted
+        },
+        [&](const Vec3&, double) { st[k].uncertified += 1.0; });
+  });
+  double gap = 0.0, unc = 0.0;
+  for (const CoverStats& s : st) {
+    gap = std::max(gap, s.gap);
+    unc += s.uncertified;
+  }
+  res->max_interior_gap = gap / diag;
+  res->interior_uncertified_cells = static_cast<int64_t>(unc);
+  res->interior_covered = n > 0 && gap == 0.0 && res->surface_covered;
+}
+
+// Mean proximity error over random surface-to-surface segments, / diag.
+double proximityError(const SolidIndex& index, const std::vector<Sphere>& spheres,
+                      const EvalOptions& options, double diag) {
+  const detail::SurfaceSampler sampler(index.mesh());
+  const int segs = options.proximity_segments;
+  std::vector<double> err(segs);
+  tbb::parallel_for(0, segs, [&](int k) {
+    std::mt19937_64 rng(mixSeed(options.seed, 5000000 + k));
+    const Vec3 a = sampler.sample(rng), bb = sampler.sample(rng);
+    err[k] = std::abs(index.outsideLength(a, bb) - segmentOutsideLengthBruteForce(spheres, a, bb));
+  });
+  double s = 0.0;
+  for (double e : err) s += e;
+  return s / segs / diag;
+}
+
 }  // namespace
 
 EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& spheres,
@@ -88,115 +198,17 @@ EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& s
   for (double v : res.outside_volume) total += v;
   res.er_sum = total / vol;
 
-  // Union outside volume by Monte Carlo.
-  std::vector<double> cum(n);
-  double vsum = 0.0;
-  for (size_t i = 0; i < n; ++i) {
-    vsum += 4.0 / 3.0 * std::numbers::pi * std::pow(spheres[i].radius, 3);
-    cum[i] = vsum;
-  }
-  if (n > 0 && vsum > 0.0 && options.union_samples > 0) {
-    constexpr int64_t kBlock = 4096;
-    const int64_t blocks = (options.union_samples + kBlock - 1) / kBlock;
-    std::vector<std::pair<double, double>> part(blocks);  // (Σ x, Σ x²)
-    tbb::parallel_for(int64_t{0}, blocks, [&](int64_t blk) {
-      std::mt19937_64 rng(mixSeed(options.seed, 1000 + blk));
-      const int64_t count = std::min(kBlock, options.union_samples - blk * kBlock);
-      double sx = 0.0, sxx = 0.0;
-      for (int64_t k = 0; k < count; ++k) {
-        const double pick = uniform01(rng) * vsum;
-        const size_t i =
-            std::min<size_t>(std::upper_bound(cum.begin(), cum.end(), pick) - cum.begin(), n - 1);
-        Vec3 u;
-        do {
-          u = Vec3(2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1, 2 * uniform01(rng) - 1);
-        } while (u.squaredNorm() > 1.0);
-        const Vec3 p = spheres[i].center + spheres[i].radius * u;
-        double x = 0.0;
-        if (index.classify(p) == Containment::kOutside) {
-          int cover = 0;
-          for (const Sphere& s : spheres) cover += s.contains(p) ? 1 : 0;
-          x = vsum / std::max(cover, 1);
-        }
-        sx += x;
-        sxx += x * x;
-      }
-      part[blk] = {sx, sxx};
-    });
-    double sx = 0.0, sxx = 0.0;
-    for (const auto& [a, b] : part) {
-      sx += a;
-      sxx += b;
-    }
-    const double m = static_cast<double>(options.union_samples);
-    const double mean = sx / m;
-    const double var = std::max(0.0, sxx / m - mean * mean);
-    res.er_union = mean / vol;
-    res.er_union_stderr = std::sqrt(var / m) / vol;
-  }
+  unionOutsideVolume(index, spheres, options, vol, &res);
 
   // Coverage: spheres grown by the rounding tolerance.
   std::vector<Sphere> grown = spheres;
   for (Sphere& s : grown) s.radius += kCoverRelTol * diag;
   const detail::SphereGrid grown_grid(grown);
+  surfaceCoverage(mesh, grown_grid, n, options, diag, &res);
+  interiorCoverage(index, grown_grid, n, options, diag, &res);
 
-  // Surface coverage, certified per triangle.
-  {
-    const size_t nt = mesh.triangles.size();
-    std::vector<CoverStats> st(nt);
-    tbb::parallel_for(size_t{0}, nt, [&](size_t t) {
-      const auto& tri = mesh.triangles[t];
-      coverTriangle(grown_grid, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]],
-                    0, options.surface_max_depth, &st[t]);
-    });
-    for (const CoverStats& s : st) {
-      res.max_surface_gap = std::max(res.max_surface_gap, s.gap);
-      res.surface_uncertified_area += s.uncertified;
-      if (s.gap > 0.0 || s.uncertified > 0.0) ++res.uncovered_triangles;
-    }
-    res.max_surface_gap /= diag;
-    res.surface_covered = n > 0 && res.uncovered_triangles == 0;
-  }
-
-  // Interior coverage on an octree below an 8³ grid of cubes covering the bounds.
-  {
-    std::vector<CoverStats> st(detail::kRootCells);
-    tbb::parallel_for(0, detail::kRootCells, [&](int k) {
-      double size = 0.0;
-      const Vec3 mn = detail::rootCell(index.bounds(), k, &size);
-      detail::walkSolidCells(
-          index, grown_grid, mn, size, 0, options.interior_max_depth,
-          [&](const Vec3&, double, int, double gap) {
-            st[k].gap = std::max(st[k].gap, gap);
-            return false;  // refuted
-          },
-          [&](const Vec3&, double) { st[k].uncertified += 1.0; });
-    });
-    double gap = 0.0, unc = 0.0;
-    for (const CoverStats& s : st) {
-      gap = std::max(gap, s.gap);
-      unc += s.uncertified;
-    }
-    res.max_interior_gap = gap / diag;
-    res.interior_uncertified_cells = static_cast<int64_t>(unc);
-    res.interior_covered = n > 0 && gap == 0.0 && res.surface_covered;
-  }
-
-  // Proximity error over random surface-to-surface segments.
-  if (options.proximity_segments > 0 && n > 0) {
-    const detail::SurfaceSampler sampler(mesh);
-    const int segs = options.proximity_segments;
-    std::vector<double> err(segs);
-    tbb::parallel_for(0, segs, [&](int k) {
-      std::mt19937_64 rng(mixSeed(options.seed, 5000000 + k));
-      const Vec3 a = sampler.sample(rng), bb = sampler.sample(rng);
-      err[k] =
-          std::abs(index.outsideLength(a, bb) - segmentOutsideLengthBruteForce(spheres, a, bb));
-    });
-    double s = 0.0;
-    for (double e : err) s += e;
-    res.proximity_error = s / segs / diag;
-  }
+  if (options.proximity_segments > 0 && n > 0)
+    res.proximity_error = proximityError(index, spheres, options, diag);
 
   if (options.shadow_resolution > 0 && n > 0) {
     const ShadowResult sh = compareShadows(index, spheres, options.up_axis,

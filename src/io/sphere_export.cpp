@@ -110,6 +110,134 @@ SphereSetMesh sphereSetMesh(const std::vector<Sphere>& spheres, int subdivisions
   return out;
 }
 
+namespace {
+
+// Binary little-endian PLY with vertex colours.
+std::string plyBytes(const SphereSetMesh& m, size_t spheres) {
+  const auto& V = m.mesh.vertices;
+  const auto& F = m.mesh.triangles;
+  std::ostringstream h;
+  h << "ply\nformat binary_little_endian 1.0\ncomment sphereset: " << spheres
+    << " spheres\nelement vertex " << V.size()
+    << "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\n"
+       "property uchar green\nproperty uchar blue\nelement face "
+    << F.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string out = h.str();
+  for (size_t i = 0; i < V.size(); ++i) {
+    for (int k = 0; k < 3; ++k) append(&out, static_cast<float>(V[i][k]));
+    for (int k = 0; k < 3; ++k) append(&out, m.colours[i][k]);
+  }
+  for (const auto& t : F) {
+    append(&out, static_cast<uint8_t>(3));
+    for (int k = 0; k < 3; ++k) append(&out, t[k]);
+  }
+  return out;
+}
+
+// OBJ, one object per sphere, vertex colours as `v x y z r g b`.
+std::string objText(const SphereSetMesh& m, size_t spheres) {
+  const auto& V = m.mesh.vertices;
+  const auto& F = m.mesh.triangles;
+  std::ostringstream os;
+  os.precision(9);
+  os << "# sphereset: " << spheres << " spheres, vertex colours as v x y z r g b\n";
+  const size_t per = m.vertices_per_sphere, fper = F.size() / spheres;
+  for (size_t s = 0; s < spheres; ++s) {
+    os << "o sphere_" << s << '\n';
+    for (size_t i = s * per; i < (s + 1) * per; ++i)
+      os << "v " << V[i].x() << ' ' << V[i].y() << ' ' << V[i].z() << ' ' << m.colours[i][0] / 255.0
+         << ' ' << m.colours[i][1] / 255.0 << ' ' << m.colours[i][2] / 255.0 << '\n';
+    for (size_t f = s * fper; f < (s + 1) * fper; ++f)
+      os << "f " << F[f][0] + 1 << ' ' << F[f][1] + 1 << ' ' << F[f][2] + 1 << '\n';
+  }
+  return os.str();
+}
+
+// glTF 2.0: JSON with the buffer embedded as base64 (.gltf), or the binary container (.glb).
+std::string gltfBytes(const SphereSetMesh& m, bool binary) {
+  const auto& V = m.mesh.vertices;
+  const auto& F = m.mesh.triangles;
+  std::string out;
+  // One buffer: positions, normals, colours (float VEC3 each), then uint32 indices.
+  std::string bin;
+  Vec3 lo = V[0], hi = V[0];
+  for (const Vec3& v : V) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+    for (int k = 0; k < 3; ++k) append(&bin, static_cast<float>(v[k]));
+  }
+  for (const Vec3& n : m.normals)
+    for (int k = 0; k < 3; ++k) append(&bin, static_cast<float>(n[k]));
+  for (const auto& c : m.colours)
+    for (int k = 0; k < 3; ++k) append(&bin, static_cast<float>(c[k] / 255.0));
+  for (const auto& t : F)
+    for (int k = 0; k < 3; ++k) append(&bin, static_cast<uint32_t>(t[k]));
+  const size_t nv = V.size(), vec_bytes = nv * 12, idx_bytes = F.size() * 12;
+  // Accessor bounds in float, as stored.
+  auto fvec = [](const Vec3& v) {
+    return nlohmann::json{static_cast<float>(v.x()), static_cast<float>(v.y()),
+                          static_cast<float>(v.z())};
+  };
+  nlohmann::json j = {
+      {"asset", {{"version", "2.0"}, {"generator", "sphereset"}}},
+      {"scene", 0},
+      {"scenes", {{{"nodes", {0}}}}},
+      {"nodes", {{{"mesh", 0}, {"name", "spheres"}}}},
+      {"meshes",
+       {{{"name", "spheres"},
+         {"primitives",
+          {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"COLOR_0", 2}}},
+            {"indices", 3},
+            {"mode", 4}}}}}}},
+      {"buffers", {{{"byteLength", bin.size()}}}},
+      {"bufferViews",
+       {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", vec_bytes}, {"target", 34962}},
+        {{"buffer", 0}, {"byteOffset", vec_bytes}, {"byteLength", vec_bytes}, {"target", 34962}},
+        {{"buffer", 0},
+         {"byteOffset", 2 * vec_bytes},
+         {"byteLength", vec_bytes},
+         {"target", 34962}},
+        {{"buffer", 0},
+         {"byteOffset", 3 * vec_bytes},
+         {"byteLength", idx_bytes},
+         {"target", 34963}}}},
+      {"accessors",
+       {{{"bufferView", 0},
+         {"componentType", 5126},
+         {"count", nv},
+         {"type", "VEC3"},
+         {"min", fvec(lo)},
+         {"max", fvec(hi)}},
+        {{"bufferView", 1}, {"componentType", 5126}, {"count", nv}, {"type", "VEC3"}},
+        {{"bufferView", 2}, {"componentType", 5126}, {"count", nv}, {"type", "VEC3"}},
+        {{"bufferView", 3},
+         {"componentType", 5125},
+         {"count", 3 * F.size()},
+         {"type", "SCALAR"}}}}};
+  if (!binary) {
+    j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(bin);
+    out = j.dump(1) + "\n";
+  } else {
+    std::string js = j.dump();
+    while (js.size() % 4) js += ' ';
+    while (bin.size() % 4) bin += '\0';
+    const uint32_t total =
+        12 + 8 + static_cast<uint32_t>(js.size()) + 8 + static_cast<uint32_t>(bin.size());
+    append(&out, uint32_t{0x46546C67});  // "glTF"
+    append(&out, uint32_t{2});
+    append(&out, total);
+    append(&out, static_cast<uint32_t>(js.size()));
+    append(&out, uint32_t{0x4E4F534A});  // "JSON"
+    out += js;
+    append(&out, static_cast<uint32_t>(bin.size()));
+    append(&out, uint32_t{0x004E4942});  // "BIN\0"
+    out += bin;
+  }
+  return out;
+}
+
+}  // namespace
+
 Status writeSphereSetMesh(const std::string& path, const std::vector<Sphere>& spheres,
                           int subdivisions) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -120,117 +248,9 @@ Status writeSphereSetMesh(const std::string& path, const std::vector<Sphere>& sp
                  path + ": unknown mesh extension (use .ply, .obj, .gltf or .glb)"};
   if (spheres.empty()) return Error{ErrorCode::kInvalidArgument, path + ": no spheres to export"};
   const SphereSetMesh m = sphereSetMesh(spheres, subdivisions);
-  const auto& V = m.mesh.vertices;
-  const auto& F = m.mesh.triangles;
-  std::string out;
-  if (ext == ".ply") {
-    std::ostringstream h;
-    h << "ply\nformat binary_little_endian 1.0\ncomment sphereset: " << spheres.size()
-      << " spheres\nelement vertex " << V.size()
-      << "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\n"
-         "property uchar green\nproperty uchar blue\nelement face "
-      << F.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
-    out = h.str();
-    for (size_t i = 0; i < V.size(); ++i) {
-      for (int k = 0; k < 3; ++k) append(&out, static_cast<float>(V[i][k]));
-      for (int k = 0; k < 3; ++k) append(&out, m.colours[i][k]);
-    }
-    for (const auto& t : F) {
-      append(&out, static_cast<uint8_t>(3));
-      for (int k = 0; k < 3; ++k) append(&out, t[k]);
-    }
-  } else if (ext == ".obj") {
-    std::ostringstream os;
-    os.precision(9);
-    os << "# sphereset: " << spheres.size() << " spheres, vertex colours as v x y z r g b\n";
-    const size_t per = m.vertices_per_sphere, fper = F.size() / spheres.size();
-    for (size_t s = 0; s < spheres.size(); ++s) {
-      os << "o sphere_" << s << '\n';
-      for (size_t i = s * per; i < (s + 1) * per; ++i)
-        os << "v " << V[i].x() << ' ' << V[i].y() << ' ' << V[i].z() << ' '
-           << m.colours[i][0] / 255.0 << ' ' << m.colours[i][1] / 255.0 << ' '
-           << m.colours[i][2] / 255.0 << '\n';
-      for (size_t f = s * fper; f < (s + 1) * fper; ++f)
-        os << "f " << F[f][0] + 1 << ' ' << F[f][1] + 1 << ' ' << F[f][2] + 1 << '\n';
-    }
-    out = os.str();
-  } else {
-    // One buffer: positions, normals, colours (float VEC3 each), then uint32 indices.
-    std::string bin;
-    Vec3 lo = V[0], hi = V[0];
-    for (const Vec3& v : V) {
-      lo = lo.cwiseMin(v);
-      hi = hi.cwiseMax(v);
-      for (int k = 0; k < 3; ++k) append(&bin, static_cast<float>(v[k]));
-    }
-    for (const Vec3& n : m.normals)
-      for (int k = 0; k < 3; ++k) append(&bin, static_cast<float>(n[k]));
-    for (const auto& c : m.colours)
-      for (int k = 0; k < 3; ++k) append(&bin, static_cast<float>(c[k] / 255.0));
-    for (const auto& t : F)
-      for (int k = 0; k < 3; ++k) append(&bin, static_cast<uint32_t>(t[k]));
-    const size_t nv = V.size(), vec_bytes = nv * 12, idx_bytes = F.size() * 12;
-    // Accessor bounds in float, as stored.
-    auto fvec = [](const Vec3& v) {
-      return nlohmann::json{static_cast<float>(v.x()), static_cast<float>(v.y()),
-                            static_cast<float>(v.z())};
-    };
-    nlohmann::json j = {
-        {"asset", {{"version", "2.0"}, {"generator", "sphereset"}}},
-        {"scene", 0},
-        {"scenes", {{{"nodes", {0}}}}},
-        {"nodes", {{{"mesh", 0}, {"name", "spheres"}}}},
-        {"meshes",
-         {{{"name", "spheres"},
-           {"primitives",
-            {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"COLOR_0", 2}}},
-              {"indices", 3},
-              {"mode", 4}}}}}}},
-        {"buffers", {{{"byteLength", bin.size()}}}},
-        {"bufferViews",
-         {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", vec_bytes}, {"target", 34962}},
-          {{"buffer", 0}, {"byteOffset", vec_bytes}, {"byteLength", vec_bytes}, {"target", 34962}},
-          {{"buffer", 0},
-           {"byteOffset", 2 * vec_bytes},
-           {"byteLength", vec_bytes},
-           {"target", 34962}},
-          {{"buffer", 0},
-           {"byteOffset", 3 * vec_bytes},
-           {"byteLength", idx_bytes},
-           {"target", 34963}}}},
-        {"accessors",
-         {{{"bufferView", 0},
-           {"componentType", 5126},
-           {"count", nv},
-           {"type", "VEC3"},
-           {"min", fvec(lo)},
-           {"max", fvec(hi)}},
-          {{"bufferView", 1}, {"componentType", 5126}, {"count", nv}, {"type", "VEC3"}},
-          {{"bufferView", 2}, {"componentType", 5126}, {"count", nv}, {"type", "VEC3"}},
-          {{"bufferView", 3},
-           {"componentType", 5125},
-           {"count", 3 * F.size()},
-           {"type", "SCALAR"}}}}};
-    if (ext == ".gltf") {
-      j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(bin);
-      out = j.dump(1) + "\n";
-    } else {
-      std::string js = j.dump();
-      while (js.size() % 4) js += ' ';
-      while (bin.size() % 4) bin += '\0';
-      const uint32_t total =
-          12 + 8 + static_cast<uint32_t>(js.size()) + 8 + static_cast<uint32_t>(bin.size());
-      append(&out, uint32_t{0x46546C67});  // "glTF"
-      append(&out, uint32_t{2});
-      append(&out, total);
-      append(&out, static_cast<uint32_t>(js.size()));
-      append(&out, uint32_t{0x4E4F534A});  // "JSON"
-      out += js;
-      append(&out, static_cast<uint32_t>(bin.size()));
-      append(&out, uint32_t{0x004E4942});  // "BIN\0"
-      out += bin;
-    }
-  }
+  const std::string out = ext == ".ply"   ? plyBytes(m, spheres.size())
+                          : ext == ".obj" ? objText(m, spheres.size())
+                                          : gltfBytes(m, ext == ".glb");
   return writeFileAtomically(path, out);
 }
 

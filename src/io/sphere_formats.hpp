@@ -3,6 +3,10 @@
 // error messages.
 #pragma once
 
+#include <cstdint>
+#include <istream>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +32,19 @@ std::string yamlKey(const std::string& name);
 // The same followed by ':', in the explicit form "? key" then ':' on the next line (indented by
 // `indent`) when the key is too long for an implicit one.
 std::string yamlMappingKey(const std::string& name, int indent);
+
+// The lower-case extension of a path, with its dot.
+std::string extensionOf(const std::string& path);
+// A whole file as a string (kUnreadable when it cannot be read).
+Expected<std::string> readText(const std::string& path);
+// kInvalidData, naming `where`, for a sphere with a NaN or infinite value or a negative radius.
+Status checkSphere(const std::string& where, const Sphere& s);
+// The JSON document read from `in` (the file `path`); kUnreadable when it is not JSON.
+Expected<nlohmann::json> parseJson(std::istream& in, const std::string& path);
+// A JSON number that is an integer in [lo, hi], written as an integer or as an integral
+// float ("2.0"); anything else is nullopt. Converting first would be undefined behaviour for
+// floats out of range and would wrap or truncate the others into valid-looking values.
+std::optional<int64_t> jsonInteger(const nlohmann::json& v, int64_t lo, int64_t hi);
 
 // `x` with 17 significant digits, so that it reads back exactly: how every sphere writer
 // prints numbers.

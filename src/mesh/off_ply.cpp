@@ -270,20 +270,17 @@ class PlyData {
   bool ok_ = true;
 };
 
-}  // namespace
+// The header: format, elements and their properties, and where the data starts.
+struct PlyHeader {
+  int format = -1;  // 0 ascii, 1 binary little endian, 2 binary big endian
+  std::vector<PlyElement> elements;
+  size_t data_start = 0;
+};
 
-Expected<RawMesh> readPly(const std::string& path) {
-  auto text = readWholeFile(path);
-  if (!text) return text.error();
-  return parsePly(*text, path);
-}
-
-Expected<RawMesh> parsePly(const std::string& buf, const std::string& path) {
+Expected<PlyHeader> parsePlyHeader(const std::string& buf, const std::string& path) {
   auto bad = [&](const std::string& what) {
     return Error{ErrorCode::kUnreadable, path + ": " + what};
   };
-
-  // Header.
   size_t pos = 0;
   auto line = [&](std::string* out) {
     if (pos >= buf.size()) return false;
@@ -340,13 +337,72 @@ Expected<RawMesh> parsePly(const std::string& buf, const std::string& path) {
     }  // comment, obj_info and blank lines are ignored
   }
   if (!ended || format < 0) return bad("incomplete PLY header");
+  return PlyHeader{format, std::move(elements), pos};
+}
 
+// Vertex indices of one face or strip, each checked before its conversion to an integer:
+// indices may be stored as floating-point values, and a NaN or out-of-range value would make
+// the conversion undefined. -1 (a restart) is allowed in strips. `where` names the item.
+Status checkedIndices(const std::vector<double>& values, int64_t nv, bool strip,
+                      const std::string& where, std::vector<int64_t>* list) {
+  list->resize(values.size());
+  for (size_t j = 0; j < values.size(); ++j) {
+    const double x = values[j];
+    if (!std::isfinite(x) || x != std::floor(x))
+      return Error{ErrorCode::kInvalidData,
+                   where + ": vertex index " + shortest(x) + " is not an integer"};
+    if (x >= static_cast<double>(nv) || (x < 0.0 && !(strip && x == -1.0)))
+      return Error{ErrorCode::kInvalidData, where + " references vertex " + shortest(x) + " of " +
+                                                std::to_string(std::max<int64_t>(nv, 0))};
+    (*list)[j] = static_cast<int64_t>(x);
+  }
+  return {};
+}
+
+// The triangles of a face (a fan from its first vertex) or of a triangle strip: triangle j is
+// (s_j, s_j+1, s_j+2), with the first two swapped on odd j so that all triangles keep the
+// strip's orientation; -1 restarts the strip.
+void addPolygon(const std::vector<int64_t>& list, bool strip, std::vector<Triangle>* out) {
+  if (!strip) {
+    for (size_t j = 1; j + 1 < list.size(); ++j)
+      out->push_back({static_cast<int32_t>(list[0]), static_cast<int32_t>(list[j]),
+                      static_cast<int32_t>(list[j + 1])});
+    return;
+  }
+  size_t begin = 0;
+  for (size_t j = 0; j <= list.size(); ++j) {
+    if (j < list.size() && list[j] >= 0) continue;
+    for (size_t a = begin; a + 2 < j; ++a) {
+      const bool odd = (a - begin) % 2 == 1;
+      const int32_t s0 = static_cast<int32_t>(list[a]), s1 = static_cast<int32_t>(list[a + 1]),
+                    s2 = static_cast<int32_t>(list[a + 2]);
+      out->push_back(odd ? Triangle{s1, s0, s2} : Triangle{s0, s1, s2});
+    }
+    begin = j + 1;
+  }
+}
+
+}  // namespace
+
+Expected<RawMesh> readPly(const std::string& path) {
+  auto text = readWholeFile(path);
+  if (!text) return text.error();
+  return parsePly(*text, path);
+}
+
+Expected<RawMesh> parsePly(const std::string& buf, const std::string& path) {
+  auto bad = [&](const std::string& what) {
+    return Error{ErrorCode::kUnreadable, path + ": " + what};
+  };
+  auto header = parsePlyHeader(buf, path);
+  if (!header) return header.error();
+  const int format = header->format;
   RawMesh out;
-  PlyData data(buf, pos, format);
+  PlyData data(buf, header->data_start, format);
   int64_t nv = -1;
   std::vector<double> values;
   std::vector<int64_t> list;
-  for (const PlyElement& e : elements) {
+  for (const PlyElement& e : header->elements) {
     const bool is_vertex = e.name == "vertex";
     const bool is_face = e.name == "face";
     const bool is_strip = e.name == "tristrips";
@@ -390,42 +446,10 @@ Expected<RawMesh> parsePly(const std::string& buf, const std::string& path) {
         values.resize(static_cast<size_t>(cnt));
         for (double& x : values) x = data.read(pr.type);
         if (static_cast<int>(k) != iidx || !(is_face || is_strip)) continue;
-        // Indices may be stored as floating-point values: check them as such before the
-        // conversion to an integer (NaN or out-of-range values would make it undefined).
-        list.resize(values.size());
-        for (size_t j = 0; j < values.size(); ++j) {
-          const double x = values[j];
-          auto invalid = [&](const std::string& what) {
-            return Error{ErrorCode::kInvalidData,
-                         path + ": " + e.name + " " + std::to_string(i) + what};
-          };
-          if (!std::isfinite(x) || x != std::floor(x))
-            return invalid(": vertex index " + shortest(x) + " is not an integer");
-          if (x >= static_cast<double>(nv) || (x < 0.0 && !(is_strip && x == -1.0)))
-            return invalid(" references vertex " + shortest(x) + " of " +
-                           std::to_string(std::max<int64_t>(nv, 0)));
-          list[j] = static_cast<int64_t>(x);
-        }
-        if (is_face) {
-          for (size_t j = 1; j + 1 < list.size(); ++j)
-            out.triangles.push_back({static_cast<int32_t>(list[0]), static_cast<int32_t>(list[j]),
-                                     static_cast<int32_t>(list[j + 1])});
-        } else {
-          // Strip: triangle j is (s_j, s_j+1, s_j+2), with the first two swapped on odd j
-          // so that all triangles keep the strip's orientation; -1 restarts the strip.
-          size_t begin = 0;
-          for (size_t j = 0; j <= list.size(); ++j) {
-            if (j < list.size() && list[j] >= 0) continue;
-            for (size_t a = begin; a + 2 < j; ++a) {
-              const bool odd = (a - begin) % 2 == 1;
-              const int32_t s0 = static_cast<int32_t>(list[a]),
-                            s1 = static_cast<int32_t>(list[a + 1]),
-                            s2 = static_cast<int32_t>(list[a + 2]);
-              out.triangles.push_back(odd ? Triangle{s1, s0, s2} : Triangle{s0, s1, s2});
-            }
-            begin = j + 1;
-          }
-        }
+        const Status st = checkedIndices(values, nv, is_strip,
+                                         path + ": " + e.name + " " + std::to_string(i), &list);
+        if (!st) return st.error();
+        addPolygon(list, is_strip, &out.triangles);
       }
       if (!data.ok())
         return bad("truncated data in element '" + e.name + "' at item " + std::to_string(i));
