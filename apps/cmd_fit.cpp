@@ -101,6 +101,7 @@ int runFit(const FitCommandArgs& c, const CLI::App* cmd) {
   eo.seed = fo.seed;
   eo.union_samples = 100000;
   eo.proximity_segments = 0;
+  eo.shadow_resolution = 0;  // not part of the summary
   const EvalResult ev = evaluateSpheres(index, r->spheres, eo);
   if (c.json) std::cout << fitJson(a, fo, *r, ev).dump() << '\n';
   if (!a.quiet) printFitSummary(a, *r, ev);

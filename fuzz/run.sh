@@ -7,6 +7,7 @@
 # (default build-fuzz), FUZZ_TARGETS (default all).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+bash scripts/setup.sh
 root=$PWD
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 seconds=${FUZZ_SECONDS:-6}

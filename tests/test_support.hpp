@@ -3,6 +3,7 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -14,15 +15,15 @@
 
 namespace sphereset::test {
 
-// A fresh folder for each test, named after the suite, the test and the run's random seed,
-// removed afterwards.
+// A fresh folder for each test, named after the suite, the test and the process (so that two
+// builds testing at once do not meet), removed afterwards.
 class TempDirTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
     dir_ = std::filesystem::temp_directory_path() /
-           ("sphereset_" + std::string(info->test_suite_name()) + "_" +
-            std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" + info->name());
+           ("sphereset_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
+            std::to_string(::getpid()));
     std::filesystem::create_directories(dir_);
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
@@ -34,6 +35,12 @@ class TempDirTest : public ::testing::Test {
   }
   std::filesystem::path dir_;
 };
+
+// A path in the temporary folder that is this process's own (for tests without the fixture).
+inline std::filesystem::path tempPath(const std::string& name) {
+  return std::filesystem::temp_directory_path() /
+         ("sphereset_" + std::to_string(::getpid()) + "_" + name);
+}
 
 // A failed call with the given code, one line that names `path` and contains `words`.
 template <class T>

@@ -13,6 +13,12 @@ namespace sphereset {
 // the evaluation's surface certificate alike: a set the bound made to cover is certified.
 inline constexpr int kSurfaceSplitDepth = 10;
 
+// The coverage certificates accept points within this fraction of the bounding-box diagonal
+// outside a sphere, so that a set built to touch the surface exactly (a circumscribed sphere)
+// is not refuted by the last bit of rounding. (The fit's bound needs none of it: it grows radii
+// by a slack of the same size beyond what each piece needs.)
+inline constexpr double kCoverageToleranceRel = 1e-12;
+
 struct EvalOptions {
   uint64_t seed = 1;               // all sampling is seeded; results do not depend on threads
   int64_t union_samples = 200000;  // Monte Carlo samples for the union's outside volume

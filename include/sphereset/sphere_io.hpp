@@ -42,7 +42,8 @@ struct LinkSpheres {
 
 // Reads every link of a YAML file in file order, as cuRobo writes them: a "collision_spheres:"
 // mapping of link names to lists of spheres {center: [x, y, z], radius: r} (flow or block
-// style) at the top level, or nested as robot_cfg: kinematics: collision_spheres:. A link
+// style) at the top level, or nested as robot_cfg: kinematics: collision_spheres: (or
+// kinematics: collision_spheres:). A link
 // with an empty entry has no spheres. Any other format holds one set, returned as one link
 // named after the file's stem. Errors: kUnreadable (not YAML), kInvalidData (no
 // collision_spheres, a link that is not a list, a sphere without center or radius, a value
@@ -66,9 +67,6 @@ Status writeLinkSpheres(const std::string& path, const std::vector<LinkSpheres>&
                         const SphereFileMeta& meta = {});
 std::string formatLinkSpheres(const std::vector<LinkSpheres>& links,
                               const SphereFileMeta& meta = {});
-
-// Writes a whole file atomically (temporary file + rename). Used by every writer.
-Status writeFileAtomically(const std::string& path, const std::string& contents);
 
 // Tree files: Bradshaw's .sph ("levels branching" then one "x y z r error" line per slot) or
 // JSON with explicit parent/child links per node. Writes are atomic.

@@ -36,11 +36,6 @@ namespace {
 using detail::mixSeed;
 using detail::uniform01;
 
-// Coverage tests accept points within this fraction of the bounding-box diagonal outside a
-// sphere, so that a set built to touch the surface exactly (a circumscribed sphere) is not
-// refuted by the last bit of rounding.
-constexpr double kCoverRelTol = 1e-12;
-
 struct CoverStats {
   double gap = 0.0;
   double uncertified = 0.0;  // area (surface) or count (interior) left undecided
@@ -202,7 +197,7 @@ EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& s
 
   // Coverage: spheres grown by the rounding tolerance.
   std::vector<Sphere> grown = spheres;
-  for (Sphere& s : grown) s.radius += kCoverRelTol * diag;
+  for (Sphere& s : grown) s.radius += kCoverageToleranceRel * diag;
   const detail::SphereGrid grown_grid(grown);
   surfaceCoverage(mesh, grown_grid, n, options, diag, &res);
   interiorCoverage(index, grown_grid, n, options, diag, &res);

@@ -13,8 +13,8 @@
 // Parallel preparation (beyond the paper): with many clusters, the per-point scan over all
 // clusters dominates, so batches of queued points are scanned in parallel against the
 // clusters as they were when the batch began, and decided one by one in queue order against
-// the clusters as they are then; see the comments in assignPoints for why the labels are
-// exactly those of the sequential fill. Measured (same labels, 2 cores): spot n = 1024,
+// the clusters as they are then; see assign_prepare.hpp for why the labels are exactly
+// those of the sequential fill. Measured (same labels, 2 cores): spot n = 1024,
 // assignment 42.8 s -> 35.1 s; armadillo n = 512, 32.6 s -> 29.9 s, where the outside-volume
 // queries, made in order so that the freshest tables cull them, are most of the time.
 //

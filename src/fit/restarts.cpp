@@ -10,6 +10,8 @@
 
 namespace sphereset::detail {
 
+uint64_t restartSeed(uint64_t seed, int r) { return r == 0 ? seed : mixSeed(seed, 7000 + r); }
+
 Expected<FitResult> fitWithRestarts(const SolidIndex& index, const FitOptions& o) {
   const auto t0 = FitClock::now();
   FitOptions one = o;
@@ -18,7 +20,7 @@ Expected<FitResult> fitWithRestarts(const SolidIndex& index, const FitOptions& o
   FitTimings sum;
   int64_t queries = 0, culled = 0, optimizer = 0;
   for (int r = 0; r < o.restarts; ++r) {
-    one.seed = r == 0 ? o.seed : mixSeed(o.seed, 7000 + r);
+    one.seed = restartSeed(o.seed, r);
     auto f = fitSpheres(index, one);
     if (!f) return f;
     sum.sampling += f->seconds.sampling;

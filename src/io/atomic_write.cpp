@@ -1,5 +1,7 @@
 // Atomic file writes: every output of the library goes to a temporary file in the target's
 // folder, which is then renamed over the target, so a failed write never leaves a partial file.
+#include "io/atomic_write.hpp"
+
 #include <sys/stat.h>
 #include <unistd.h>
 

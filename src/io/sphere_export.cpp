@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "io/atomic_write.hpp"
 #include "sphereset/export.hpp"
 #include "sphereset/render.hpp"
 #include "sphereset/sphere.hpp"

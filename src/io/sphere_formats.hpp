@@ -26,6 +26,9 @@ Expected<SphereTree> parseSphereTree(SphereFormat format, const std::string& tex
 Expected<std::vector<LinkSpheres>> parseYamlLinks(const std::string& text, const std::string& name);
 // Several links in the layout the single-link YAML writer uses; an empty link as "[]".
 std::string formatYamlLinks(const std::vector<LinkSpheres>& links, const SphereFileMeta& meta);
+// The spheres of one link as the YAML writers list them, one "center"/"radius" entry each,
+// indented under a link key.
+void writeYamlSphereList(std::ostream& os, const std::vector<Sphere>& spheres);
 // A link name as a YAML mapping key: as it is when it reads back as the same string, else
 // double-quoted with escapes.
 std::string yamlKey(const std::string& name);
@@ -35,8 +38,6 @@ std::string yamlMappingKey(const std::string& name, int indent);
 
 // The lower-case extension of a path, with its dot.
 std::string extensionOf(const std::string& path);
-// A whole file as a string (kUnreadable when it cannot be read).
-Expected<std::string> readText(const std::string& path);
 // kInvalidData, naming `where`, for a sphere with a NaN or infinite value or a negative radius.
 Status checkSphere(const std::string& where, const Sphere& s);
 // The JSON document read from `in` (the file `path`); kUnreadable when it is not JSON.

@@ -3,7 +3,6 @@
 // write in atomic_write.cpp.
 #include "sphereset/sphere_io.hpp"
 
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -17,16 +16,18 @@
 #include <optional>
 #include <sstream>
 
+#include "io/atomic_write.hpp"
 #include "io/sphere_formats.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_tree.hpp"
+#include "util/read_file.hpp"
 
 namespace sphereset {
 
 using detail::checkSphere;
 using detail::extensionOf;
 using detail::parseJson;
-using detail::readText;
+using detail::readFileText;
 
 namespace {
 
@@ -84,15 +85,6 @@ std::optional<int64_t> jsonInteger(const nlohmann::json& v, int64_t lo, int64_t 
   return std::nullopt;
 }
 
-// A whole file as a string.
-Expected<std::string> readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return Error{ErrorCode::kUnreadable, path + ": read error"};
-  return text;
-}
-
 }  // namespace detail
 
 std::string detail::formatNumber(double x) {
@@ -148,9 +140,7 @@ std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& sphere
     case SphereFormat::kYaml:
       os << "# " << meta.generator << ": " << spheres.size() << " spheres\n";
       os << "collision_spheres:\n  " << detail::yamlMappingKey(meta.name, 2) << "\n";
-      for (const Sphere& s : spheres)
-        os << "    - \"center\": [" << num(s.center.x()) << ", " << num(s.center.y()) << ", "
-           << num(s.center.z()) << "]\n      \"radius\": " << num(s.radius) << '\n';
+      detail::writeYamlSphereList(os, spheres);
       break;
   }
   return os.str();
@@ -170,7 +160,7 @@ Status writeSpheres(const std::string& path, const std::vector<Sphere>& spheres,
 Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
   auto format = sphereFormatFromPath(path);
   if (!format) return format.error();
-  auto text = readText(path);
+  auto text = readFileText(path);
   if (!text) return text.error();
   return detail::parseSpheres(*format, *text, path);
 }
@@ -178,7 +168,7 @@ Expected<std::vector<Sphere>> readSpheres(const std::string& path) {
 Expected<std::vector<LinkSpheres>> readLinkSpheres(const std::string& path) {
   auto format = sphereFormatFromPath(path);
   if (!format) return format.error();
-  auto text = readText(path);
+  auto text = readFileText(path);
   if (!text) return text.error();
   return detail::parseLinkSpheres(*format, *text, path);
 }

@@ -8,16 +8,18 @@
 #include <string>
 #include <vector>
 
+#include "io/atomic_write.hpp"
 #include "io/sphere_formats.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/sphere_tree.hpp"
+#include "util/read_file.hpp"
 
 namespace sphereset {
 
 using detail::checkSphere;
 using detail::jsonInteger;
 using detail::parseJson;
-using detail::readText;
+using detail::readFileText;
 
 namespace {
 
@@ -28,7 +30,7 @@ std::string num(double x) { return detail::formatNumber(x); }
 Expected<SphereTree> readSphereTree(const std::string& path) {
   auto format = sphereFormatFromPath(path);
   if (!format) return format.error();
-  auto text = readText(path);
+  auto text = readFileText(path);
   if (!text) return text.error();
   return detail::parseSphereTree(*format, *text, path);
 }

@@ -112,8 +112,8 @@ Expected<std::vector<LinkSpheres>> parseLinks(const std::string& text, const std
   const YAML::Node spheres = findCollisionSpheres(root, &key_path);
   if (!spheres.IsDefined())
     return invalid(name +
-                   ": no collision_spheres mapping (looked at the top level and under "
-                   "robot_cfg: kinematics:)");
+                   ": no collision_spheres mapping (looked at the top level, under "
+                   "robot_cfg: kinematics: and under kinematics:)");
   std::vector<LinkSpheres> out;
   if (spheres.IsNull()) return out;
   if (spheres.IsScalar())
@@ -222,12 +222,16 @@ std::string formatYamlLinks(const std::vector<LinkSpheres>& links, const SphereF
   os << "collision_spheres:" << (links.empty() ? " {}\n" : "\n");
   for (const LinkSpheres& l : links) {
     os << "  " << yamlMappingKey(l.link, 2) << (l.spheres.empty() ? " []\n" : "\n");
-    for (const Sphere& s : l.spheres)
-      os << "    - \"center\": [" << formatNumber(s.center.x()) << ", "
-         << formatNumber(s.center.y()) << ", " << formatNumber(s.center.z())
-         << "]\n      \"radius\": " << formatNumber(s.radius) << '\n';
+    writeYamlSphereList(os, l.spheres);
   }
   return os.str();
+}
+
+void writeYamlSphereList(std::ostream& os, const std::vector<Sphere>& spheres) {
+  for (const Sphere& s : spheres)
+    os << "    - \"center\": [" << formatNumber(s.center.x()) << ", " << formatNumber(s.center.y())
+       << ", " << formatNumber(s.center.z()) << "]\n      \"radius\": " << formatNumber(s.radius)
+       << '\n';
 }
 
 }  // namespace sphereset::detail

@@ -1,5 +1,7 @@
-// Readers for OFF and PLY. They produce raw vertex and triangle arrays; welding, degenerate
-// removal and orientation happen in cleanMesh like for every other format.
+// Readers for OFF (the Geomview format: header, counts, vertices, polygons) and PLY 1.0 (Turk's
+// Stanford polygon format: ascii and binary, with elements and typed properties declared in the
+// header). They produce raw vertex and triangle arrays; welding, degenerate removal and
+// orientation happen in cleanMesh like for every other format.
 #include "mesh/off_ply.hpp"
 
 #include <algorithm>
@@ -13,18 +15,11 @@
 #include <sstream>
 #include <string_view>
 
+#include "util/read_file.hpp"
+
 namespace sphereset::detail {
 
 namespace {
-
-// The whole file as a string (NUL-terminated, so that strtod may run over its data).
-Expected<std::string> readWholeFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return Error{ErrorCode::kUnreadable, path + ": read error"};
-  return text;
-}
 
 // The shortest text that reads back as `x` ("7", "1.5", "1e+30", "nan").
 std::string shortest(double x) {
@@ -47,7 +42,7 @@ bool parseInteger(std::string_view t, int64_t* out) {
 }  // namespace
 
 Expected<RawMesh> readOff(const std::string& path) {
-  auto text = readWholeFile(path);
+  auto text = readFileText(path);
   if (!text) return text.error();
   return parseOff(*text, path);
 }
@@ -385,7 +380,7 @@ void addPolygon(const std::vector<int64_t>& list, bool strip, std::vector<Triang
 }  // namespace
 
 Expected<RawMesh> readPly(const std::string& path) {
-  auto text = readWholeFile(path);
+  auto text = readFileText(path);
   if (!text) return text.error();
   return parsePly(*text, path);
 }

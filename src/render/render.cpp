@@ -13,6 +13,7 @@
 #include <limits>
 #include <numbers>
 
+#include "io/atomic_write.hpp"
 #include "render/camera.hpp"
 #include "sphereset/export.hpp"
 #include "sphereset/sphere_io.hpp"

@@ -21,7 +21,6 @@
 #include <optional>
 
 #include "sphereset/sphere_tree.hpp"
-#include "sphereset/tree.hpp"
 
 namespace sphereset {
 namespace {

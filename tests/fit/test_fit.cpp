@@ -2,11 +2,11 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include "fit/restarts.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "test_meshes.hpp"
 #include "test_support.hpp"
-#include "util/sampling.hpp"
 
 namespace sphereset {
 namespace {
@@ -166,7 +166,7 @@ TEST(Fit, RestartsKeepTheBestOfIndependentFits) {
   std::vector<FitResult> single;
   for (int r = 0; r < kRestarts; ++r) {
     FitOptions one = o;
-    one.seed = r == 0 ? o.seed : detail::mixSeed(o.seed, 7000 + r);
+    one.seed = detail::restartSeed(o.seed, r);
     auto f = fitSpheres(idx, one);
     ASSERT_TRUE(f.ok()) << f.error().message;
     single.push_back(std::move(*f));

@@ -7,15 +7,12 @@
 #include <random>
 
 #include "index/oracles.hpp"
+#include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "test_meshes.hpp"
 
 namespace sphereset {
 namespace {
-
-// Points within this fraction of the bounding-box diagonal outside a sphere count as inside
-// it: the rounding allowance the library documents for its coverage tests.
-constexpr double kCoverRelTol = 1e-12;
 
 bool inSomeSphere(const std::vector<Sphere>& spheres, const Vec3& p, double tol) {
   for (const Sphere& s : spheres)
@@ -32,7 +29,7 @@ struct Counts {
 Counts bruteForceCoverage(const SolidIndex& idx, const std::vector<Sphere>& spheres,
                           int per_triangle, int interior, uint64_t seed) {
   const Mesh& m = idx.mesh();
-  const double tol = kCoverRelTol * idx.bounds().diagonal();
+  const double tol = kCoverageToleranceRel * idx.bounds().diagonal();
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   Counts c;

@@ -102,7 +102,7 @@ TEST(SphereExport, MeshesReadBackAsClosedSolidsInsideTheSpheres) {
     const Sphere& s = spheres[i / m.vertices_per_sphere];
     EXPECT_NEAR((m.mesh.vertices[i] - s.center).norm(), s.radius, 1e-12);
   }
-  const auto dir = std::filesystem::temp_directory_path() / "sphereset_export_test";
+  const auto dir = test::tempPath("export_test");
   std::filesystem::create_directories(dir);
   for (const char* name : {"s.ply", "s.obj", "s.gltf", "s.glb"}) {
     const std::string path = (dir / name).string();

@@ -7,6 +7,7 @@
 #include "render/camera.hpp"
 #include "sphereset/render.hpp"
 #include "test_meshes.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
@@ -63,7 +64,7 @@ TEST(Render, PngIsWrittenAndBadOptionsAreRefused) {
   auto img = renderScene(nullptr, ball, o);
   ASSERT_TRUE(img.ok());
   EXPECT_EQ(img->rgb.size(), 64u * 48u * 3u);
-  const auto path = std::filesystem::temp_directory_path() / "sphereset_render_test.png";
+  const auto path = test::tempPath("render_test.png");
   ASSERT_TRUE(writePng(path.string(), *img).ok());
   std::ifstream in(path, std::ios::binary);
   unsigned char head[24] = {};

@@ -13,6 +13,7 @@
 #include "sphereset/sphere_tree.hpp"
 #include "sphereset/tree.hpp"
 #include "test_meshes.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
@@ -299,7 +300,7 @@ TEST(SphereTree, FilesRoundTrip) {
   const auto balls = randomBalls(20, 23);
   const SphereTree t = buildSphereTree(balls, o)->tree;
   expectValidTree(t);
-  const auto dir = std::filesystem::temp_directory_path() / "sphereset_tree_test";
+  const auto dir = test::tempPath("tree_test");
   std::filesystem::create_directories(dir);
   for (const char* name : {"t.sph", "t.json"}) {
     const std::string path = (dir / name).string();
