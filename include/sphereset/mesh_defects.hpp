@@ -1,0 +1,59 @@
+// What makes a triangle mesh fail to be a solid beyond its edge topology: triangles that cross
+// each other, and how its closed shells sit relative to each other (apart, overlapping or
+// nested). The fit's repair (repair.hpp) decides from these what to do.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sphereset/mesh.hpp"
+
+namespace sphereset {
+
+struct SelfIntersectionOptions {
+  // Stop collecting after this many intersecting pairs (the count is then a lower bound).
+  int64_t max_pairs = 100000;
+};
+
+// Pairs of triangles that share a point other than a common vertex or a common edge: crossing
+// triangles, and coplanar triangles that overlap (a duplicated or folded face).
+struct SelfIntersections {
+  std::vector<std::array<int32_t, 2>> pairs;  // (a, b) with a < b, sorted
+  bool truncated = false;                     // max_pairs was reached
+  bool any() const { return !pairs.empty(); }
+};
+
+SelfIntersections findSelfIntersections(const Mesh& mesh,
+                                        const SelfIntersectionOptions& options = {});
+
+// One edge-connected component of a mesh.
+struct Shell {
+  std::vector<int32_t> triangles;  // indices into the mesh
+  bool closed = false;             // no boundary edges
+  bool manifold = false;           // no non-manifold edges or vertices
+  bool oriented = false;           // every edge traversed once each way
+  bool self_intersecting = false;  // two of its own triangles intersect
+  double volume = 0.0;             // signed; negative for an inward-facing shell
+  Aabb bbox;
+  // The innermost other shell that contains this one (both closed, not intersecting each
+  // other), or -1.
+  int32_t parent = -1;
+  int depth = 0;  // number of shells that contain it
+
+  // Closed, manifold, oriented and free of self-intersections: it bounds a solid by itself.
+  bool clean() const { return closed && manifold && oriented && !self_intersecting; }
+};
+
+struct ShellAnalysis {
+  std::vector<Shell> shells;
+  // Pairs of shells whose triangles intersect (i < j, sorted).
+  std::vector<std::array<int32_t, 2>> intersecting;
+  SelfIntersections intersections;  // of the whole mesh
+};
+
+ShellAnalysis analyzeShells(const Mesh& mesh, const SelfIntersectionOptions& options = {});
+
+// The mesh made of the given triangles of `mesh` (unused vertices dropped).
+Mesh submesh(const Mesh& mesh, const std::vector<int32_t>& triangles);
+
+}  // namespace sphereset

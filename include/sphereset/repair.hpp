@@ -1,0 +1,89 @@
+// Turning the meshes users have into a solid the fit can run on, while keeping the original
+// triangles: the fit then bounds both (FitOptions::also_cover, EvalOptions::also_cover).
+//
+// The ladder, first step that yields a clean solid wins:
+//   none     the mesh is a clean solid: closed, 2-manifold, oriented, no self-intersections,
+//            shells apart (nested shells are allowed: an inward one is a cavity);
+//   welded   welding vertices within a tolerance (at most kAutoWeldRel of the bounding box
+//            diagonal unless given) closes it;
+//   capped   its boundary loops, closed by fans, make every shell clean;
+//   union    every shell is clean but some overlap: the union of the shells (corefinement);
+//   wrapped  anything else (open, non-manifold, inconsistently oriented, self-intersecting):
+//            CGAL's 3D Alpha Wrapping, a watertight 2-manifold that contains every triangle.
+// Shells nested inside another with the same orientation add nothing and are dropped; inward
+// shells inside another are cavities, filled by default (RepairOptions::fill_cavities).
+//
+// The union and the wrapping are given by the caller (RepairOptions::operations): the
+// sphereset_repair library (GPL, CGAL; repair_cgal.hpp) provides them. Without them the meshes
+// that need them are refused.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sphereset/mesh.hpp"
+#include "sphereset/mesh_defects.hpp"
+#include "sphereset/status.hpp"
+
+namespace sphereset {
+
+// Largest weld tolerance tried automatically, relative to the bounding box diagonal.
+inline constexpr double kAutoWeldRel = 1e-6;
+
+// The operations of the repair that a library outside the MIT-licensed core performs:
+// sphereset_repair (GPL, CGAL) provides them as cgalSolidOperations() (repair_cgal.hpp).
+struct SolidOperations {
+  // The union of clean closed outward-oriented shells.
+  std::function<Expected<Mesh>(const std::vector<Mesh>& shells)> unite;
+  // A watertight 2-manifold outward-oriented mesh without self-intersections that strictly
+  // contains every triangle of the soup; alpha and offset are absolute lengths.
+  std::function<Expected<Mesh>(const Mesh& soup, double alpha, double offset)> wrap;
+};
+
+enum class RepairKind { kNone, kWelded, kCapped, kUnion, kWrapped };
+const char* repairName(RepairKind k);  // "none", "welded", "capped", "union", "wrapped"
+
+struct RepairOptions {
+  bool enabled = true;  // false: only a clean solid is accepted (the others are refused)
+  // Weld tolerance, absolute. Negative: automatic (exact welding, then up to kAutoWeldRel of
+  // the diagonal if that closes the mesh).
+  double weld_tolerance = -1.0;
+  // Fill cavities (inward shells inside another shell, and holes the wrap could otherwise
+  // enter). A hollow casing is filled by default: for collision, its inside cannot be reached
+  // without crossing its walls, and spheres that bound the walls cover it anyway.
+  bool fill_cavities = true;
+  // Alpha Wrapping parameters, absolute lengths; 0 chooses them from the mesh (repair.cpp).
+  double wrap_alpha = 0.0;
+  double wrap_offset = 0.0;
+  // The union and the wrapping; when empty, meshes that need them are refused.
+  SolidOperations operations;
+};
+
+struct RepairResult {
+  Mesh solid;     // closed, oriented outward, free of self-intersections: what is fitted
+  Mesh original;  // the input's triangles (exactly welded, degenerate ones dropped)
+  RepairKind kind = RepairKind::kNone;
+  MeshDiagnosis diagnosis;          // of the input (exact welding)
+  ShellAnalysis shells;             // of the input after welding
+  double weld_tolerance = 0.0;      // used (0: exact)
+  int64_t holes_capped = 0;         // boundary loops closed by fans
+  int64_t shells_dropped = 0;       // nested inside another with the same orientation
+  int64_t cavities_filled = 0;      // inward shells dropped (fill_cavities)
+  int64_t cavities_kept = 0;        // inward shells kept as cavities
+  double wrap_alpha = 0.0, wrap_offset = 0.0;  // when wrapped
+  // Volume of the solid over the input's, when the input's is defined (every shell closed and
+  // oriented); NaN otherwise.
+  double volume_ratio = 0.0;
+  double seconds = 0.0;
+  std::vector<std::string> notes;  // one sentence per step taken, for the summary
+};
+
+// Repairs `mesh` (as loadMesh returns it, welded exactly). `name` prefixes error messages.
+// Errors: kNotSolid when the mesh needs a repair that is disabled or unavailable,
+// kInvalidData when nothing solid can be made of it (no triangles with area).
+Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& options,
+                                  const std::string& name);
+
+}  // namespace sphereset
