@@ -5,20 +5,17 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
 #include <tuple>
 
+#ifdef SPHERESET_WITH_REPAIR
+#include "sphereset/repair_cgal.hpp"
+#endif
+
 namespace sphereset::cli {
-
-namespace {
-
-// Relative weld tolerance tried when an exactly welded mesh is open: files that store each
-// triangle's corners separately in float (STL, some DAE exports) often differ in the last bits.
-constexpr double kSuggestedWeldRel = 1e-7;
-
-}  // namespace
 
 int exitFor(const Error& e) {
   switch (e.code) {
@@ -43,38 +40,90 @@ int fail(const Error& e) {
 
 nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
-void addMeshArgs(CLI::App* cmd, MeshArgs* a) {
+void addMeshArgs(CLI::App* cmd, MeshArgs* a, bool repair) {
   cmd->add_option("mesh", a->path, "Mesh file (OBJ, PLY, STL, OFF, DAE, glTF/GLB, ...)")
       ->required();
   cmd->add_option("--weld-tolerance", a->weld,
-                  "Merge vertices closer than this distance (default 0: exact duplicates only)")
+                  "Merge vertices closer than this distance (default: exact duplicates, then up "
+                  "to 1e-6 of the diagonal if that closes the mesh)")
+      ->check(CLI::NonNegativeNumber);
+  if (!repair) return;
+  cmd->add_option("--repair", a->repair,
+                  "auto: make a solid of a broken mesh (weld, cap holes, unite overlapping "
+                  "shells, or wrap) and bound its original triangles too; off: refuse any mesh "
+                  "that is not a closed oriented manifold")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "off"}));
+  cmd->add_flag("--fill-cavities,!--keep-cavities", a->fill_cavities,
+                "Fill inner cavities and holes (default; a hollow casing is solid for "
+                "collision), or keep cavities as empty space");
+  cmd->add_option("--wrap-alpha", a->wrap_alpha,
+                  "Wrapping: openings narrower than about this are not entered (default 0: "
+                  "1/100 of the diagonal)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--wrap-offset", a->wrap_offset,
+                  "Wrapping: distance of the wrap outside the triangles (default 0: alpha/30)")
       ->check(CLI::NonNegativeNumber);
 }
 
-std::string weldHint(const MeshArgs& a, const MeshDiagnosis& d) {
-  if (a.weld > 0.0 || d.boundary_edges == 0) return {};
-  LoadOptions lo;
-  lo.weld_tolerance = kSuggestedWeldRel * d.bbox.diagonal();
-  auto m = loadMesh(a.path, lo);
-  if (!m || !diagnoseMesh(m->mesh).isSolid()) return {};
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "--weld-tolerance %.2g", lo.weld_tolerance);
-  return buf;
+RepairOptions repairOptions(const MeshArgs& a) {
+  RepairOptions ro;
+  ro.enabled = a.repair != "off";
+  ro.weld_tolerance = a.weld;
+  ro.fill_cavities = a.fill_cavities;
+  ro.wrap_alpha = a.wrap_alpha;
+  ro.wrap_offset = a.wrap_offset;
+#ifdef SPHERESET_WITH_REPAIR
+  ro.operations = cgalSolidOperations();
+#endif
+  return ro;
 }
 
-Expected<LoadedMesh> loadSolid(const MeshArgs& a) {
-  LoadOptions lo;
-  lo.weld_tolerance = a.weld;
-  auto m = loadMesh(a.path, lo);
+const Mesh* SolidInput::original() const {
+  const bool same = repair.kind == RepairKind::kNone && repair.shells_dropped == 0 &&
+                    repair.cavities_filled == 0;
+  return same ? nullptr : &repair.original;
+}
+
+Expected<SolidInput> loadSolid(const MeshArgs& a) {
+  auto m = loadMesh(a.path);
   if (!m) return m.error();
-  const MeshDiagnosis d = diagnoseMesh(m->mesh);
-  if (!d.isSolid()) {
-    Error e = notSolidError(a.path, d);
-    const std::string hint = weldHint(a, d);
-    if (!hint.empty()) e.message += " (it closes with " + hint + ")";
-    return e;
+  auto r = repairMesh(m->mesh, repairOptions(a), a.path);
+  if (!r) return r.error();
+  return SolidInput{std::move(m).value(), std::move(r).value()};
+}
+
+nlohmann::json repairJson(const RepairResult& r) {
+  nlohmann::json j = {{"kind", repairName(r.kind)},
+                      {"weld_tolerance", r.weld_tolerance},
+                      {"holes_capped", r.holes_capped},
+                      {"shells_dropped", r.shells_dropped},
+                      {"cavities_filled", r.cavities_filled},
+                      {"cavities_kept", r.cavities_kept},
+                      {"triangles", r.solid.triangles.size()},
+                      {"seconds", r.seconds},
+                      {"notes", r.notes}};
+  // NaN is not JSON: an undefined ratio is null.
+  j["volume_ratio"] = std::isfinite(r.volume_ratio) ? nlohmann::json(r.volume_ratio) : nullptr;
+  if (r.kind == RepairKind::kWrapped) {
+    j["wrap_alpha"] = r.wrap_alpha;
+    j["wrap_offset"] = r.wrap_offset;
   }
-  return m;
+  return j;
+}
+
+std::string repairLine(const RepairResult& r) {
+  if (r.notes.empty() && r.kind == RepairKind::kNone) return {};
+  std::string s = std::string("repair ") + repairName(r.kind);
+  for (size_t i = 0; i < r.notes.size(); ++i) s += (i == 0 ? ": " : "; ") + r.notes[i];
+  if (std::isfinite(r.volume_ratio) && r.kind != RepairKind::kNone) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "; volume %.4f of the input's", r.volume_ratio);
+    s += buf;
+  }
+  char buf[48];
+  std::snprintf(buf, sizeof buf, " (%.2f s)", r.seconds);
+  return s + buf;
 }
 
 void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
@@ -177,6 +226,13 @@ std::string coverageGaps(const EvalResult& r) {
   if (!r.interior_covered && (r.surface_covered || r.max_interior_gap > 0.0)) {
     std::snprintf(buf, sizeof buf, "interior not covered (max gap %.3g of the diagonal)",
                   r.max_interior_gap);
+    gaps += (gaps.empty() ? "" : ", ") + std::string(buf);
+  }
+  if (!r.original_covered) {
+    std::snprintf(buf, sizeof buf,
+                  "original triangles not covered (max gap %.3g of the diagonal, %lld "
+                  "triangles)",
+                  r.max_original_gap, static_cast<long long>(r.original_uncovered_triangles));
     gaps += (gaps.empty() ? "" : ", ") + std::string(buf);
   }
   return gaps;

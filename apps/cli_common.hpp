@@ -13,6 +13,7 @@
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/mesh.hpp"
+#include "sphereset/repair.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/status.hpp"
 
@@ -44,20 +45,39 @@ int fail(const Error& e);
 
 nlohmann::json vec(const Vec3& v);
 
-// The mesh argument and the weld tolerance of the commands that load a mesh.
+// The mesh argument and how a mesh that is not a clean solid is made one (repair.hpp).
 struct MeshArgs {
   std::string path;
-  double weld = 0.0;
+  double weld = -1.0;  // negative: automatic
+  std::string repair = "auto";
+  bool fill_cavities = true;
+  double wrap_alpha = 0.0, wrap_offset = 0.0;
 };
 
-void addMeshArgs(CLI::App* cmd, MeshArgs* a);
+// `repair`: whether the repair options are added (commands that fit or measure) or only the
+// weld tolerance (commands that draw).
+void addMeshArgs(CLI::App* cmd, MeshArgs* a, bool repair = true);
 
-// If the mesh is open and welding within 1e-7 of its diagonal makes it a solid, the option to
-// pass ("--weld-tolerance X"); empty otherwise.
-std::string weldHint(const MeshArgs& a, const MeshDiagnosis& d);
+// The repair options the arguments ask for, with the union and the wrapping of this build.
+RepairOptions repairOptions(const MeshArgs& a);
 
-// Loads and requires a closed solid.
-Expected<LoadedMesh> loadSolid(const MeshArgs& a);
+// A loaded mesh and the solid made of it.
+struct SolidInput {
+  LoadedMesh loaded;
+  RepairResult repair;
+  // The input triangles when the solid differs from them (the fit and the evaluation must
+  // cover them too), else null.
+  const Mesh* original() const;
+};
+
+// Loads the mesh and makes a solid of it (or says why it cannot).
+Expected<SolidInput> loadSolid(const MeshArgs& a);
+
+// The "repair" object of the JSON summaries.
+nlohmann::json repairJson(const RepairResult& r);
+
+// One line for the summaries on stderr, e.g. "repair: wrapped (...)"; empty for "none".
+std::string repairLine(const RepairResult& r);
 
 // Fit options shared by `fit` and `tree`.
 struct FitArgs {

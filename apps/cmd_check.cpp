@@ -1,4 +1,5 @@
-// sphereset check: loads a mesh and diagnoses it as a solid.
+// sphereset check: loads a mesh, diagnoses it as a solid (topology, self-intersections, shells)
+// and says what fit will do about each problem.
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -8,6 +9,8 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "sphereset/mesh.hpp"
+#include "sphereset/mesh_defects.hpp"
+#include "sphereset/repair.hpp"
 
 namespace sphereset::cli {
 namespace {
@@ -16,6 +19,27 @@ struct CheckArgs {
   MeshArgs mesh;
   bool json = false;
 };
+
+struct ShellCounts {
+  int64_t shells = 0, closed = 0, clean = 0, inward = 0, nested = 0, intersecting_pairs = 0;
+  int64_t triangle_pairs = 0;
+  bool truncated = false;
+};
+
+ShellCounts countShells(const ShellAnalysis& sa) {
+  ShellCounts c;
+  c.shells = static_cast<int64_t>(sa.shells.size());
+  for (const Shell& s : sa.shells) {
+    c.closed += s.closed;
+    c.clean += s.clean();
+    c.inward += s.closed && s.volume < 0.0;
+    c.nested += s.parent >= 0;
+  }
+  c.intersecting_pairs = static_cast<int64_t>(sa.intersecting.size());
+  c.triangle_pairs = static_cast<int64_t>(sa.intersections.pairs.size());
+  c.truncated = sa.intersections.truncated;
+  return c;
+}
 
 nlohmann::json checkJson(const LoadedMesh& m, const MeshDiagnosis& d) {
   const LoadReport& r = m.report;
@@ -51,6 +75,28 @@ nlohmann::json checkJson(const LoadedMesh& m, const MeshDiagnosis& d) {
             {"flipped", r.flipped}}}};
 }
 
+nlohmann::json shellsJson(const ShellCounts& c) {
+  return {{"shells", c.shells},
+          {"closed_shells", c.closed},
+          {"clean_shells", c.clean},
+          {"inward_shells", c.inward},
+          {"nested_shells", c.nested},
+          {"intersecting_shell_pairs", c.intersecting_pairs},
+          {"intersecting_triangle_pairs", c.triangle_pairs},
+          {"intersections_truncated", c.truncated}};
+}
+
+void printShells(const ShellCounts& c) {
+  std::printf("  crossings   %s%lld intersecting triangle pairs\n", c.truncated ? "at least " : "",
+              static_cast<long long>(c.triangle_pairs));
+  std::printf(
+      "  shells      %lld (%lld closed, %lld clean, %lld inward-facing, %lld nested in another, "
+      "%lld intersecting pairs)\n",
+      static_cast<long long>(c.shells), static_cast<long long>(c.closed),
+      static_cast<long long>(c.clean), static_cast<long long>(c.inward),
+      static_cast<long long>(c.nested), static_cast<long long>(c.intersecting_pairs));
+}
+
 void printCheck(const LoadedMesh& m, const MeshDiagnosis& d) {
   const LoadReport& r = m.report;
   auto yes = [](bool b) { return b ? "yes" : "no"; };
@@ -80,33 +126,47 @@ void printCheck(const LoadedMesh& m, const MeshDiagnosis& d) {
               d.bbox.min.y(), d.bbox.min.z(), d.bbox.max.x(), d.bbox.max.y(), d.bbox.max.z(),
               d.bbox.diagonal());
   std::printf("  edges       %.6g .. %.6g\n", d.min_edge, d.max_edge);
-  std::printf("  solid       %s\n",
-              d.isSolid() ? "yes: ready for fitting" : "no: fitting needs a closed manifold solid");
+  std::printf("  solid       %s\n", d.isSolid() ? "closed, oriented 2-manifold"
+                                               : "no: not a closed oriented 2-manifold");
 }
 
 int runCheck(const CheckArgs& a) {
-  LoadOptions lo;
-  lo.weld_tolerance = a.mesh.weld;
-  auto m = loadMesh(a.mesh.path, lo);
+  auto m = loadMesh(a.mesh.path);
   if (!m) return fail(m.error());
   const MeshDiagnosis d = diagnoseMesh(m->mesh);
-  const std::string hint = d.isSolid() ? std::string() : weldHint(a.mesh, d);
+  const ShellCounts sc = countShells(analyzeShells(m->mesh));
+  // What fit would do with the same options.
+  auto r = repairMesh(m->mesh, repairOptions(a.mesh), a.mesh.path);
+  std::string plan;
+  if (!r) {
+    plan = "refuse it: " + r.error().message;
+  } else if (r->kind == RepairKind::kNone && r->notes.empty()) {
+    plan = "use it as it is";
+  } else {
+    plan = repairLine(*r);
+  }
   if (a.json) {
     nlohmann::json j = checkJson(*m, d);
-    if (!hint.empty()) j["hint"] = "closes with " + hint;
+    j["self_intersections"] = shellsJson(sc);
+    if (r) j["repair"] = repairJson(*r);
+    j["fit"] = plan;
     std::cout << j.dump() << '\n';
   } else {
     printCheck(*m, d);
-    if (!hint.empty()) std::printf("  hint        the mesh closes with %s\n", hint.c_str());
+    printShells(sc);
+    std::printf("  fit will    %s\n", plan.c_str());
   }
-  return d.isSolid() ? kOk : kNotSolid;
+  return r ? kOk : exitFor(r.error());
 }
 
 }  // namespace
 
 Command registerCheck(CLI::App& app) {
   auto a = std::make_shared<CheckArgs>();
-  CLI::App* cmd = app.add_subcommand("check", "Load a mesh and diagnose it as a solid");
+  CLI::App* cmd = app.add_subcommand(
+      "check",
+      "Load a mesh, diagnose it as a solid and say what fit will do about each problem (exit 0 "
+      "when fit accepts it with the same options)");
   addMeshArgs(cmd, &a->mesh);
   cmd->add_flag("--json", a->json, "Print one JSON object");
   return {cmd, [a] { return runCheck(*a); }};

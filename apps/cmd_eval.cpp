@@ -23,8 +23,8 @@ struct EvalArgs {
   bool json = false;
 };
 
-nlohmann::json evalJson(const EvalResult& r, size_t count) {
-  return {{"spheres", count},
+nlohmann::json evalJson(const EvalResult& r, size_t count, bool original) {
+  nlohmann::json j = {{"spheres", count},
           {"mesh_volume", r.mesh_volume},
           {"bbox_diagonal", r.bbox_diagonal},
           {"er_sum", r.er_sum},
@@ -40,6 +40,12 @@ nlohmann::json evalJson(const EvalResult& r, size_t count) {
           {"shadow_error_sky", r.shadow_error_sky},
           {"shadow_error_lights", r.shadow_error_lights},
           {"seconds", r.seconds}};
+  if (original) {
+    j["original_covered"] = r.original_covered;
+    j["max_original_gap"] = r.max_original_gap;
+    j["original_uncovered_triangles"] = r.original_uncovered_triangles;
+  }
+  return j;
 }
 
 void printEval(const EvalResult& r, const EvalOptions& eo) {
@@ -52,6 +58,11 @@ void printEval(const EvalResult& r, const EvalOptions& eo) {
               static_cast<long long>(r.uncovered_triangles));
   std::printf("  interior covered %s (max gap %.3g of the diagonal)\n",
               r.interior_covered ? "yes" : "no", r.max_interior_gap);
+  if (eo.original)
+    std::printf(
+        "  original covered %s (max gap %.3g of the diagonal, %lld triangles not covered)\n",
+        r.original_covered ? "yes" : "no", r.max_original_gap,
+        static_cast<long long>(r.original_uncovered_triangles));
   std::printf("  proximity error  %.6f of the diagonal (%d segments)\n", r.proximity_error,
               eo.proximity_segments);
   if (eo.shadow_resolution > 0)
@@ -73,7 +84,13 @@ int runEval(EvalArgs a) {
   if (!tree_in) return fail(tree_in.error());
   // Plain sets read as two-level trees; a JSON tree file does not read as a plain set.
   const bool is_tree = tree_in->depth >= 2 || !readSpheres(spheres_path).ok();
-  const SolidIndex index(m->mesh);
+  const SolidIndex index(m->repair.solid);
+  eo.original = m->original();
+  const std::string rl = repairLine(m->repair);
+  if (!a.json && !rl.empty())
+    std::printf("%s: %s\n  E_r is relative to the repaired solid's volume; coverage is certified "
+                "for the repaired solid and for the original triangles\n",
+                a.mesh.path.c_str(), rl.c_str());
   nlohmann::json levels = nlohmann::json::array();
   const int first = is_tree ? 0 : tree_in->depth;
   for (int l = first; l <= tree_in->depth; ++l) {
@@ -81,7 +98,7 @@ int runEval(EvalArgs a) {
     if (spheres.empty()) return fail(Error{ErrorCode::kInvalidData, spheres_path + ": no spheres"});
     const EvalResult r = evaluateSpheres(index, spheres, eo);
     if (a.json) {
-      nlohmann::json j = evalJson(r, spheres.size());
+      nlohmann::json j = evalJson(r, spheres.size(), eo.original != nullptr);
       if (is_tree) j["level"] = l;
       levels.push_back(j);
     } else {
@@ -97,6 +114,7 @@ int runEval(EvalArgs a) {
   if (a.json) {
     nlohmann::json j = is_tree ? nlohmann::json{{"levels", levels}} : levels[0];
     j["mesh"] = a.mesh.path;
+    j["repair"] = repairJson(m->repair);
     j["spheres_file"] = spheres_path;
     j["seed"] = eo.seed;
     std::cout << j.dump() << '\n';

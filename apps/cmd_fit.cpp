@@ -24,8 +24,9 @@ struct FitCommandArgs {
 
 // The summary printed by --json.
 nlohmann::json fitJson(const FitArgs& a, const FitOptions& fo, const FitResult& r,
-                       const EvalResult& ev) {
+                       const EvalResult& ev, const RepairResult& rep) {
   return {{"mesh", a.mesh.path},
+          {"repair", repairJson(rep)},
           {"output", a.out_path},
           {"spheres", r.spheres.size()},
           {"er_sum", r.energy / ev.mesh_volume},
@@ -34,6 +35,7 @@ nlohmann::json fitJson(const FitArgs& a, const FitOptions& fo, const FitResult& 
           {"er_union_stderr", ev.er_union_stderr},
           {"surface_covered", ev.surface_covered},
           {"interior_covered", ev.interior_covered},
+          {"original_covered", ev.original_covered},
           {"points", r.points},
           {"interior_points", r.interior_points},
           {"rounds", r.iterations},
@@ -62,7 +64,10 @@ nlohmann::json fitJson(const FitArgs& a, const FitOptions& fo, const FitResult& 
 }
 
 // The summary on stderr unless --quiet.
-void printFitSummary(const FitArgs& a, const FitResult& r, const EvalResult& ev) {
+void printFitSummary(const FitArgs& a, const FitResult& r, const EvalResult& ev,
+                     const SolidInput& in) {
+  const std::string rl = repairLine(in.repair);
+  if (!rl.empty()) std::fprintf(stderr, "%s: %s\n", a.mesh.path.c_str(), rl.c_str());
   std::fprintf(stderr,
                "%s: %zu spheres -> %s\n"
                "  E_r summed %.4f (%.4f before bounding), E_r union %.4f +- %.4f\n"
@@ -79,6 +84,10 @@ void printFitSummary(const FitArgs& a, const FitResult& r, const EvalResult& ev)
                static_cast<long long>(r.sov_queries), static_cast<long long>(r.sov_queries_culled),
                r.seconds.total, r.seconds.sampling, r.seconds.assignment, r.seconds.update,
                r.seconds.teleport, r.seconds.bounding);
+  if (in.original())
+    std::fprintf(stderr,
+                 "  E_r relative to the repaired solid's volume; original triangles covered %s\n",
+                 ev.original_covered ? "yes" : "NO");
 }
 
 int runFit(const FitCommandArgs& c, const CLI::App* cmd) {
@@ -87,8 +96,9 @@ int runFit(const FitCommandArgs& c, const CLI::App* cmd) {
   if (!format) return fail(format.error());
   auto m = loadSolid(a.mesh);
   if (!m) return fail(m.error());
-  const FitOptions fo = fitOptions(a, cmd);
-  const SolidIndex index(m->mesh);
+  FitOptions fo = fitOptions(a, cmd);
+  fo.original = m->original();
+  const SolidIndex index(m->repair.solid);
   auto r = fitSpheres(index, fo);
   if (!r) return fail(Error{r.error().code, a.mesh.path + ": " + r.error().message});
   SphereFileMeta meta;
@@ -102,9 +112,10 @@ int runFit(const FitCommandArgs& c, const CLI::App* cmd) {
   eo.union_samples = 100000;
   eo.proximity_segments = 0;
   eo.shadow_resolution = 0;  // not part of the summary
+  eo.original = m->original();
   const EvalResult ev = evaluateSpheres(index, r->spheres, eo);
-  if (c.json) std::cout << fitJson(a, fo, *r, ev).dump() << '\n';
-  if (!a.quiet) printFitSummary(a, *r, ev);
+  if (c.json) std::cout << fitJson(a, fo, *r, ev, m->repair).dump() << '\n';
+  if (!a.quiet) printFitSummary(a, *r, ev, *m);
   // The summary's evaluation is eval's coverage check (same certificate depths).
   return coverageExit(a.mesh.path, "the fitted spheres", a.out_path, ev);
 }

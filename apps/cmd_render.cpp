@@ -1,4 +1,5 @@
 // sphereset render: draws the mesh with the spheres over it, from several views, to a PNG.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -60,7 +61,7 @@ int runRender(const RenderArgs& a) {
   if (!opts) return fail(opts.error());
   // The mesh is drawn even when it is not a closed solid.
   LoadOptions lo;
-  lo.weld_tolerance = a.mesh.weld;
+  lo.weld_tolerance = std::max(0.0, a.mesh.weld);  // negative: the default, exact
   auto m = loadMesh(a.mesh.path, lo);
   if (!m) return fail(m.error());
   std::vector<Sphere> spheres;

@@ -75,26 +75,37 @@ int runTree(TreeArgs a, const CLI::App* cmd) {
     for (int l = 0; l < a.to.depth && leaves <= (int64_t{1} << 16); ++l) leaves *= a.to.branching;
     if (leaves <= (int64_t{1} << 16)) a.fit.fit.num_spheres = static_cast<int>(leaves);
   }
-  const FitOptions fo = fitOptions(a.fit, cmd);
+  FitOptions fo = fitOptions(a.fit, cmd);
+  fo.original = m->original();
   a.to.parents = a.parents == "outside" ? TreeParents::kOutsideVolume : TreeParents::kMinimal;
   a.to.seed = fo.seed;
-  const SolidIndex index(m->mesh);
+  const SolidIndex index(m->repair.solid);
   auto r = fitSphereTree(index, fo, a.to);
   if (!r) return fail(Error{r.error().code, a.fit.mesh.path + ": " + r.error().message});
   SphereFileMeta meta;
   meta.source_mesh = a.fit.mesh.path;
   Status st = writeSphereTree(a.fit.out_path, r->tree.tree, meta);
   if (!st) return fail(st.error());
-  const double vol = signedVolume(m->mesh);
+  const double vol = signedVolume(m->repair.solid);
   // Eval's coverage check on the leaves as written; every parent encloses its children.
   EvalOptions eo;
   eo.seed = fo.seed;
   eo.union_samples = 0;
   eo.proximity_segments = 0;
   eo.shadow_resolution = 0;
+  eo.original = m->original();
   const EvalResult ev = evaluateSpheres(index, r->tree.tree.leaves(), eo);
-  if (a.json) std::cout << treeJson(a, fo, *r, vol, ev).dump() << '\n';
-  if (!a.fit.quiet) printTreeSummary(a, *r, vol, ev);
+  if (a.json) {
+    nlohmann::json j = treeJson(a, fo, *r, vol, ev);
+    j["repair"] = repairJson(m->repair);
+    j["original_covered"] = ev.original_covered;
+    std::cout << j.dump() << '\n';
+  }
+  if (!a.fit.quiet) {
+    const std::string rl = repairLine(m->repair);
+    if (!rl.empty()) std::fprintf(stderr, "%s: %s\n", a.fit.mesh.path.c_str(), rl.c_str());
+    printTreeSummary(a, *r, vol, ev);
+  }
   return coverageExit(a.fit.mesh.path, "the tree's leaves", a.fit.out_path, ev);
 }
 

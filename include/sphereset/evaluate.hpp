@@ -31,6 +31,9 @@ struct EvalOptions {
   int up_axis = 1;
   int shadow_resolution = 48;
   int shadow_lights = 64;
+  // The triangles of the input a repaired solid was made from (repair.hpp), certified as
+  // covered too; not owned, may be null.
+  const Mesh* original = nullptr;
 };
 
 struct EvalResult {
@@ -48,6 +51,10 @@ struct EvalResult {
   double max_surface_gap = 0.0;           // largest distance found from surface to the union / diag
   double surface_uncertified_area = 0.0;  // area that could be neither certified nor refuted
   int64_t uncovered_triangles = 0;
+  // Coverage of EvalOptions::original, certified like the surface's (true when none is given).
+  bool original_covered = true;
+  double max_original_gap = 0.0;  // / diag
+  int64_t original_uncovered_triangles = 0;
   // Interior coverage: certified on an adaptive octree of cells.
   bool interior_covered = false;
   double max_interior_gap = 0.0;           // / diag

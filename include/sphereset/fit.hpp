@@ -64,6 +64,10 @@ struct FitOptions {
   // with the lowest final outside volume is returned. The clustering's local minima vary a lot
   // with the seed, so this buys quality for time.
   int restarts = 1;
+  // The triangles of the input a repaired solid was made from (repair.hpp): the bound covers
+  // them too, exactly, after everything else (a last pass of the surface bound over them).
+  // Not owned; may be null.
+  const Mesh* original = nullptr;
   std::function<void(const FitProgress&)> progress;  // called from the calling thread
 };
 

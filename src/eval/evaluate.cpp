@@ -111,9 +111,16 @@ void unionOutsideVolume(const SolidIndex& index, const std::vector<Sphere>& sphe
   res->er_union_stderr = std::sqrt(var / m) / vol;
 }
 
-// Surface coverage, certified per triangle.
-void surfaceCoverage(const Mesh& mesh, const detail::SphereGrid& grown_grid, size_t n,
-                     const EvalOptions& options, double diag, EvalResult* res) {
+// Surface coverage of a mesh's triangles, certified per triangle.
+struct SurfaceCover {
+  bool covered = false;
+  double max_gap = 0.0;  // / diag
+  double uncertified = 0.0;
+  int64_t uncovered = 0;
+};
+
+SurfaceCover surfaceCoverage(const Mesh& mesh, const detail::SphereGrid& grown_grid, size_t n,
+                             const EvalOptions& options, double diag) {
   const size_t nt = mesh.triangles.size();
   std::vector<CoverStats> st(nt);
   tbb::parallel_for(size_t{0}, nt, [&](size_t t) {
@@ -121,13 +128,15 @@ void surfaceCoverage(const Mesh& mesh, const detail::SphereGrid& grown_grid, siz
     coverTriangle(grown_grid, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]],
                   0, options.surface_max_depth, &st[t]);
   });
+  SurfaceCover c;
   for (const CoverStats& s : st) {
-    res->max_surface_gap = std::max(res->max_surface_gap, s.gap);
-    res->surface_uncertified_area += s.uncertified;
-    if (s.gap > 0.0 || s.uncertified > 0.0) ++res->uncovered_triangles;
+    c.max_gap = std::max(c.max_gap, s.gap);
+    c.uncertified += s.uncertified;
+    if (s.gap > 0.0 || s.uncertified > 0.0) ++c.uncovered;
   }
-  res->max_surface_gap /= diag;
-  res->surface_covered = n > 0 && res->uncovered_triangles == 0;
+  c.max_gap /= diag;
+  c.covered = n > 0 && c.uncovered == 0;
+  return c;
 }
 
 // Interior coverage on an octree below an 8³ grid of cubes covering the bounds.
@@ -199,7 +208,17 @@ EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& s
   std::vector<Sphere> grown = spheres;
   for (Sphere& s : grown) s.radius += kCoverageToleranceRel * diag;
   const detail::SphereGrid grown_grid(grown);
-  surfaceCoverage(mesh, grown_grid, n, options, diag, &res);
+  const SurfaceCover sc = surfaceCoverage(mesh, grown_grid, n, options, diag);
+  res.surface_covered = sc.covered;
+  res.max_surface_gap = sc.max_gap;
+  res.surface_uncertified_area = sc.uncertified;
+  res.uncovered_triangles = sc.uncovered;
+  if (options.original) {
+    const SurfaceCover oc = surfaceCoverage(*options.original, grown_grid, n, options, diag);
+    res.original_covered = oc.covered;
+    res.max_original_gap = oc.max_gap;
+    res.original_uncovered_triangles = oc.uncovered;
+  }
   interiorCoverage(index, grown_grid, n, options, diag, &res);
 
   if (options.proximity_segments > 0 && n > 0)

@@ -108,10 +108,10 @@ void splitPieces(const Vec3& a, const Vec3& b, const Vec3& c, double min_edge, S
 }  // namespace
 
 BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, double min_edge,
-                        std::vector<std::vector<Vec3>>* held) {
+                        std::vector<std::vector<Vec3>>* held, const Mesh* surface) {
   BoundStats st;
   std::vector<Sphere>& sp = *spheres;
-  const Mesh& mesh = index.mesh();
+  const Mesh& mesh = surface ? *surface : index.mesh();
   const double slack = kSlackRel * index.bounds().diagonal();
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
   const std::vector<double> sov_dr = radiusRates(index, sp, &st);

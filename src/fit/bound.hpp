@@ -19,8 +19,10 @@ struct BoundStats {
 // inside it, by convexity) or is shorter than `min_edge`; such a small piece is given to the
 // sphere whose outside volume grows least when enlarged to hold its vertices.
 // If `held` is given, (*held)[i] receives the vertices of the pieces sphere i was enlarged for.
+// The triangles are those of `surface`, or of the index's mesh when it is null.
 BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, double min_edge,
-                        std::vector<std::vector<Vec3>>* held = nullptr);
+                        std::vector<std::vector<Vec3>>* held = nullptr,
+                        const Mesh* surface = nullptr);
 
 // Interior coverage on the octree of cover_cells.hpp (the same test `evaluateSpheres` runs):
 // cubes down to `max_depth` whose centre lies inside the solid but in no sphere are handed

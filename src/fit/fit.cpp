@@ -128,6 +128,15 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
     detail::shrinkPasses(index, ps, min_edge, o, &best.spheres, &bs, &res);
   res.bounding_enlarged = bs.enlarged;
   detail::boundInteriorPasses(index, &best.spheres, &res);
+  if (o.original) {
+    // A repaired solid's input triangles: the wrap holds them strictly inside and a union or
+    // capped solid holds them on or inside its boundary, so this pass rarely grows a sphere;
+    // it makes their coverage exact rather than implied.
+    const detail::BoundStats ob =
+        detail::boundSurface(index, &best.spheres, min_edge, nullptr, o.original);
+    res.bounding_pieces += ob.pieces;
+    res.bounding_queries += ob.queries;
+  }
   for (Sphere& s : best.spheres) s.radius += o.padding;
   res.spheres = std::move(best.spheres);
   res.outside_volume = detail::outsideVolumes(index, res.spheres);

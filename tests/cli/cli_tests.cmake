@@ -36,11 +36,12 @@ endfunction()
 cli_test(check_solid 0 ARGS check ${link} STDOUT "solid +yes")
 cli_test(check_json 0 ARGS check ${link} --json
          STDOUT "\"vertices\":152.*\"triangles\":300|\"triangles\":300.*\"vertices\":152")
-cli_test(check_open 5 ARGS check ${work}/open.off STDOUT "closed +no")
+cli_test(check_open 5 ARGS check ${work}/open.off --repair off STDOUT "closed +no.*fit will +refuse")
 cli_test(check_missing 3 ARGS check ${work}/missing.obj STDERR "missing.obj: no such file")
 cli_test(check_garbage 3 ARGS check ${work}/garbage.stl STDERR "garbage.stl: ")
 cli_test(check_nan 4 ARGS check ${work}/nan.off STDERR "nan.off: vertex 1 has a NaN")
-cli_test(eval_open 5 ARGS eval ${work}/open.off ${work}/bound.txt STDERR "open.off: not a closed solid: 3 boundary edges")
+cli_test(eval_open 5 ARGS eval ${work}/open.off ${work}/bound.txt --repair off
+         STDERR "open.off: not a closed solid: 3 boundary edges")
 cli_test(eval_bad_spheres 4 ARGS eval ${link} ${work}/bad.txt STDERR "bad.txt:1: expected four numbers")
 cli_test(eval_json 0 ARGS eval ${link} ${work}/bound.txt --json --samples 20000 --segments 100
          STDOUT "\"er_sum\":.*\"surface_covered\":true")
@@ -50,7 +51,7 @@ cli_test(fit_txt 0 ARGS fit ${link} -n 5 -o ${work}/link5.txt --quality fast -q
          FILE ${work}/link5.txt SPHERES 5)
 cli_test(fit_bad_extension 2 ARGS fit ${link} -n 5 -o ${work}/link5.xyz -q
          STDERR "link5.xyz: unknown sphere-set extension" FORBID ${work}/link5.xyz)
-cli_test(fit_open_mesh 5 ARGS fit ${work}/open.off -n 5 -o ${work}/never1.txt -q
+cli_test(fit_open_mesh 5 ARGS fit ${work}/open.off -n 5 -o ${work}/never1.txt -q --repair off
          STDERR "open.off: not a closed solid" FORBID ${work}/never1.txt)
 cli_test(fit_zero_spheres 2 ARGS fit ${link} -n 0 -o ${work}/never2.txt -q FORBID ${work}/never2.txt)
 cli_test(fit_too_many 2 ARGS fit ${link} -n 50000 -o ${work}/never3.txt -q --points 1000
@@ -109,3 +110,33 @@ target_compile_definitions(sphereset_cli_unit_tests PRIVATE
   SPHERESET_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
 sphereset_warnings(sphereset_cli_unit_tests)
 gtest_discover_tests(sphereset_cli_unit_tests TEST_PREFIX cli. DISCOVERY_TIMEOUT 60)
+
+# Broken meshes: what check says fit will do, and fits that cover the original triangles.
+set(data ${CMAKE_CURRENT_SOURCE_DIR}/data)
+cli_test(check_open_box 0 ARGS check ${data}/open_box.off
+         STDOUT "closed +no .4 boundary edges.*fit will +repair capped: closed 1 hole by fans")
+cli_test(fit_open_box 0 ARGS fit ${data}/open_box.off -n 6 -o ${work}/open_box.txt --quality fast
+         --json -q FILE ${work}/open_box.txt SPHERES 6
+         STDOUT "\"original_covered\":true.*\"repair\":{[^}]*\"kind\":\"capped\"")
+cli_test(fit_open_box_off 5 ARGS fit ${data}/open_box.off -n 6 -o ${work}/never20.txt -q
+         --repair off STDERR "open_box.off: not a closed solid: 4 boundary edges"
+         FORBID ${work}/never20.txt)
+if(SPHERESET_WITH_REPAIR)
+  cli_test(check_overlapping 0 ARGS check ${data}/overlapping_cubes.off
+           STDOUT "shells +2 .*1 intersecting pairs.*fit will +repair union: united 2 shells")
+  cli_test(fit_overlapping 0 ARGS fit ${data}/overlapping_cubes.off -n 8 -o ${work}/cubes.json
+           --quality fast --json -q FILE ${work}/cubes.json SPHERES 8
+           STDOUT "\"original_covered\":true.*\"kind\":\"union\"")
+  cli_test(check_bow_tie 0 ARGS check ${data}/bow_tie.off
+           STDOUT "crossings +[1-9][0-9]* intersecting triangle pairs.*fit will +repair wrapped")
+  cli_test(fit_bow_tie 0 ARGS fit ${data}/bow_tie.off -n 8 -o ${work}/bow_tie.txt --quality fast
+           --json -q FILE ${work}/bow_tie.txt SPHERES 8
+           STDOUT "\"kind\":\"wrapped\".*\"wrap_alpha\"")
+  cli_test(eval_bow_tie 0 ARGS eval ${data}/bow_tie.off ${work}/bow_tie.txt --samples 2000
+           --segments 10 STDOUT "repaired solid's volume.*original covered +yes")
+  set_tests_properties(cli.eval_bow_tie PROPERTIES DEPENDS cli.fit_bow_tie)
+  cli_test(fit_single_triangle 0 ARGS fit ${work}/open.off -n 3 -o ${work}/tri.txt --quality fast
+           -q FILE ${work}/tri.txt SPHERES 3)
+  cli_test(fit_keep_cavities 0 ARGS fit ${data}/open_box.off -n 8 -o ${work}/shell.txt
+           --keep-cavities --quality fast --json -q STDOUT "\"kind\":\"wrapped\"")
+endif()

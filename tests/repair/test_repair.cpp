@@ -1,0 +1,158 @@
+// The repair ladder without the union and the wrapping (the MIT core alone): clean, welded,
+// capped and nested meshes become solids exactly; meshes that need more are refused with a
+// message that says why and what would help.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "broken_meshes.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/repair.hpp"
+#include "sphereset/solid_index.hpp"
+#include "test_support.hpp"
+
+namespace sphereset::test {
+namespace {
+
+Expected<RepairResult> repairCore(const Mesh& m, bool fill = true) {
+  RepairOptions o;
+  o.fill_cavities = fill;
+  return repairMesh(m, o, "mesh.off");
+}
+
+TEST(Repair, CleanBoxIsUsedAsItIs) {
+  auto r = repairCore(makeBox(Vec3::Zero(), Vec3::Ones()));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kNone);
+  EXPECT_TRUE(r->notes.empty());
+  EXPECT_EQ(r->solid.triangles.size(), 12u);
+  EXPECT_NEAR(r->volume_ratio, 1.0, 1e-12);
+}
+
+TEST(Repair, DuplicatedFaceIsDroppedByTheLoader) {
+  const Mesh m = cubeWithDuplicatedFace();
+  auto c = cleanMesh(m.vertices, m.triangles);
+  ASSERT_TRUE(c.ok());
+  EXPECT_EQ(c->report.duplicate_dropped, 1);
+  auto r = repairCore(c->mesh);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kNone);
+  EXPECT_NEAR(signedVolume(r->solid), 1.0, 1e-12);
+}
+
+TEST(Repair, NestedShellWithTheSameOrientationIsDropped) {
+  auto r = repairCore(nestedCubes(false));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kNone);
+  EXPECT_EQ(r->shells_dropped, 1);
+  EXPECT_EQ(r->solid.triangles.size(), 12u);
+  EXPECT_NEAR(signedVolume(r->solid), 1.0, 1e-12);
+  ASSERT_EQ(r->shells.shells.size(), 2u);
+  EXPECT_TRUE(r->shells.intersecting.empty());
+}
+
+TEST(Repair, InwardNestedShellIsACavityFilledOrKept) {
+  auto filled = repairCore(nestedCubes(true), true);
+  ASSERT_TRUE(filled.ok()) << filled.error().message;
+  EXPECT_EQ(filled->cavities_filled, 1);
+  EXPECT_NEAR(signedVolume(filled->solid), 1.0, 1e-12);
+  auto kept = repairCore(nestedCubes(true), false);
+  ASSERT_TRUE(kept.ok()) << kept.error().message;
+  EXPECT_EQ(kept->cavities_kept, 1);
+  EXPECT_EQ(kept->solid.triangles.size(), 24u);
+  EXPECT_NEAR(signedVolume(kept->solid), 1.0 - 0.125, 1e-12);
+  EXPECT_NEAR(kept->volume_ratio, 1.0, 1e-12);
+}
+
+TEST(Repair, InsideOutShellIsTurnedOutward) {
+  Mesh m = makeBox(Vec3::Zero(), Vec3::Ones());
+  for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
+  auto r = repairCore(m);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_NEAR(signedVolume(r->solid), 1.0, 1e-12);
+}
+
+TEST(Repair, NearlyCoincidentCornersAreWeldedAutomatically) {
+  // Each triangle stores its own corners, a few 1e-9 apart (as a float STL export would).
+  const Mesh box = makeBox(Vec3::Zero(), Vec3::Ones());
+  Mesh m;
+  int k = 0;
+  for (const Triangle& t : box.triangles) {
+    Triangle nt;
+    for (int c = 0; c < 3; ++c) {
+      nt[c] = static_cast<int32_t>(m.vertices.size());
+      m.vertices.push_back(box.vertices[t[c]] + Vec3::Constant(1e-9 * (k++ % 3)));
+    }
+    m.triangles.push_back(nt);
+  }
+  auto c = cleanMesh(m.vertices, m.triangles);
+  ASSERT_TRUE(c.ok());
+  EXPECT_FALSE(diagnoseMesh(c->mesh).closed);
+  auto r = repairCore(c->mesh);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kWelded);
+  EXPECT_GT(r->weld_tolerance, 0.0);
+  EXPECT_LE(r->weld_tolerance, kAutoWeldRel * std::sqrt(3.0) * (1 + 1e-9));
+  ASSERT_FALSE(r->notes.empty());
+  EXPECT_NE(r->notes[0].find("welded"), std::string::npos);
+  EXPECT_NEAR(signedVolume(r->solid), 1.0, 1e-7);
+  // With the repair off the tolerance is not tried.
+  RepairOptions off;
+  off.enabled = false;
+  expectError(repairMesh(c->mesh, off, "mesh.off"), ErrorCode::kNotSolid, "mesh.off",
+              "boundary edges");
+}
+
+TEST(Repair, OpenBoxIsCappedExactly) {
+  auto r = repairCore(openBox());
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kCapped);
+  EXPECT_EQ(r->holes_capped, 1);
+  EXPECT_TRUE(diagnoseMesh(r->solid).isSolid());
+  EXPECT_NEAR(signedVolume(r->solid), 1.0, 1e-12);  // the fan lies in the missing face
+  EXPECT_TRUE(std::isnan(r->volume_ratio));         // an open input has no volume
+  EXPECT_EQ(r->original.triangles.size(), 10u);
+}
+
+TEST(Repair, FitOnACappedBoxCoversTheOriginalTriangles) {
+  auto r = repairCore(openBox());
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  const SolidIndex index(r->solid);
+  FitOptions fo;
+  fo.num_spheres = 6;
+  fo.max_iterations = 10;
+  fo.original = &r->original;
+  auto f = fitSpheres(index, fo);
+  ASSERT_TRUE(f.ok()) << f.error().message;
+  expectCovers(index, f->spheres);
+  expectPointsCovered(r->original, f->spheres);
+}
+
+TEST(Repair, WhatNeedsTheUnionOrTheWrapIsRefusedWithoutThem) {
+  expectError(repairCore(overlappingCubes()), ErrorCode::kNotSolid, "mesh.off",
+              "1 pair of shells intersects; rebuild with SPHERESET_WITH_REPAIR=ON");
+  expectError(repairCore(boxWithFlippedFace()), ErrorCode::kNotSolid, "mesh.off",
+              "inconsistently oriented");
+  expectError(repairCore(bowTiePrism()), ErrorCode::kNotSolid, "mesh.off",
+              "intersecting triangle pair");
+  expectError(repairCore(openSheet()), ErrorCode::kNotSolid, "mesh.off", "wrap it");
+}
+
+TEST(Repair, OffRefusesAnythingButASolid) {
+  RepairOptions off;
+  off.enabled = false;
+  expectError(repairMesh(openBox(), off, "box.obj"), ErrorCode::kNotSolid, "box.obj",
+              "4 boundary edges");
+  auto ok = repairMesh(makeBox(Vec3::Zero(), Vec3::Ones()), off, "box.obj");
+  ASSERT_TRUE(ok.ok());
+  EXPECT_EQ(ok->kind, RepairKind::kNone);
+}
+
+TEST(Repair, BadWrapParametersAreRefused) {
+  RepairOptions o;
+  o.wrap_alpha = std::nan("");
+  expectError(repairMesh(openSheet(), o, "s.off"), ErrorCode::kInvalidArgument, "s.off", "alpha");
+}
+
+}  // namespace
+}  // namespace sphereset::test

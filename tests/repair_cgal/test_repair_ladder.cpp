@@ -1,0 +1,129 @@
+// The whole repair ladder with CGAL's union and wrapping, on the broken meshes of
+// broken_meshes.hpp: the repair chosen, the solid's volume (closed form for the union, bounds
+// for the wrap), and a fit whose spheres cover every original triangle, checked by brute
+// force.
+#include <gtest/gtest.h>
+
+#include "broken_meshes.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/repair.hpp"
+#include "sphereset/repair_cgal.hpp"
+#include "sphereset/solid_index.hpp"
+#include "test_support.hpp"
+
+namespace sphereset::test {
+namespace {
+
+Expected<RepairResult> repairAll(const Mesh& m, bool fill = true) {
+  RepairOptions o;
+  o.fill_cavities = fill;
+  o.operations = cgalSolidOperations();
+  return repairMesh(m, o, "mesh.off");
+}
+
+// The repaired solid is a clean solid, and a fit of n spheres covers it and the original.
+void expectFitCoversOriginal(const RepairResult& r, int n = 8) {
+  EXPECT_TRUE(diagnoseMesh(r.solid).isSolid());
+  EXPECT_FALSE(findSelfIntersections(r.solid).any());
+  const SolidIndex index(r.solid);
+  FitOptions fo;
+  fo.num_spheres = n;
+  fo.max_iterations = 10;
+  fo.original = &r.original;
+  auto f = fitSpheres(index, fo);
+  ASSERT_TRUE(f.ok()) << f.error().message;
+  EvalOptions eo;
+  eo.union_samples = 0;
+  eo.proximity_segments = 0;
+  eo.shadow_resolution = 0;
+  eo.original = &r.original;
+  const EvalResult e = evaluateSpheres(index, f->spheres, eo);
+  EXPECT_TRUE(e.surface_covered);
+  EXPECT_TRUE(e.interior_covered);
+  EXPECT_TRUE(e.original_covered);
+  expectPointsCovered(r.original, f->spheres);
+}
+
+// Every vertex of the original lies inside the repaired solid.
+void expectContainsVertices(const RepairResult& r) {
+  const SolidIndex index(r.solid);
+  int64_t outside = 0;
+  for (const Vec3& v : r.original.vertices) outside += index.classify(v) == Containment::kOutside;
+  EXPECT_EQ(outside, 0);
+}
+
+TEST(RepairLadder, OverlappingCubesBecomeTheirUnion) {
+  auto r = repairAll(overlappingCubes());
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kUnion);
+  ASSERT_EQ(r->shells.intersecting.size(), 1u);
+  EXPECT_NEAR(signedVolume(r->solid), 1.5, 1e-9);
+  expectFitCoversOriginal(*r);
+}
+
+TEST(RepairLadder, FlippedFaceIsWrappedTightly) {
+  auto r = repairAll(boxWithFlippedFace());
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kWrapped);
+  EXPECT_GT(r->diagnosis.misoriented_edges, 0);
+  // It holds the cube, and lies within twice the offset of it (the wrap's facets are at least
+  // the offset away and, where flat, about that).
+  const double d = 2.0 * r->wrap_offset;
+  EXPECT_GE(signedVolume(r->solid), 1.0);
+  EXPECT_LE(signedVolume(r->solid), std::pow(1.0 + 2.0 * d, 3));
+  EXPECT_TRUE(std::isnan(r->volume_ratio));  // a misoriented input has no volume
+  expectContainsVertices(*r);
+  expectFitCoversOriginal(*r);
+}
+
+TEST(RepairLadder, BowTiePrismIsWrappedAroundBothLobes) {
+  auto r = repairAll(bowTiePrism());
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kWrapped);
+  EXPECT_TRUE(r->shells.intersections.any());
+  ASSERT_EQ(r->shells.shells.size(), 1u);
+  EXPECT_TRUE(r->shells.shells[0].self_intersecting);
+  // The two lobes, 1/4 each, and at most a layer of twice the offset over the surface.
+  const double area = surfaceArea(r->original);
+  EXPECT_GE(signedVolume(r->solid), 0.5);
+  EXPECT_LE(signedVolume(r->solid), 0.5 + 2.0 * r->wrap_offset * area * 1.5);
+  expectContainsVertices(*r);
+  expectFitCoversOriginal(*r);
+}
+
+TEST(RepairLadder, OpenSheetBecomesAThinSlab) {
+  auto r = repairAll(openSheet());
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kWrapped);
+  EXPECT_GT(signedVolume(r->solid), 0.0);
+  // A slab about twice the offset thick over the unit square, its rim rounded.
+  const double t = 2.0 * r->wrap_offset;
+  EXPECT_LE(signedVolume(r->solid), 2.0 * t * std::pow(1.0 + 2.0 * t, 2));
+  expectContainsVertices(*r);
+  expectFitCoversOriginal(*r);
+}
+
+TEST(RepairLadder, OpenBoxIsCappedOrWrappedAsAShellWhenCavitiesAreKept) {
+  auto capped = repairAll(openBox(), true);
+  ASSERT_TRUE(capped.ok()) << capped.error().message;
+  EXPECT_EQ(capped->kind, RepairKind::kCapped);
+  expectFitCoversOriginal(*capped);
+  auto shell = repairAll(openBox(), false);
+  ASSERT_TRUE(shell.ok()) << shell.error().message;
+  EXPECT_EQ(shell->kind, RepairKind::kWrapped);
+  // The wrap enters the open top when alpha is below its size: a thin shell, far less than
+  // the box.
+  EXPECT_LT(signedVolume(shell->solid), 0.2);
+  expectFitCoversOriginal(*shell, 16);
+}
+
+TEST(RepairLadder, NestedAndDuplicatedNeedNoOperation) {
+  auto r = repairAll(nestedCubes(false));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kNone);
+  EXPECT_EQ(r->shells_dropped, 1);
+  expectFitCoversOriginal(*r);
+}
+
+}  // namespace
+}  // namespace sphereset::test
