@@ -1,18 +1,19 @@
-// Self-intersections of a triangle mesh: candidate pairs from the project's BVH (overlapping
-// triangle boxes), then an exact-topology, tolerance-geometry triangle–triangle test. The
-// test rests on the observation behind Möller 1997 ("A fast triangle-triangle intersection
-// test") and Guigue & Devillers 2003 ("Fast and robust triangle-triangle overlap test using
-// orientation predicates"): two closed triangles meet iff an edge of one meets the other, both
-// when they are coplanar and when they are not. Shared vertices and edges (by index) are
-// handled by the case analysis in trianglesIntersect().
+// Self-intersections of a triangle mesh: candidate pairs from a bounding-volume hierarchy over
+// the triangles' boxes (median splits, subtrees built in parallel), then an exact-topology,
+// tolerance-geometry triangle–triangle test. The test rests on the observation behind Möller 1997
+// ("A fast triangle-triangle intersection test") and Guigue & Devillers 2003 ("Fast and robust
+// triangle-triangle overlap test using orientation predicates"): two closed triangles meet iff an
+// edge of one meets the other, both when they are coplanar and when they are not. Shared vertices
+// and edges (by index) are handled by the case analysis in trianglesIntersect().
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
-#include "index/bvh.hpp"
 #include "mesh/triangle_intersection.hpp"
 #include "sphereset/mesh_defects.hpp"
 
@@ -22,6 +23,107 @@ namespace {
 // Triangles per block of the candidate search. Blocks run in index order, each in parallel,
 // so that stopping at max_pairs keeps the pairs with the smallest first index: deterministic.
 constexpr int32_t kBlockTriangles = 1 << 15;
+// Triangles per leaf of the hierarchy, and the size above which a node's two subtrees are
+// built in parallel.
+constexpr int32_t kLeafTriangles = 4;
+constexpr int32_t kParallelBuild = 1 << 14;
+
+bool boxesOverlap(const Aabb& a, const Aabb& b) {
+  return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
+}
+
+// The hierarchy over triangle boxes, nodes in depth-first order: a node's left child follows
+// it, `right` is the index of its right child (-1 for a leaf, whose triangles are
+// order[first, first + count)).
+struct BoxNode {
+  Aabb box;
+  int32_t right = -1;
+  int32_t first = 0, count = 0;
+};
+
+struct BoxHierarchy {
+  std::vector<int32_t> order;
+  std::vector<BoxNode> nodes;
+
+  BoxHierarchy(std::vector<int32_t> items, const std::vector<Aabb>& boxes)
+      : order(std::move(items)) {
+    if (!order.empty()) nodes = build(boxes, 0, static_cast<int32_t>(order.size()));
+  }
+
+  // Calls visit(t) for every triangle t whose box overlaps `query`.
+  template <class Visit>
+  void overlapping(const Aabb& query, const std::vector<Aabb>& boxes, Visit&& visit) const {
+    if (nodes.empty()) return;
+    int32_t stack[64];  // median splits: depth below log2(n) + 2
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const int32_t ni = stack[--top];
+      const BoxNode& node = nodes[ni];
+      if (!boxesOverlap(node.box, query)) continue;
+      if (node.right < 0) {
+        for (int32_t k = node.first; k < node.first + node.count; ++k)
+          if (boxesOverlap(boxes[order[k]], query)) visit(order[k]);
+      } else {
+        stack[top++] = node.right;
+        stack[top++] = ni + 1;
+      }
+    }
+  }
+
+ private:
+  std::vector<BoxNode> build(const std::vector<Aabb>& boxes, int32_t begin, int32_t end) {
+    BoxNode node;
+    const int32_t count = end - begin;
+    if (count <= kLeafTriangles) {
+      for (int32_t k = begin; k < end; ++k) node.box.extend(boxes[order[k]]);
+      node.first = begin;
+      node.count = count;
+      return {node};
+    }
+    // Split at the median box centre along the longest axis of the centres' bounds (twice the
+    // centres, which orders the same).
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (int32_t k = begin; k < end; ++k) {
+      const Vec3 c = boxes[order[k]].min + boxes[order[k]].max;
+      lo = lo.cwiseMin(c);
+      hi = hi.cwiseMax(c);
+    }
+    int axis = 0;
+    (hi - lo).maxCoeff(&axis);
+    const int32_t mid = begin + count / 2;
+    std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
+                     [&](int32_t x, int32_t y) {
+                       const double cx = boxes[x].min[axis] + boxes[x].max[axis];
+                       const double cy = boxes[y].min[axis] + boxes[y].max[axis];
+                       return cx != cy ? cx < cy : x < y;  // deterministic for equal keys
+                     });
+    std::vector<BoxNode> left, right;
+    if (count > kParallelBuild) {
+      tbb::parallel_invoke([&] { left = build(boxes, begin, mid); },
+                           [&] { right = build(boxes, mid, end); });
+    } else {
+      left = build(boxes, begin, mid);
+      right = build(boxes, mid, end);
+    }
+    std::vector<BoxNode> out;
+    out.reserve(1 + left.size() + right.size());
+    node.right = static_cast<int32_t>(1 + left.size());
+    node.box = left.front().box;
+    node.box.extend(right.front().box);
+    out.push_back(node);
+    auto append = [&out](const std::vector<BoxNode>& part) {
+      const int32_t base = static_cast<int32_t>(out.size());
+      for (BoxNode n : part) {
+        if (n.right >= 0) n.right += base;
+        out.push_back(n);
+      }
+    };
+    append(left);
+    append(right);
+    return out;
+  }
+};
 
 }  // namespace
 
@@ -205,8 +307,11 @@ SelfIntersections findSelfIntersections(const Mesh& mesh, const SelfIntersection
     b.max.array() += pad;
   }
 
-  detail::Bvh bvh;
-  bvh.build(mesh);
+  std::vector<int32_t> usable;
+  usable.reserve(n);
+  for (int32_t t = 0; t < n; ++t)
+    if (!geom[t].degenerate) usable.push_back(t);
+  const BoxHierarchy bvh(std::move(usable), box);
 
   const int64_t max_pairs = std::max<int64_t>(0, options.max_pairs);
   tbb::enumerable_thread_specific<std::vector<std::array<int32_t, 2>>> found;
@@ -218,22 +323,10 @@ SelfIntersections findSelfIntersections(const Mesh& mesh, const SelfIntersection
                         auto& local = found.local();
                         for (int32_t i = range.begin(); i < range.end(); ++i) {
                           if (geom[i].degenerate) continue;
-                          const Aabb& bi = box[i];
-                          bvh.traverse(
-                              [&](const Vec3& mn, const Vec3& mx) {
-                                return (mn.array() <= bi.max.array()).all() &&
-                                       (bi.min.array() <= mx.array()).all();
-                              },
-                              [&](int32_t leaf_pos) {
-                                const int32_t j = bvh.original[leaf_pos];
-                                if (j <= i) return;
-                                const Aabb& bj = box[j];
-                                if (!((bj.min.array() <= bi.max.array()).all() &&
-                                      (bi.min.array() <= bj.max.array()).all()))
-                                  return;
-                                if (detail::trianglesIntersect(mesh, i, j, geom[i], geom[j]))
-                                  local.push_back({i, j});
-                              });
+                          bvh.overlapping(box[i], box, [&](int32_t j) {
+                            if (j > i && detail::trianglesIntersect(mesh, i, j, geom[i], geom[j]))
+                              local.push_back({i, j});
+                          });
                         }
                       });
     for (auto& local : found) {
