@@ -11,12 +11,16 @@
 namespace sphereset {
 
 struct SelfIntersectionOptions {
-  // Stop collecting after this many intersecting pairs (the count is then a lower bound).
+  // Stop collecting after this many intersecting pairs (the count is then a lower bound). The
+  // pairs kept are the max_pairs smallest, so a truncated result is deterministic too.
   int64_t max_pairs = 100000;
 };
 
 // Pairs of triangles that share a point other than a common vertex or a common edge: crossing
-// triangles, and coplanar triangles that overlap (a duplicated or folded face).
+// triangles, and coplanar triangles that overlap (a duplicated or folded face). Vertices are
+// shared by index; contact within a relative tolerance (kIntersectionRelTol in
+// src/mesh/triangle_intersection.hpp, times the longest edge of the pair) counts. Degenerate
+// (zero-area) triangles are skipped.
 struct SelfIntersections {
   std::vector<std::array<int32_t, 2>> pairs;  // (a, b) with a < b, sorted
   bool truncated = false;                     // max_pairs was reached
@@ -36,7 +40,8 @@ struct Shell {
   double volume = 0.0;             // signed; negative for an inward-facing shell
   Aabb bbox;
   // The innermost other shell that contains this one (both closed, not intersecting each
-  // other), or -1.
+  // other), or -1. Containment is decided at one point of this shell (the centroid of its
+  // largest triangle) by the container's winding number.
   int32_t parent = -1;
   int depth = 0;  // number of shells that contain it
 
