@@ -96,6 +96,7 @@ Expected<SolidInput> loadSolid(const MeshArgs& a) {
 nlohmann::json repairJson(const RepairResult& r) {
   nlohmann::json j = {{"kind", repairName(r.kind)},
                       {"weld_tolerance", r.weld_tolerance},
+                      {"triangles_flipped", r.triangles_flipped},
                       {"holes_capped", r.holes_capped},
                       {"shells_dropped", r.shells_dropped},
                       {"cavities_filled", r.cavities_filled},

@@ -65,6 +65,14 @@ inline Mesh bowTiePrism() {
   return m;
 }
 
+// Two unit cubes sharing one edge (x = y = 1), vertices welded: a closed mesh with a
+// non-manifold edge (four triangles) and two non-manifold vertices.
+inline Mesh cubesSharingAnEdge() {
+  const Mesh m = joined(makeBox(Vec3::Zero(), Vec3::Ones()), makeBox(Vec3(1, 1, 0), Vec3(2, 2, 1)));
+  auto w = cleanMesh(m.vertices, m.triangles);
+  return w.ok() ? w->mesh : Mesh{};
+}
+
 // A single open square sheet, [0,1]^2 at z = 0, as 2 triangles.
 inline Mesh openSheet() {
   Mesh m;

@@ -6,7 +6,10 @@
 //            shells apart (nested shells are allowed: an inward one is a cavity);
 //   welded   welding vertices within a tolerance (at most kAutoWeldRel of the bounding box
 //            diagonal unless given) closes it;
-//   capped   its boundary loops, closed by fans, make every shell clean;
+//   reoriented  flipping triangles to a consistent orientation (across two-triangle edges)
+//            makes every shell clean;
+//   capped   its boundary loops, closed by triangulations of their own vertices, make every
+//            shell clean;
 //   union    every shell is clean but some overlap: the union of the shells (corefinement);
 //   wrapped  anything else (open, non-manifold, inconsistently oriented, self-intersecting):
 //            CGAL's 3D Alpha Wrapping, a watertight 2-manifold that contains every triangle.
@@ -42,8 +45,9 @@ struct SolidOperations {
   std::function<Expected<Mesh>(const Mesh& soup, double alpha, double offset)> wrap;
 };
 
-enum class RepairKind { kNone, kWelded, kCapped, kUnion, kWrapped };
-const char* repairName(RepairKind k);  // "none", "welded", "capped", "union", "wrapped"
+enum class RepairKind { kNone, kWelded, kReoriented, kCapped, kUnion, kWrapped };
+// "none", "welded", "reoriented", "capped", "union", "wrapped"
+const char* repairName(RepairKind k);
 
 struct RepairOptions {
   bool enabled = true;  // false: only a clean solid is accepted (the others are refused)
@@ -68,7 +72,8 @@ struct RepairResult {
   MeshDiagnosis diagnosis;          // of the input (exact welding)
   ShellAnalysis shells;             // of the input after welding
   double weld_tolerance = 0.0;      // used (0: exact)
-  int64_t holes_capped = 0;         // boundary loops closed by fans
+  int64_t triangles_flipped = 0;    // by the consistent orientation
+  int64_t holes_capped = 0;         // boundary loops closed
   int64_t shells_dropped = 0;       // nested inside another with the same orientation
   int64_t cavities_filled = 0;      // inward shells dropped (fill_cavities)
   int64_t cavities_kept = 0;        // inward shells kept as cavities

@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "repair/cap_holes.hpp"
+#include "repair/orient.hpp"
 
 namespace sphereset {
 namespace {
@@ -171,6 +172,8 @@ const char* repairName(RepairKind k) {
       return "none";
     case RepairKind::kWelded:
       return "welded";
+    case RepairKind::kReoriented:
+      return "reoriented";
     case RepairKind::kCapped:
       return "capped";
     case RepairKind::kUnion:
@@ -196,6 +199,8 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
   auto done = [&](Mesh solid, RepairKind kind) -> Expected<RepairResult> {
     res.solid = std::move(solid);
     res.kind = kind;
+    if (res.kind == RepairKind::kNone && res.triangles_flipped > 0)
+      res.kind = RepairKind::kReoriented;
     if (res.kind == RepairKind::kNone && res.weld_tolerance > 0.0) res.kind = RepairKind::kWelded;
     if (!(signedVolume(res.solid) > 0.0))
       return Error{ErrorCode::kNotSolid, name + ": the repaired mesh encloses no volume"};
@@ -232,6 +237,19 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
     return done(std::move(m), RepairKind::kNone);
   }
 
+  // Consistent orientation, where only the orientation is wrong (every edge of at most two
+  // triangles): exact, so it comes before anything that changes the geometry.
+  if (const MeshDiagnosis dw = diagnoseMesh(m); dw.misoriented_edges > 0 && dw.nonmanifold_edges == 0) {
+    Mesh oriented = m;
+    const int64_t flipped = detail::orientConsistently(&oriented);
+    if (flipped > 0) {
+      m = std::move(oriented);
+      res.triangles_flipped = flipped;
+      res.notes.push_back("flipped " + count(flipped, "triangle", "triangles") +
+                          " to a consistent orientation");
+    }
+  }
+
   // 2. Shells: clean and apart, possibly nested.
   res.shells = analyzeShells(m);
   // The input's volume, where defined: every shell closed and oriented, no triangles crossing.
@@ -255,7 +273,7 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
     res.holes_capped = detail::capHoles(&capped);
     const ShellAnalysis sc = analyzeShells(capped);
     if (res.holes_capped > 0 && allClean(sc) && sc.intersecting.empty()) {
-      res.notes.push_back("closed " + count(res.holes_capped, "hole", "holes") + " by fans");
+      res.notes.push_back("closed " + count(res.holes_capped, "hole", "holes") + " (triangulated over their own vertices)");
       return done(applyPlan(capped, sc, o.fill_cavities, &res), RepairKind::kCapped);
     }
   }

@@ -103,6 +103,29 @@ TEST(Repair, NearlyCoincidentCornersAreWeldedAutomatically) {
               "boundary edges");
 }
 
+TEST(Repair, FlippedFaceIsReorientedExactly) {
+  const Mesh m = boxWithFlippedFace();
+  EXPECT_GT(diagnoseMesh(m).misoriented_edges, 0);
+  auto r = repairCore(m);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kReoriented);
+  EXPECT_EQ(r->triangles_flipped, 1);
+  EXPECT_TRUE(diagnoseMesh(r->solid).isSolid());
+  EXPECT_NEAR(signedVolume(r->solid), 1.0, 1e-12);
+}
+
+TEST(Repair, ReorientationKeepsEveryTriangleAndFixesAShuffledSphere) {
+  // Every other triangle of an icosphere flipped; the whole then inside out.
+  Mesh m = makeIcosphere(1.0, 3);
+  for (size_t t = 0; t < m.triangles.size(); t += 2) std::swap(m.triangles[t][1], m.triangles[t][2]);
+  for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
+  auto r = repairCore(m);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kReoriented);
+  EXPECT_EQ(r->solid.triangles.size(), m.triangles.size());
+  EXPECT_NEAR(signedVolume(r->solid), signedVolume(makeIcosphere(1.0, 3)), 1e-12);
+}
+
 TEST(Repair, OpenBoxIsCappedExactly) {
   auto r = repairCore(openBox());
   ASSERT_TRUE(r.ok()) << r.error().message;
@@ -131,8 +154,8 @@ TEST(Repair, FitOnACappedBoxCoversTheOriginalTriangles) {
 TEST(Repair, WhatNeedsTheUnionOrTheWrapIsRefusedWithoutThem) {
   expectError(repairCore(overlappingCubes()), ErrorCode::kNotSolid, "mesh.off",
               "1 pair of shells intersects; rebuild with SPHERESET_WITH_REPAIR=ON");
-  expectError(repairCore(boxWithFlippedFace()), ErrorCode::kNotSolid, "mesh.off",
-              "inconsistently oriented");
+  expectError(repairCore(cubesSharingAnEdge()), ErrorCode::kNotSolid, "mesh.off",
+              "1 non-manifold edge");
   expectError(repairCore(bowTiePrism()), ErrorCode::kNotSolid, "mesh.off",
               "intersecting triangle pair");
   expectError(repairCore(openSheet()), ErrorCode::kNotSolid, "mesh.off", "wrap it");

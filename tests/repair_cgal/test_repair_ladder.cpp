@@ -61,17 +61,27 @@ TEST(RepairLadder, OverlappingCubesBecomeTheirUnion) {
   expectFitCoversOriginal(*r);
 }
 
-TEST(RepairLadder, FlippedFaceIsWrappedTightly) {
+TEST(RepairLadder, FlippedFaceIsReorientedNotWrapped) {
   auto r = repairAll(boxWithFlippedFace());
   ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->kind, RepairKind::kReoriented);
+  EXPECT_NEAR(signedVolume(r->solid), 1.0, 1e-12);
+  expectFitCoversOriginal(*r);
+}
+
+TEST(RepairLadder, NonManifoldEdgeIsWrappedTightly) {
+  const Mesh m = cubesSharingAnEdge();
+  ASSERT_EQ(diagnoseMesh(m).nonmanifold_edges, 1);
+  auto r = repairAll(m);
+  ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_EQ(r->kind, RepairKind::kWrapped);
-  EXPECT_GT(r->diagnosis.misoriented_edges, 0);
-  // It holds the cube, and lies within twice the offset of it (the wrap's facets are at least
-  // the offset away and, where flat, about that).
+  // It holds both cubes, and lies within twice the offset of them (the wrap's facets are at
+  // least the offset away and, where flat, about that), plus the edge's neighbourhood, which
+  // a wrap with this alpha may fill up to the alpha-ball's reach.
   const double d = 2.0 * r->wrap_offset;
-  EXPECT_GE(signedVolume(r->solid), 1.0);
-  EXPECT_LE(signedVolume(r->solid), std::pow(1.0 + 2.0 * d, 3));
-  EXPECT_TRUE(std::isnan(r->volume_ratio));  // a misoriented input has no volume
+  EXPECT_GE(signedVolume(r->solid), 2.0);
+  EXPECT_LE(signedVolume(r->solid), 2.0 * std::pow(1.0 + 2.0 * d, 3) + 4.0 * r->wrap_alpha * r->wrap_alpha);
+  EXPECT_TRUE(std::isnan(r->volume_ratio));  // a non-manifold input has no volume here
   expectContainsVertices(*r);
   expectFitCoversOriginal(*r);
 }
