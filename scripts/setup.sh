@@ -15,6 +15,9 @@ packages=(
   libgtest-dev         # unit tests
   libbenchmark-dev     # micro-benchmarks
   libpng-dev           # PNG pictures
+  libcgal-dev          # repair: corefinement and alpha wrapping, GPL, see README
+  libgmp-dev           # exact arithmetic linked by CGAL's CMake target (CGAL::CGAL)
+  libmpfr-dev          # exact arithmetic linked by CGAL's CMake target (CGAL::CGAL)
   clang                # fuzzing (fuzz/run.sh): libFuzzer needs clang
   libclang-rt-14-dev   # libFuzzer and the sanitizer runtimes for clang 14
   python3              # benchmark scripts (CSV tables)

@@ -19,5 +19,4 @@ Expected<Mesh> alphaWrap(const Mesh& soup, double alpha, double offset);
 // of self-intersections), by CGAL's corefinement with exact constructions.
 Expected<Mesh> solidUnion(const std::vector<Mesh>& solids);
 
-
 }  // namespace sphereset::detail

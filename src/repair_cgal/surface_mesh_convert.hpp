@@ -1,0 +1,79 @@
+// Private to sphereset_repair: conversion between sphereset::Mesh and CGAL::Surface_mesh for
+// any CGAL kernel (the wrapping uses inexact constructions, the union exact ones). Included by
+// the .cpp files of this library only, so that CGAL's headers stay out of the rest.
+#pragma once
+
+#include <CGAL/Surface_mesh.h>
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "sphereset/mesh.hpp"
+#include "sphereset/status.hpp"
+
+namespace sphereset::detail {
+
+// Copies `mesh` into `out` (emptied first). Fails when a vertex is not finite, an index is out
+// of range or a triangle cannot be added to a halfedge structure (non-manifold edge, or a
+// triangle with a repeated vertex).
+template <class Point>
+Status toSurfaceMesh(const Mesh& mesh, CGAL::Surface_mesh<Point>& out, const std::string& what) {
+  using SM = CGAL::Surface_mesh<Point>;
+  out.clear();
+  out.reserve(mesh.vertices.size(), 3 * mesh.triangles.size() / 2, mesh.triangles.size());
+  std::vector<typename SM::Vertex_index> ids;
+  ids.reserve(mesh.vertices.size());
+  for (const Vec3& v : mesh.vertices) {
+    if (!v.allFinite()) return Error{ErrorCode::kInvalidData, what + ": non-finite vertex"};
+    ids.push_back(out.add_vertex(Point(v.x(), v.y(), v.z())));
+  }
+  const auto n = static_cast<int64_t>(ids.size());
+  for (const Triangle& t : mesh.triangles) {
+    for (int32_t i : t)
+      if (i < 0 || i >= n)
+        return Error{ErrorCode::kInvalidData, what + ": triangle index out of range"};
+    if (out.add_face(ids[t[0]], ids[t[1]], ids[t[2]]) == SM::null_face())
+      return Error{ErrorCode::kInvalidData,
+                   what + ": not a 2-manifold oriented surface (a triangle could not be added)"};
+  }
+  return {};
+}
+
+// Copies a triangulated Surface_mesh into a Mesh (coordinates rounded to double), dropping
+// removed elements. Fails on a face that is not a triangle.
+template <class Point>
+Expected<Mesh> fromSurfaceMesh(const CGAL::Surface_mesh<Point>& sm, const std::string& what) {
+  using SM = CGAL::Surface_mesh<Point>;
+  Mesh out;
+  out.vertices.reserve(sm.number_of_vertices());
+  out.triangles.reserve(sm.number_of_faces());
+  std::vector<int32_t> index(sm.num_vertices(), -1);  // includes removed vertices
+  for (typename SM::Vertex_index v : sm.vertices()) {
+    const Point& p = sm.point(v);
+    index[static_cast<std::size_t>(v)] = static_cast<int32_t>(out.vertices.size());
+    out.vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                              CGAL::to_double(p.z()));
+  }
+  for (typename SM::Face_index f : sm.faces()) {
+    Triangle t{};
+    int k = 0;
+    for (typename SM::Vertex_index v : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
+      if (k == 3) break;
+      t[k++] = index[static_cast<std::size_t>(v)];
+    }
+    if (k != 3 || sm.degree(f) != 3)
+      return Error{ErrorCode::kInvalidData, what + ": output face is not a triangle"};
+    out.triangles.push_back(t);
+  }
+  return out;
+}
+
+// Reverses every triangle when the signed volume is negative (inside-out).
+inline void orientOutward(Mesh& mesh) {
+  if (signedVolume(mesh) >= 0.0) return;
+  for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
+}
+
+}  // namespace sphereset::detail
