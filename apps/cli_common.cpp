@@ -59,10 +59,10 @@ void addMeshArgs(CLI::App* cmd, MeshArgs* a, bool repair) {
                 "collision), or keep cavities as empty space");
   cmd->add_option("--wrap-alpha", a->wrap_alpha,
                   "Wrapping: openings narrower than about this are not entered (default 0: "
-                  "1/100 of the diagonal)")
+                  "1/50 of the diagonal)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--wrap-offset", a->wrap_offset,
-                  "Wrapping: distance of the wrap outside the triangles (default 0: alpha/30)")
+                  "Wrapping: distance of the wrap outside the triangles (default 0: alpha/20)")
       ->check(CLI::NonNegativeNumber);
 }
 

@@ -25,13 +25,15 @@ namespace {
 // that closes the mesh is used (coordinates stored per corner in float differ by ~1e-7).
 constexpr double kAutoWeldSteps[] = {1e-8, 1e-7, kAutoWeldRel};
 
-// Automatic wrap parameters, relative to the bounding box diagonal: alpha (the smallest
-// opening the wrap does not enter, about) and the offset of the wrap from the triangles.
-// Chosen from measurements on the benchmark meshes (docs/benchmarks.md): at d/100 a 100k
-// triangle mesh wraps in about a second on two cores, and an offset of alpha/30 keeps the
-// added layer within a few percent of the volume.
-constexpr double kWrapAlphaRel = 1.0 / 100.0;
-constexpr double kWrapOffsetOfAlpha = 1.0 / 30.0;
+// Automatic wrap parameters: alpha relative to the bounding box diagonal (about the
+// narrowest opening the wrap does not enter), and the offset of the wrap from the triangles
+// relative to alpha. CGAL 5.5's wrapping time grows with the number of output triangles, which
+// grows as alpha and the offset shrink. Measured on the benchmark meshes
+// (docs/benchmarks.md), d/50 and d/1000 wrap every mesh up to 86k triangles in under 2 s on
+// two cores with 1-3 % more volume than robot links and 8 % more than the armadillo, where
+// d/100 and d/3000 take up to 9 s for 0.4-1.1 %.
+constexpr double kWrapAlphaRel = 1.0 / 50.0;
+constexpr double kWrapOffsetOfAlpha = 1.0 / 20.0;
 
 std::string fmt(const char* f, double x) {
   char buf[64];

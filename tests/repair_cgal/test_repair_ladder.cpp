@@ -57,7 +57,7 @@ TEST(RepairLadder, OverlappingCubesBecomeTheirUnion) {
   ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_EQ(r->kind, RepairKind::kUnion);
   ASSERT_EQ(r->shells.intersecting.size(), 1u);
-  EXPECT_NEAR(signedVolume(r->solid), 1.5, 1e-9);
+  EXPECT_NEAR(signedVolume(r->solid), 1.71875, 1e-9);
   expectFitCoversOriginal(*r);
 }
 
