@@ -80,8 +80,8 @@ RepairOptions repairOptions(const MeshArgs& a) {
 }
 
 const Mesh* SolidInput::original() const {
-  const bool same = repair.kind == RepairKind::kNone && repair.shells_dropped == 0 &&
-                    repair.cavities_filled == 0;
+  const bool same =
+      repair.kind == RepairKind::kNone && repair.shells_dropped == 0 && repair.cavities_filled == 0;
   return same ? nullptr : &repair.original;
 }
 

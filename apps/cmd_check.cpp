@@ -126,8 +126,8 @@ void printCheck(const LoadedMesh& m, const MeshDiagnosis& d) {
               d.bbox.min.y(), d.bbox.min.z(), d.bbox.max.x(), d.bbox.max.y(), d.bbox.max.z(),
               d.bbox.diagonal());
   std::printf("  edges       %.6g .. %.6g\n", d.min_edge, d.max_edge);
-  std::printf("  solid       %s\n", d.isSolid() ? "closed, oriented 2-manifold"
-                                               : "no: not a closed oriented 2-manifold");
+  std::printf("  solid       %s\n",
+              d.isSolid() ? "closed, oriented 2-manifold" : "no: not a closed oriented 2-manifold");
 }
 
 int runCheck(const CheckArgs& a) {

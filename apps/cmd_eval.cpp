@@ -25,21 +25,21 @@ struct EvalArgs {
 
 nlohmann::json evalJson(const EvalResult& r, size_t count, bool original) {
   nlohmann::json j = {{"spheres", count},
-          {"mesh_volume", r.mesh_volume},
-          {"bbox_diagonal", r.bbox_diagonal},
-          {"er_sum", r.er_sum},
-          {"er_union", r.er_union},
-          {"er_union_stderr", r.er_union_stderr},
-          {"surface_covered", r.surface_covered},
-          {"max_surface_gap", r.max_surface_gap},
-          {"uncovered_triangles", r.uncovered_triangles},
-          {"surface_uncertified_area", r.surface_uncertified_area},
-          {"interior_covered", r.interior_covered},
-          {"max_interior_gap", r.max_interior_gap},
-          {"proximity_error", r.proximity_error},
-          {"shadow_error_sky", r.shadow_error_sky},
-          {"shadow_error_lights", r.shadow_error_lights},
-          {"seconds", r.seconds}};
+                      {"mesh_volume", r.mesh_volume},
+                      {"bbox_diagonal", r.bbox_diagonal},
+                      {"er_sum", r.er_sum},
+                      {"er_union", r.er_union},
+                      {"er_union_stderr", r.er_union_stderr},
+                      {"surface_covered", r.surface_covered},
+                      {"max_surface_gap", r.max_surface_gap},
+                      {"uncovered_triangles", r.uncovered_triangles},
+                      {"surface_uncertified_area", r.surface_uncertified_area},
+                      {"interior_covered", r.interior_covered},
+                      {"max_interior_gap", r.max_interior_gap},
+                      {"proximity_error", r.proximity_error},
+                      {"shadow_error_sky", r.shadow_error_sky},
+                      {"shadow_error_lights", r.shadow_error_lights},
+                      {"seconds", r.seconds}};
   if (original) {
     j["original_covered"] = r.original_covered;
     j["max_original_gap"] = r.max_original_gap;
@@ -88,9 +88,10 @@ int runEval(EvalArgs a) {
   eo.original = m->original();
   const std::string rl = repairLine(m->repair);
   if (!a.json && !rl.empty())
-    std::printf("%s: %s\n  E_r is relative to the repaired solid's volume; coverage is certified "
-                "for the repaired solid and for the original triangles\n",
-                a.mesh.path.c_str(), rl.c_str());
+    std::printf(
+        "%s: %s\n  E_r is relative to the repaired solid's volume; coverage is certified "
+        "for the repaired solid and for the original triangles\n",
+        a.mesh.path.c_str(), rl.c_str());
   nlohmann::json levels = nlohmann::json::array();
   const int first = is_tree ? 0 : tree_in->depth;
   for (int l = first; l <= tree_in->depth; ++l) {

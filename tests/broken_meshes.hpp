@@ -37,8 +37,8 @@ inline Mesh joined(const Mesh& a, const Mesh& b) {
 // Two unit cubes, the second moved by (0.5, 0.25, 0.25): they overlap in a box of
 // 0.5 x 0.75 x 0.75, so the union has volume 2 - 0.28125 = 1.71875.
 inline Mesh overlappingCubes() {
-  return joined(makeBox(Vec3::Zero(), Vec3::Ones()), makeBox(Vec3(0.5, 0.25, 0.25),
-                                                             Vec3(1.5, 1.25, 1.25)));
+  return joined(makeBox(Vec3::Zero(), Vec3::Ones()),
+                makeBox(Vec3(0.5, 0.25, 0.25), Vec3(1.5, 1.25, 1.25)));
 }
 
 // A cube of side 0.5 nested in the unit cube (outward, or inward as a cavity).

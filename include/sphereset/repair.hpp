@@ -69,14 +69,14 @@ struct RepairResult {
   Mesh solid;     // closed, oriented outward, free of self-intersections: what is fitted
   Mesh original;  // the input's triangles (exactly welded, degenerate ones dropped)
   RepairKind kind = RepairKind::kNone;
-  MeshDiagnosis diagnosis;          // of the input (exact welding)
-  ShellAnalysis shells;             // of the input after welding
-  double weld_tolerance = 0.0;      // used (0: exact)
-  int64_t triangles_flipped = 0;    // by the consistent orientation
-  int64_t holes_capped = 0;         // boundary loops closed
-  int64_t shells_dropped = 0;       // nested inside another with the same orientation
-  int64_t cavities_filled = 0;      // inward shells dropped (fill_cavities)
-  int64_t cavities_kept = 0;        // inward shells kept as cavities
+  MeshDiagnosis diagnosis;                     // of the input (exact welding)
+  ShellAnalysis shells;                        // of the input after welding
+  double weld_tolerance = 0.0;                 // used (0: exact)
+  int64_t triangles_flipped = 0;               // by the consistent orientation
+  int64_t holes_capped = 0;                    // boundary loops closed
+  int64_t shells_dropped = 0;                  // nested inside another with the same orientation
+  int64_t cavities_filled = 0;                 // inward shells dropped (fill_cavities)
+  int64_t cavities_kept = 0;                   // inward shells kept as cavities
   double wrap_alpha = 0.0, wrap_offset = 0.0;  // when wrapped
   // Volume of the solid over the input's, when the input's is defined (every shell closed and
   // oriented); NaN otherwise.

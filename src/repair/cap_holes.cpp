@@ -3,10 +3,10 @@
 // meshes", Sec. 3 (after Barequet and Sharir 1995): the largest dihedral angle between
 // neighbouring triangles (cap-cap and cap-surface) is minimised first, then the area. A cap
 // that bends least is also least likely to cut through the surface beside the hole. No
-// refinement or fairing follows (Liepa's Sec. 4-5): the cap only has to close the solid. Long loops, where
-// the O(n^3) programme would be slow, get a fan around their centroid instead. The repair only
-// needs the cap to close the solid without crossing the surface, and checks that afterwards
-// (repair.cpp); a cap that crosses it sends the mesh to the wrapping instead.
+// refinement or fairing follows (Liepa's Sec. 4-5): the cap only has to close the solid. Long
+// loops, where the O(n^3) programme would be slow, get a fan around their centroid instead. The
+// repair only needs the cap to close the solid without crossing the surface, and checks that
+// afterwards (repair.cpp); a cap that crosses it sends the mesh to the wrapping instead.
 #include "repair/cap_holes.hpp"
 
 #include <algorithm>
@@ -45,8 +45,8 @@ double angleBetween(const Vec3& n1, const Vec3& n2) {
 // Appends Liepa's triangulation of the polygon `loop` (vertex indices); `opp[i]` is the third
 // vertex of the surface triangle on the loop edge loop[i] -> loop[i+1] (cyclic). Each triangle
 // is ordered (loop[i], loop[k], loop[m]) for i < m < k, against the loop's direction.
-void liepaCap(const Mesh& mesh, const std::vector<int32_t>& loop,
-              const std::vector<int32_t>& opp, std::vector<Triangle>* out) {
+void liepaCap(const Mesh& mesh, const std::vector<int32_t>& loop, const std::vector<int32_t>& opp,
+              std::vector<Triangle>* out) {
   const size_t n = loop.size();
   std::vector<Weight> w(n * n);
   std::vector<int32_t> split(n * n, -1);
@@ -64,8 +64,8 @@ void liepaCap(const Mesh& mesh, const std::vector<int32_t>& loop,
       for (size_t m = i + 1; m < k; ++m) {
         const Vec3 nt = normal(mesh, loop[i], loop[k], loop[m]);
         Weight c;
-        c.angle = std::max({w[i * n + m].angle, w[m * n + k].angle,
-                            angleBetween(nt, outer(i, m)), angleBetween(nt, outer(m, k))});
+        c.angle = std::max({w[i * n + m].angle, w[m * n + k].angle, angleBetween(nt, outer(i, m)),
+                            angleBetween(nt, outer(m, k))});
         if (len == n - 1) c.angle = std::max(c.angle, angleBetween(nt, outer(0, n - 1)));
         c.area = w[i * n + m].area + w[m * n + k].area + nt.norm();
         if (c < best) {
@@ -104,7 +104,8 @@ int64_t capHoles(Mesh* mesh) {
   for (const Triangle& t : mesh->triangles)
     for (int k = 0; k < 3; ++k) {
       const int32_t a = t[k], b = t[(k + 1) % 3];
-      if (uses[{std::min(a, b), std::max(a, b)}] == 1) next.emplace(a, std::pair(b, t[(k + 2) % 3]));
+      if (uses[{std::min(a, b), std::max(a, b)}] == 1)
+        next.emplace(a, std::pair(b, t[(k + 2) % 3]));
     }
   int64_t loops = 0;
   while (!next.empty()) {

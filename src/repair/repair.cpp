@@ -241,7 +241,8 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
 
   // Consistent orientation, where only the orientation is wrong (every edge of at most two
   // triangles): exact, so it comes before anything that changes the geometry.
-  if (const MeshDiagnosis dw = diagnoseMesh(m); dw.misoriented_edges > 0 && dw.nonmanifold_edges == 0) {
+  if (const MeshDiagnosis dw = diagnoseMesh(m);
+      dw.misoriented_edges > 0 && dw.nonmanifold_edges == 0) {
     Mesh oriented = m;
     const int64_t flipped = detail::orientConsistently(&oriented);
     if (flipped > 0) {
@@ -275,7 +276,8 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
     res.holes_capped = detail::capHoles(&capped);
     const ShellAnalysis sc = analyzeShells(capped);
     if (res.holes_capped > 0 && allClean(sc) && sc.intersecting.empty()) {
-      res.notes.push_back("closed " + count(res.holes_capped, "hole", "holes") + " (triangulated over their own vertices)");
+      res.notes.push_back("closed " + count(res.holes_capped, "hole", "holes") +
+                          " (triangulated over their own vertices)");
       return done(applyPlan(capped, sc, o.fill_cavities, &res), RepairKind::kCapped);
     }
   }
@@ -312,12 +314,12 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
             parts.push_back(submesh(m, s.triangles));
             ++res.cavities_kept;
           }
-      res.notes.push_back("united " + count(static_cast<int64_t>(outward.size()), "shell",
-                                            "shells") +
+      res.notes.push_back("united " +
+                          count(static_cast<int64_t>(outward.size()), "shell", "shells") +
                           " that overlap (corefinement)");
       if (flipped_shells > 0)
-        res.notes.push_back("turned " + count(flipped_shells, "inside-out shell",
-                                              "inside-out shells") +
+        res.notes.push_back("turned " +
+                            count(flipped_shells, "inside-out shell", "inside-out shells") +
                             " outward");
       return done(concat(parts), RepairKind::kUnion);
     }
@@ -329,8 +331,8 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
   std::string why;
   if (dg.boundary_edges > 0) why = count(dg.boundary_edges, "boundary edge", "boundary edges");
   auto add = [&](const std::string& s) { why += (why.empty() ? "" : ", ") + s; };
-  if (dg.nonmanifold_edges > 0) add(count(dg.nonmanifold_edges, "non-manifold edge",
-                                          "non-manifold edges"));
+  if (dg.nonmanifold_edges > 0)
+    add(count(dg.nonmanifold_edges, "non-manifold edge", "non-manifold edges"));
   if (dg.misoriented_edges > 0)
     add(count(dg.misoriented_edges, "inconsistently oriented edge",
               "inconsistently oriented edges"));
@@ -338,8 +340,7 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
     add(count(static_cast<int64_t>(res.shells.intersections.pairs.size()),
               "intersecting triangle pair", "intersecting triangle pairs"));
   if (why.empty()) why = "not a clean solid";
-  if (!have_ops)
-    return needs(name, "rebuild with SPHERESET_WITH_REPAIR=ON to wrap it", why);
+  if (!have_ops) return needs(name, "rebuild with SPHERESET_WITH_REPAIR=ON to wrap it", why);
   const Mesh& soup = res.holes_capped > 0 ? capped : m;
   wrapParameters(soup, o, &res.wrap_alpha, &res.wrap_offset);
   auto w = o.operations.wrap(soup, res.wrap_alpha, res.wrap_offset);

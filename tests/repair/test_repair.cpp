@@ -117,7 +117,8 @@ TEST(Repair, FlippedFaceIsReorientedExactly) {
 TEST(Repair, ReorientationKeepsEveryTriangleAndFixesAShuffledSphere) {
   // Every other triangle of an icosphere flipped; the whole then inside out.
   Mesh m = makeIcosphere(1.0, 3);
-  for (size_t t = 0; t < m.triangles.size(); t += 2) std::swap(m.triangles[t][1], m.triangles[t][2]);
+  for (size_t t = 0; t < m.triangles.size(); t += 2)
+    std::swap(m.triangles[t][1], m.triangles[t][2]);
   for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
   auto r = repairCore(m);
   ASSERT_TRUE(r.ok()) << r.error().message;

@@ -80,7 +80,8 @@ TEST(RepairLadder, NonManifoldEdgeIsWrappedTightly) {
   // a wrap with this alpha may fill up to the alpha-ball's reach.
   const double d = 2.0 * r->wrap_offset;
   EXPECT_GE(signedVolume(r->solid), 2.0);
-  EXPECT_LE(signedVolume(r->solid), 2.0 * std::pow(1.0 + 2.0 * d, 3) + 4.0 * r->wrap_alpha * r->wrap_alpha);
+  EXPECT_LE(signedVolume(r->solid),
+            2.0 * std::pow(1.0 + 2.0 * d, 3) + 4.0 * r->wrap_alpha * r->wrap_alpha);
   EXPECT_TRUE(std::isnan(r->volume_ratio));  // a non-manifold input has no volume here
   expectContainsVertices(*r);
   expectFitCoversOriginal(*r);
