@@ -102,6 +102,7 @@ nlohmann::json repairJson(const RepairResult& r) {
                       {"cavities_filled", r.cavities_filled},
                       {"cavities_kept", r.cavities_kept},
                       {"triangles", r.solid.triangles.size()},
+                      {"volume", signedVolume(r.solid)},
                       {"seconds", r.seconds},
                       {"notes", r.notes}};
   // NaN is not JSON: an undefined ratio is null.

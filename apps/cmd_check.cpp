@@ -1,6 +1,10 @@
 // sphereset check: loads a mesh, diagnoses it as a solid (topology, self-intersections, shells)
 // and says what fit will do about each problem.
+#include <algorithm>
+#include <array>
 #include <cstdio>
+#include <utility>
+#include <vector>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -24,7 +28,11 @@ struct ShellCounts {
   int64_t shells = 0, closed = 0, clean = 0, inward = 0, nested = 0, intersecting_pairs = 0;
   int64_t triangle_pairs = 0;
   bool truncated = false;
+  std::vector<std::array<int32_t, 2>> first_pairs;  // a few crossing triangle pairs, to look at
 };
+
+// How many crossing pairs `check` lists.
+constexpr size_t kListedPairs = 5;
 
 ShellCounts countShells(const ShellAnalysis& sa) {
   ShellCounts c;
@@ -38,6 +46,9 @@ ShellCounts countShells(const ShellAnalysis& sa) {
   c.intersecting_pairs = static_cast<int64_t>(sa.intersecting.size());
   c.triangle_pairs = static_cast<int64_t>(sa.intersections.pairs.size());
   c.truncated = sa.intersections.truncated;
+  const auto& p = sa.intersections.pairs;
+  c.first_pairs.assign(p.begin(), p.begin() + static_cast<std::ptrdiff_t>(
+                                                   std::min(kListedPairs, p.size())));
   return c;
 }
 
@@ -83,12 +94,60 @@ nlohmann::json shellsJson(const ShellCounts& c) {
           {"nested_shells", c.nested},
           {"intersecting_shell_pairs", c.intersecting_pairs},
           {"intersecting_triangle_pairs", c.triangle_pairs},
-          {"intersections_truncated", c.truncated}};
+          {"intersections_truncated", c.truncated},
+          {"first_intersecting_pairs", c.first_pairs}};
+}
+
+// Each problem found, with what the repair does about it (or that fit refuses the mesh).
+std::vector<std::pair<std::string, std::string>> problemActions(const MeshDiagnosis& d,
+                                                                const ShellCounts& c,
+                                                                const Expected<RepairResult>& r) {
+  std::vector<std::pair<std::string, std::string>> out;
+  auto n = [](int64_t k, const char* one, const char* many) {
+    return std::to_string(k) + " " + (k == 1 ? one : many);
+  };
+  const bool wrapped = r && r->kind == RepairKind::kWrapped;
+  const bool welded = r && r->weld_tolerance > 0.0;
+  // What happened to a problem the exact steps did not remove: the wrap, or the refusal.
+  auto last = [&](const std::string& exact) -> std::string {
+    if (!r) return "fit refuses the mesh (below)";
+    return wrapped ? "wrapped" : exact;
+  };
+  if (d.boundary_edges > 0)
+    out.emplace_back(n(d.boundary_edges, "boundary edge", "boundary edges"),
+                     last(welded && r->holes_capped == 0 ? "welded shut" : "holes capped"));
+  if (d.misoriented_edges > 0)
+    out.emplace_back(
+        n(d.misoriented_edges, "inconsistently oriented edge", "inconsistently oriented edges"),
+        last("triangles flipped to agree"));
+  if (d.nonmanifold_edges > 0 || d.nonmanifold_vertices > 0)
+    out.emplace_back(n(d.nonmanifold_edges, "non-manifold edge", "non-manifold edges") + ", " +
+                         n(d.nonmanifold_vertices, "non-manifold vertex", "non-manifold vertices"),
+                     last("gone once the vertices are welded"));
+  if (c.intersecting_pairs > 0)
+    out.emplace_back(n(c.intersecting_pairs, "pair of crossing shells", "pairs of crossing shells"),
+                     last(welded ? "gone once the vertices are welded" : "united (corefinement)"));
+  if (c.triangle_pairs > 0)
+    out.emplace_back(
+        n(c.triangle_pairs, "crossing triangle pair", "crossing triangle pairs"),
+        last(r && r->kind == RepairKind::kUnion ? "united (corefinement)"
+                                                 : "gone once the vertices are welded"));
+  if (c.nested > 0)
+    out.emplace_back(n(c.nested, "nested shell", "nested shells"),
+                     !r ? "fit refuses the mesh (below)"
+                        : (std::to_string(r->shells_dropped) + " dropped (same orientation), " +
+                           std::to_string(r->cavities_filled) + " cavities filled, " +
+                           std::to_string(r->cavities_kept) + " kept"));
+  return out;
 }
 
 void printShells(const ShellCounts& c) {
-  std::printf("  crossings   %s%lld intersecting triangle pairs\n", c.truncated ? "at least " : "",
+  std::printf("  crossings   %s%lld intersecting triangle pairs", c.truncated ? "at least " : "",
               static_cast<long long>(c.triangle_pairs));
+  for (size_t i = 0; i < c.first_pairs.size(); ++i)
+    std::printf("%s%d/%d", i == 0 ? " (triangles " : ", ", c.first_pairs[i][0],
+                c.first_pairs[i][1]);
+  std::printf("%s\n", c.first_pairs.empty() ? "" : (c.triangle_pairs > 5 ? ", ...)" : ")"));
   std::printf(
       "  shells      %lld (%lld closed, %lld clean, %lld inward-facing, %lld nested in another, "
       "%lld intersecting pairs)\n",
@@ -131,7 +190,11 @@ void printCheck(const LoadedMesh& m, const MeshDiagnosis& d) {
 }
 
 int runCheck(const CheckArgs& a) {
-  auto m = loadMesh(a.mesh.path);
+  // The diagnosis is of the mesh as fit sees it before repairing: exactly welded, or welded
+  // with the tolerance given.
+  LoadOptions lo;
+  lo.weld_tolerance = std::max(0.0, a.mesh.weld);
+  auto m = loadMesh(a.mesh.path, lo);
   if (!m) return fail(m.error());
   const MeshDiagnosis d = diagnoseMesh(m->mesh);
   const ShellCounts sc = countShells(analyzeShells(m->mesh));
@@ -145,15 +208,22 @@ int runCheck(const CheckArgs& a) {
   } else {
     plan = repairLine(*r);
   }
+  const auto problems = problemActions(d, sc, r);
   if (a.json) {
     nlohmann::json j = checkJson(*m, d);
     j["self_intersections"] = shellsJson(sc);
+    nlohmann::json pj = nlohmann::json::array();
+    for (const auto& [problem, action] : problems)
+      pj.push_back({{"problem", problem}, {"action", action}});
+    j["problems"] = pj;
     if (r) j["repair"] = repairJson(*r);
     j["fit"] = plan;
     std::cout << j.dump() << '\n';
   } else {
     printCheck(*m, d);
     printShells(sc);
+    for (const auto& [problem, action] : problems)
+      std::printf("  problem     %s: %s\n", problem.c_str(), action.c_str());
     std::printf("  fit will    %s\n", plan.c_str());
   }
   return r ? kOk : exitFor(r.error());

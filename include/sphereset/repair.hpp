@@ -1,5 +1,5 @@
 // Turning the meshes users have into a solid the fit can run on, while keeping the original
-// triangles: the fit then bounds both (FitOptions::also_cover, EvalOptions::also_cover).
+// triangles: the fit then bounds both (FitOptions::original, EvalOptions::original).
 //
 // The ladder, first step that yields a clean solid wins:
 //   none     the mesh is a clean solid: closed, 2-manifold, oriented, no self-intersections,

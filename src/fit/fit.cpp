@@ -134,6 +134,7 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
     // it makes their coverage exact rather than implied.
     const detail::BoundStats ob =
         detail::boundSurface(index, &best.spheres, min_edge, nullptr, o.original);
+    res.bounding_enlarged += ob.enlarged;
     res.bounding_pieces += ob.pieces;
     res.bounding_queries += ob.queries;
   }

@@ -119,7 +119,7 @@ Expected<LoadedMesh> cleanMesh(std::vector<Vec3> vertices, std::vector<Triangle>
                                                   " references vertex " + std::to_string(k) +
                                                   " of " + std::to_string(vertices.size())};
   if (triangles.empty())
-    return Error{ErrorCode::kInvalidData, name + ": the file contains no triangles"};
+    return Error{ErrorCode::kInvalidData, name + ": the file contains no triangles (points or lines only, or nothing)"};
 
   std::vector<Vec3> welded;
   const std::vector<int32_t> remap = weldVertices(vertices, options.weld_tolerance, &welded);
@@ -202,10 +202,10 @@ Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& option
     return out;
   }
   Assimp::Importer importer;
-  // Keep only triangles and polygons; no normals, no vertex joining (we weld positions
-  // ourselves, since assimp joins only vertices whose every attribute matches).
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
-                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  // No normals, no vertex joining (we weld positions ourselves, since assimp joins only
+  // vertices whose every attribute matches). Points and lines are kept in the scene and
+  // skipped when collecting (collectNode), so that a file of only points or lines is reported
+  // as having no triangles rather than as unreadable.
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
   if (!scene || !scene->mRootNode) {
     std::string why = importer.GetErrorString();
@@ -221,7 +221,7 @@ Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& option
   if (bad_index)
     return Error{ErrorCode::kInvalidData, path + ": a face references a vertex out of range"};
   if (tris.empty())
-    return Error{ErrorCode::kInvalidData, path + ": the file contains no triangles"};
+    return Error{ErrorCode::kInvalidData, path + ": the file contains no triangles (points or lines only, or nothing)"};
   auto cleaned = cleanMesh(std::move(verts), std::move(tris), options, path);
   if (!cleaned) return cleaned.error();
   LoadedMesh out = std::move(cleaned).value();

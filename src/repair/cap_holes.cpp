@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <limits>
 #include <map>
 #include <utility>
@@ -35,10 +36,12 @@ Vec3 normal(const Mesh& mesh, int32_t a, int32_t b, int32_t c) {
   return (mesh.vertices[b] - p).cross(mesh.vertices[c] - p);
 }
 
-// Angle between two normals (0 for coplanar neighbours that continue each other).
+// Angle between two normals (0 for coplanar neighbours that continue each other). A triangle
+// without area (collinear corners) has no normal and gets the worst angle, so that the
+// programme avoids it whenever it can.
 double angleBetween(const Vec3& n1, const Vec3& n2) {
   const double d = n1.norm() * n2.norm();
-  if (!(d > 0.0)) return 0.0;
+  if (!(d > 0.0)) return std::numbers::pi;
   return std::acos(std::clamp(n1.dot(n2) / d, -1.0, 1.0));
 }
 

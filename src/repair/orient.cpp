@@ -1,7 +1,8 @@
 // Consistent orientation by breadth-first propagation across two-triangle edges: the standard
 // approach (e.g. Botsch, Kobbelt, Pauly, Alliez, Lévy 2010, "Polygon Mesh Processing", Sec.
 // 3.3); a triangle's orientation is forced by its first oriented neighbour, and a neighbour
-// that disagrees with an already oriented one proves the component non-orientable.
+// that disagrees with an already oriented one proves the component non-orientable. Each
+// component then keeps the orientation of the majority of its triangles.
 #include "repair/orient.hpp"
 
 #include <algorithm>
@@ -43,13 +44,16 @@ int64_t orientConsistently(Mesh* mesh) {
   // flip[t]: -1 not reached, 0 keep, 1 flip.
   std::vector<int8_t> flip(nt, -1);
   std::deque<int32_t> queue;
+  std::vector<int32_t> component;
   for (int32_t s = 0; s < nt; ++s) {
     if (flip[s] >= 0) continue;
     flip[s] = 0;
     queue.push_back(s);
+    component.clear();
     while (!queue.empty()) {
       const int32_t t = queue.front();
       queue.pop_front();
+      component.push_back(t);
       for (const auto& [u, same] : adj[t]) {
         // Traversed the same way: one of the two must be flipped relative to the other.
         const int8_t want = static_cast<int8_t>(flip[t] ^ (same ? 1 : 0));
@@ -61,6 +65,12 @@ int64_t orientConsistently(Mesh* mesh) {
         }
       }
     }
+    // Keep the orientation most of the component's triangles already have: a few flipped
+    // faces are the defect, and the rest says whether the shell faces out or in (a cavity).
+    size_t to_flip = 0;
+    for (int32_t t : component) to_flip += flip[t] == 1;
+    if (2 * to_flip > component.size())
+      for (int32_t t : component) flip[t] = static_cast<int8_t>(1 - flip[t]);
   }
   int64_t flipped = 0;
   for (int32_t t = 0; t < nt; ++t)

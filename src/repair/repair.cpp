@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <utility>
 
 #include "repair/cap_holes.hpp"
@@ -117,6 +118,21 @@ ShellPlan planShells(const Mesh& m, const ShellAnalysis& sa, bool fill_cavities)
     }
   }
   return plan;
+}
+
+// Every edge traversed as often in one direction as in the other (a closed oriented surface,
+// possibly non-manifold or self-intersecting): its signed volume, the integral of its winding
+// number, is defined.
+bool balancedClosed(const Mesh& m) {
+  std::map<std::pair<int32_t, int32_t>, int> balance;
+  for (const Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int32_t a = t[k], b = t[(k + 1) % 3];
+      balance[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
+    }
+  for (const auto& [e, b] : balance)
+    if (b != 0) return false;
+  return true;
 }
 
 bool allClean(const ShellAnalysis& sa) {
@@ -255,21 +271,28 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
 
   // 2. Shells: clean and apart, possibly nested.
   res.shells = analyzeShells(m);
-  // The input's volume, where defined: every shell closed and oriented, no triangles crossing.
+  // The input's volume, where defined: with clean shells apart, the solid they bound (nested
+  // shells by the plan); otherwise, for a closed surface whose edges are balanced, the magnitude
+  // of its signed volume (regions it winds around twice count twice).
   double input_volume = std::numeric_limits<double>::quiet_NaN();
   if (allClosedOriented(res.shells) && !res.shells.intersections.any()) {
     ShellPlan plan = planShells(m, res.shells, o.fill_cavities);
     for (Mesh& c : plan.cavities) plan.outward.push_back(std::move(c));
     input_volume = signedVolume(concat(plan.outward));
+  } else if (balancedClosed(m)) {
+    input_volume = std::abs(signedVolume(m));
   }
   auto ratio = [&](const Mesh& solid) { return signedVolume(solid) / input_volume; };
   if (allClean(res.shells) && res.shells.intersecting.empty()) {
     Mesh solid = applyPlan(m, res.shells, o.fill_cavities, &res);
     res.volume_ratio = ratio(solid);
-    return done(std::move(solid), RepairKind::kNone);
+    // Dropping nested shells or filling cavities takes the union of the shells (non-zero
+    // winding) without computing anything.
+    const bool united = res.shells_dropped > 0 || res.cavities_filled > 0;
+    return done(std::move(solid), united ? RepairKind::kUnion : RepairKind::kNone);
   }
 
-  // 3. Capping: open but otherwise sound shells, closed by fans (holes are filled like
+  // 3. Capping: open but otherwise sound shells, their holes closed (holes are filled like
   // cavities, so not when cavities are kept).
   Mesh capped = m;
   if (o.fill_cavities && res.diagnosis.boundary_edges > 0) {
@@ -289,40 +312,69 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
       return needs(name, "rebuild with SPHERESET_WITH_REPAIR=ON to fit their union",
                    count(static_cast<int64_t>(res.shells.intersecting.size()),
                          "pair of shells intersects", "pairs of shells intersect"));
-    // Cavities that cross nothing stay (kept or filled by the plan); everything outward is
-    // united.
-    std::vector<Mesh> outward;
+    // Inward shells inside another are cavities: filled, or kept when they and what is
+    // nested in them cross nothing (islands in a kept cavity stay apart from the union, which
+    // would swallow them). Everything else, inside-out shells turned outward, is united.
+    const size_t ns = res.shells.shells.size();
+    std::vector<char> crosses(ns, 0);
+    for (const auto& [a, b] : res.shells.intersecting) crosses[a] = crosses[b] = 1;
+    std::vector<int> role(ns, 0);  // 0 united, 1 kept cavity, 2 island, 3 filled cavity
+    std::vector<size_t> order(ns);
+    for (size_t i = 0; i < ns; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+      return res.shells.shells[a].depth < res.shells.shells[b].depth;
+    });
+    for (size_t i : order) {
+      const Shell& s = res.shells.shells[i];
+      const int parent_role = s.parent >= 0 ? role[s.parent] : 0;
+      if (s.volume < 0.0 && s.parent >= 0)
+        role[i] = (!o.fill_cavities && !crosses[i] && parent_role == 0) ? 1 : 3;
+      else if (s.volume > 0.0 && (parent_role == 1 || parent_role == 2) && !crosses[i])
+        role[i] = 2;
+      else if (parent_role == 3)
+        role[i] = 3;  // inside a filled cavity: filled with it
+    }
+    std::vector<Mesh> outward, apart;
     int64_t flipped_shells = 0;
-    for (const Shell& s : res.shells.shells) {
+    for (size_t i = 0; i < ns; ++i) {
+      const Shell& s = res.shells.shells[i];
       Mesh sub = submesh(m, s.triangles);
+      if (role[i] == 3) {
+        res.cavities_filled += s.volume < 0.0;
+        continue;
+      }
+      if (role[i] == 1 || role[i] == 2) {
+        res.cavities_kept += role[i] == 1;
+        apart.push_back(std::move(sub));
+        continue;
+      }
       if (s.volume < 0.0) {
-        if (s.parent >= 0) {
-          if (o.fill_cavities) ++res.cavities_filled;
-          continue;  // a cavity; kept ones are added below
-        }
         sub = flipped(std::move(sub));
         ++flipped_shells;
       }
       outward.push_back(std::move(sub));
     }
     auto u = o.operations.unite(outward);
+    // The union is exact; rounding it to doubles could in principle make it cross itself.
+    if (u && findSelfIntersections(*u).any())
+      u = Error{ErrorCode::kNotSolid, "its rounded result crosses itself"};
     if (u) {
       std::vector<Mesh> parts = {std::move(u).value()};
-      if (!o.fill_cavities)
-        for (const Shell& s : res.shells.shells)
-          if (s.volume < 0.0 && s.parent >= 0) {
-            parts.push_back(submesh(m, s.triangles));
-            ++res.cavities_kept;
-          }
+      for (Mesh& a : apart) parts.push_back(std::move(a));
       res.notes.push_back("united " +
                           count(static_cast<int64_t>(outward.size()), "shell", "shells") +
                           " that overlap (corefinement)");
+      if (res.cavities_filled > 0)
+        res.notes.push_back("filled " + count(res.cavities_filled, "cavity", "cavities"));
+      if (res.cavities_kept > 0)
+        res.notes.push_back("kept " + count(res.cavities_kept, "cavity", "cavities"));
       if (flipped_shells > 0)
         res.notes.push_back("turned " +
                             count(flipped_shells, "inside-out shell", "inside-out shells") +
                             " outward");
       return done(concat(parts), RepairKind::kUnion);
     }
+    res.cavities_filled = res.cavities_kept = 0;
     res.notes.push_back("the union failed (" + u.error().message + "); wrapping instead");
   }
 
@@ -347,6 +399,12 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
   if (!w) return Error{w.error().code, name + ": " + w.error().message};
   res.notes.push_back(why + ": wrapped (alpha " + fmt("%.3g", res.wrap_alpha) + ", offset " +
                       fmt("%.3g", res.wrap_offset) + ")");
+  // The wrap is the outer envelope: whatever lies inside, cavities included, is filled.
+  for (const Shell& s : res.shells.shells) res.cavities_filled += s.volume < 0.0 && s.parent >= 0;
+  if (res.cavities_filled > 0 && !o.fill_cavities)
+    res.notes.push_back("the wrap fills " +
+                        count(res.cavities_filled, "cavity", "cavities") +
+                        " that were to be kept");
   res.volume_ratio = ratio(*w);
   return done(std::move(w).value(), RepairKind::kWrapped);
 }

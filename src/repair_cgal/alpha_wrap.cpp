@@ -26,8 +26,11 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using SurfaceMesh = CGAL::Surface_mesh<Point>;
 
-// Below this fraction of the bounding box diagonal, alpha would ask for billions of cells.
-constexpr double kMinAlphaRel = 1e-5;
+// Floors, relative to the bounding box diagonal: the wrap's size grows as alpha and the offset
+// shrink, and at alpha = d/400 CGAL 5.5 already takes a minute on a 6k-triangle chair; below
+// these a wrap would run for hours or exhaust memory instead of failing.
+constexpr double kMinAlphaRel = 1e-3;
+constexpr double kMinOffsetRel = 1e-5;
 
 Error wrapError(ErrorCode code, const std::string& what) {
   return Error{code, "alpha wrap: " + what};
@@ -71,12 +74,17 @@ Expected<Mesh> alphaWrap(const Mesh& soup, double alpha, double offset) {
                      "alpha " + std::to_string(alpha) + " is below " +
                          std::to_string(kMinAlphaRel) + " of the bounding box diagonal " +
                          std::to_string(box.diagonal()) + " (the wrap would be too large)");
+  if (offset < kMinOffsetRel * box.diagonal())
+    return wrapError(ErrorCode::kInvalidArgument,
+                     "offset " + std::to_string(offset) + " is below " +
+                         std::to_string(kMinOffsetRel) + " of the bounding box diagonal " +
+                         std::to_string(box.diagonal()) + " (the wrap would be too large)");
 
   SurfaceMesh wrap;
   try {
     CGAL::alpha_wrap_3(points, faces, alpha, offset, wrap);
   } catch (const std::exception& e) {
-    return wrapError(ErrorCode::kInvalidData, std::string("CGAL failed: ") + e.what());
+    return wrapError(ErrorCode::kInvalidData, "CGAL failed: " + oneLine(e.what()));
   } catch (...) {
     return wrapError(ErrorCode::kInvalidData, "CGAL failed with an unknown exception");
   }

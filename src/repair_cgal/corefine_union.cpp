@@ -74,7 +74,7 @@ Expected<Mesh> solidUnion(const std::vector<Mesh>& solids) {
   try {
     return unite(solids);
   } catch (const std::exception& e) {
-    return unionError(ErrorCode::kInvalidData, std::string("CGAL failed: ") + e.what());
+    return unionError(ErrorCode::kInvalidData, "CGAL failed: " + oneLine(e.what()));
   } catch (...) {
     return unionError(ErrorCode::kInvalidData, "CGAL failed with an unknown exception");
   }

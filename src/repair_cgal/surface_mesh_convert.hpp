@@ -71,6 +71,15 @@ Expected<Mesh> fromSurfaceMesh(const CGAL::Surface_mesh<Point>& sm, const std::s
 }
 
 // Reverses every triangle when the signed volume is negative (inside-out).
+// CGAL's failure messages span several lines ("CGAL ERROR: ...", "Expr: ...", "File: ...");
+// errors are one line.
+inline std::string oneLine(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
 inline void orientOutward(Mesh& mesh) {
   if (signedVolume(mesh) >= 0.0) return;
   for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);

@@ -6,6 +6,13 @@ file(MAKE_DIRECTORY ${work})
 file(WRITE ${work}/open.off "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
 file(WRITE ${work}/nan.off "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n")
 file(WRITE ${work}/garbage.stl "not a mesh at all")
+file(WRITE ${work}/lines.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\np 1\n")
+file(WRITE ${work}/flat.obj "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n")
+file(WRITE ${work}/empty.obj "")
+# The unit cube with one triangle flipped; with an inward cube inside (a cavity); an open sheet.
+file(WRITE ${work}/flipped.off "OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 4 5\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n")
+file(WRITE ${work}/cavity.off "OFF\n16 24 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n0.25 0.25 0.25\n0.75 0.25 0.25\n0.25 0.75 0.25\n0.75 0.75 0.25\n0.25 0.25 0.75\n0.75 0.25 0.75\n0.25 0.75 0.75\n0.75 0.75 0.75\n3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n3 8 11 10\n3 8 9 11\n3 12 15 13\n3 12 14 15\n3 8 13 9\n3 8 12 13\n3 10 15 14\n3 10 11 15\n3 8 14 12\n3 8 10 14\n3 9 15 11\n3 9 13 15\n")
+file(WRITE ${work}/sheet.off "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n")
 file(WRITE ${work}/bound.txt "# one sphere around the link\n0.0 -0.037 -0.068 0.17\n")
 file(WRITE ${work}/bad.txt "0 0 0\n")
 set(link ${CMAKE_CURRENT_SOURCE_DIR}/data/fr3_link1_collision.stl)
@@ -140,4 +147,31 @@ if(SPHERESET_WITH_REPAIR)
            -q FILE ${work}/tri.txt SPHERES 3)
   cli_test(fit_keep_cavities 0 ARGS fit ${data}/open_box.off -n 8 -o ${work}/shell.txt
            --keep-cavities --quality fast --json -q STDOUT "\"kind\":\"wrapped\"")
+endif()
+
+# Bad input that no repair can mend: one line naming the file, no output written.
+cli_test(fit_lines_only 4 ARGS fit ${work}/lines.obj -n 4 -o ${work}/never21.txt -q
+         STDERR "lines.obj: the file contains no triangles" FORBID ${work}/never21.txt)
+cli_test(fit_all_degenerate 4 ARGS fit ${work}/flat.obj -n 4 -o ${work}/never22.txt -q
+         STDERR "flat.obj: every triangle is degenerate" FORBID ${work}/never22.txt)
+cli_test(fit_empty_file 3 ARGS fit ${work}/empty.obj -n 4 -o ${work}/never23.txt -q
+         STDERR "empty.obj: the file is empty" FORBID ${work}/never23.txt)
+cli_test(fit_nan 4 ARGS fit ${work}/nan.off -n 4 -o ${work}/never24.txt -q
+         STDERR "nan.off: vertex 1 has a NaN" FORBID ${work}/never24.txt)
+cli_test(fit_bad_alpha 2 ARGS fit ${data}/bow_tie.off -n 4 -o ${work}/never25.txt -q
+         --wrap-alpha -1 FORBID ${work}/never25.txt)
+cli_test(tree_open_box 0 ARGS tree ${data}/open_box.off --branch 2 --depth 2 -o ${work}/box_tree.json
+         --quality fast --json -q STDOUT "\"original_covered\":true.*\"kind\":\"capped\"")
+cli_test(check_flipped 0 ARGS check ${work}/flipped.off
+         STDOUT "oriented +no.*problem +[0-9]+ inconsistently oriented edges: triangles flipped.*fit will +repair reoriented")
+cli_test(fit_flipped 0 ARGS fit ${work}/flipped.off -n 4 -o ${work}/flipped.txt --quality fast
+         --json -q FILE ${work}/flipped.txt SPHERES 4 STDOUT "\"kind\":\"reoriented\"")
+cli_test(check_cavity 0 ARGS check ${work}/cavity.off
+         STDOUT "1 inward-facing, 1 nested.*problem +1 nested shell: 0 dropped .same orientation., 1 cavities filled")
+cli_test(fit_cavity_kept 0 ARGS fit ${work}/cavity.off -n 6 -o ${work}/cavity.txt --quality fast
+         --keep-cavities --json -q FILE ${work}/cavity.txt SPHERES 6
+         STDOUT "\"cavities_kept\":1.*\"kind\":\"none\".*\"volume\":0.875")
+if(SPHERESET_WITH_REPAIR)
+  cli_test(fit_sheet 0 ARGS fit ${work}/sheet.off -n 4 -o ${work}/sheet.txt --quality fast --json -q
+           FILE ${work}/sheet.txt SPHERES 4 STDOUT "\"original_covered\":true.*\"kind\":\"wrapped\"")
 endif()

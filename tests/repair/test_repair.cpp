@@ -3,7 +3,10 @@
 // message that says why and what would help.
 #include <gtest/gtest.h>
 
+#include <tbb/global_control.h>
+
 #include <cmath>
+#include <utility>
 
 #include "broken_meshes.hpp"
 #include "sphereset/fit.hpp"
@@ -43,7 +46,7 @@ TEST(Repair, DuplicatedFaceIsDroppedByTheLoader) {
 TEST(Repair, NestedShellWithTheSameOrientationIsDropped) {
   auto r = repairCore(nestedCubes(false));
   ASSERT_TRUE(r.ok()) << r.error().message;
-  EXPECT_EQ(r->kind, RepairKind::kNone);
+  EXPECT_EQ(r->kind, RepairKind::kUnion);  // the union of the shells, without computing one
   EXPECT_EQ(r->shells_dropped, 1);
   EXPECT_EQ(r->solid.triangles.size(), 12u);
   EXPECT_NEAR(signedVolume(r->solid), 1.0, 1e-12);
@@ -54,10 +57,12 @@ TEST(Repair, NestedShellWithTheSameOrientationIsDropped) {
 TEST(Repair, InwardNestedShellIsACavityFilledOrKept) {
   auto filled = repairCore(nestedCubes(true), true);
   ASSERT_TRUE(filled.ok()) << filled.error().message;
+  EXPECT_EQ(filled->kind, RepairKind::kUnion);
   EXPECT_EQ(filled->cavities_filled, 1);
   EXPECT_NEAR(signedVolume(filled->solid), 1.0, 1e-12);
   auto kept = repairCore(nestedCubes(true), false);
   ASSERT_TRUE(kept.ok()) << kept.error().message;
+  EXPECT_EQ(kept->kind, RepairKind::kNone);
   EXPECT_EQ(kept->cavities_kept, 1);
   EXPECT_EQ(kept->solid.triangles.size(), 24u);
   EXPECT_NEAR(signedVolume(kept->solid), 1.0 - 0.125, 1e-12);
@@ -96,6 +101,18 @@ TEST(Repair, NearlyCoincidentCornersAreWeldedAutomatically) {
   ASSERT_FALSE(r->notes.empty());
   EXPECT_NE(r->notes[0].find("welded"), std::string::npos);
   EXPECT_NEAR(signedVolume(r->solid), 1.0, 1e-7);
+  // Corners 2e-6 of the diagonal apart do not close within the automatic limit (1e-6).
+  Mesh far = m;
+  const double step = 2e-6 * std::sqrt(3.0);
+  for (size_t i = 0; i < far.vertices.size(); ++i)
+    far.vertices[i] = box.vertices[box.triangles[i / 3][i % 3]] + Vec3::Constant(step * (i % 3));
+  auto fc = cleanMesh(far.vertices, far.triangles);
+  ASSERT_TRUE(fc.ok());
+  auto fr = repairCore(fc->mesh);
+  EXPECT_FALSE(fr.ok() && fr->kind == RepairKind::kWelded);
+  if (fr.ok()) {
+    EXPECT_EQ(fr->weld_tolerance, 0.0);
+  }
   // With the repair off the tolerance is not tried.
   RepairOptions off;
   off.enabled = false;
@@ -150,6 +167,77 @@ TEST(Repair, FitOnACappedBoxCoversTheOriginalTriangles) {
   ASSERT_TRUE(f.ok()) << f.error().message;
   expectCovers(index, f->spheres);
   expectPointsCovered(r->original, f->spheres);
+}
+
+TEST(Repair, ReorientationKeepsTheMajorityOrientationOfACavity) {
+  // An inward nested cube (a cavity) with one face flipped: it stays a cavity.
+  Mesh m = nestedCubes(true);
+  std::swap(m.triangles[14][1], m.triangles[14][2]);
+  auto r = repairCore(m, false);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->triangles_flipped, 1);
+  EXPECT_EQ(r->cavities_kept, 1);
+  EXPECT_NEAR(signedVolume(r->solid), 0.875, 1e-12);
+}
+
+// The fit on repaired solids (no union or wrap needed) covers solid and original.
+void expectFitCovers(const RepairResult& r) {
+  const SolidIndex index(r.solid);
+  FitOptions fo;
+  fo.num_spheres = 6;
+  fo.max_iterations = 10;
+  fo.original = &r.original;
+  auto f = fitSpheres(index, fo);
+  ASSERT_TRUE(f.ok()) << f.error().message;
+  expectCovers(index, f->spheres);
+  expectPointsCovered(r.original, f->spheres);
+}
+
+TEST(Repair, FitsOnExactRepairsCoverTheOriginal) {
+  for (const Mesh& m : {boxWithFlippedFace(), nestedCubes(false), nestedCubes(true)}) {
+    auto r = repairCore(m);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    expectFitCovers(*r);
+  }
+  // The duplicated face, as loaded (the copy dropped), and as given.
+  const Mesh dup = cubeWithDuplicatedFace();
+  auto c = cleanMesh(dup.vertices, dup.triangles);
+  ASSERT_TRUE(c.ok());
+  auto r = repairCore(c->mesh);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  expectFitCovers(*r);
+  expectPointsCovered(dup, [&] {
+    const SolidIndex index(r->solid);
+    FitOptions fo;
+    fo.num_spheres = 4;
+    fo.max_iterations = 5;
+    fo.original = &r->original;
+    return fitSpheres(index, fo)->spheres;
+  }());
+}
+
+TEST(Repair, SameResultForAnyThreadCount) {
+  auto run = [](int threads) {
+    tbb::global_control gc(tbb::global_control::max_allowed_parallelism, threads);
+    const Mesh m = joined(openBox(), transformed(openBox(), Eigen::Matrix3d::Identity(),
+                                                  Vec3(3, 0, 0), 1.0));
+    auto r = repairCore(m);
+    EXPECT_TRUE(r.ok());
+    const SolidIndex index(r->solid);
+    FitOptions fo;
+    fo.num_spheres = 8;
+    fo.max_iterations = 10;
+    fo.original = &r->original;
+    return std::make_pair(r->solid.triangles, fitSpheres(index, fo)->spheres);
+  };
+  const auto [t1, s1] = run(1);
+  const auto [t2, s2] = run(2);
+  EXPECT_EQ(t1, t2);
+  ASSERT_EQ(s1.size(), s2.size());
+  for (size_t i = 0; i < s1.size(); ++i) {
+    EXPECT_EQ(s1[i].center, s2[i].center);
+    EXPECT_EQ(s1[i].radius, s2[i].radius);
+  }
 }
 
 TEST(Repair, WhatNeedsTheUnionOrTheWrapIsRefusedWithoutThem) {

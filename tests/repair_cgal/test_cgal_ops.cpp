@@ -153,7 +153,7 @@ TEST(CgalWrap, WrapOfASheetIsAThinSolid) {
 // An axis-aligned sheet: CGAL 5.5 (inexact constructions) may put Steiner points exactly in
 // the sheet's plane, and a wrap facet coplanar with the sheet then passes through its corner.
 // The corners are never outside, but may be on the surface (seen for alpha = 0.1, offset =
-// 0.01): the repair keeps the original triangles to be covered as well (also_cover).
+// 0.01): the repair keeps the original triangles to be covered as well (FitOptions::original).
 TEST(CgalWrap, WrapOfAnAxisAlignedSheetNeverLeavesItOutside) {
   Mesh sheet;
   sheet.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
@@ -194,7 +194,9 @@ TEST(CgalWrap, BadParametersOrInputAreErrorsNotCrashes) {
                                                                      {inf, 0.01},
                                                                      {0.1, 0.0},
                                                                      {0.1, nan},
-                                                                     {1e-9, 1e-3}}) {
+                                                                     {1e-9, 1e-3},
+                                                                     {1e-4, 1e-3},
+                                                                     {0.1, 1e-7}}) {
     auto w = detail::alphaWrap(cube, alpha, offset);
     ASSERT_FALSE(w.ok()) << alpha << " " << offset;
     EXPECT_EQ(w.error().code, ErrorCode::kInvalidArgument);

@@ -82,7 +82,8 @@ TEST(RepairLadder, NonManifoldEdgeIsWrappedTightly) {
   EXPECT_GE(signedVolume(r->solid), 2.0);
   EXPECT_LE(signedVolume(r->solid),
             2.0 * std::pow(1.0 + 2.0 * d, 3) + 4.0 * r->wrap_alpha * r->wrap_alpha);
-  EXPECT_TRUE(std::isnan(r->volume_ratio));  // a non-manifold input has no volume here
+  // Closed with balanced edges: the input's volume (2) is defined, and the ratio reported.
+  EXPECT_NEAR(r->volume_ratio, signedVolume(r->solid) / 2.0, 1e-12);
   expectContainsVertices(*r);
   expectFitCoversOriginal(*r);
 }
@@ -131,9 +132,34 @@ TEST(RepairLadder, OpenBoxIsCappedOrWrappedAsAShellWhenCavitiesAreKept) {
 TEST(RepairLadder, NestedAndDuplicatedNeedNoOperation) {
   auto r = repairAll(nestedCubes(false));
   ASSERT_TRUE(r.ok()) << r.error().message;
-  EXPECT_EQ(r->kind, RepairKind::kNone);
+  EXPECT_EQ(r->kind, RepairKind::kUnion);
   EXPECT_EQ(r->shells_dropped, 1);
   expectFitCoversOriginal(*r);
+  const Mesh dup = cubeWithDuplicatedFace();
+  auto c = cleanMesh(dup.vertices, dup.triangles);
+  ASSERT_TRUE(c.ok());
+  auto d = repairAll(c->mesh);
+  ASSERT_TRUE(d.ok()) << d.error().message;
+  EXPECT_EQ(d->kind, RepairKind::kNone);
+  expectFitCoversOriginal(*d);
+}
+
+TEST(RepairLadder, KeptCavityAndItsIslandSurviveTheUnion) {
+  // Two overlapping outer cubes; in the part of the first the second does not reach (x < 0.5)
+  // a cavity, and in the cavity an island cube.
+  Mesh cavity = makeBox(Vec3::Constant(0.1), Vec3::Constant(0.4));
+  for (Triangle& t : cavity.triangles) std::swap(t[1], t[2]);
+  const Mesh island = makeBox(Vec3::Constant(0.2), Vec3::Constant(0.3));
+  const Mesh m = joined(joined(overlappingCubes(), cavity), island);
+  auto kept = repairAll(m, false);
+  ASSERT_TRUE(kept.ok()) << kept.error().message;
+  EXPECT_EQ(kept->kind, RepairKind::kUnion);
+  EXPECT_EQ(kept->cavities_kept, 1);
+  EXPECT_NEAR(signedVolume(kept->solid), 1.71875 - 0.027 + 0.001, 1e-9);
+  auto filled = repairAll(m, true);
+  ASSERT_TRUE(filled.ok()) << filled.error().message;
+  EXPECT_EQ(filled->cavities_filled, 1);
+  EXPECT_NEAR(signedVolume(filled->solid), 1.71875, 1e-9);
 }
 
 }  // namespace
