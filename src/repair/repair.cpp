@@ -26,14 +26,19 @@ namespace {
 // that closes the mesh is used (coordinates stored per corner in float differ by ~1e-7).
 constexpr double kAutoWeldSteps[] = {1e-8, 1e-7, kAutoWeldRel};
 
-// Automatic wrap parameters: alpha relative to the bounding box diagonal (about the
-// narrowest opening the wrap does not enter), and the offset of the wrap from the triangles
-// relative to alpha. CGAL 5.5's wrapping time grows with the number of output triangles, which
-// grows as alpha and the offset shrink. Measured on the benchmark meshes
-// (docs/benchmarks.md), d/50 and d/1000 wrap every mesh up to 86k triangles in under 2 s on
-// two cores with 1-3 % more volume than robot links and 8 % more than the armadillo, where
-// d/100 and d/3000 take up to 9 s for 0.4-1.1 %.
-constexpr double kWrapAlphaRel = 1.0 / 50.0;
+// Automatic wrap parameters. CGAL 5.5's wrapping time grows with the number of triangles it
+// outputs, about kWrapTrianglesPerArea * area / alpha^2 for an offset of alpha / 20 (measured on
+// the benchmark meshes: spot gives 5.0k triangles at alpha = d/50), at a rate that falls with
+// the input's size (about 10k triangles per second for small inputs, 3k at 86k input triangles).
+// Alpha is the smallest that keeps the predicted output within what kWrapSeconds allows, so a
+// mesh with little surface for its size (a compact link) is wrapped more tightly than one with
+// much (a chair's thin legs), and a large input more coarsely; it stays between d/100 and d/50
+// of the bounding box diagonal d. The offset is alpha / 20.
+constexpr double kWrapTrianglesPerArea = 2.35;
+constexpr double kWrapRate = 10000.0;          // output triangles per second, small inputs
+constexpr double kWrapRateHalfInput = 37000.0;  // input triangles at which the rate halves
+constexpr double kWrapSeconds = 0.5;
+constexpr double kWrapAlphaMinRel = 1.0 / 100.0, kWrapAlphaMaxRel = 1.0 / 50.0;
 constexpr double kWrapOffsetOfAlpha = 1.0 / 20.0;
 
 std::string fmt(const char* f, double x) {
@@ -174,7 +179,13 @@ Mesh applyPlan(const Mesh& m, const ShellAnalysis& sa, bool fill, RepairResult* 
 // Alpha and offset for the wrap: the options' or the automatic ones.
 void wrapParameters(const Mesh& m, const RepairOptions& o, double* alpha, double* offset) {
   const double diag = boundingBox(m).diagonal();
-  *alpha = o.wrap_alpha > 0.0 ? o.wrap_alpha : kWrapAlphaRel * diag;
+  const double rate =
+      kWrapRate / (1.0 + static_cast<double>(m.triangles.size()) / kWrapRateHalfInput);
+  const double budget = rate * kWrapSeconds;  // output triangles
+  const double fit = std::sqrt(kWrapTrianglesPerArea * surfaceArea(m) / budget);
+  *alpha = o.wrap_alpha > 0.0
+               ? o.wrap_alpha
+               : std::clamp(fit, kWrapAlphaMinRel * diag, kWrapAlphaMaxRel * diag);
   *offset = o.wrap_offset > 0.0 ? o.wrap_offset : kWrapOffsetOfAlpha * *alpha;
 }
 
@@ -297,8 +308,11 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
   Mesh capped = m;
   if (o.fill_cavities && res.diagnosis.boundary_edges > 0) {
     res.holes_capped = detail::capHoles(&capped);
-    const ShellAnalysis sc = analyzeShells(capped);
-    if (res.holes_capped > 0 && allClean(sc) && sc.intersecting.empty()) {
+    // Caps only add triangles: crossings already there stay, and the capped mesh is then only
+    // the wrap's input (with its holes closed), not worth analysing again.
+    const bool may_be_clean = res.holes_capped > 0 && !res.shells.intersections.any();
+    const ShellAnalysis sc = may_be_clean ? analyzeShells(capped) : ShellAnalysis{};
+    if (may_be_clean && allClean(sc) && sc.intersecting.empty()) {
       res.notes.push_back("closed " + count(res.holes_capped, "hole", "holes") +
                           " (triangulated over their own vertices)");
       return done(applyPlan(capped, sc, o.fill_cavities, &res), RepairKind::kCapped);
@@ -355,10 +369,11 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
       outward.push_back(std::move(sub));
     }
     auto u = o.operations.unite(outward);
-    // The union is exact; rounding it to doubles could in principle make it cross itself.
-    if (u && findSelfIntersections(*u).any())
-      u = Error{ErrorCode::kNotSolid, "its rounded result crosses itself"};
     if (u) {
+      // The union is exact; rounding its vertices to doubles (by at most half an ulp) can leave
+      // slivers that touch or cross by about that much, which changes no volume that matters.
+      // They are reported, not refused: a wrap instead would add far more.
+      const SelfIntersections rounded = findSelfIntersections(*u);
       std::vector<Mesh> parts = {std::move(u).value()};
       for (Mesh& a : apart) parts.push_back(std::move(a));
       res.notes.push_back("united " +
@@ -372,6 +387,10 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
         res.notes.push_back("turned " +
                             count(flipped_shells, "inside-out shell", "inside-out shells") +
                             " outward");
+      if (rounded.any())
+        res.notes.push_back(
+            count(static_cast<int64_t>(rounded.pairs.size()), "triangle pair", "triangle pairs") +
+            " of the union touch after rounding to doubles");
       return done(concat(parts), RepairKind::kUnion);
     }
     res.cavities_filled = res.cavities_kept = 0;
