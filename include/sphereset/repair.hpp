@@ -10,7 +10,8 @@
 //            makes every shell clean;
 //   capped   its boundary loops, closed by triangulations of their own vertices, make every
 //            shell clean;
-//   union    every shell is clean but some overlap: the union of the shells (corefinement);
+//   union    every shell is clean but some cross (the union of the shells by corefinement) or
+//            nest (shells dropped or cavities filled, no computation);
 //   wrapped  anything else (open, non-manifold, inconsistently oriented, self-intersecting):
 //            CGAL's 3D Alpha Wrapping, a watertight 2-manifold that contains every triangle.
 // Shells nested inside another with the same orientation add nothing and are dropped; inward
@@ -66,7 +67,9 @@ struct RepairOptions {
 };
 
 struct RepairResult {
-  Mesh solid;     // closed, oriented outward, free of self-intersections: what is fitted
+  // Closed, 2-manifold, oriented outward, free of crossings (a union rounded to doubles may
+  // keep triangle pairs that touch, reported in the notes): what is fitted.
+  Mesh solid;
   Mesh original;  // the input's triangles (exactly welded, degenerate ones dropped)
   RepairKind kind = RepairKind::kNone;
   MeshDiagnosis diagnosis;                     // of the input (exact welding)
@@ -78,8 +81,9 @@ struct RepairResult {
   int64_t cavities_filled = 0;                 // inward shells dropped (fill_cavities)
   int64_t cavities_kept = 0;                   // inward shells kept as cavities
   double wrap_alpha = 0.0, wrap_offset = 0.0;  // when wrapped
-  // Volume of the solid over the input's, when the input's is defined (every shell closed and
-  // oriented); NaN otherwise.
+  // Volume of the solid over the input's, when the input's is defined: its shells clean and
+  // apart (the nested ones as planned), or the input closed with every edge traversed as often
+  // each way (|signed volume|, regions wound twice counting twice); NaN otherwise.
   double volume_ratio = 0.0;
   double seconds = 0.0;
   std::vector<std::string> notes;  // one sentence per step taken, for the summary
