@@ -126,7 +126,8 @@ std::vector<std::pair<std::string, std::string>> problemActions(const MeshDiagno
                      last("gone once the vertices are welded"));
   if (c.intersecting_pairs > 0)
     out.emplace_back(n(c.intersecting_pairs, "pair of crossing shells", "pairs of crossing shells"),
-                     last(welded ? "gone once the vertices are welded" : "united (corefinement)"));
+                     last(r && r->kind == RepairKind::kUnion ? "united (corefinement)"
+                                                              : "gone once the vertices are welded"));
   if (c.triangle_pairs > 0)
     out.emplace_back(
         n(c.triangle_pairs, "crossing triangle pair", "crossing triangle pairs"),
