@@ -235,8 +235,9 @@ ShellAnalysis analyzeShells(const Mesh& mesh, const SelfIntersectionOptions& opt
     Shell& shell = out.shells[s];
     double parent_volume = std::numeric_limits<double>::infinity();
     std::vector<int32_t> containers;
+    const int32_t self = s;  // a structured binding cannot be captured before C++20 in clang 14
     tree.containing(box, [&](int32_t a) {
-      if (a != s && !crossing(a, s)) containers.push_back(a);
+      if (a != self && !crossing(a, self)) containers.push_back(a);
     });
     std::sort(containers.begin(), containers.end());
     for (int32_t a : containers) {
