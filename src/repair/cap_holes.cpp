@@ -93,22 +93,27 @@ void liepaCap(const Mesh& mesh, const std::vector<int32_t>& loop, const std::vec
 }  // namespace
 
 int64_t capHoles(Mesh* mesh) {
-  // Directed edges and how often each undirected edge occurs.
-  std::map<std::pair<int32_t, int32_t>, int> uses;
+  // Undirected edges, sorted, so that how often one occurs is a binary search.
+  std::vector<std::pair<int32_t, int32_t>> edges;
+  edges.reserve(3 * mesh->triangles.size());
   for (const Triangle& t : mesh->triangles)
     for (int k = 0; k < 3; ++k) {
       const int32_t a = t[k], b = t[(k + 1) % 3];
-      ++uses[{std::min(a, b), std::max(a, b)}];
+      edges.emplace_back(std::min(a, b), std::max(a, b));
     }
-  // Boundary half-edges a -> b (as the triangle traverses them), keyed by a; the loop goes on
-  // from b. Sorted, so the walk is deterministic.
-  // The value holds b and the triangle's third vertex.
+  std::sort(edges.begin(), edges.end());
+  auto uses = [&](int32_t a, int32_t b) {
+    const auto r = std::equal_range(edges.begin(), edges.end(),
+                                    std::pair(std::min(a, b), std::max(a, b)));
+    return r.second - r.first;
+  };
+  // Boundary half-edges a -> b (as the triangle traverses them), keyed by a, with b and the
+  // triangle's third vertex; the loop goes on from b. Sorted, so the walk is deterministic.
   std::multimap<int32_t, std::pair<int32_t, int32_t>> next;
   for (const Triangle& t : mesh->triangles)
     for (int k = 0; k < 3; ++k) {
       const int32_t a = t[k], b = t[(k + 1) % 3];
-      if (uses[{std::min(a, b), std::max(a, b)}] == 1)
-        next.emplace(a, std::pair(b, t[(k + 2) % 3]));
+      if (uses(a, b) == 1) next.emplace(a, std::pair(b, t[(k + 2) % 3]));
     }
   int64_t loops = 0;
   while (!next.empty()) {

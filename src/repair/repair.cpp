@@ -13,7 +13,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <map>
+#include <iterator>
+#include <tuple>
 #include <utility>
 
 #include "repair/cap_holes.hpp"
@@ -129,14 +130,25 @@ ShellPlan planShells(const Mesh& m, const ShellAnalysis& sa, bool fill_cavities)
 // possibly non-manifold or self-intersecting): its signed volume, the integral of its winding
 // number, is defined.
 bool balancedClosed(const Mesh& m) {
-  std::map<std::pair<int32_t, int32_t>, int> balance;
+  // (lo, hi, +1 or -1) per directed edge, sorted by the undirected key.
+  std::vector<std::tuple<int32_t, int32_t, int>> edges;
+  edges.reserve(3 * m.triangles.size());
   for (const Triangle& t : m.triangles)
     for (int k = 0; k < 3; ++k) {
       const int32_t a = t[k], b = t[(k + 1) % 3];
-      balance[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
+      edges.emplace_back(std::min(a, b), std::max(a, b), a < b ? 1 : -1);
     }
-  for (const auto& [e, b] : balance)
-    if (b != 0) return false;
+  std::sort(edges.begin(), edges.end());
+  for (size_t i = 0; i < edges.size();) {
+    int balance = 0;
+    size_t j = i;
+    for (; j < edges.size() && std::get<0>(edges[j]) == std::get<0>(edges[i]) &&
+           std::get<1>(edges[j]) == std::get<1>(edges[i]);
+         ++j)
+      balance += std::get<2>(edges[j]);
+    if (balance != 0) return false;
+    i = j;
+  }
   return true;
 }
 
@@ -247,16 +259,22 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
     m = std::move(w).value();
     res.weld_tolerance = o.weld_tolerance;
   } else if (o.enabled && o.weld_tolerance < 0.0 && res.diagnosis.boundary_edges > 0) {
-    for (double rel : kAutoWeldSteps) {
+    // The largest tolerance first: when it does not close the mesh, the smaller ones are not
+    // tried (a large mesh with a real hole pays for one weld, not three).
+    auto closes = [&](double rel) -> bool {
       auto w = reweld(mesh, rel * diag, name);
-      if (w && diagnoseMesh(*w).closed) {
-        m = std::move(w).value();
-        res.weld_tolerance = rel * diag;
-        res.notes.push_back("welded vertices within " + fmt("%.3g", res.weld_tolerance) + " (" +
-                            fmt("%.0e", rel) + " of the diagonal), which closes the mesh");
-        break;
-      }
-    }
+      if (!w || !diagnoseMesh(*w).closed) return false;
+      m = std::move(w).value();
+      res.weld_tolerance = rel * diag;
+      res.notes.clear();
+      res.notes.push_back("welded vertices within " + fmt("%.3g", res.weld_tolerance) + " (" +
+                          fmt("%.0e", rel) + " of the diagonal), which closes the mesh");
+      return true;
+    };
+    constexpr size_t kSteps = std::size(kAutoWeldSteps);
+    if (closes(kAutoWeldSteps[kSteps - 1]))
+      for (size_t i = 0; i + 1 < kSteps; ++i)
+        if (closes(kAutoWeldSteps[i])) break;
   }
 
   // Off: a closed oriented 2-manifold is taken as it is, anything else refused.
