@@ -146,7 +146,7 @@ if(SPHERESET_WITH_REPAIR)
   cli_test(fit_single_triangle 0 ARGS fit ${work}/open.off -n 3 -o ${work}/tri.txt --quality fast
            -q FILE ${work}/tri.txt SPHERES 3)
   cli_test(fit_keep_cavities 0 ARGS fit ${data}/open_box.off -n 8 -o ${work}/shell.txt
-           --keep-cavities --quality fast --json -q STDOUT "\"kind\":\"wrapped\"")
+           --keep-cavities --wrap-alpha 0.1 --quality fast --json -q STDOUT "\"kind\":\"wrapped\"")
 endif()
 
 # Bad input that no repair can mend: one line naming the file, no output written.
