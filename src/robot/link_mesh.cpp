@@ -13,8 +13,8 @@
 namespace sphereset {
 namespace {
 
-// Sphere primitives: rings between the poles per half turn of the meridian, relative to the
-// cylinder's segment count (a tessellation for drawing; fitting uses the exact sphere).
+// The fewest sides of a tessellated circle (cylinders; sphere meridians, whose rings number
+// half as many).
 constexpr int kMinSegments = 3;
 
 // Appends `part` to `out`, its vertices mapped by `to_link`. A mirroring map (negative

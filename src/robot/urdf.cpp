@@ -5,6 +5,7 @@
 // URDF's folder, absolute, file:// and package://NAME/... (ROS package folders found by folder
 // name or by the <name> of their package.xml). Materials, inertia, dynamics, mimic joints,
 // transmissions and Gazebo extensions are not read.
+#include <console_bridge/console.h>
 #include <tinyxml.h>
 #include <urdf_parser/urdf_parser.h>
 
@@ -20,7 +21,6 @@
 #include <utility>
 #include <vector>
 
-#include "console_bridge/console.h"
 #include "sphereset/robot.hpp"
 
 namespace sphereset {

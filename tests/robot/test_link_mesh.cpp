@@ -185,5 +185,27 @@ TEST(LinkPoses, RevoluteValuesAreClampedToTheLimits) {
   EXPECT_TRUE(linkPoses(r, {{"nope", 1.0}}).at("tool").isApprox(linkPoses(r).at("tool")));
 }
 
+TEST(LinkPoses, PrismaticSlidesAlongItsAxisWithinItsLimits) {
+  Robot r;
+  r.root = "rail";
+  RobotJoint slide;
+  slide.name = "slide";
+  slide.parent = "rail";
+  slide.child = "carriage";
+  slide.type = RobotJoint::Type::kPrismatic;
+  slide.origin.translation() = Vec3(1.0, 0.0, 0.0);
+  slide.axis = Vec3::UnitY();
+  slide.lower = -0.5;
+  slide.upper = 0.25;
+  r.joints = {slide};
+  EXPECT_LT((linkPoses(r, {{"slide", 0.2}}).at("carriage").translation() - Vec3(1, 0.2, 0)).norm(),
+            kTol);
+  EXPECT_LT((linkPoses(r, {{"slide", 3.0}}).at("carriage").translation() - Vec3(1, 0.25, 0)).norm(),
+            kTol);
+  EXPECT_LT(
+      (linkPoses(r, {{"slide", -3.0}}).at("carriage").translation() - Vec3(1, -0.5, 0)).norm(),
+      kTol);
+}
+
 }  // namespace
 }  // namespace sphereset

@@ -33,7 +33,10 @@ RobotLoadOptions packageOptions(std::vector<std::string> paths) {
 class RosPackagePath {
  public:
   explicit RosPackagePath(const std::string& value) {
-    if (const char* old = std::getenv("ROS_PACKAGE_PATH")) old_ = old, had_ = true;
+    if (const char* old = std::getenv("ROS_PACKAGE_PATH")) {
+      old_ = old;
+      had_ = true;
+    }
     ::setenv("ROS_PACKAGE_PATH", value.c_str(), 1);
   }
   ~RosPackagePath() {
