@@ -11,6 +11,7 @@ packages=(
   libcli11-dev         # command-line parsing
   nlohmann-json3-dev   # JSON input and output
   libyaml-cpp-dev      # YAML sphere files (cuRobo)
+  liburdfdom-dev       # robot descriptions (URDF parser)
   libnlopt-cxx-dev     # derivative-free and gradient optimisers
   libgtest-dev         # unit tests
   libbenchmark-dev     # micro-benchmarks

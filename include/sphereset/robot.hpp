@@ -1,0 +1,83 @@
+// Robot descriptions (URDF): the links with their collision geometry in the link frame, the
+// joint tree, each link's geometry as one mesh, and forward kinematics. Plain data and free
+// functions; the URDF parser (urdfdom) stays behind this header.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "sphereset/mesh.hpp"
+#include "sphereset/sphere.hpp"
+#include "sphereset/status.hpp"
+
+namespace sphereset {
+
+struct RobotLoadOptions {
+  // Folders searched, in order, for the packages of `package://NAME/...` mesh paths.
+  std::vector<std::string> package_paths;
+  // Also search the folders of the ROS_PACKAGE_PATH environment variable (colon-separated),
+  // after `package_paths`.
+  bool use_ros_package_path = true;
+};
+
+// One <collision> element of a link (or one <visual> element when the link has no collision).
+struct LinkGeometry {
+  enum class Kind { kMesh, kBox, kCylinder, kSphere };
+  Kind kind = Kind::kBox;
+  std::string mesh_path;      // kMesh: the resolved file path (an existing file)
+  Vec3 scale = Vec3::Ones();  // kMesh: scale of the mesh's own coordinates
+  Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();  // element frame in the link frame
+  Vec3 box_size = Vec3::Zero();  // kBox: full edge lengths along x, y, z, centred on the origin
+  double radius = 0.0;           // kCylinder, kSphere
+  double length = 0.0;           // kCylinder: along z, centred on the origin
+};
+
+struct RobotLink {
+  std::string name;
+  std::vector<LinkGeometry> geometry;  // empty for links without geometry (e.g. a world link)
+  bool from_visual = false;            // the geometry is the visual one (no collision given)
+};
+
+struct RobotJoint {
+  enum class Type { kFixed, kRevolute, kContinuous, kPrismatic, kOther };
+  std::string name;
+  std::string parent;  // parent link name
+  std::string child;   // child link name
+  Type type = Type::kFixed;
+  Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();  // joint frame in the parent frame
+  Vec3 axis = Vec3::UnitX();  // unit axis in the joint frame (revolute, continuous, prismatic)
+  double lower = 0.0;         // limits (rad or m) of revolute and prismatic joints
+  double upper = 0.0;
+};
+
+struct Robot {
+  std::string name;
+  std::string root;                // the root link's name
+  std::vector<RobotLink> links;    // in file order
+  std::vector<RobotJoint> joints;  // in file order
+};
+
+// Reads a URDF file and resolves every mesh path (relative to the URDF's folder, absolute,
+// file://, package://NAME/... through the package search folders). Errors (one line): the
+// file missing or unreadable (kUnreadable), not a valid URDF (kInvalidData), a mesh file not
+// found (kUnreadable, naming the link and every path tried).
+Expected<Robot> loadRobot(const std::string& urdf_path, const RobotLoadOptions& options = {});
+
+// The link's geometry as one mesh in the link frame: meshes loaded, scaled and placed by their
+// origin; boxes, cylinders (`cylinder_segments` sides) and spheres tessellated; all elements
+// concatenated (separate shells, not united). A link without geometry gives an empty mesh.
+// Errors: those of loadMesh, with the link's name.
+Expected<Mesh> linkMesh(const RobotLink& link, int cylinder_segments = 48);
+
+// The link's sphere primitives as exact spheres in the link frame.
+std::vector<Sphere> linkSpheres(const RobotLink& link);
+
+// Forward kinematics: each link reachable from the root -> the pose of its frame in the root
+// frame. Joints missing from `joint_values` are at 0; revolute and prismatic values are clamped
+// to their limits; joints of other types (floating, planar) stay at their origin.
+std::map<std::string, Eigen::Isometry3d> linkPoses(
+    const Robot& robot, const std::map<std::string, double>& joint_values = {});
+
+}  // namespace sphereset

@@ -1,0 +1,221 @@
+// URDF loading: links and joints in file order, collision and visual geometry, mesh paths
+// resolved through package folders (by folder name, by package.xml name, ROS_PACKAGE_PATH),
+// relative and file:// paths, and one-line errors for missing meshes and bad files.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <filesystem>
+#include <string>
+
+#include "robot/robot_data.hpp"
+#include "sphereset/robot.hpp"
+#include "test_support.hpp"
+
+namespace sphereset {
+namespace {
+
+namespace fs = std::filesystem;
+using Kind = LinkGeometry::Kind;
+
+bool samePath(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return fs::equivalent(a, b, ec);
+}
+
+RobotLoadOptions packageOptions(std::vector<std::string> paths) {
+  RobotLoadOptions o;
+  o.package_paths = std::move(paths);
+  o.use_ros_package_path = false;
+  return o;
+}
+
+// Sets ROS_PACKAGE_PATH for one test and restores it afterwards.
+class RosPackagePath {
+ public:
+  explicit RosPackagePath(const std::string& value) {
+    if (const char* old = std::getenv("ROS_PACKAGE_PATH")) {
+      old_ = old;
+      had_ = true;
+    }
+    ::setenv("ROS_PACKAGE_PATH", value.c_str(), 1);
+  }
+  ~RosPackagePath() {
+    if (had_) {
+      ::setenv("ROS_PACKAGE_PATH", old_.c_str(), 1);
+    } else {
+      ::unsetenv("ROS_PACKAGE_PATH");
+    }
+  }
+
+ private:
+  std::string old_;
+  bool had_ = false;
+};
+
+class Urdf : public test::TempDirTest {
+ protected:
+  // A one-link robot whose collision is a mesh of the given file name.
+  std::string meshRobot(const std::string& name, const std::string& filename) const {
+    return write(name,
+                 "<robot name=\"r\"><link name=\"part\"><collision><geometry><mesh "
+                 "filename=\"" +
+                     filename + "\"/></geometry></collision></link></robot>");
+  }
+};
+
+TEST_F(Urdf, LinksJointsAndGeometryKinds) {
+  auto r = loadRobot(test::threeLinkUrdf(), packageOptions({test::robotDir()}));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->name, "three_link");
+  EXPECT_EQ(r->root, "base_link");
+  ASSERT_EQ(r->links.size(), 4u);
+  EXPECT_EQ(r->links[0].name, "base_link");
+  EXPECT_EQ(r->links[1].name, "link1");
+  EXPECT_EQ(r->links[2].name, "link2");
+  EXPECT_EQ(r->links[3].name, "tool");
+  for (const RobotLink& l : r->links) ASSERT_EQ(l.geometry.size(), 1u) << l.name;
+
+  EXPECT_EQ(r->links[0].geometry[0].kind, Kind::kBox);
+  EXPECT_EQ(r->links[0].geometry[0].box_size, Vec3(0.2, 0.3, 0.1));
+  // link1 has a visual box too: the collision cylinder wins.
+  EXPECT_EQ(r->links[1].geometry[0].kind, Kind::kCylinder);
+  EXPECT_FALSE(r->links[1].from_visual);
+  EXPECT_EQ(r->links[1].geometry[0].radius, 0.05);
+  EXPECT_EQ(r->links[1].geometry[0].length, 0.4);
+  EXPECT_EQ(r->links[2].geometry[0].kind, Kind::kMesh);
+  EXPECT_EQ(r->links[2].geometry[0].scale, Vec3(0.5, 1.5, 2.0));
+  EXPECT_EQ(r->links[3].geometry[0].kind, Kind::kSphere);
+  EXPECT_TRUE(r->links[3].from_visual);
+  EXPECT_EQ(r->links[3].geometry[0].radius, 0.03);
+
+  ASSERT_EQ(r->joints.size(), 3u);
+  EXPECT_EQ(r->joints[0].name, "joint1");
+  EXPECT_EQ(r->joints[0].type, RobotJoint::Type::kRevolute);
+  EXPECT_EQ(r->joints[0].parent, "base_link");
+  EXPECT_EQ(r->joints[0].child, "link1");
+  EXPECT_EQ(r->joints[0].axis, Vec3::UnitZ());
+  EXPECT_EQ(r->joints[0].lower, -1.5);
+  EXPECT_EQ(r->joints[0].upper, 1.5);
+  EXPECT_EQ(r->joints[2].type, RobotJoint::Type::kFixed);
+}
+
+TEST_F(Urdf, GeometryOriginFromXyzAndRpy) {
+  auto r = loadRobot(test::threeLinkUrdf(), packageOptions({test::robotDir()}));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  const Eigen::Isometry3d& o = r->links[2].geometry[0].origin;
+  // URDF's rpy: fixed-axis roll about x, then pitch about y, then yaw about z.
+  const Eigen::Matrix3d expected =
+      (Eigen::AngleAxisd(0.5, Vec3::UnitZ()) * Eigen::AngleAxisd(-0.4, Vec3::UnitY()) *
+       Eigen::AngleAxisd(0.3, Vec3::UnitX()))
+          .toRotationMatrix();
+  EXPECT_LT((o.linear() - expected).norm(), 1e-12);
+  EXPECT_LT((o.translation() - Vec3(0.1, -0.2, 0.3)).norm(), 1e-12);
+}
+
+TEST_F(Urdf, PackageFoundByFolderNameInPackagePaths) {
+  // The first folder has no such package; the second has it.
+  auto r = loadRobot(test::threeLinkUrdf(), packageOptions({dir_.string(), test::robotDir()}));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_TRUE(samePath(r->links[2].geometry[0].mesh_path, test::threeLinkStl()))
+      << r->links[2].geometry[0].mesh_path;
+}
+
+TEST_F(Urdf, PackageFoundThroughRosPackagePath) {
+  RosPackagePath env(dir_.string() + ":" + test::robotDir());
+  auto r = loadRobot(test::threeLinkUrdf());
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_TRUE(samePath(r->links[2].geometry[0].mesh_path, test::threeLinkStl()))
+      << r->links[2].geometry[0].mesh_path;
+
+  RobotLoadOptions no_env;
+  no_env.use_ros_package_path = false;
+  EXPECT_FALSE(loadRobot(test::threeLinkUrdf(), no_env).ok());
+}
+
+TEST_F(Urdf, PackageFoundByPackageXmlNameInADifferentFolder) {
+  // workspace/src/renamed/package.xml names three_link_description: two levels down.
+  const fs::path pkg = dir_ / "workspace" / "src" / "renamed";
+  fs::create_directories(pkg / "meshes");
+  fs::copy_file(test::dataPath("robot/three_link_description/package.xml"), pkg / "package.xml");
+  fs::copy_file(test::threeLinkStl(), pkg / "meshes" / "link.stl");
+  auto r = loadRobot(test::threeLinkUrdf(), packageOptions({(dir_ / "workspace").string()}));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_TRUE(samePath(r->links[2].geometry[0].mesh_path, (pkg / "meshes" / "link.stl").string()))
+      << r->links[2].geometry[0].mesh_path;
+}
+
+TEST_F(Urdf, PackageXmlDeeperThanThreeLevelsIsNotFound) {
+  const fs::path pkg = dir_ / "a" / "b" / "c" / "d";
+  fs::create_directories(pkg / "meshes");
+  fs::copy_file(test::dataPath("robot/three_link_description/package.xml"), pkg / "package.xml");
+  fs::copy_file(test::threeLinkStl(), pkg / "meshes" / "link.stl");
+  EXPECT_TRUE(loadRobot(test::threeLinkUrdf(), packageOptions({(dir_ / "a" / "b").string()})).ok());
+  EXPECT_FALSE(loadRobot(test::threeLinkUrdf(), packageOptions({dir_.string()})).ok());
+}
+
+TEST_F(Urdf, MissingMeshNamesTheLinkAndEveryPathTried) {
+  const std::string urdf =
+      meshRobot("missing.urdf", "package://three_link_description/meshes/none.stl");
+  const std::string empty_dir = (dir_ / "empty").string();
+  fs::create_directories(empty_dir);
+  auto r = loadRobot(urdf, packageOptions({test::robotDir(), empty_dir}));
+  test::expectError(r, ErrorCode::kUnreadable, urdf, "'part'");
+  const std::string& m = r.error().message;
+  EXPECT_NE(m.find(test::robotDir() + "/three_link_description/meshes/none.stl"), std::string::npos)
+      << m;
+  EXPECT_NE(m.find(empty_dir), std::string::npos) << m;
+  EXPECT_NE(m.find("package://three_link_description/meshes/none.stl"), std::string::npos) << m;
+
+  const std::string relative = meshRobot("relative.urdf", "meshes/none.stl");
+  test::expectError(loadRobot(relative), ErrorCode::kUnreadable,
+                    (dir_ / "meshes" / "none.stl").string(), "'part'");
+}
+
+TEST_F(Urdf, RelativeAbsoluteAndFileUriPaths) {
+  fs::create_directories(dir_ / "meshes");
+  const std::string stl = (dir_ / "meshes" / "part.stl").string();
+  fs::copy_file(test::threeLinkStl(), stl);
+  for (const std::string& filename :
+       {std::string("meshes/part.stl"), std::string("./meshes/../meshes/part.stl"), stl,
+        "file://" + stl}) {
+    auto r = loadRobot(meshRobot("r.urdf", filename), packageOptions({}));
+    ASSERT_TRUE(r.ok()) << filename << ": " << r.error().message;
+    ASSERT_EQ(r->links.size(), 1u);
+    EXPECT_TRUE(samePath(r->links[0].geometry[0].mesh_path, stl)) << filename;
+    EXPECT_FALSE(r->links[0].from_visual);
+  }
+}
+
+TEST_F(Urdf, LinkWithoutGeometryIsAllowed) {
+  const std::string urdf = write("world.urdf",
+                                 "<robot name=\"w\"><link name=\"world\"/><link name=\"b\">"
+                                 "<collision><geometry><sphere radius=\"1\"/></geometry>"
+                                 "</collision></link><joint name=\"j\" type=\"fixed\"><parent "
+                                 "link=\"world\"/><child link=\"b\"/></joint></robot>");
+  auto r = loadRobot(urdf);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->root, "world");
+  ASSERT_EQ(r->links.size(), 2u);
+  EXPECT_TRUE(r->links[0].geometry.empty());
+  EXPECT_FALSE(r->links[0].from_visual);
+  auto m = linkMesh(r->links[0]);
+  ASSERT_TRUE(m.ok());
+  EXPECT_TRUE(m->triangles.empty());
+}
+
+TEST_F(Urdf, BadFilesAreOneLineErrors) {
+  const std::string missing = path("none.urdf");
+  test::expectError(loadRobot(missing), ErrorCode::kUnreadable, missing, "cannot open");
+  const std::string garbage = write("garbage.urdf", "this is not XML <robot");
+  test::expectError(loadRobot(garbage), ErrorCode::kInvalidData, garbage, "not a valid URDF");
+  const std::string no_links = write("no_links.urdf", "<robot name=\"x\"></robot>");
+  test::expectError(loadRobot(no_links), ErrorCode::kInvalidData, no_links, "not a valid URDF");
+  const std::string bad_joint =
+      write("bad_joint.urdf",
+            "<robot name=\"x\"><link name=\"a\"/><joint name=\"j\" type=\"revolute\"><parent "
+            "link=\"a\"/><child link=\"missing\"/></joint></robot>");
+  test::expectError(loadRobot(bad_joint), ErrorCode::kInvalidData, bad_joint, "not a valid URDF");
+}
+
+}  // namespace
+}  // namespace sphereset
