@@ -26,14 +26,6 @@ inline Mesh boxWithFlippedFace() {
   return m;
 }
 
-inline Mesh joined(const Mesh& a, const Mesh& b) {
-  Mesh m = a;
-  const auto base = static_cast<int32_t>(m.vertices.size());
-  m.vertices.insert(m.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (Triangle t : b.triangles) m.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-  return m;
-}
-
 // Two unit cubes, the second moved by (0.5, 0.25, 0.25): they overlap in a box of
 // 0.5 x 0.75 x 0.75, so the union has volume 2 - 0.28125 = 1.71875.
 inline Mesh overlappingCubes() {

@@ -63,6 +63,15 @@ inline Mesh makeTorus(double R, double r, int nu, int nv) {
   return m;
 }
 
+// b's vertices and triangles appended to a's (two shells in one mesh).
+inline Mesh joined(const Mesh& a, const Mesh& b) {
+  Mesh m = a;
+  const auto base = static_cast<int32_t>(m.vertices.size());
+  m.vertices.insert(m.vertices.end(), b.vertices.begin(), b.vertices.end());
+  for (Triangle t : b.triangles) m.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  return m;
+}
+
 // Applies x -> s R x + t to every vertex.
 inline Mesh transformed(const Mesh& m, const Eigen::Matrix3d& R, const Vec3& t, double s) {
   Mesh out = m;

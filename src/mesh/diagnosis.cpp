@@ -4,23 +4,12 @@
 #include <numeric>
 
 #include "sphereset/mesh.hpp"
+#include "util/union_find.hpp"
 
 namespace sphereset {
 namespace {
 
-struct UnionFind {
-  std::vector<int32_t> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int32_t find(int32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int32_t a, int32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
+using detail::UnionFind;
 
 struct HalfEdge {
   int32_t lo, hi;  // undirected key

@@ -14,6 +14,7 @@
 #include "index/oracles.hpp"
 #include "sphereset/mesh_defects.hpp"
 #include "sphereset/solid_index.hpp"
+#include "util/union_find.hpp"
 
 namespace sphereset {
 namespace {
@@ -24,19 +25,7 @@ constexpr size_t kDirectWindingTriangles = 512;
 // |winding number| above this means inside.
 constexpr double kInsideWinding = 0.5;
 
-struct UnionFind {
-  std::vector<int32_t> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int32_t find(int32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int32_t a, int32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
+using detail::UnionFind;
 
 // Edge-connected components, numbered in the order of their smallest triangle.
 std::vector<std::vector<int32_t>> edgeComponents(const Mesh& mesh) {

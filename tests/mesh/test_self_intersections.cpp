@@ -15,17 +15,6 @@ namespace {
 
 using Pairs = std::vector<std::array<int32_t, 2>>;
 
-// Appends b's vertices and triangles to a.
-Mesh merged(Mesh a, const Mesh& b) {
-  const int32_t offset = static_cast<int32_t>(a.vertices.size());
-  a.vertices.insert(a.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (Triangle t : b.triangles) {
-    for (int32_t& v : t) v += offset;
-    a.triangles.push_back(t);
-  }
-  return a;
-}
-
 // A mesh of two triangles given by their corners; shared corners are listed once in `vertices`.
 Mesh twoTriangles(std::vector<Vec3> vertices, Triangle a, Triangle b) {
   Mesh m;
@@ -52,8 +41,8 @@ TEST(SelfIntersections, CleanMeshesHaveNone) {
 }
 
 TEST(SelfIntersections, TwoOverlappingBoxes) {
-  const Mesh m = merged(test::makeBox(Vec3::Zero(), Vec3::Ones()),
-                        test::makeBox(Vec3::Constant(0.5), Vec3::Constant(1.5)));
+  const Mesh m = test::joined(test::makeBox(Vec3::Zero(), Vec3::Ones()),
+                              test::makeBox(Vec3::Constant(0.5), Vec3::Constant(1.5)));
   const SelfIntersections r = findSelfIntersections(m);
   ASSERT_TRUE(r.any());
   EXPECT_FALSE(r.truncated);
@@ -63,8 +52,8 @@ TEST(SelfIntersections, TwoOverlappingBoxes) {
     EXPECT_GE(b, 12);
   }
   // Boxes that merely sit apart do not intersect.
-  EXPECT_FALSE(intersects(merged(test::makeBox(Vec3::Zero(), Vec3::Ones()),
-                                 test::makeBox(Vec3::Constant(1.5), Vec3::Constant(2.5)))));
+  EXPECT_FALSE(intersects(test::joined(test::makeBox(Vec3::Zero(), Vec3::Ones()),
+                                       test::makeBox(Vec3::Constant(1.5), Vec3::Constant(2.5)))));
 }
 
 TEST(SelfIntersections, DuplicatedFace) {
@@ -169,8 +158,8 @@ TEST(SelfIntersections, MatchesAllPairsOracle) {
 }
 
 TEST(SelfIntersections, InvariantUnderSimilarity) {
-  const Mesh boxes = merged(test::makeBox(Vec3::Zero(), Vec3::Ones()),
-                            test::makeBox(Vec3::Constant(0.5), Vec3::Constant(1.5)));
+  const Mesh boxes = test::joined(test::makeBox(Vec3::Zero(), Vec3::Ones()),
+                                  test::makeBox(Vec3::Constant(0.5), Vec3::Constant(1.5)));
   for (const Mesh& m : {boxes, randomSoup(7, false), randomSoup(8, true)}) {
     const Pairs base = findSelfIntersections(m).pairs;
     ASSERT_FALSE(base.empty());
@@ -182,7 +171,7 @@ TEST(SelfIntersections, InvariantUnderSimilarity) {
 }
 
 TEST(SelfIntersections, StopsAtMaxPairs) {
-  const Mesh m = merged(
+  const Mesh m = test::joined(
       test::makeIcosphere(1.0, 3),
       test::transformed(test::makeIcosphere(1.0, 3), someRotation(), Vec3(0.5, 0.0, 0.0), 1.0));
   const SelfIntersections all = findSelfIntersections(m);

@@ -10,16 +10,6 @@
 namespace sphereset {
 namespace {
 
-Mesh merged(Mesh a, const Mesh& b) {
-  const int32_t offset = static_cast<int32_t>(a.vertices.size());
-  a.vertices.insert(a.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (Triangle t : b.triangles) {
-    for (int32_t& v : t) v += offset;
-    a.triangles.push_back(t);
-  }
-  return a;
-}
-
 Mesh flipped(Mesh m) {
   for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
   return m;
@@ -41,7 +31,7 @@ TEST(Shells, OneCleanShell) {
 }
 
 TEST(Shells, OverlappingBoxesIntersectAndDoNotNest) {
-  const ShellAnalysis a = analyzeShells(merged(box(0.0, 1.0), box(0.5, 1.5)));
+  const ShellAnalysis a = analyzeShells(test::joined(box(0.0, 1.0), box(0.5, 1.5)));
   ASSERT_EQ(a.shells.size(), 2u);
   EXPECT_EQ(a.intersecting, (std::vector<std::array<int32_t, 2>>{{0, 1}}));
   EXPECT_TRUE(a.intersections.any());
@@ -57,7 +47,8 @@ TEST(Shells, NestedBoxes) {
   // Listed inner first so that the parent is not simply the previous shell.
   for (bool inward : {false, true}) {
     const Mesh inner = inward ? flipped(box(1.0, 2.0)) : box(1.0, 2.0);
-    const ShellAnalysis a = analyzeShells(merged(merged(inner, box(0.0, 3.0)), box(-1.0, 4.0)));
+    const ShellAnalysis a =
+        analyzeShells(test::joined(test::joined(inner, box(0.0, 3.0)), box(-1.0, 4.0)));
     ASSERT_EQ(a.shells.size(), 3u);
     EXPECT_FALSE(a.intersections.any());
     EXPECT_TRUE(a.intersecting.empty());
@@ -73,7 +64,7 @@ TEST(Shells, NestedBoxes) {
 }
 
 TEST(Shells, InsideAnInwardFacingContainer) {
-  const ShellAnalysis a = analyzeShells(merged(flipped(box(0.0, 3.0)), box(1.0, 2.0)));
+  const ShellAnalysis a = analyzeShells(test::joined(flipped(box(0.0, 3.0)), box(1.0, 2.0)));
   ASSERT_EQ(a.shells.size(), 2u);
   EXPECT_EQ(a.shells[1].parent, 0);
   EXPECT_EQ(a.shells[1].depth, 1);
@@ -82,21 +73,22 @@ TEST(Shells, InsideAnInwardFacingContainer) {
 
 TEST(Shells, BoundingBoxContainmentIsNotEnough) {
   // A small box in the hole of a torus: inside its bounding box, outside the solid.
-  const ShellAnalysis a = analyzeShells(merged(test::makeTorus(2.0, 0.5, 32, 16), box(-0.2, 0.2)));
+  const ShellAnalysis a =
+      analyzeShells(test::joined(test::makeTorus(2.0, 0.5, 32, 16), box(-0.2, 0.2)));
   ASSERT_EQ(a.shells.size(), 2u);
   EXPECT_EQ(a.shells[1].parent, -1);
   EXPECT_EQ(a.shells[1].depth, 0);
   // In the tube itself it is nested.
   const ShellAnalysis b =
-      analyzeShells(merged(test::makeTorus(2.0, 0.5, 32, 16),
-                           test::makeBox(Vec3(1.9, -0.1, -0.1), Vec3(2.1, 0.1, 0.1))));
+      analyzeShells(test::joined(test::makeTorus(2.0, 0.5, 32, 16),
+                                 test::makeBox(Vec3(1.9, -0.1, -0.1), Vec3(2.1, 0.1, 0.1))));
   EXPECT_EQ(b.shells[1].parent, 0);
 }
 
 TEST(Shells, OpenShellsDoNotNest) {
   Mesh open = box(0.0, 3.0);
   open.triangles.resize(10);  // one face missing
-  const ShellAnalysis a = analyzeShells(merged(open, box(1.0, 2.0)));
+  const ShellAnalysis a = analyzeShells(test::joined(open, box(1.0, 2.0)));
   ASSERT_EQ(a.shells.size(), 2u);
   EXPECT_FALSE(a.shells[0].closed);
   EXPECT_TRUE(a.shells[1].closed);
@@ -105,7 +97,7 @@ TEST(Shells, OpenShellsDoNotNest) {
 }
 
 TEST(Shells, SelfIntersectingShell) {
-  Mesh m = merged(box(0.0, 1.0), box(5.0, 6.0));
+  Mesh m = test::joined(box(0.0, 1.0), box(5.0, 6.0));
   m.triangles.push_back(m.triangles[3]);  // a duplicated face of the first box
   const ShellAnalysis a = analyzeShells(m);
   ASSERT_EQ(a.shells.size(), 2u);
@@ -124,7 +116,7 @@ TEST(Shells, ManySmallShellsInOneContainer) {
       for (int j = 0; j < 20; ++j)
         for (int k = 0; k < 5; ++k) {
           const Vec3 lo(i + 0.25 + 30.0 * side, j + 0.25, k + 0.25);
-          m = merged(std::move(m), test::makeBox(lo, lo + Vec3::Constant(0.5)));
+          m = test::joined(std::move(m), test::makeBox(lo, lo + Vec3::Constant(0.5)));
         }
   const ShellAnalysis a = analyzeShells(m);
   ASSERT_EQ(a.shells.size(), 4001u);
@@ -136,7 +128,7 @@ TEST(Shells, ManySmallShellsInOneContainer) {
 }
 
 TEST(Shells, SubmeshDropsUnusedVertices) {
-  const Mesh m = merged(box(0.0, 1.0), box(2.0, 3.0));
+  const Mesh m = test::joined(box(0.0, 1.0), box(2.0, 3.0));
   const std::vector<int32_t> second = {12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23};
   const Mesh sub = submesh(m, second);
   EXPECT_EQ(sub.vertices.size(), 8u);
