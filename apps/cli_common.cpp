@@ -47,7 +47,10 @@ void addMeshArgs(CLI::App* cmd, MeshArgs* a, bool repair) {
                   "Merge vertices closer than this distance (default: exact duplicates, then up "
                   "to 1e-6 of the diagonal if that closes the mesh)")
       ->check(CLI::NonNegativeNumber);
-  if (!repair) return;
+  if (repair) addRepairArgs(cmd, a);
+}
+
+void addRepairArgs(CLI::App* cmd, MeshArgs* a) {
   cmd->add_option("--repair", a->repair,
                   "auto: make a solid of a broken mesh (weld, cap holes, unite overlapping "
                   "shells, or wrap) and bound its original triangles too; off: refuse any mesh "

@@ -58,6 +58,10 @@ struct MeshArgs {
 // weld tolerance (commands that draw).
 void addMeshArgs(CLI::App* cmd, MeshArgs* a, bool repair = true);
 
+// The repair options alone (--repair, --fill-cavities/--keep-cavities, --wrap-alpha,
+// --wrap-offset), for commands whose meshes come from elsewhere (robot).
+void addRepairArgs(CLI::App* cmd, MeshArgs* a);
+
 // The repair options the arguments ask for, with the union and the wrapping of this build.
 RepairOptions repairOptions(const MeshArgs& a);
 

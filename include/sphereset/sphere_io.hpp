@@ -68,6 +68,9 @@ Status writeLinkSpheres(const std::string& path, const std::vector<LinkSpheres>&
 std::string formatLinkSpheres(const std::vector<LinkSpheres>& links,
                               const SphereFileMeta& meta = {});
 
+// Writes any text atomically, as the sphere files are written (e.g. a command's JSON report).
+Status writeTextFile(const std::string& path, const std::string& text);
+
 // Tree files: Bradshaw's .sph ("levels branching" then one "x y z r error" line per slot) or
 // JSON with explicit parent/child links per node. Writes are atomic.
 Status writeSphereTree(const std::string& path, const SphereTree& tree,

@@ -302,3 +302,11 @@ Expected<std::vector<LinkSpheres>> parseLinkSpheres(SphereFormat format, const s
 }  // namespace detail
 
 }  // namespace sphereset
+
+namespace sphereset {
+
+Status writeTextFile(const std::string& path, const std::string& text) {
+  return writeFileAtomically(path, text);
+}
+
+}  // namespace sphereset

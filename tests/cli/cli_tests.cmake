@@ -175,3 +175,22 @@ if(SPHERESET_WITH_REPAIR)
   cli_test(fit_sheet 0 ARGS fit ${work}/sheet.off -n 4 -o ${work}/sheet.txt --quality fast --json -q
            FILE ${work}/sheet.txt SPHERES 4 STDOUT "\"original_covered\":true.*\"kind\":\"wrapped\"")
 endif()
+
+# Robots: every link of a URDF, counts from a budget or per link, outputs in the link frames.
+set(robot ${CMAKE_CURRENT_SOURCE_DIR}/data/robot)
+cli_test(robot_budget 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot} --budget 12
+         --quality fast -o ${work}/three.yml --json -q FILE ${work}/three.yml
+         STDOUT "\"link\":\"base_link\".*\"covered\":true.*\"link\":\"link1\".*\"link\":\"link2\".*\"link\":\"tool\"")
+cli_test(robot_link_counts 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --link-spheres base_link=2 --link-spheres link1=0 --link-spheres link2=3 --quality fast
+         -o ${work}/three.json -q FILE ${work}/three.json)
+cli_test(robot_unknown_link 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --link-spheres elbow=2 -o ${work}/never30.yml -q
+         STDERR "--link-spheres elbow=2: expected LINK=VALUE" FORBID ${work}/never30.yml)
+cli_test(robot_missing_package 3 ARGS robot ${robot}/three_link.urdf -o ${work}/never31.yml -q
+         STDERR "link 'link2': mesh 'package://three_link_description/meshes/link.stl' not found"
+         FORBID ${work}/never31.yml)
+cli_test(robot_small_budget 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --budget 2 -o ${work}/never32.yml -q STDERR "budget of" FORBID ${work}/never32.yml)
+cli_test(robot_bad_extension 2 ARGS robot ${robot}/three_link.urdf -o ${work}/never33.txt -q
+         STDERR "robot output is .yml/.yaml" FORBID ${work}/never33.txt)
