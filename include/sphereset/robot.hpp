@@ -100,4 +100,21 @@ struct SelfCollisionPairs {
 SelfCollisionPairs selfCollisionPairs(const Robot& robot, const std::vector<LinkSpheres>& spheres,
                                       const std::map<std::string, double>& joint_values = {});
 
+// The URDF file `in_urdf` with the collisions of the links listed in `spheres` replaced by their
+// spheres: each listed link loses all its <collision> elements and gets, where the first of them
+// was (else at its end), one <collision name="sphere_i"> per sphere i with
+// <origin xyz="x y z" rpy="0 0 0"/><geometry><sphere radius="r"/></geometry> (shortest
+// round-trip decimal numbers). A listed link with no spheres is left with no collision. Links not
+// listed, visuals, joints, comments and attributes are kept; the text is re-indented by the XML
+// library (TinyXML). Mesh paths are copied as they are, so relative paths resolve only when the
+// output is written beside the input (package:// paths resolve anywhere). Errors (one line,
+// naming the file): unreadable (kUnreadable), not XML or no <robot> root (kInvalidData), a listed
+// link that the URDF does not have or that is listed twice (kInvalidArgument), a sphere with a
+// NaN, an infinite value or a negative radius (kInvalidData).
+Expected<std::string> formatSphereUrdf(const std::string& in_urdf,
+                                       const std::vector<LinkSpheres>& spheres);
+// The same, written atomically to `out_path`.
+Status writeSphereUrdf(const std::string& in_urdf, const std::string& out_path,
+                       const std::vector<LinkSpheres>& spheres);
+
 }  // namespace sphereset
