@@ -96,6 +96,37 @@ Expected<SolidInput> loadSolid(const MeshArgs& a) {
   return SolidInput{std::move(m).value(), std::move(r).value()};
 }
 
+// --joint-positions j1=v1,j2=v2 (radians or metres), for joints of the robot.
+Expected<std::map<std::string, double>> parseJointPositions(const std::string& text,
+                                                            const Robot& robot) {
+  std::map<std::string, double> out;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(',', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string item = text.substr(start, end - start);
+    const size_t eq = item.find('=');
+    const std::string name = item.substr(0, eq);
+    bool known = false;
+    for (const RobotJoint& jt : robot.joints) known = known || jt.name == name;
+    double v = 0.0;
+    size_t used = 0;
+    bool number = false;
+    if (eq != std::string::npos) try {
+        v = std::stod(item.substr(eq + 1), &used);
+        number = used == item.size() - eq - 1 && std::isfinite(v);
+      } catch (const std::exception&) {
+      }
+    if (!known || !number)
+      return Error{ErrorCode::kInvalidArgument, "--joint-positions " + item +
+                                                    ": expected JOINT=VALUE with a joint of " +
+                                                    robot.name};
+    out[name] = v;
+    start = end + 1;
+  }
+  return out;
+}
+
 nlohmann::json repairJson(const RepairResult& r) {
   nlohmann::json j = {{"kind", repairName(r.kind)},
                       {"weld_tolerance", r.weld_tolerance},

@@ -1,10 +1,12 @@
 // sphereset robot: collision spheres for every link of a robot described by a URDF, in the link
 // frames. Each link's collision geometry (visual when it has none) becomes one mesh, repaired
 // like fit's meshes; sphere primitives are kept as exact spheres. Counts come from --budget
-// (split by marginal gain, robot_fit.hpp) and --link-spheres.
+// (split by marginal gain, robot_fit.hpp) and --link-spheres. Outputs: cuRobo's YAML with the
+// self-collision ignore list, the URDF with sphere collisions, or a JSON report.
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -35,7 +37,7 @@ constexpr int kCurveRounds = 20;
 constexpr int kDefaultLinkSpheres = 8;
 
 struct RobotArgs {
-  std::string urdf, out_path, quality = "default";
+  std::string urdf, out_path, quality = "default", joint_positions;
   std::vector<std::string> package_paths, link_spheres, link_padding;
   MeshArgs repair;  // repair options only (no mesh path)
   int budget = 0;
@@ -148,9 +150,11 @@ Status chooseCounts(const RobotArgs& a, std::vector<LinkJob>* jobs) {
     for (LinkJob& j : *jobs) j.count = j.fixed >= 0 ? j.fixed : kDefaultLinkSpheres;
     return {};
   }
-  // Curves of the free links, each fit in turn (the fit itself is parallel).
-  for (LinkJob& j : *jobs) {
-    if (j.fixed >= 0) continue;
+  // Curves of the free links, the links in parallel (each fit is parallel too, and gives the
+  // same spheres for any thread count).
+  tbb::parallel_for(size_t{0}, jobs->size(), [&](size_t i) {
+    LinkJob& j = (*jobs)[i];
+    if (j.fixed >= 0) return;
     for (int k : kCurveCounts) {
       if (k > a.budget) break;
       auto f = fitSpheres(*j.index, linkFitOptions(a, j, k, true));
@@ -158,7 +162,7 @@ Status chooseCounts(const RobotArgs& a, std::vector<LinkJob>* jobs) {
       j.curve.counts.push_back(k);
       j.curve.outside_volume.push_back(f->energy);
     }
-  }
+  });
   std::vector<LinkFitCurve> curves;
   std::vector<int> fixed;
   int primitives = 0;
@@ -240,9 +244,9 @@ int runRobot(const RobotArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   auto format = sphereFormatFromPath(a.out_path);
   const std::string ext = std::filesystem::path(a.out_path).extension().string();
-  if (ext != ".json" && (!format || *format != SphereFormat::kYaml))
+  if (ext != ".json" && ext != ".urdf" && (!format || *format != SphereFormat::kYaml))
     return fail(Error{ErrorCode::kInvalidArgument,
-                      a.out_path + ": robot output is .yml/.yaml (cuRobo) or .json"});
+                      a.out_path + ": robot output is .yml/.yaml (cuRobo), .urdf or .json"});
   RobotLoadOptions lo;
   lo.package_paths = a.package_paths;
   auto robot = loadRobot(a.urdf, lo);
@@ -251,6 +255,8 @@ int runRobot(const RobotArgs& a) {
   if (!counts) return fail(counts.error());
   auto pads = namedValues<double>(a.link_padding, *robot, "--link-padding");
   if (!pads) return fail(pads.error());
+  auto joints = parseJointPositions(a.joint_positions, *robot);
+  if (!joints) return fail(joints.error());
   auto jobs = prepareLinks(a, *robot);
   if (!jobs) return fail(jobs.error());
   for (LinkJob& j : *jobs) {
@@ -259,21 +265,26 @@ int runRobot(const RobotArgs& a) {
     j.padding = p != pads->end() ? p->second : a.padding;
   }
   if (Status s = chooseCounts(a, &*jobs); !s) return fail(s.error());
+  tbb::parallel_for(size_t{0}, jobs->size(), [&](size_t i) { fitLink(a, &(*jobs)[i]); });
   for (LinkJob& j : *jobs) {
-    fitLink(a, &j);
     if (!j.error.empty())
       return fail(Error{ErrorCode::kInvalidArgument,
                         a.urdf + ": link '" + j.link->name + "': " + j.error});
   }
+  std::vector<LinkSpheres> out;
+  for (const LinkJob& j : *jobs) out.push_back({j.link->name, j.spheres});
   Status st;
   if (ext == ".json") {
     st = writeTextFile(a.out_path, robotJson(a, *robot, *jobs).dump(1) + "\n");
+  } else if (ext == ".urdf") {
+    st = writeSphereUrdf(a.urdf, a.out_path, out);
   } else {
-    std::vector<LinkSpheres> out;
-    for (const LinkJob& j : *jobs) out.push_back({j.link->name, j.spheres});
+    // cuRobo's self_collision_ignore: adjacent links and links whose spheres overlap at the
+    // pose given (zero by default).
+    const SelfCollisionPairs pairs = selfCollisionPairs(*robot, out, *joints);
     SphereFileMeta meta;
     meta.source_mesh = a.urdf;
-    st = writeLinkSpheres(a.out_path, out, meta);
+    st = writeRobotSpheres(a.out_path, out, &pairs, meta);
   }
   if (!st) return fail(st.error());
   const double seconds =
@@ -297,8 +308,12 @@ Command registerRobot(CLI::App& app) {
       app.add_subcommand("robot", "Fit collision spheres to every link of a URDF robot");
   cmd->add_option("urdf", a->urdf, "Robot description (URDF)")->required();
   cmd->add_option("-o,--output", a->out_path,
-                  "Output: .yml/.yaml (cuRobo collision_spheres) or .json (per link)")
+                  "Output: .yml/.yaml (cuRobo collision_spheres and self_collision_ignore), "
+                  ".urdf (the input with sphere collisions) or .json (per link)")
       ->required();
+  cmd->add_option("--joint-positions", a->joint_positions,
+                  "JOINT=VALUE,...: the pose at which overlapping links are listed for "
+                  "self_collision_ignore (default: all joints at 0)");
   cmd->add_option("--package-path", a->package_paths,
                   "Folder searched for package://NAME/ paths (repeatable; then ROS_PACKAGE_PATH)");
   cmd->add_option("--budget", a->budget,
