@@ -109,33 +109,47 @@ FitOptions linkFitOptions(const RobotArgs& a, const LinkJob& j, int n, bool quic
   return fo;
 }
 
-// Loads, repairs and indexes every link with geometry.
+// Loads, repairs and indexes every link with geometry, the links in parallel (the wrap is
+// single-threaded); the first error in link order is reported.
 Expected<std::vector<LinkJob>> prepareLinks(const RobotArgs& a, const Robot& robot) {
   std::vector<LinkJob> jobs;
-  for (const RobotLink& link : robot.links) {
-    if (link.geometry.empty()) continue;
-    LinkJob j;
-    j.link = &link;
+  for (const RobotLink& link : robot.links)
+    if (!link.geometry.empty()) {
+      jobs.emplace_back();
+      jobs.back().link = &link;
+    }
+  std::vector<Status> status(jobs.size());
+  tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t i) {
+    LinkJob& j = jobs[i];
+    const RobotLink& link = *j.link;
+    const std::string name = a.urdf + ": link '" + link.name + "'";
     j.primitives = linkSpheres(link);
     RobotLink rest = link;
     std::erase_if(rest.geometry,
                   [](const LinkGeometry& g) { return g.kind == LinkGeometry::Kind::kSphere; });
     for (const LinkGeometry& g : rest.geometry)
       if (g.kind == LinkGeometry::Kind::kMesh) j.files.push_back(g.mesh_path);
-    if (!rest.geometry.empty()) {
-      auto mesh = linkMesh(rest);
-      if (!mesh) return Error{mesh.error().code, a.urdf + ": " + mesh.error().message};
-      auto clean = cleanMesh(std::move(mesh->vertices), std::move(mesh->triangles), {},
-                             a.urdf + ": link '" + link.name + "'");
-      if (!clean) return clean.error();
-      auto r = repairMesh(clean->mesh, repairOptions(a.repair),
-                          a.urdf + ": link '" + link.name + "'");
-      if (!r) return r.error();
-      j.repair = std::move(r).value();
-      j.index = std::make_unique<SolidIndex>(j.repair.solid);
+    if (rest.geometry.empty()) return;
+    auto mesh = linkMesh(rest);
+    if (!mesh) {
+      status[i] = Error{mesh.error().code, a.urdf + ": " + mesh.error().message};
+      return;
     }
-    jobs.push_back(std::move(j));
-  }
+    auto clean = cleanMesh(std::move(mesh->vertices), std::move(mesh->triangles), {}, name);
+    if (!clean) {
+      status[i] = clean.error();
+      return;
+    }
+    auto r = repairMesh(clean->mesh, repairOptions(a.repair), name);
+    if (!r) {
+      status[i] = r.error();
+      return;
+    }
+    j.repair = std::move(r).value();
+    j.index = std::make_unique<SolidIndex>(j.repair.solid);
+  });
+  for (const Status& st : status)
+    if (!st) return st.error();
   return jobs;
 }
 
