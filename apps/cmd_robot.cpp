@@ -251,6 +251,10 @@ void printSummary(const std::vector<LinkJob>& jobs, double seconds) {
                  j.index ? j.repair.original.triangles.size() : size_t{0},
                  j.index ? repairName(j.repair.kind) : "-", j.spheres.size(),
                  j.index ? j.eval.er_sum : 0.0, covered(j) ? "yes" : "NO", j.seconds);
+  for (const LinkJob& j : jobs)
+    if (j.link->from_visual)
+      std::fprintf(stderr, "%s: no <collision> geometry, its <visual> geometry was used\n",
+                   j.link->name.c_str());
   std::fprintf(stderr, "total %.2f s\n", seconds);
 }
 

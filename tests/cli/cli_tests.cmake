@@ -213,3 +213,7 @@ cli_test(robot_render 0 ARGS render ${robot}/three_link.urdf ${work}/three.yml -
          ${robot} --joint-positions joint2=0.8 --size 320x240 -o ${work}/three.png
          FILE ${work}/three.png)
 set_tests_properties(cli.robot_render PROPERTIES DEPENDS cli.robot_budget)
+cli_test(robot_summary 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --link-spheres base_link=2 --link-spheres link1=2 --link-spheres link2=3 --quality fast
+         -o ${work}/three_summary.json
+         STDERR "link +triangles +repair.*link2 +300 +none +3 .*tool: no <collision> geometry, its <visual> geometry was used")
