@@ -234,6 +234,9 @@ nlohmann::json robotJson(const RobotArgs& a, const Robot& robot,
                         {"covered", covered(j)},
                         {"padding", j.padding},
                         {"seconds", j.seconds}};
+    if (!j.curve.counts.empty())
+      l["budget_curve"] = {{"counts", j.curve.counts},
+                           {"outside_volume", j.curve.outside_volume}};
     if (j.index) {
       l["er_sum"] = j.eval.er_sum;
       l["repair"] = repairJson(j.repair);
