@@ -47,7 +47,10 @@ void addMeshArgs(CLI::App* cmd, MeshArgs* a, bool repair) {
                   "Merge vertices closer than this distance (default: exact duplicates, then up "
                   "to 1e-6 of the diagonal if that closes the mesh)")
       ->check(CLI::NonNegativeNumber);
-  if (!repair) return;
+  if (repair) addRepairArgs(cmd, a);
+}
+
+void addRepairArgs(CLI::App* cmd, MeshArgs* a) {
   cmd->add_option("--repair", a->repair,
                   "auto: make a solid of a broken mesh (weld, cap holes, unite overlapping "
                   "shells, or wrap) and bound its original triangles too; off: refuse any mesh "
@@ -91,6 +94,37 @@ Expected<SolidInput> loadSolid(const MeshArgs& a) {
   auto r = repairMesh(m->mesh, repairOptions(a), a.path);
   if (!r) return r.error();
   return SolidInput{std::move(m).value(), std::move(r).value()};
+}
+
+// --joint-positions j1=v1,j2=v2 (radians or metres), for joints of the robot.
+Expected<std::map<std::string, double>> parseJointPositions(const std::string& text,
+                                                            const Robot& robot) {
+  std::map<std::string, double> out;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(',', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string item = text.substr(start, end - start);
+    const size_t eq = item.find('=');
+    const std::string name = item.substr(0, eq);
+    bool known = false;
+    for (const RobotJoint& jt : robot.joints) known = known || jt.name == name;
+    double v = 0.0;
+    size_t used = 0;
+    bool number = false;
+    if (eq != std::string::npos) try {
+        v = std::stod(item.substr(eq + 1), &used);
+        number = used == item.size() - eq - 1 && std::isfinite(v);
+      } catch (const std::exception&) {
+      }
+    if (!known || !number)
+      return Error{ErrorCode::kInvalidArgument, "--joint-positions " + item +
+                                                    ": expected JOINT=VALUE with a joint of " +
+                                                    robot.name};
+    out[name] = v;
+    start = end + 1;
+  }
+  return out;
 }
 
 nlohmann::json repairJson(const RepairResult& r) {

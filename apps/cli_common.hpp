@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <map>
 #include <ostream>
 #include <string>
 
@@ -14,6 +15,7 @@
 #include "sphereset/fit.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/repair.hpp"
+#include "sphereset/robot.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/status.hpp"
 
@@ -58,6 +60,10 @@ struct MeshArgs {
 // weld tolerance (commands that draw).
 void addMeshArgs(CLI::App* cmd, MeshArgs* a, bool repair = true);
 
+// The repair options alone (--repair, --fill-cavities/--keep-cavities, --wrap-alpha,
+// --wrap-offset), for commands whose meshes come from elsewhere (robot).
+void addRepairArgs(CLI::App* cmd, MeshArgs* a);
+
 // The repair options the arguments ask for, with the union and the wrapping of this build.
 RepairOptions repairOptions(const MeshArgs& a);
 
@@ -72,6 +78,11 @@ struct SolidInput {
 
 // Loads the mesh and makes a solid of it (or says why it cannot).
 Expected<SolidInput> loadSolid(const MeshArgs& a);
+
+// --joint-positions JOINT=VALUE,... (radians or metres) for joints of the robot; empty text
+// gives no values (every joint at 0). kInvalidArgument names the bad item.
+Expected<std::map<std::string, double>> parseJointPositions(const std::string& text,
+                                                            const Robot& robot);
 
 // The "repair" object of the JSON summaries.
 nlohmann::json repairJson(const RepairResult& r);

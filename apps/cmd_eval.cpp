@@ -18,7 +18,7 @@ namespace {
 
 struct EvalArgs {
   MeshArgs mesh;
-  std::string spheres_path, up = "y";
+  std::string spheres_path, up = "y", link;
   EvalOptions eo;
   bool json = false;
 };
@@ -79,11 +79,29 @@ int runEval(EvalArgs a) {
   eo.up_axis = a.up[0] - 'x';
   auto m = loadSolid(a.mesh);
   if (!m) return fail(m.error());
-  // A tree file gets one report per level (root first); a plain set one report.
-  auto tree_in = readSphereTree(spheres_path);
-  if (!tree_in) return fail(tree_in.error());
-  // Plain sets read as two-level trees; a JSON tree file does not read as a plain set.
-  const bool is_tree = tree_in->depth >= 2 || !readSpheres(spheres_path).ok();
+  // A tree file gets one report per level (root first); a plain set one report; --link picks
+  // one link of a file of several (a robot's YAML) and reports it as a plain set.
+  std::vector<std::vector<Sphere>> sets;
+  bool is_tree = false;
+  if (!a.link.empty()) {
+    auto links = readLinkSpheres(spheres_path);
+    if (!links) return fail(links.error());
+    std::string names;
+    for (const LinkSpheres& ls : *links) {
+      if (ls.link == a.link) sets.push_back(ls.spheres);
+      names += (names.empty() ? "" : ", ") + ls.link;
+    }
+    if (sets.empty())
+      return fail(Error{ErrorCode::kInvalidArgument,
+                        spheres_path + ": no link '" + a.link + "' (it has " + names + ")"});
+  } else {
+    auto tree_in = readSphereTree(spheres_path);
+    if (!tree_in) return fail(tree_in.error());
+    // Plain sets read as two-level trees; a JSON tree file does not read as a plain set.
+    is_tree = tree_in->depth >= 2 || !readSpheres(spheres_path).ok();
+    for (int l = is_tree ? 0 : tree_in->depth; l <= tree_in->depth; ++l)
+      sets.push_back(tree_in->level(l));
+  }
   const SolidIndex index(m->repair.solid);
   eo.original = m->original();
   const std::string rl = repairLine(m->repair);
@@ -93,9 +111,8 @@ int runEval(EvalArgs a) {
         "for the repaired solid and for the original triangles\n",
         a.mesh.path.c_str(), rl.c_str());
   nlohmann::json levels = nlohmann::json::array();
-  const int first = is_tree ? 0 : tree_in->depth;
-  for (int l = first; l <= tree_in->depth; ++l) {
-    const std::vector<Sphere> spheres = tree_in->level(l);
+  for (int l = 0; l < static_cast<int>(sets.size()); ++l) {
+    const std::vector<Sphere>& spheres = sets[l];
     if (spheres.empty()) return fail(Error{ErrorCode::kInvalidData, spheres_path + ": no spheres"});
     const EvalResult r = evaluateSpheres(index, spheres, eo);
     if (a.json) {
@@ -131,6 +148,8 @@ Command registerEval(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("eval", "Measure how tightly a sphere set bounds a mesh");
   addMeshArgs(cmd, &a->mesh);
   cmd->add_option("spheres", a->spheres_path, "Sphere set (.txt, .json, .sph, .yaml)")->required();
+  cmd->add_option("--link", a->link,
+                  "The link to measure, in a file of several (a robot's YAML from `robot`)");
   cmd->add_flag("--json", a->json, "Print one JSON object");
   cmd->add_option("--seed", eo.seed, "Seed for all sampling")->capture_default_str();
   cmd->add_option("--samples", eo.union_samples, "Monte Carlo samples for the union's E_r")

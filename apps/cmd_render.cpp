@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/render.hpp"
+#include "sphereset/robot.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/sphere_tree.hpp"
@@ -21,6 +22,9 @@ namespace {
 struct RenderArgs {
   MeshArgs mesh;
   std::string spheres, out, size = "1200x900", views = "front,side,top,three-quarter", up = "y";
+  std::vector<std::string> package_paths;
+  std::string joint_positions;
+  bool up_given = false;
   RenderOptions ro;
   bool no_ground = false;
 };
@@ -55,10 +59,52 @@ Status renderOptions(const RenderArgs& a, RenderOptions* ro) {
   return {};
 }
 
+// A robot posed by forward kinematics: every link's geometry and spheres (a file of per-link
+// spheres in the link frames, e.g. robot's YAML) moved to the root frame.
+int renderRobot(const RenderArgs& a, RenderOptions ro) {
+  RobotLoadOptions lo;
+  lo.package_paths = a.package_paths;
+  auto robot = loadRobot(a.mesh.path, lo);
+  if (!robot) return fail(robot.error());
+  auto joints = parseJointPositions(a.joint_positions, *robot);
+  if (!joints) return fail(joints.error());
+  const auto poses = linkPoses(*robot, *joints);
+  Mesh all;
+  for (const RobotLink& link : robot->links) {
+    const auto pose = poses.find(link.name);
+    if (pose == poses.end()) continue;
+    auto m = linkMesh(link);
+    if (!m) return fail(Error{m.error().code, a.mesh.path + ": " + m.error().message});
+    const auto base = static_cast<int32_t>(all.vertices.size());
+    for (const Vec3& v : m->vertices) all.vertices.push_back(pose->second * v);
+    for (Triangle t : m->triangles) all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  }
+  std::vector<Sphere> spheres;
+  if (!a.spheres.empty()) {
+    auto links = readLinkSpheres(a.spheres);
+    if (!links) return fail(links.error());
+    for (const LinkSpheres& ls : *links) {
+      const auto pose = poses.find(ls.link);
+      if (pose == poses.end())
+        return fail(Error{ErrorCode::kInvalidData,
+                          a.spheres + ": link '" + ls.link + "' is not a link of " + robot->name});
+      for (const Sphere& s : ls.spheres) spheres.push_back({pose->second * s.center, s.radius});
+    }
+  }
+  if (!a.up_given) ro.up_axis = 2;  // URDF frames are z-up
+  const SolidIndex index(all);
+  auto img = renderScene(all.triangles.empty() ? nullptr : &index, spheres, ro);
+  if (!img) return fail(img.error());
+  Status st = writePng(a.out, *img);
+  if (!st) return fail(st.error());
+  return kOk;
+}
+
 int runRender(const RenderArgs& a) {
   RenderOptions ro = a.ro;
   Status opts = renderOptions(a, &ro);
   if (!opts) return fail(opts.error());
+  if (std::filesystem::path(a.mesh.path).extension() == ".urdf") return renderRobot(a, ro);
   // The mesh is drawn even when it is not a closed solid.
   LoadOptions lo;
   lo.weld_tolerance = std::max(0.0, a.mesh.weld);  // negative: the default, exact
@@ -84,7 +130,13 @@ Command registerRender(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand(
       "render", "Draw the mesh with the spheres over it, from several views, to a PNG");
-  cmd->add_option("mesh", a->mesh.path, "Mesh file")->required();
+  cmd->add_option("mesh", a->mesh.path,
+                  "Mesh file, or a robot (.urdf) drawn posed with per-link spheres")
+      ->required();
+  cmd->add_option("--package-path", a->package_paths,
+                  "Robot: folder searched for package://NAME/ paths (repeatable)");
+  cmd->add_option("--joint-positions", a->joint_positions,
+                  "Robot: JOINT=VALUE,... (default: all joints at 0)");
   cmd->add_option("--weld-tolerance", a->mesh.weld,
                   "Merge vertices closer than this (absolute units)");
   cmd->add_option("spheres", a->spheres, "Sphere set or tree (its leaves are drawn)");
@@ -93,8 +145,8 @@ Command registerRender(CLI::App& app) {
   cmd->add_option("--views", a->views,
                   "Up to four of front, side, top, three-quarter, comma-separated")
       ->capture_default_str();
-  cmd->add_option("--up", a->up, "Up axis")
-      ->capture_default_str()
+  cmd->add_option("--up", a->up, "Up axis (default y; z for a robot)")
+      ->each([a](const std::string&) { a->up_given = true; })
       ->check(CLI::IsMember({"x", "y", "z"}));
   cmd->add_option("--opacity", a->ro.sphere_opacity, "Opacity of each sphere surface")
       ->capture_default_str()

@@ -20,5 +20,6 @@ Command registerTree(CLI::App& app);    // cmd_tree.cpp
 Command registerRender(CLI::App& app);  // cmd_render.cpp
 Command registerExport(CLI::App& app);  // cmd_export.cpp
 Command registerQuery(CLI::App& app);   // cmd_query.cpp
+Command registerRobot(CLI::App& app);   // cmd_robot.cpp
 
 }  // namespace sphereset::cli

@@ -3,7 +3,7 @@
 // and tests `per_triangle` seeded random points on every triangle (and its corners) against
 // every sphere by brute force. Prints one JSON line: points tested, points outside every
 // sphere, the largest gap relative to the bounding box diagonal.
-//   cover_check MESH SPHERES [per_triangle=10]
+//   cover_check MESH SPHERES [per_triangle=10] [LINK]   (LINK: one link of a robot's YAML)
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -28,13 +28,24 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", m.error().message.c_str());
     return 3;
   }
-  auto sp = readSpheres(argv[2]);
-  if (!sp) {
-    std::fprintf(stderr, "%s\n", sp.error().message.c_str());
-    return 3;
+  std::vector<Sphere> spheres;
+  if (argc > 4) {
+    auto links = readLinkSpheres(argv[2]);
+    if (!links) {
+      std::fprintf(stderr, "%s\n", links.error().message.c_str());
+      return 3;
+    }
+    for (const LinkSpheres& l : *links)
+      if (l.link == argv[4]) spheres = l.spheres;
+  } else {
+    auto sp = readSpheres(argv[2]);
+    if (!sp) {
+      std::fprintf(stderr, "%s\n", sp.error().message.c_str());
+      return 3;
+    }
+    spheres = *sp;
   }
   const Mesh& mesh = m->mesh;
-  const std::vector<Sphere>& spheres = *sp;
   const double diag = boundingBox(mesh).diagonal();
   const double tol = 1e-12 * diag;  // the coverage tolerance of the library's certificates
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());

@@ -4,12 +4,14 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "sphereset/mesh.hpp"
 #include "sphereset/sphere.hpp"
+#include "sphereset/sphere_io.hpp"
 #include "sphereset/status.hpp"
 
 namespace sphereset {
@@ -79,5 +81,40 @@ std::vector<Sphere> linkSpheres(const RobotLink& link);
 // to their limits; joints of other types (floating, planar) stay at their origin.
 std::map<std::string, Eigen::Isometry3d> linkPoses(
     const Robot& robot, const std::map<std::string, double>& joint_values = {});
+
+// Pairs of links to leave out of self-collision checking, as cuRobo lists them: links joined
+// by a joint (adjacent), and links whose sphere sets overlap at one pose (overlapping). Each pair
+// {a, b} has a before b in the robot's link order; the lists are sorted by that order and hold
+// no duplicates. A pair both adjacent and overlapping is in both lists.
+struct SelfCollisionPairs {
+  std::vector<std::array<std::string, 2>> adjacent;
+  std::vector<std::array<std::string, 2>> overlapping;
+};
+
+// The pairs for `robot` with the spheres of its links (in each link's frame) placed by
+// linkPoses(robot, joint_values). Two links overlap when some sphere of one and some sphere of
+// the other have |ca - cb| < ra + rb (touching is not overlapping). Links without spheres, and
+// entries of `spheres` naming no link of the robot or a link the root does not reach, take no
+// part in overlaps; entries naming the same link twice count as one set. Adjacent pairs come
+// from every joint between two links of the robot, whatever their spheres.
+SelfCollisionPairs selfCollisionPairs(const Robot& robot, const std::vector<LinkSpheres>& spheres,
+                                      const std::map<std::string, double>& joint_values = {});
+
+// The URDF file `in_urdf` with the collisions of the links listed in `spheres` replaced by their
+// spheres: each listed link loses all its <collision> elements and gets, where the first of them
+// was (else at its end), one <collision name="sphere_i"> per sphere i with
+// <origin xyz="x y z" rpy="0 0 0"/><geometry><sphere radius="r"/></geometry> (shortest
+// round-trip decimal numbers). A listed link with no spheres is left with no collision. Links not
+// listed, visuals, joints, comments and attributes are kept; the text is re-indented by the XML
+// library (TinyXML). Mesh paths are copied as they are, so relative paths resolve only when the
+// output is written beside the input (package:// paths resolve anywhere). Errors (one line,
+// naming the file): unreadable (kUnreadable), not XML or no <robot> root (kInvalidData), a listed
+// link that the URDF does not have or that is listed twice (kInvalidArgument), a sphere with a
+// NaN, an infinite value or a negative radius (kInvalidData).
+Expected<std::string> formatSphereUrdf(const std::string& in_urdf,
+                                       const std::vector<LinkSpheres>& spheres);
+// The same, written atomically to `out_path`.
+Status writeSphereUrdf(const std::string& in_urdf, const std::string& out_path,
+                       const std::vector<LinkSpheres>& spheres);
 
 }  // namespace sphereset

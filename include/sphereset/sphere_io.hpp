@@ -11,6 +11,8 @@
 
 namespace sphereset {
 
+struct SelfCollisionPairs;  // robot.hpp
+
 enum class SphereFormat {
   kText,  // "x y z r" per line, '#' starts a comment
   kJson,  // {"spheres": [{"center": [x, y, z], "radius": r}, ...], ...metadata}
@@ -67,6 +69,21 @@ Status writeLinkSpheres(const std::string& path, const std::vector<LinkSpheres>&
                         const SphereFileMeta& meta = {});
 std::string formatLinkSpheres(const std::vector<LinkSpheres>& links,
                               const SphereFileMeta& meta = {});
+
+// Writes any text atomically, as the sphere files are written (e.g. a command's JSON report).
+Status writeTextFile(const std::string& path, const std::string& text);
+
+// A robot's spheres for cuRobo: the collision_spheres mapping of writeLinkSpheres, followed,
+// when `pairs` is given, by the self_collision_ignore mapping (each link -> the list of links to
+// ignore with it; every pair of pairs->adjacent and pairs->overlapping once, under the link that
+// comes first in `links`, links not in `links` after them in the order they appear in the pairs)
+// and the self_collision_buffer mapping (0.0 for every link with spheres). readLinkSpheres reads
+// such a file (the two extra mappings are ignored). Same checks as writeLinkSpheres; written
+// atomically.
+Status writeRobotSpheres(const std::string& path, const std::vector<LinkSpheres>& links,
+                         const SelfCollisionPairs* pairs, const SphereFileMeta& meta = {});
+std::string formatRobotSpheres(const std::vector<LinkSpheres>& links,
+                               const SelfCollisionPairs* pairs, const SphereFileMeta& meta = {});
 
 // Tree files: Bradshaw's .sph ("levels branching" then one "x y z r error" line per slot) or
 // JSON with explicit parent/child links per node. Writes are atomic.

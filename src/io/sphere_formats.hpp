@@ -26,12 +26,18 @@ Expected<SphereTree> parseSphereTree(SphereFormat format, const std::string& tex
 Expected<std::vector<LinkSpheres>> parseYamlLinks(const std::string& text, const std::string& name);
 // Several links in the layout the single-link YAML writer uses; an empty link as "[]".
 std::string formatYamlLinks(const std::vector<LinkSpheres>& links, const SphereFileMeta& meta);
+// cuRobo's self_collision_ignore and self_collision_buffer mappings for these links and pairs
+// (see formatRobotSpheres).
+std::string formatYamlSelfCollision(const std::vector<LinkSpheres>& links,
+                                    const SelfCollisionPairs& pairs);
 // The spheres of one link as the YAML writers list them, one "center"/"radius" entry each,
 // indented under a link key.
 void writeYamlSphereList(std::ostream& os, const std::vector<Sphere>& spheres);
 // A link name as a YAML mapping key: as it is when it reads back as the same string, else
 // double-quoted with escapes.
 std::string yamlKey(const std::string& name);
+// Always double-quoted, with escapes.
+std::string yamlQuoted(const std::string& name);
 // The same followed by ':', in the explicit form "? key" then ':' on the next line (indented by
 // `indent`) when the key is too long for an implicit one.
 std::string yamlMappingKey(const std::string& name, int indent);

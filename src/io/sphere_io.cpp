@@ -177,8 +177,11 @@ std::string formatLinkSpheres(const std::vector<LinkSpheres>& links, const Spher
   return detail::formatYamlLinks(links, meta);
 }
 
-Status writeLinkSpheres(const std::string& path, const std::vector<LinkSpheres>& links,
-                        const SphereFileMeta& meta) {
+namespace {
+
+// The checks of writeLinkSpheres and writeRobotSpheres: a YAML file name, named and distinct
+// links, valid spheres.
+Status checkLinkSpheres(const std::string& path, const std::vector<LinkSpheres>& links) {
   auto format = sphereFormatFromPath(path);
   if (!format) return format.error();
   if (*format != SphereFormat::kYaml)
@@ -198,7 +201,30 @@ Status writeLinkSpheres(const std::string& path, const std::vector<LinkSpheres>&
       if (!st) return st;
     }
   }
+  return {};
+}
+
+}  // namespace
+
+Status writeLinkSpheres(const std::string& path, const std::vector<LinkSpheres>& links,
+                        const SphereFileMeta& meta) {
+  Status st = checkLinkSpheres(path, links);
+  if (!st) return st;
   return writeFileAtomically(path, formatLinkSpheres(links, meta));
+}
+
+std::string formatRobotSpheres(const std::vector<LinkSpheres>& links,
+                               const SelfCollisionPairs* pairs, const SphereFileMeta& meta) {
+  std::string out = detail::formatYamlLinks(links, meta);
+  if (pairs != nullptr) out += detail::formatYamlSelfCollision(links, *pairs);
+  return out;
+}
+
+Status writeRobotSpheres(const std::string& path, const std::vector<LinkSpheres>& links,
+                         const SelfCollisionPairs* pairs, const SphereFileMeta& meta) {
+  Status st = checkLinkSpheres(path, links);
+  if (!st) return st;
+  return writeFileAtomically(path, formatRobotSpheres(links, pairs, meta));
 }
 
 namespace detail {
@@ -300,5 +326,13 @@ Expected<std::vector<LinkSpheres>> parseLinkSpheres(SphereFormat format, const s
 }
 
 }  // namespace detail
+
+}  // namespace sphereset
+
+namespace sphereset {
+
+Status writeTextFile(const std::string& path, const std::string& text) {
+  return writeFileAtomically(path, text);
+}
 
 }  // namespace sphereset

@@ -1,17 +1,21 @@
 // cuRobo's collision-sphere YAML through yaml-cpp: a "collision_spheres:" mapping of link names
-// to lists of {center: [x, y, z], radius: r}, read link by link, and written for several links.
+// to lists of {center: [x, y, z], radius: r}, read link by link, and written for several links,
+// with the self_collision_ignore and self_collision_buffer mappings of cuRobo's robot
+// configuration layout when asked.
 // yaml-cpp reports errors by throwing; nothing thrown leaves this file.
 #include <yaml-cpp/yaml.h>
 
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 #include <string>
 #include <unordered_set>
 #include <vector>
 
 #include "io/sphere_formats.hpp"
+#include "sphereset/robot.hpp"
 
 namespace sphereset::detail {
 namespace {
@@ -189,6 +193,10 @@ std::string yamlKey(const std::string& name) {
     if (end == name.c_str() + name.size()) plain = false;
   }
   if (plain) return name;
+  return yamlQuoted(name);
+}
+
+std::string yamlQuoted(const std::string& name) {
   std::string out = "\"";
   for (const char c : name) {
     const auto u = static_cast<unsigned char>(c);
@@ -224,6 +232,46 @@ std::string formatYamlLinks(const std::vector<LinkSpheres>& links, const SphereF
     os << "  " << yamlMappingKey(l.link, 2) << (l.spheres.empty() ? " []\n" : "\n");
     writeYamlSphereList(os, l.spheres);
   }
+  return os.str();
+}
+
+std::string formatYamlSelfCollision(const std::vector<LinkSpheres>& links,
+                                    const SelfCollisionPairs& pairs) {
+  // Rank of a link name: its place in `links`, then first appearance in the pairs.
+  std::map<std::string, size_t> rank;
+  for (const LinkSpheres& l : links) rank.emplace(l.link, rank.size());
+  for (const auto* list : {&pairs.adjacent, &pairs.overlapping})
+    for (const auto& p : *list)
+      for (const std::string& name : p) rank.emplace(name, rank.size());
+  // Each pair once, under its earlier link.
+  std::map<size_t, std::map<size_t, std::string>> ignore;
+  for (const auto* list : {&pairs.adjacent, &pairs.overlapping})
+    for (const auto& p : *list) {
+      size_t a = rank.at(p[0]);
+      size_t b = rank.at(p[1]);
+      if (a == b) continue;
+      if (a > b) std::swap(a, b);
+      ignore[a][b] = a == rank.at(p[0]) ? p[1] : p[0];
+    }
+  std::map<size_t, std::string> names;
+  for (const auto& [name, r] : rank) names[r] = name;
+
+  std::ostringstream os;
+  os << "self_collision_ignore:" << (ignore.empty() ? " {}\n" : "\n");
+  for (const auto& [a, others] : ignore) {
+    os << "  " << yamlMappingKey(names[a], 2) << " [";
+    bool first = true;
+    for (const auto& [b, name] : others) {
+      os << (first ? "" : ", ") << yamlQuoted(name);
+      first = false;
+    }
+    os << "]\n";
+  }
+  bool any = false;
+  for (const LinkSpheres& l : links) any = any || !l.spheres.empty();
+  os << "self_collision_buffer:" << (any ? "\n" : " {}\n");
+  for (const LinkSpheres& l : links)
+    if (!l.spheres.empty()) os << "  " << yamlMappingKey(l.link, 2) << " 0.0\n";
   return os.str();
 }
 

@@ -175,3 +175,45 @@ if(SPHERESET_WITH_REPAIR)
   cli_test(fit_sheet 0 ARGS fit ${work}/sheet.off -n 4 -o ${work}/sheet.txt --quality fast --json -q
            FILE ${work}/sheet.txt SPHERES 4 STDOUT "\"original_covered\":true.*\"kind\":\"wrapped\"")
 endif()
+
+# Robots: every link of a URDF, counts from a budget or per link, outputs in the link frames.
+set(robot ${CMAKE_CURRENT_SOURCE_DIR}/data/robot)
+cli_test(robot_budget 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot} --budget 12
+         --quality fast -o ${work}/three.yml --json -q FILE ${work}/three.yml
+         STDOUT "\"link\":\"base_link\".*\"covered\":true.*\"link\":\"link1\".*\"link\":\"link2\".*\"link\":\"tool\"")
+cli_test(robot_link_counts 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --link-spheres base_link=2 --link-spheres link1=0 --link-spheres link2=3 --quality fast
+         -o ${work}/three.json -q FILE ${work}/three.json)
+cli_test(robot_unknown_link 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --link-spheres elbow=2 -o ${work}/never30.yml -q
+         STDERR "--link-spheres elbow=2: expected LINK=VALUE" FORBID ${work}/never30.yml)
+cli_test(robot_missing_package 3 ARGS robot ${robot}/three_link.urdf -o ${work}/never31.yml -q
+         STDERR "link 'link2': mesh 'package://three_link_description/meshes/link.stl' not found"
+         FORBID ${work}/never31.yml)
+cli_test(robot_small_budget 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --budget 2 -o ${work}/never32.yml -q STDERR "budget of" FORBID ${work}/never32.yml)
+cli_test(robot_bad_extension 2 ARGS robot ${robot}/three_link.urdf -o ${work}/never33.txt -q
+         STDERR "robot output is .yml/.yaml .cuRobo., .urdf or .json" FORBID ${work}/never33.txt)
+cli_test(robot_yaml_ignore 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --budget 12 --quality fast --joint-positions joint1=0.5,joint2=-0.3 -o ${work}/three_ignore.yml -q
+         FILE ${work}/three_ignore.yml)
+cli_test(robot_urdf 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot} --budget 12
+         --quality fast -o ${work}/three_spheres.urdf -q FILE ${work}/three_spheres.urdf)
+cli_test(robot_bad_joint 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --joint-positions joint9=1 -o ${work}/never34.yml -q
+         STDERR "--joint-positions joint9=1: expected JOINT=VALUE" FORBID ${work}/never34.yml)
+cli_test(robot_eval_link 0 ARGS eval ${robot}/three_link_description/meshes/link.stl
+         ${work}/three.yml --link link1 --samples 1000 --segments 10 --shadow-resolution 0
+         STDOUT "with [0-9]+ spheres")
+set_tests_properties(cli.robot_eval_link PROPERTIES DEPENDS cli.robot_budget)
+cli_test(robot_eval_unknown_link 2 ARGS eval ${robot}/three_link_description/meshes/link.stl
+         ${work}/three.yml --link elbow STDERR "three.yml: no link 'elbow' .it has base_link")
+set_tests_properties(cli.robot_eval_unknown_link PROPERTIES DEPENDS cli.robot_budget)
+cli_test(robot_render 0 ARGS render ${robot}/three_link.urdf ${work}/three.yml --package-path
+         ${robot} --joint-positions joint2=0.8 --size 320x240 -o ${work}/three.png
+         FILE ${work}/three.png)
+set_tests_properties(cli.robot_render PROPERTIES DEPENDS cli.robot_budget)
+cli_test(robot_summary 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --link-spheres base_link=2 --link-spheres link1=2 --link-spheres link2=3 --quality fast
+         -o ${work}/three_summary.json
+         STDERR "link +triangles +repair.*link2 +300 +none +3 .*tool: no <collision> geometry, its <visual> geometry was used")

@@ -1,0 +1,30 @@
+// Splitting a budget of spheres over the links of a robot: by what lowers the robot's total
+// outside volume most, from each link's outside volume measured at a few sphere counts.
+#pragma once
+
+#include <vector>
+
+#include "sphereset/status.hpp"
+
+namespace sphereset {
+
+// A link's outside volume (absolute units) after fits with a few sphere counts.
+struct LinkFitCurve {
+  std::vector<int> counts;               // increasing, at least one, all >= 1
+  std::vector<double> outside_volume;    // one per count, > 0 where measured
+};
+
+// The outside volume at k spheres on the curve: piecewise linear in log k and log volume
+// between the measured counts, and the last piece's power law beyond them (the first piece's
+// below them); a single measured count gives a constant. A volume of 0 (a link bounded
+// exactly) stays 0 from there on.
+double curveVolume(const LinkFitCurve& curve, int k);
+
+// Counts per link. `fixed[i]` >= 0 fixes link i's count (0 skips it); -1 leaves it to the
+// budget. Every free link gets one sphere, then each further sphere goes to the free link
+// whose curve drops most with one more (ties to the lower index), until the budget is spent.
+// Errors (kInvalidArgument): the budget below the fixed counts plus one per free link.
+Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& curves,
+                                       const std::vector<int>& fixed, int budget);
+
+}  // namespace sphereset

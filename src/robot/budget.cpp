@@ -1,0 +1,60 @@
+// Splitting a sphere budget over a robot's links by marginal gain: a greedy allocation on
+// each link's outside volume against its sphere count, measured at a few counts and
+// interpolated as a power law between them (the outside volume of a variational fit falls
+// roughly as a power of n; see docs/benchmarks.md, "E_r against the number of spheres").
+// Greedy allocation is optimal when each curve is convex (diminishing returns), which a
+// piecewise power law with decreasing slopes is; measured curves are close to that.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "sphereset/robot_fit.hpp"
+
+namespace sphereset {
+
+double curveVolume(const LinkFitCurve& c, int k) {
+  const size_t m = c.counts.size();
+  if (m == 0) return 0.0;
+  if (m == 1) return c.outside_volume[0];
+  // The piece [i, i+1] that holds k, or the first or last piece outside the measured range.
+  size_t i = 0;
+  while (i + 2 < m && k > c.counts[i + 1]) ++i;
+  const double v0 = c.outside_volume[i], v1 = c.outside_volume[i + 1];
+  if (!(v0 > 0.0) || !(v1 > 0.0)) return k >= c.counts[i + 1] ? v1 : v0;
+  const double x0 = std::log(static_cast<double>(c.counts[i]));
+  const double x1 = std::log(static_cast<double>(c.counts[i + 1]));
+  const double slope = (std::log(v1) - std::log(v0)) / (x1 - x0);
+  return std::exp(std::log(v0) + slope * (std::log(static_cast<double>(k)) - x0));
+}
+
+Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& curves,
+                                       const std::vector<int>& fixed, int budget) {
+  const size_t n = curves.size();
+  std::vector<int> count(n, 0);
+  int used = 0;
+  for (size_t i = 0; i < n; ++i) {
+    count[i] = fixed[i] >= 0 ? fixed[i] : 1;
+    used += count[i];
+  }
+  if (used > budget)
+    return Error{ErrorCode::kInvalidArgument,
+                 "a budget of " + std::to_string(budget) + " spheres is below the " +
+                     std::to_string(used) + " the fixed links and one per other link need"};
+  for (; used < budget; ++used) {
+    size_t best = n;
+    double best_gain = -1.0;
+    for (size_t i = 0; i < n; ++i) {
+      if (fixed[i] >= 0) continue;
+      const double gain = curveVolume(curves[i], count[i]) - curveVolume(curves[i], count[i] + 1);
+      if (gain > best_gain) {
+        best_gain = gain;
+        best = i;
+      }
+    }
+    if (best == n) break;  // every link fixed: the rest of the budget is not needed
+    ++count[best];
+  }
+  return count;
+}
+
+}  // namespace sphereset

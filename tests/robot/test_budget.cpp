@@ -1,0 +1,66 @@
+// Splitting a sphere budget over links by marginal gain (robot_fit.hpp), against hand-worked
+// allocations.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sphereset/robot_fit.hpp"
+
+namespace sphereset {
+namespace {
+
+LinkFitCurve powerLaw(double a, double b) {
+  LinkFitCurve c;
+  for (int k : {1, 2, 4, 8}) {
+    c.counts.push_back(k);
+    c.outside_volume.push_back(a * std::pow(k, -b));
+  }
+  return c;
+}
+
+TEST(RobotBudget, CurveInterpolatesAndExtrapolatesAPowerLaw) {
+  const LinkFitCurve c = powerLaw(3.0, 1.5);
+  for (int k : {1, 3, 5, 8, 16, 40}) EXPECT_NEAR(curveVolume(c, k), 3.0 * std::pow(k, -1.5), 1e-12);
+  LinkFitCurve one;
+  one.counts = {4};
+  one.outside_volume = {2.0};
+  EXPECT_EQ(curveVolume(one, 1), 2.0);
+  EXPECT_EQ(curveVolume(one, 9), 2.0);
+}
+
+TEST(RobotBudget, GreedySplitFollowsTheLargestGain) {
+  // Link 0 loses 10 -> 5 -> 2.5 ... (halving), link 1 loses 1 -> 0.5 ...: with 5 spheres the
+  // gains are 5, 2.5, 1.25 for link 0 before link 1's first 0.5 is worth it.
+  const std::vector<LinkFitCurve> curves = {powerLaw(10.0, 1.0), powerLaw(1.0, 1.0)};
+  // Gains of k -> k+1 under 1/k: a (1/k - 1/(k+1)): link 0: 5, 1.67, 0.83, 0.5, 0.33...;
+  // link 1: 0.5, 0.167, ...
+  auto s = splitBudget(curves, {-1, -1}, 5);
+  ASSERT_TRUE(s.ok());
+  EXPECT_EQ((*s)[0] + (*s)[1], 5);
+  EXPECT_EQ((*s)[0], 4);  // 1 + three gains (5, 1.67, 0.83) above link 1's 0.5
+  EXPECT_EQ((*s)[1], 1);
+  // The split never has a larger total outside volume than an even one.
+  auto total = [&](const std::vector<int>& n) {
+    return curveVolume(curves[0], n[0]) + curveVolume(curves[1], n[1]);
+  };
+  auto s10 = splitBudget(curves, {-1, -1}, 10);
+  ASSERT_TRUE(s10.ok());
+  EXPECT_LT(total(*s10), total({5, 5}));
+}
+
+TEST(RobotBudget, FixedLinksKeepTheirCountsAndTheBudgetMustAllowThem) {
+  const std::vector<LinkFitCurve> curves = {powerLaw(1.0, 1.0), powerLaw(1.0, 1.0),
+                                            powerLaw(1.0, 1.0)};
+  auto s = splitBudget(curves, {3, -1, 0}, 9);
+  ASSERT_TRUE(s.ok());
+  EXPECT_EQ((*s)[0], 3);
+  EXPECT_EQ((*s)[1], 6);
+  EXPECT_EQ((*s)[2], 0);
+  auto bad = splitBudget(curves, {3, -1, 0}, 3);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_NE(bad.error().message.find("budget of 3"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sphereset
