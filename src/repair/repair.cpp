@@ -17,6 +17,7 @@
 #include <tuple>
 #include <utility>
 
+#include "repair/canonical_order.hpp"
 #include "repair/cap_holes.hpp"
 #include "repair/orient.hpp"
 
@@ -409,7 +410,7 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
         res.notes.push_back(
             count(static_cast<int64_t>(rounded.pairs.size()), "triangle pair", "triangle pairs") +
             " of the union touch after rounding to doubles");
-      return done(concat(parts), RepairKind::kUnion);
+      return done(detail::canonicalOrder(concat(parts)), RepairKind::kUnion);
     }
     res.cavities_filled = res.cavities_kept = 0;
     res.notes.push_back("the union failed (" + u.error().message + "); wrapping instead");
@@ -443,7 +444,7 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
                         count(res.cavities_filled, "cavity", "cavities") +
                         " that were to be kept");
   res.volume_ratio = ratio(*w);
-  return done(std::move(w).value(), RepairKind::kWrapped);
+  return done(detail::canonicalOrder(std::move(w).value()), RepairKind::kWrapped);
 }
 
 }  // namespace sphereset

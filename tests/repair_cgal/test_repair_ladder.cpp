@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "broken_meshes.hpp"
+#include "repair/canonical_order.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/repair.hpp"
 #include "sphereset/repair_cgal.hpp"
@@ -60,6 +61,19 @@ TEST(RepairLadder, OverlappingCubesBecomeTheirUnion) {
   ASSERT_EQ(r->shells.intersecting.size(), 1u);
   EXPECT_NEAR(signedVolume(r->solid), 1.71875, 1e-9);
   expectFitCoversOriginal(*r);
+}
+
+// CGAL numbers its output in an order that can depend on memory addresses; the repair
+// renumbers it canonically, so the fit (which samples triangles in order) is reproducible.
+TEST(RepairLadder, UnionAndWrapComeOutInCanonicalOrder) {
+  for (const Mesh& m : {overlappingCubes(), bowTiePrism()}) {
+    auto r = repairAll(m);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    EXPECT_TRUE(r->kind == RepairKind::kUnion || r->kind == RepairKind::kWrapped);
+    const Mesh c = detail::canonicalOrder(r->solid);
+    EXPECT_EQ(c.vertices, r->solid.vertices);
+    EXPECT_EQ(c.triangles, r->solid.triangles);
+  }
 }
 
 TEST(RepairLadder, FlippedFaceIsReorientedNotWrapped) {
