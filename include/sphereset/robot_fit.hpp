@@ -20,7 +20,15 @@ struct LinkFitCurve {
 // exactly) stays 0 from there on.
 double curveVolume(const LinkFitCurve& curve, int k);
 
-// Counts per link. `fixed[i]` >= 0 fixes link i's count (0 skips it); -1 leaves it to the
+// The lower envelope the budget split uses: measured volumes made non-increasing (k + 1
+// spheres can always do what k do: a repeated sphere adds nothing), then the lower convex
+// hull of the points in log k / log volume, so that the interpolated curve is convex and
+// decreasing and the greedy split is optimal on it. Quick fits at a few counts are noisy (a
+// fit can land in a worse local minimum with more spheres); the envelope keeps the best
+// measured at or below each count. Points after the first volume of 0 are dropped.
+LinkFitCurve curveEnvelope(const LinkFitCurve& curve);
+
+// Counts per link, from the envelopes of the curves (curveEnvelope). `fixed[i]` >= 0 fixes link i's count (0 skips it); -1 leaves it to the
 // budget. Every free link gets one sphere, then each further sphere goes to the free link
 // whose curve drops most with one more (ties to the lower index), until the budget is spent.
 // Errors (kInvalidArgument): the budget below the fixed counts plus one per free link.

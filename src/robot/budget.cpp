@@ -27,9 +27,48 @@ double curveVolume(const LinkFitCurve& c, int k) {
   return std::exp(std::log(v0) + slope * (std::log(static_cast<double>(k)) - x0));
 }
 
-Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& curves,
+LinkFitCurve curveEnvelope(const LinkFitCurve& c) {
+  // Non-increasing: the best volume measured at or below each count; nothing after a 0.
+  LinkFitCurve mono;
+  for (size_t i = 0; i < c.counts.size(); ++i) {
+    double v = c.outside_volume[i];
+    if (!mono.counts.empty()) v = std::min(v, mono.outside_volume.back());
+    mono.counts.push_back(c.counts[i]);
+    mono.outside_volume.push_back(v);
+    if (!(v > 0.0)) break;
+  }
+  // Lower convex hull in (log k, log v) of the positive points (monotone chain); a final 0 is
+  // kept as it is (curveVolume steps to it).
+  LinkFitCurve hull;
+  auto x = [](int k) { return std::log(static_cast<double>(k)); };
+  for (size_t i = 0; i < mono.counts.size(); ++i) {
+    const double v = mono.outside_volume[i];
+    if (v > 0.0) {
+      while (hull.counts.size() >= 2) {
+        const size_t m = hull.counts.size();
+        const double ax = x(hull.counts[m - 2]), ay = std::log(hull.outside_volume[m - 2]);
+        const double bx = x(hull.counts[m - 1]), by = std::log(hull.outside_volume[m - 1]);
+        const double cx = x(mono.counts[i]), cy = std::log(v);
+        // b lies on or above the chord a-c: not on the lower hull.
+        if ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax) <= 0.0) {
+          hull.counts.pop_back();
+          hull.outside_volume.pop_back();
+        } else {
+          break;
+        }
+      }
+    }
+    hull.counts.push_back(mono.counts[i]);
+    hull.outside_volume.push_back(v);
+  }
+  return hull;
+}
+
+Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& measured,
                                        const std::vector<int>& fixed, int budget) {
-  const size_t n = curves.size();
+  const size_t n = measured.size();
+  std::vector<LinkFitCurve> curves;
+  for (const LinkFitCurve& c : measured) curves.push_back(curveEnvelope(c));
   std::vector<int> count(n, 0);
   int used = 0;
   for (size_t i = 0; i < n; ++i) {

@@ -2,7 +2,9 @@
 // allocations.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "sphereset/robot_fit.hpp"
 
@@ -60,6 +62,52 @@ TEST(RobotBudget, FixedLinksKeepTheirCountsAndTheBudgetMustAllowThem) {
   ASSERT_FALSE(bad.ok());
   EXPECT_EQ(bad.error().code, ErrorCode::kInvalidArgument);
   EXPECT_NE(bad.error().message.find("budget of 3"), std::string::npos);
+}
+
+TEST(RobotBudget, EnvelopeIsDecreasingConvexAndBelowEveryMeasurement) {
+  // The Kinova base link's quick fits: 8 spheres measured worse than 4.
+  LinkFitCurve c;
+  c.counts = {1, 2, 4, 8, 16, 32};
+  c.outside_volume = {3.0e-3, 1.17e-3, 0.85e-3, 1.29e-3, 1.0e-3, 0.72e-3};
+  const LinkFitCurve e = curveEnvelope(c);
+  ASSERT_GE(e.counts.size(), 2u);
+  EXPECT_EQ(e.counts.front(), 1);
+  EXPECT_EQ(e.counts.back(), 32);
+  // Every measurement lies on or above the envelope; the envelope never rises.
+  for (size_t i = 0; i < c.counts.size(); ++i)
+    EXPECT_LE(curveVolume(e, c.counts[i]), c.outside_volume[i] * (1 + 1e-12)) << c.counts[i];
+  double prev_gain = 1e300;
+  for (int k = 1; k < 40; ++k) {
+    const double gain = curveVolume(e, k) - curveVolume(e, k + 1);
+    EXPECT_GE(gain, 0.0) << k;
+    EXPECT_LE(gain, prev_gain * (1 + 1e-9)) << k;  // diminishing returns: convex
+    prev_gain = gain;
+  }
+  // 8 is dropped (above the 4 before it); 2 lies above the chord from 1 to 4, so it goes too.
+  EXPECT_EQ(std::count(e.counts.begin(), e.counts.end(), 8), 0);
+  // A power law is its own envelope (collinear points in log-log may be dropped).
+  const LinkFitCurve p = powerLaw(3.0, 1.5);
+  const LinkFitCurve pe = curveEnvelope(p);
+  for (int k : {1, 3, 8, 20}) EXPECT_NEAR(curveVolume(pe, k), curveVolume(p, k), 1e-12) << k;
+  // A link bounded exactly stops at its 0.
+  LinkFitCurve z;
+  z.counts = {1, 2, 4};
+  z.outside_volume = {1.0, 0.0, 0.5};
+  const LinkFitCurve ze = curveEnvelope(z);
+  EXPECT_EQ(ze.counts, (std::vector<int>{1, 2}));
+  EXPECT_EQ(curveVolume(ze, 7), 0.0);
+}
+
+TEST(RobotBudget, SplitUsesTheEnvelopeNotTheNoise) {
+  // Link 0's measurement at 2 is noise above its trend; without the envelope the greedy split
+  // would see a loss in going from 1 to 2 spheres and starve it.
+  LinkFitCurve noisy;
+  noisy.counts = {1, 2, 4, 8};
+  noisy.outside_volume = {10.0, 12.0, 2.5, 1.25};
+  const std::vector<LinkFitCurve> curves = {noisy, powerLaw(1.0, 1.0)};
+  auto s = splitBudget(curves, {-1, -1}, 6);
+  ASSERT_TRUE(s.ok());
+  EXPECT_GE((*s)[0], 4);
 }
 
 }  // namespace
