@@ -389,7 +389,7 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
     }
     auto u = o.operations.unite(outward);
     if (u) {
-      // The union is exact; rounding its vertices to doubles (by at most half an ulp) can leave
+      // The union is exact; rounding its vertices to doubles (by less than an ulp) can leave
       // slivers that touch or cross by about that much, which changes no volume that matters.
       // They are reported, not refused: a wrap instead would add far more.
       const SelfIntersections rounded = findSelfIntersections(*u);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "sphereset/mesh.hpp"
@@ -41,6 +42,19 @@ Status toSurfaceMesh(const Mesh& mesh, CGAL::Surface_mesh<Point>& out, const std
   return {};
 }
 
+// A coordinate as a double. An exact (lazy) number is rounded from its exact value, not from
+// its current interval approximation: that interval tightens whenever some predicate needed
+// the exact value, so rounding it would make the output depend on the history of the
+// computation (and, through the memory addresses CGAL breaks ties with, on whatever else the
+// process did before), and the fit of a repaired link would not be reproducible.
+template <class FT>
+double roundCoordinate(const FT& x) {
+  if constexpr (std::is_floating_point_v<FT>)
+    return x;
+  else
+    return CGAL::to_double(CGAL::exact(x));
+}
+
 // Copies a triangulated Surface_mesh into a Mesh (coordinates rounded to double), dropping
 // removed elements. Fails on a face that is not a triangle.
 template <class Point>
@@ -53,8 +67,8 @@ Expected<Mesh> fromSurfaceMesh(const CGAL::Surface_mesh<Point>& sm, const std::s
   for (typename SM::Vertex_index v : sm.vertices()) {
     const Point& p = sm.point(v);
     index[static_cast<std::size_t>(v)] = static_cast<int32_t>(out.vertices.size());
-    out.vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                              CGAL::to_double(p.z()));
+    out.vertices.emplace_back(roundCoordinate(p.x()), roundCoordinate(p.y()),
+                              roundCoordinate(p.z()));
   }
   for (typename SM::Face_index f : sm.faces()) {
     Triangle t{};
