@@ -217,3 +217,12 @@ cli_test(robot_summary 0 ARGS robot ${robot}/three_link.urdf --package-path ${ro
          --link-spheres base_link=2 --link-spheres link1=2 --link-spheres link2=3 --quality fast
          -o ${work}/three_summary.json
          STDERR "link +triangles +repair.*link2 +300 +none +3 .*tool: no <collision> geometry, its <visual> geometry was used")
+# The same robot file on one thread and on two (links are prepared and fitted in parallel).
+cli_test(robot_one_thread 0 ARGS --threads 1 robot ${robot}/three_link.urdf --package-path
+         ${robot} --budget 12 --quality fast -o ${work}/three_t1.yml -q FILE ${work}/three_t1.yml)
+cli_test(robot_two_threads 0 ARGS --threads 2 robot ${robot}/three_link.urdf --package-path
+         ${robot} --budget 12 --quality fast -o ${work}/three_t2.yml -q FILE ${work}/three_t2.yml)
+add_test(NAME cli.robot_same_on_any_thread_count
+         COMMAND ${CMAKE_COMMAND} -E compare_files ${work}/three_t1.yml ${work}/three_t2.yml)
+set_tests_properties(cli.robot_same_on_any_thread_count PROPERTIES
+                     DEPENDS "cli.robot_one_thread;cli.robot_two_threads")
