@@ -5,7 +5,9 @@
 # link's collision mesh, which the URDF places at the link origin unscaled), the eval's
 # coverage certificates, and the independent brute-force check of bench/cover_check; wall time
 # of each robot command. Into bench/results/robot.csv.
-#   bash bench/robot_table.sh            BUDGET=40 bash bench/robot_table.sh
+# SEED=S (default 1) is passed to both robot commands; fits vary by several per cent with the
+# seed, so compare splits over a few seeds.
+#   bash bench/robot_table.sh            BUDGET=40 SEED=2 bash bench/robot_table.sh
 set -euo pipefail
 args=()
 source "$(dirname "$0")/common.sh"
@@ -14,6 +16,7 @@ root=../shared/robots/kinova_gen3
 urdf=$root/kortex_description/arms/gen3/7dof/urdf/GEN3-7DOF-VISION_ARM_URDF_V12.urdf
 meshes=$root/kortex_description/arms/gen3/7dof/meshes
 budget=${BUDGET:-60}
+seed=${SEED:-1}
 links=(base_link shoulder_link half_arm_1_link half_arm_2_link forearm_link
        spherical_wrist_1_link spherical_wrist_2_link bracelet_link)
 files=(base_link shoulder_link half_arm_1_link half_arm_2_link forearm_link
@@ -26,9 +29,9 @@ for i in "${!links[@]}"; do
   even+=(--link-spheres "${links[$i]}=$n")
 done
 /usr/bin/time -f "%e" -o "$tmp/t_budget" build/apps/sphereset robot "$urdf" --package-path "$root" \
-  --budget "$budget" -o "$tmp/budget.yml" -q
+  --budget "$budget" --seed "$seed" -o "$tmp/budget.yml" -q
 /usr/bin/time -f "%e" -o "$tmp/t_even" build/apps/sphereset robot "$urdf" --package-path "$root" \
-  "${even[@]}" -o "$tmp/even.yml" -q
+  "${even[@]}" --seed "$seed" -o "$tmp/even.yml" -q
 out=${OUT:-bench/results/robot.csv}
 echo "split,wall_s,link,spheres,er_sum,outside_volume,surface_covered,interior_covered,original_covered,check_points,check_missed" >"$out"
 for split in budget even; do
