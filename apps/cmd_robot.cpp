@@ -56,9 +56,22 @@ struct LinkJob {
   int fixed = -1;  // -1: from the budget
   double padding = 0.0;
   LinkFitCurve curve;
+  int count = 0;         // the count chosen
+  int split_count = -1;  // with --budget: the curve split's count and the even split's
+  int even_count = -1;
+  std::vector<Sphere> spheres;
+  EvalResult eval;
+  double outside_volume = 0.0;  // of the chosen fit (Σ over its spheres, before padding)
+  double split_volume = 0.0, even_volume = 0.0;  // of the fits at split_count and even_count
+  double seconds = 0.0;
+};
+
+// One fit of a link at one count (the budget fits each free link at two counts and keeps one).
+struct LinkFit {
   int count = 0;
   std::vector<Sphere> spheres;
   EvalResult eval;
+  double outside_volume = 0.0;
   double seconds = 0.0;
   std::string error;
 };
@@ -74,9 +87,9 @@ Expected<std::map<std::string, T>> namedValues(const std::vector<std::string>& i
     bool known = false;
     for (const RobotLink& l : robot.links) known = known || l.name == name;
     if (eq == std::string::npos || !known)
-      return Error{ErrorCode::kInvalidArgument,
-                   std::string(option) + " " + item + ": expected LINK=VALUE with a link of " +
-                       robot.name};
+      return Error{
+          ErrorCode::kInvalidArgument,
+          std::string(option) + " " + item + ": expected LINK=VALUE with a link of " + robot.name};
     try {
       size_t used = 0;
       const std::string v = item.substr(eq + 1);
@@ -153,7 +166,8 @@ Expected<std::vector<LinkJob>> prepareLinks(const RobotArgs& a, const Robot& rob
   return jobs;
 }
 
-// The sphere counts: fixed links, then the budget split by measured curves.
+// The sphere counts: fixed links, then, with a budget, the split by measured curves
+// (split_count) and the even split (even_count); the fits decide between them (pickFits).
 Status chooseCounts(const RobotArgs& a, std::vector<LinkJob>* jobs) {
   bool any_free = false;
   for (LinkJob& j : *jobs) {
@@ -185,32 +199,94 @@ Status chooseCounts(const RobotArgs& a, std::vector<LinkJob>* jobs) {
     fixed.push_back(j.fixed);
     primitives += static_cast<int>(j.primitives.size());
   }
-  auto counts = splitBudget(curves, fixed, a.budget - primitives);
-  if (!counts) return counts.error();
-  for (size_t i = 0; i < jobs->size(); ++i) (*jobs)[i].count = (*counts)[i];
+  auto split = splitBudget(curves, fixed, a.budget - primitives);
+  if (!split) return split.error();
+  auto even = evenSplit(fixed, a.budget - primitives);
+  if (!even) return even.error();
+  for (size_t i = 0; i < jobs->size(); ++i) {
+    LinkJob& j = (*jobs)[i];
+    j.count = (*split)[i];
+    if (j.fixed < 0) {
+      j.split_count = (*split)[i];
+      j.even_count = (*even)[i];
+    }
+  }
   return {};
 }
 
-void fitLink(const RobotArgs& a, LinkJob* j) {
+LinkFit fitLinkAt(const RobotArgs& a, const LinkJob& j, int count) {
   const auto t0 = std::chrono::steady_clock::now();
-  j->spheres = j->primitives;
-  if (j->index && j->count > 0) {
-    auto f = fitSpheres(*j->index, linkFitOptions(a, *j, j->count, false));
+  LinkFit out;
+  out.count = count;
+  if (j.index && count > 0) {
+    auto f = fitSpheres(*j.index, linkFitOptions(a, j, count, false));
     if (!f) {
-      j->error = f.error().message;
-      return;
+      out.error = f.error().message;
+      return out;
     }
-    j->spheres.insert(j->spheres.end(), f->spheres.begin(), f->spheres.end());
+    out.spheres = f->spheres;
+    out.outside_volume = f->energy;
     EvalOptions eo;
     eo.seed = a.seed;
     eo.union_samples = 0;
     eo.proximity_segments = 0;
     eo.shadow_resolution = 0;
-    eo.original = j->repair.kind == RepairKind::kNone ? nullptr : &j->repair.original;
-    j->eval = evaluateSpheres(*j->index, f->spheres, eo);
+    eo.original = j.repair.kind == RepairKind::kNone ? nullptr : &j.repair.original;
+    out.eval = evaluateSpheres(*j.index, f->spheres, eo);
   }
-  for (Sphere& s : j->spheres) s.radius += j->padding;
-  j->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+// Fits every link at its count, and free links under a budget at both the curve split's and
+// the even split's counts (all fits in parallel); then keeps, per link, the fit of whichever
+// count gives the least total outside volume within the budget (pickCandidates), so the
+// result is never worse than either split. Fails with the first error in link order.
+Status fitLinks(const RobotArgs& a, std::vector<LinkJob>* jobs) {
+  std::vector<std::pair<size_t, int>> tasks;  // (link, count)
+  for (size_t i = 0; i < jobs->size(); ++i) {
+    const LinkJob& j = (*jobs)[i];
+    tasks.emplace_back(i, j.count);
+    if (j.even_count >= 0 && j.even_count != j.count) tasks.emplace_back(i, j.even_count);
+  }
+  std::vector<LinkFit> fits(tasks.size());
+  tbb::parallel_for(size_t{0}, tasks.size(), [&](size_t t) {
+    fits[t] = fitLinkAt(a, (*jobs)[tasks[t].first], tasks[t].second);
+  });
+  for (size_t t = 0; t < tasks.size(); ++t)
+    if (!fits[t].error.empty())
+      return Error{
+          ErrorCode::kInvalidArgument,
+          a.urdf + ": link '" + (*jobs)[tasks[t].first].link->name + "': " + fits[t].error};
+  // Candidates per link, in task order; links with one fit have one candidate.
+  std::vector<std::vector<LinkCandidate>> cand(jobs->size());
+  std::vector<std::vector<size_t>> fit_of(jobs->size());
+  int budget = 0;
+  for (size_t t = 0; t < tasks.size(); ++t) {
+    cand[tasks[t].first].push_back({fits[t].count, fits[t].outside_volume});
+    fit_of[tasks[t].first].push_back(t);
+  }
+  for (const LinkJob& j : *jobs) budget += j.count;
+  auto pick = pickCandidates(cand, budget);
+  if (!pick) return pick.error();
+  for (size_t i = 0; i < jobs->size(); ++i) {
+    LinkJob& j = (*jobs)[i];
+    LinkFit& f = fits[fit_of[i][(*pick)[i]]];
+    j.count = f.count;
+    j.spheres = j.primitives;
+    j.spheres.insert(j.spheres.end(), f.spheres.begin(), f.spheres.end());
+    for (Sphere& sp : j.spheres) sp.radius += j.padding;
+    j.eval = f.eval;
+    j.outside_volume = f.outside_volume;
+    j.seconds = 0.0;
+    for (size_t t : fit_of[i]) j.seconds += fits[t].seconds;
+    // What each split would have cost, for the report.
+    for (size_t t : fit_of[i]) {
+      if (fits[t].count == j.split_count) j.split_volume = fits[t].outside_volume;
+      if (fits[t].count == j.even_count) j.even_volume = fits[t].outside_volume;
+    }
+  }
+  return {};
 }
 
 bool covered(const LinkJob& j) {
@@ -218,32 +294,56 @@ bool covered(const LinkJob& j) {
          (j.eval.surface_covered && j.eval.interior_covered && j.eval.original_covered);
 }
 
-nlohmann::json robotJson(const RobotArgs& a, const Robot& robot,
-                         const std::vector<LinkJob>& jobs) {
+// Total outside volume of the free links under a budget: as chosen, and for each split.
+struct BudgetTotals {
+  bool any = false;
+  double chosen = 0.0, split = 0.0, even = 0.0;
+};
+
+BudgetTotals budgetTotals(const std::vector<LinkJob>& jobs) {
+  BudgetTotals t;
+  for (const LinkJob& j : jobs)
+    if (j.split_count >= 0) {
+      t.any = true;
+      t.chosen += j.outside_volume;
+      t.split += j.split_volume;
+      t.even += j.even_volume;
+    }
+  return t;
+}
+
+nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const std::vector<LinkJob>& jobs) {
   nlohmann::json links = nlohmann::json::array();
   for (const LinkJob& j : jobs) {
     nlohmann::json s = nlohmann::json::array();
-    for (const Sphere& sp : j.spheres) s.push_back({sp.center.x(), sp.center.y(), sp.center.z(),
-                                                    sp.radius});
-    nlohmann::json l = {{"link", j.link->name},
-                        {"spheres", s},
-                        {"count", j.spheres.size()},
-                        {"primitives", j.primitives.size()},
-                        {"files", j.files},
-                        {"from_visual", j.link->from_visual},
-                        {"covered", covered(j)},
-                        {"padding", j.padding},
+    for (const Sphere& sp : j.spheres)
+      s.push_back({sp.center.x(), sp.center.y(), sp.center.z(), sp.radius});
+    nlohmann::json l = {{"link", j.link->name},      {"spheres", s},
+                        {"count", j.spheres.size()}, {"primitives", j.primitives.size()},
+                        {"files", j.files},          {"from_visual", j.link->from_visual},
+                        {"covered", covered(j)},     {"padding", j.padding},
                         {"seconds", j.seconds}};
     if (!j.curve.counts.empty())
-      l["budget_curve"] = {{"counts", j.curve.counts},
-                           {"outside_volume", j.curve.outside_volume}};
+      l["budget_curve"] = {{"counts", j.curve.counts}, {"outside_volume", j.curve.outside_volume}};
+    if (j.split_count >= 0)
+      l["budget_fits"] = {
+          {"curve_split", {{"count", j.split_count}, {"outside_volume", j.split_volume}}},
+          {"even_split", {{"count", j.even_count}, {"outside_volume", j.even_volume}}}};
     if (j.index) {
       l["er_sum"] = j.eval.er_sum;
+      l["outside_volume"] = j.outside_volume;
       l["repair"] = repairJson(j.repair);
     }
     links.push_back(l);
   }
-  return {{"robot", robot.name}, {"urdf", a.urdf}, {"seed", a.seed}, {"links", links}};
+  nlohmann::json out = {
+      {"robot", robot.name}, {"urdf", a.urdf}, {"seed", a.seed}, {"links", links}};
+  if (const BudgetTotals t = budgetTotals(jobs); t.any)
+    out["budget"] = {{"spheres", a.budget},
+                     {"outside_volume", t.chosen},
+                     {"curve_split_outside_volume", t.split},
+                     {"even_split_outside_volume", t.even}};
+  return out;
 }
 
 void printSummary(const std::vector<LinkJob>& jobs, double seconds) {
@@ -258,6 +358,11 @@ void printSummary(const std::vector<LinkJob>& jobs, double seconds) {
     if (j.link->from_visual)
       std::fprintf(stderr, "%s: no <collision> geometry, its <visual> geometry was used\n",
                    j.link->name.c_str());
+  if (const BudgetTotals t = budgetTotals(jobs); t.any)
+    std::fprintf(stderr,
+                 "budget: outside volume %.6g of the links it split (split by curves %.6g, "
+                 "even split %.6g)\n",
+                 t.chosen, t.split, t.even);
   std::fprintf(stderr, "total %.2f s\n", seconds);
 }
 
@@ -286,12 +391,7 @@ int runRobot(const RobotArgs& a) {
     j.padding = p != pads->end() ? p->second : a.padding;
   }
   if (Status s = chooseCounts(a, &*jobs); !s) return fail(s.error());
-  tbb::parallel_for(size_t{0}, jobs->size(), [&](size_t i) { fitLink(a, &(*jobs)[i]); });
-  for (LinkJob& j : *jobs) {
-    if (!j.error.empty())
-      return fail(Error{ErrorCode::kInvalidArgument,
-                        a.urdf + ": link '" + j.link->name + "': " + j.error});
-  }
+  if (Status s = fitLinks(a, &*jobs); !s) return fail(s.error());
   std::vector<LinkSpheres> out;
   for (const LinkJob& j : *jobs) out.push_back({j.link->name, j.spheres});
   Status st;
@@ -346,8 +446,7 @@ Command registerRobot(CLI::App& app) {
   cmd->add_option("--padding", a->padding, "Distance added to every radius")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--link-padding", a->link_padding, "LINK=D: padding for this link; repeatable");
-  cmd->add_option("--seed", a->seed, "Seed for sampling and initialisation")
-      ->capture_default_str();
+  cmd->add_option("--seed", a->seed, "Seed for sampling and initialisation")->capture_default_str();
   cmd->add_option("--quality", a->quality, "fast, default or best")
       ->capture_default_str()
       ->check(CLI::IsMember({"fast", "default", "best"}));

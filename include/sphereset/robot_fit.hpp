@@ -10,8 +10,8 @@ namespace sphereset {
 
 // A link's outside volume (absolute units) after fits with a few sphere counts.
 struct LinkFitCurve {
-  std::vector<int> counts;               // increasing, at least one, all >= 1
-  std::vector<double> outside_volume;    // one per count, > 0 where measured
+  std::vector<int> counts;             // increasing, at least one, all >= 1
+  std::vector<double> outside_volume;  // one per count, > 0 where measured
 };
 
 // The outside volume at k spheres on the curve: piecewise linear in log k and log volume
@@ -28,11 +28,32 @@ double curveVolume(const LinkFitCurve& curve, int k);
 // measured at or below each count. Points after the first volume of 0 are dropped.
 LinkFitCurve curveEnvelope(const LinkFitCurve& curve);
 
-// Counts per link, from the envelopes of the curves (curveEnvelope). `fixed[i]` >= 0 fixes link i's count (0 skips it); -1 leaves it to the
-// budget. Every free link gets one sphere, then each further sphere goes to the free link
-// whose curve drops most with one more (ties to the lower index), until the budget is spent.
-// Errors (kInvalidArgument): the budget below the fixed counts plus one per free link.
+// Counts per link, from the envelopes of the curves (curveEnvelope). `fixed[i]` >= 0 fixes link i's
+// count (0 skips it); -1 leaves it to the budget. Every free link gets one sphere, then each
+// further sphere goes to the free link whose curve drops most with one more (ties to the lower
+// index), until the budget is spent. Errors (kInvalidArgument): the budget below the fixed counts
+// plus one per free link.
 Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& curves,
                                        const std::vector<int>& fixed, int budget);
+
+// The counts of an even split: `budget` spread over the free links (fixed[i] < 0) as evenly as
+// possible, the remainder one each to the first free links; fixed links keep theirs. Errors as
+// splitBudget's.
+Expected<std::vector<int>> evenSplit(const std::vector<int>& fixed, int budget);
+
+// One fitted candidate for a link: its sphere count and the outside volume the fit measured.
+struct LinkCandidate {
+  int count = 0;
+  double outside_volume = 0.0;
+};
+
+// Picks one candidate per link (every list non-empty) so that the counts add up to at most
+// `budget` and the total outside volume is least (exact, by dynamic programming over the
+// totals reachable; ties go to the smaller total count, then to earlier candidates). Returns
+// the index chosen per link. The robot command fits each link at the count of the curve split
+// and of the even split and picks between them, so its total is never worse than either.
+// Errors (kInvalidArgument): an empty list, or no choice within the budget.
+Expected<std::vector<int>> pickCandidates(const std::vector<std::vector<LinkCandidate>>& candidates,
+                                          int budget);
 
 }  // namespace sphereset

@@ -6,6 +6,8 @@
 // piecewise power law with decreasing slopes is; measured curves are close to that.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <string>
 
 #include "sphereset/robot_fit.hpp"
@@ -76,9 +78,9 @@ Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& measured
     used += count[i];
   }
   if (used > budget)
-    return Error{ErrorCode::kInvalidArgument,
-                 "a budget of " + std::to_string(budget) + " spheres is below the " +
-                     std::to_string(used) + " the fixed links and one per other link need"};
+    return Error{ErrorCode::kInvalidArgument, "a budget of " + std::to_string(budget) +
+                                                  " spheres is below the " + std::to_string(used) +
+                                                  " the fixed links and one per other link need"};
   for (; used < budget; ++used) {
     size_t best = n;
     double best_gain = -1.0;
@@ -94,6 +96,70 @@ Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& measured
     ++count[best];
   }
   return count;
+}
+
+Expected<std::vector<int>> evenSplit(const std::vector<int>& fixed, int budget) {
+  int free_links = 0, used = 0;
+  for (int f : fixed) {
+    free_links += f < 0;
+    used += f >= 0 ? f : 1;
+  }
+  if (used > budget)
+    return Error{ErrorCode::kInvalidArgument, "a budget of " + std::to_string(budget) +
+                                                  " spheres is below the " + std::to_string(used) +
+                                                  " the fixed links and one per other link need"};
+  std::vector<int> count(fixed.size(), 0);
+  const int spare = budget - (used - free_links);  // spheres for the free links
+  int k = 0;
+  for (size_t i = 0; i < fixed.size(); ++i) {
+    if (fixed[i] >= 0) {
+      count[i] = fixed[i];
+      continue;
+    }
+    count[i] = spare / free_links + (k < spare % free_links ? 1 : 0);
+    ++k;
+  }
+  return count;
+}
+
+Expected<std::vector<int>> pickCandidates(const std::vector<std::vector<LinkCandidate>>& cand,
+                                          int budget) {
+  // Layer i maps each total count reachable with links [0, i) to the least outside volume
+  // reaching it and how (the previous total and the candidate taken).
+  struct State {
+    double volume;
+    int previous;
+    int choice;
+  };
+  std::vector<std::map<int, State>> layer(cand.size() + 1);
+  layer[0][0] = {0.0, 0, -1};
+  for (size_t i = 0; i < cand.size(); ++i) {
+    if (cand[i].empty())
+      return Error{ErrorCode::kInvalidArgument, "a link has no candidate sphere count"};
+    for (const auto& [total, st] : layer[i])
+      for (size_t c = 0; c < cand[i].size(); ++c) {
+        const int t = total + cand[i][c].count;
+        if (t > budget) continue;
+        const double v = st.volume + cand[i][c].outside_volume;
+        auto it = layer[i + 1].find(t);
+        if (it == layer[i + 1].end() || v < it->second.volume)
+          layer[i + 1][t] = {v, total, static_cast<int>(c)};
+      }
+  }
+  const auto& last = layer.back();
+  if (last.empty())
+    return Error{ErrorCode::kInvalidArgument,
+                 "no choice of sphere counts fits a budget of " + std::to_string(budget)};
+  int best = last.begin()->first;
+  for (const auto& [total, st] : last)
+    if (st.volume < last.at(best).volume) best = total;
+  std::vector<int> pick(cand.size());
+  for (size_t i = cand.size(); i-- > 0;) {
+    const State& st = layer[i + 1].at(best);
+    pick[i] = st.choice;
+    best = st.previous;
+  }
+  return pick;
 }
 
 }  // namespace sphereset

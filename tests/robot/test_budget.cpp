@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <random>
 #include <vector>
 
 #include "sphereset/robot_fit.hpp"
@@ -108,6 +110,64 @@ TEST(RobotBudget, SplitUsesTheEnvelopeNotTheNoise) {
   auto s = splitBudget(curves, {-1, -1}, 6);
   ASSERT_TRUE(s.ok());
   EXPECT_GE((*s)[0], 4);
+}
+
+TEST(RobotBudget, EvenSplitSpreadsTheRemainderOverTheFirstFreeLinks) {
+  auto s = evenSplit({-1, 2, -1, -1}, 13);  // 11 for three free links: 4, 4, 3
+  ASSERT_TRUE(s.ok());
+  EXPECT_EQ(*s, (std::vector<int>{4, 2, 4, 3}));
+  EXPECT_FALSE(evenSplit({5, -1}, 5).ok());
+}
+
+// Brute force over every combination: the least total outside volume within the budget.
+double bestByEnumeration(const std::vector<std::vector<LinkCandidate>>& cand, int budget) {
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<size_t> idx(cand.size(), 0);
+  while (true) {
+    int total = 0;
+    double v = 0.0;
+    for (size_t i = 0; i < cand.size(); ++i) {
+      total += cand[i][idx[i]].count;
+      v += cand[i][idx[i]].outside_volume;
+    }
+    if (total <= budget) best = std::min(best, v);
+    size_t i = 0;
+    while (i < cand.size() && ++idx[i] == cand[i].size()) idx[i++] = 0;
+    if (i == cand.size()) break;
+  }
+  return best;
+}
+
+TEST(RobotBudget, PickCandidatesMatchesEnumeration) {
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<std::vector<LinkCandidate>> cand(2 + trial % 5);
+    int min_total = 0;
+    for (auto& list : cand) {
+      const int m = 1 + static_cast<int>(rng() % 3);
+      int lowest = 1000;
+      for (int c = 0; c < m; ++c) {
+        const int k = 1 + static_cast<int>(rng() % 12);
+        list.push_back({k, std::uniform_real_distribution<double>(0.1, 2.0)(rng) / k});
+        lowest = std::min(lowest, k);
+      }
+      min_total += lowest;
+    }
+    const int budget = min_total + static_cast<int>(rng() % 20);
+    auto pick = pickCandidates(cand, budget);
+    ASSERT_TRUE(pick.ok()) << pick.error().message;
+    int total = 0;
+    double v = 0.0;
+    for (size_t i = 0; i < cand.size(); ++i) {
+      total += cand[i][(*pick)[i]].count;
+      v += cand[i][(*pick)[i]].outside_volume;
+    }
+    EXPECT_LE(total, budget);
+    EXPECT_NEAR(v, bestByEnumeration(cand, budget), 1e-12) << trial;
+  }
+  // Nothing fits: an error, not a guess.
+  EXPECT_FALSE(pickCandidates({{{5, 1.0}}, {{5, 1.0}}}, 9).ok());
+  EXPECT_FALSE(pickCandidates({{}}, 9).ok());
 }
 
 }  // namespace
