@@ -28,8 +28,9 @@ cmake --build "$tmp/consumer" -j "$jobs" > "$tmp/build.log"
 echo "== consumer through pkg-config"
 export PKG_CONFIG_PATH="$(dirname "$pc")${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
 # shellcheck disable=SC2046  # pkg-config prints several words on purpose
+# (the rpath finds a shared libsphereset in the prefix; a static one needs none)
 g++ -std=c++20 -O2 examples/consumer/main.cpp -o "$tmp/consumer_pc" \
-  $(pkg-config --cflags --libs sphereset)
+  $(pkg-config --cflags --libs sphereset) -Wl,-rpath,"$(pkg-config --variable=libdir sphereset)"
 "$tmp/consumer_pc" examples/spot.obj 8 "$tmp/pkgconfig_8.txt"
 
 echo "== same spheres as the installed command"
