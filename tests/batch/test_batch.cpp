@@ -146,6 +146,16 @@ TEST_F(BatchTest, CsvManifestWithPerItemOptions) {
   EXPECT_EQ((*items)[3].output, "d.json");
 }
 
+TEST_F(BatchTest, CsvManifestFromASpreadsheet) {
+  // A byte order mark and CRLF line ends, as spreadsheet programs write them.
+  const std::string csv = put("sheet.csv", "\xEF\xBB\xBFMesh,N\r\na.stl,7\r\n");
+  auto items = listBatchItems(csv, quickOptions());
+  ASSERT_TRUE(items.ok()) << items.error().message;
+  ASSERT_EQ(items->size(), 1u);
+  EXPECT_EQ(items->front().fit.num_spheres, 7);
+  EXPECT_EQ(items->front().output, "a.json");
+}
+
 TEST_F(BatchTest, JsonlManifestWithPerItemOptions) {
   const std::string jl = put("m.jsonl",
                              "{\"mesh\": \"a.obj\", \"n\": 6, \"padding\": 0.25, \"method\": "
