@@ -69,6 +69,18 @@ struct EvalResult {
   double seconds = 0.0;
 };
 
+// The evaluation `sphereset fit` (and the batch) runs on its result: the coverage certificates
+// and E_r of the union by 100000 seeded samples; no proximity segments, no shadows.
+inline EvalOptions fitCheckEvalOptions(uint64_t seed, const Mesh* original = nullptr) {
+  EvalOptions eo;
+  eo.seed = seed;
+  eo.union_samples = 100000;
+  eo.proximity_segments = 0;
+  eo.shadow_resolution = 0;
+  eo.original = original;
+  return eo;
+}
+
 // Needs a closed solid (callers check with diagnoseMesh first) and at least one sphere.
 EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& spheres,
                            const EvalOptions& options = {});

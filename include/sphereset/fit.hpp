@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,59 @@ struct FitResult {
   int restart = 0;         // which restart won (0: the one with options.seed)
   FitTimings seconds;
 };
+
+// Quality presets: how much work a fit does, as `sphereset fit --quality` names them. The CLI,
+// the batch and the Python module all take their options from fitPreset / fitOptionsFor.
+enum class FitQuality {
+  kFast,     // 0.4 of the default points, 30 rounds, 30 optimiser evaluations, 2 failed teleports
+  kDefault,  // max(5000, 100 n) points, 100 rounds, 60 evaluations, 6 failed teleports
+  kBest,     // the default's, with 4 restarts and decimation 0.5
+};
+
+// "fast", "default", "best".
+const char* fitQualityName(FitQuality quality);
+
+// The quality named `name` (as fitQualityName spells it); kInvalidArgument naming the text and
+// the valid names for anything else.
+Expected<FitQuality> fitQualityFromName(const std::string& name);
+
+// The options of a quality preset for `num_spheres` spheres: target_points (the preset's factor
+// times max(5000, 100 n)), max_iterations, optimizer_evaluations, max_failed_teleports, restarts
+// and decimation; every other field keeps its default. Callers override what their user gave
+// explicitly afterwards (fitOptionsFor does).
+FitOptions fitPreset(int num_spheres, FitQuality quality = FitQuality::kDefault);
+
+// A fit as a user asks for one, i.e. the options of `sphereset fit`: a quality preset and the
+// options given explicitly, which override the preset's. An unset optional (or points = 0)
+// keeps the preset's value.
+struct FitRequest {
+  int num_spheres = 32;
+  FitQuality quality = FitQuality::kDefault;
+  uint64_t seed = 1;
+  double padding = 0.0;              // absolute units, added to every radius
+  int64_t points = 0;                // points clustered; 0: the preset's
+  std::optional<int> iterations;     // assignment/update rounds (FitOptions::max_iterations)
+  std::optional<int> restarts;       // FitOptions::restarts
+  std::optional<double> decimation;  // FitOptions::decimation
+  SphereOptimizer optimizer = SphereOptimizer::kPowell;
+  FitInit init = FitInit::kFarthestPoint;
+  FitMethod method = FitMethod::kVariational;
+};
+
+// fitPreset(request.num_spheres, request.quality) with the request's explicit values applied:
+// the options `sphereset fit` runs with for the same command line (no progress callback, no
+// original triangles).
+FitOptions fitOptionsFor(const FitRequest& request);
+
+// Names of the enumerations as the command line spells them ("fps"/"random",
+// "powell"/"gradient", "variational"/"kmeans"/"octree"), and back (kInvalidArgument naming the
+// text and the valid names).
+const char* fitInitName(FitInit init);
+const char* sphereOptimizerName(SphereOptimizer optimizer);
+const char* fitMethodName(FitMethod method);
+Expected<FitInit> fitInitFromName(const std::string& name);
+Expected<SphereOptimizer> sphereOptimizerFromName(const std::string& name);
+Expected<FitMethod> fitMethodFromName(const std::string& name);
 
 // Fits options.num_spheres spheres to the closed solid behind `index`. Errors:
 // kInvalidArgument (n < 1, n larger than the points, bad options), kNotSolid (zero volume).

@@ -1,0 +1,175 @@
+// Fitting whole collections of meshes: the items of a batch (a folder of meshes or a manifest),
+// one item fitted exactly as `sphereset fit` fits it, its line of the report, and resuming a
+// batch that was stopped.
+//
+// Every function works on one item at a time, so that a batch can be spread over processes or
+// machines: `sphereset batch` runs the items in order in one process; a distributed runner
+// calls processBatchItem (or runBatchItem) once per item in its workers and appends the reports
+// in item order itself. Both write the same files and the same report.
+//
+// Layout of the output folder OUT:
+//   OUT/<item.output>                      the sphere file of each item that succeeded
+//   OUT/report.jsonl                       one reportLine per item, in item order
+//   OUT/.sphereset-batch/<item.output>.json  the record of each item that succeeded: its report
+//                                          line with the fingerprint of its options and input
+//                                          and a digest of the sphere file (used to resume)
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sphereset/fit.hpp"
+#include "sphereset/repair.hpp"
+#include "sphereset/status.hpp"
+
+namespace sphereset {
+
+// Options of the whole batch; each item may override the fit request (BatchItem::fit).
+struct BatchOptions {
+  // The fit of every item unless its manifest line says otherwise (n, quality, seed, ...).
+  FitRequest fit;
+  // How a mesh that is not a clean solid is made one, as `sphereset fit --repair ...` does. The
+  // union and the wrapping (operations) are not part of the core library: callers that link
+  // sphereset_repair set them to cgalSolidOperations() (repair_cgal.hpp), as the CLI does;
+  // without them the meshes that need them fail with kNotSolid.
+  RepairOptions repair;
+  // Extension of the sphere files written, which sets their format (sphere_io.hpp): "json",
+  // "txt", "sph" or "yaml" (a cuRobo file with one link named after the mesh's stem).
+  std::string format = "json";
+  // processBatchItem skips items whose output is up to date (batchItemDone); false fits every
+  // item again.
+  bool resume = true;
+  // Worker threads of one item's fit and evaluation: 0 uses the process's TBB default; k > 0
+  // runs the item in a TBB arena of k threads (e.g. one per worker process). The result does
+  // not depend on it.
+  int threads = 0;
+};
+
+// One mesh to fit.
+struct BatchItem {
+  // Path of the mesh file: relative to the current directory or absolute (listBatchItems joins
+  // the input folder or the manifest's folder in front of the names it finds).
+  std::string mesh;
+  // Path of the sphere file relative to the output folder, with forward slashes, e.g.
+  // "robots/arm/link1.json". Never absolute, never with "..".
+  std::string output;
+  // The fit of this item: BatchOptions::fit with the manifest line's values applied.
+  FitRequest fit;
+  // Where the item came from, for messages: "folder/a.obj" or "list.csv:7".
+  std::string origin;
+};
+
+// The items of a batch, in the order they are run and reported. `input` is
+//   - a folder: every regular file below it (recursively, entries whose names start with '.'
+//     skipped) whose extension assimp imports (case-insensitive; Assimp::Importer's list),
+//     sorted by their path relative to the folder (byte order, '/' separators). The output is
+//     the relative path with the extension replaced by options.format ("a/b.obj" ->
+//     "a/b.json"); when two meshes would share an output (a/b.obj and a/b.stl), each keeps its
+//     extension ("a/b.obj.json", "a/b.stl.json").
+//   - a manifest: a .csv file (a header line naming the columns, then one item per line; fields
+//     may be quoted with "..." and "" inside; empty lines and lines starting with '#' skipped)
+//     or a .jsonl file (one JSON object per line; empty lines skipped). Columns / keys:
+//       mesh        required: path of the mesh, relative to the manifest's folder (or absolute)
+//       n           number of spheres (default options.fit.num_spheres)
+//       output      sphere file relative to the output folder (default: the mesh path relative
+//                   to the manifest's folder with its extension replaced, as for a folder; a
+//                   mesh outside that folder gives its file name)
+//       quality, seed, points, iterations, restarts, decimation, padding, optimizer, init,
+//       method      the options of `sphereset fit` of the same names (an empty CSV field or a
+//                   JSON null keeps the batch's value)
+//     In the manifest, items are run in line order.
+// Errors: kUnreadable (input missing, not a folder, .csv or .jsonl, or unreadable),
+// kInvalidData (a bad manifest line: unknown column, missing mesh, a value out of range or not
+// a number, bad JSON, two items writing the same output; the message names the file and the
+// line), kInvalidArgument (options.format unknown, options.fit out of range). An empty folder
+// or manifest gives no items (not an error).
+Expected<std::vector<BatchItem>> listBatchItems(const std::string& input,
+                                                const BatchOptions& options);
+
+enum class BatchStatus {
+  kOk,       // fitted and written (the coverage may still have failed: see `covered`)
+  kError,    // nothing written; `error` says why
+  kSkipped,  // up to date from an earlier run (figures from that run's record)
+};
+
+// "ok", "error", "skipped".
+const char* batchStatusName(BatchStatus status);
+
+// What became of one item: one line of report.jsonl.
+struct BatchItemReport {
+  std::string mesh;    // BatchItem::mesh
+  std::string output;  // BatchItem::output
+  BatchStatus status = BatchStatus::kError;
+  int num_spheres = 0;  // asked for (the request's n)
+  int spheres = 0;      // written (0 on error)
+  // E_r summed: Σ outside volume of the spheres / volume of the solid (exact), as er_sum of
+  // `sphereset fit --json`; and E_r of their union (Monte Carlo). NaN on error.
+  double er_sum = 0.0;
+  double er_union = 0.0;
+  // Eval's coverage certificate: surface, interior and (after a repair) the original triangles
+  // covered, as `sphereset fit` checks before exiting 0.
+  bool covered = false;
+  std::string repair;  // repairName of what made the solid ("none", "welded", ...); "" on error
+  // Wall time of the item: load, repair, fit, write, evaluation (of the run that fitted it).
+  double seconds = 0.0;
+  std::string error;  // status kError: one line naming the mesh and the problem; else ""
+  // Status kError only; not part of the report line (parseReportLine gives kInvalidData).
+  ErrorCode error_code = ErrorCode::kInvalidData;
+  // batchFingerprint of the item (16 hex digits); "" when the mesh could not be read.
+  std::string fingerprint;
+};
+
+// The item's line of report.jsonl: one JSON object without the newline, keys in this order:
+// mesh, output, status, n, spheres, er_sum, er_union, covered, repair, seconds, error,
+// fingerprint (er_sum and er_union null on error).
+std::string reportLine(const BatchItemReport& report);
+
+// Reads a line written by reportLine. Errors: kInvalidData naming what is wrong.
+Expected<BatchItemReport> parseReportLine(const std::string& line);
+
+// Fingerprint of what determines an item's sphere file: the fit options the request resolves to
+// (fitOptionsFor), the repair options (and whether the union and the wrapping are available),
+// the output's format and the bytes of the mesh file. 16 hex digits (FNV-1a, 64 bits).
+// Errors: kUnreadable when the mesh file cannot be read.
+Expected<std::string> batchFingerprint(const BatchItem& item, const BatchOptions& options);
+
+// Fits one item as `sphereset fit` does with the same options (loadSolid with options.repair,
+// fitOptionsFor(item.fit) with the original triangles, fitCheckEvalOptions for the check), so
+// the spheres are those of `sphereset fit MESH -n N ... -o OUT/<output>`: writes the sphere file
+// atomically (creating the folders of item.output), then the item's record. Never throws for
+// bad data and never stops at a bad mesh: any failure gives status kError with the message.
+// The item's record is removed first, so a failed run never leaves the item up to date: a
+// failure before the sphere file is written leaves an earlier file of the same output as it
+// was; one after it (writing the record) leaves the new file. Thread-safe for distinct
+// outputs.
+BatchItemReport runBatchItem(const BatchItem& item, const std::string& out_dir,
+                             const BatchOptions& options);
+
+// Whether the item is up to date in `out_dir`: its sphere file exists, its record exists with
+// status ok, the record's fingerprint equals batchFingerprint(item, options), and the sphere
+// file still has the digest recorded.
+bool batchItemDone(const BatchItem& item, const std::string& out_dir, const BatchOptions& options);
+
+// The report of an up-to-date item (status kSkipped, figures and seconds from its record), or
+// nothing when batchItemDone is false.
+std::optional<BatchItemReport> skippedBatchItem(const BatchItem& item, const std::string& out_dir,
+                                                const BatchOptions& options);
+
+// What a batch does with one item: skippedBatchItem when options.resume and the item is up to
+// date, else runBatchItem. The unit of work of a distributed batch.
+BatchItemReport processBatchItem(const BatchItem& item, const std::string& out_dir,
+                                 const BatchOptions& options);
+
+// OUT/report.jsonl.
+std::string batchReportPath(const std::string& out_dir);
+
+// Starts the report of a run: creates `out_dir` (and its parents) and an empty report.jsonl
+// (replacing the last run's). Errors: kWriteFailed naming the path.
+Status startBatchReport(const std::string& out_dir);
+
+// Appends reportLine(report) and a newline to report.jsonl in one write, so a batch that is
+// killed leaves whole lines only. Call in item order. Errors: kWriteFailed naming the path.
+Status appendBatchReport(const std::string& out_dir, const BatchItemReport& report);
+
+}  // namespace sphereset
