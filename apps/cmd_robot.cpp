@@ -105,20 +105,16 @@ Expected<std::map<std::string, T>> namedValues(const std::vector<std::string>& i
 }
 
 FitOptions linkFitOptions(const RobotArgs& a, const LinkJob& j, int n, bool quick) {
-  FitOptions fo;
-  fo.num_spheres = n;
+  // The quality presets of `fit` (fit.hpp); the curve fits are quick ones: the fast preset
+  // with fewer points and rounds.
+  const auto quality = fitQualityFromName(a.quality);  // checked by the option parser
+  FitOptions fo = fitPreset(n, quick ? FitQuality::kFast : quality.value());
+  if (quick) {
+    fo.target_points = kCurvePoints;
+    fo.max_iterations = kCurveRounds;
+  }
   fo.seed = a.seed;
   fo.original = j.repair.kind == RepairKind::kNone ? nullptr : &j.repair.original;
-  if (quick || a.quality == "fast") {
-    fo.target_points = quick ? kCurvePoints : std::max<int64_t>(2000, 40 * n);
-    fo.max_iterations = quick ? kCurveRounds : 30;
-    fo.optimizer_evaluations = 30;
-    fo.max_failed_teleports = 2;
-  }
-  if (!quick && a.quality == "best") {
-    fo.restarts = 4;
-    fo.decimation = 0.5;
-  }
   return fo;
 }
 
