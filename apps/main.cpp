@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
   // In the order of --help.
   const std::vector<Command> commands = {
       registerCheck(app),  registerEval(app),   registerFit(app),  registerTree(app),
-      registerRender(app), registerExport(app), registerQuery(app), registerRobot(app)};
+      registerRender(app), registerExport(app), registerQuery(app), registerRobot(app), registerAnimate(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
