@@ -29,15 +29,22 @@ std::vector<double> meanValueCoordinates(const Mesh& rest, const Vec3& x);
 // Dense weights: row i holds the coordinates of point i over the rest mesh's vertices, so that
 // the points of a deformed mesh are weights() * P with P the (vertices × 3) positions.
 struct MeanValueWeights {
-  Eigen::MatrixXd weights;  // points × rest vertices, row-major use through Eigen's product
-  double seconds = 0.0;     // precomputation time
+  Eigen::MatrixXd weights;  // points × rest vertices
+  // The same weights in single precision, row-major: what the per-frame update reads (half
+  // the memory traffic of the dense product, which is what bounds its time).
+  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> compact;
+  std::vector<Vec3> points;         // the weighted points at the rest pose
+  std::vector<Vec3> rest_vertices;  // the rest mesh's vertices
+  double seconds = 0.0;             // precomputation time
 };
 
 // Coordinates of every point, in parallel (deterministic: each row on its own).
 MeanValueWeights meanValueWeights(const Mesh& rest, const std::vector<Vec3>& points);
 
-// The points moved with the mesh: weights × deformed vertices (same count and order as the
-// rest mesh's), one dense product.
+// The points moved with the mesh (deformed: same count and order as the rest mesh's vertices),
+// in displacement form: p + Σ_j w_j (v'_j - v_j), with the single-precision weights and
+// double-precision sums, rows in parallel. Equal to Σ_j w_j v'_j up to the weights' rounding
+// times the displacement, and exactly p at the rest pose.
 std::vector<Vec3> meanValuePoints(const MeanValueWeights& w, const std::vector<Vec3>& deformed);
 
 // Skinning data of a rest mesh: per vertex, the weights of the bones moving it (each row sums

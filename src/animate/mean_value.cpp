@@ -33,6 +33,11 @@ constexpr double kOnTriangleEps = 1e-10;
 constexpr double kOnEdgeEps = 1e-6;
 // |s_i| below this (dimensionless sine): the point lies in the triangle's plane outside it, and
 // the triangle's spherical projection has no area.
+// Rows of the per-frame update per parallel task.
+constexpr Eigen::Index kRowsPerTask = 16;
+// Vertices per single-precision partial sum of the update (its rounding error grows with the
+// chunk's length; the chunks are summed in double precision).
+constexpr Eigen::Index kVerticesPerChunk = 512;
 constexpr double kEdgeOnEps = 1e-10;
 
 // Writes the coordinates into w (size vertices), using the scratch arrays d and u.
@@ -132,17 +137,38 @@ MeanValueWeights meanValueWeights(const Mesh& rest, const std::vector<Vec3>& poi
   });
   MeanValueWeights out;
   out.weights = rows;
+  out.compact = rows.cast<float>();
+  out.points = points;
+  out.rest_vertices = rest.vertices;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
 
 std::vector<Vec3> meanValuePoints(const MeanValueWeights& w, const std::vector<Vec3>& deformed) {
-  using Rows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
-  const Eigen::Map<const Rows> p(deformed.empty() ? nullptr : deformed.front().data(),
-                                 static_cast<Eigen::Index>(deformed.size()), 3);
-  std::vector<Vec3> out(static_cast<size_t>(w.weights.rows()));
-  Eigen::Map<Rows>(out.empty() ? nullptr : out.front().data(), w.weights.rows(), 3).noalias() =
-      w.weights * p;
+  const auto nv = static_cast<Eigen::Index>(deformed.size());
+  Eigen::Matrix<float, Eigen::Dynamic, 3> disp(nv, 3);
+  for (Eigen::Index j = 0; j < nv; ++j)
+    disp.row(j) = (deformed[static_cast<size_t>(j)] - w.rest_vertices[static_cast<size_t>(j)])
+                      .cast<float>()
+                      .transpose();
+  std::vector<Vec3> out = w.points;
+  const auto np = static_cast<Eigen::Index>(out.size());
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, np, kRowsPerTask),
+                    [&](const tbb::blocked_range<Eigen::Index>& r) {
+                      const Eigen::Index rows = r.end() - r.begin();
+                      Eigen::Matrix<double, Eigen::Dynamic, 3> acc =
+                          Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(rows, 3);
+                      // Single-precision products over chunks of vertices, summed in double
+                      // precision.
+                      for (Eigen::Index j0 = 0; j0 < nv; j0 += kVerticesPerChunk) {
+                        const Eigen::Index cols = std::min(kVerticesPerChunk, nv - j0);
+                        acc +=
+                            (w.compact.block(r.begin(), j0, rows, cols) * disp.middleRows(j0, cols))
+                                .cast<double>();
+                      }
+                      for (Eigen::Index i = 0; i < rows; ++i)
+                        out[static_cast<size_t>(r.begin() + i)] += acc.row(i).transpose();
+                    });
   return out;
 }
 

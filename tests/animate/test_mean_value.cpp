@@ -178,3 +178,26 @@ TEST(MeanValue, RobustAtAndNearTheSurface) {
 
 }  // namespace
 }  // namespace sphereset
+
+namespace sphereset {
+namespace {
+
+// The per-frame update (single-precision weights, displacement form): exact at the rest pose,
+// and an affine map of the mesh moves the points by the map up to the weights' rounding.
+TEST(MeanValue, PerFrameUpdateFollowsAnAffineMap) {
+  const Mesh m = test::makeTorus(2.0, 0.6, 24, 12);
+  const std::vector<Vec3> pts = {{2.0, 0.0, 0.1}, {0.0, -2.2, -0.2}, {0.3, 0.2, 0.5}};
+  const MeanValueWeights w = meanValueWeights(m, pts);
+  const std::vector<Vec3> same = meanValuePoints(w, m.vertices);
+  for (size_t i = 0; i < pts.size(); ++i) EXPECT_EQ(same[i], pts[i]);
+  Eigen::Affine3d a(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+  a.translation() = Vec3(0.5, -1.0, 2.0);
+  a.linear() *= 1.3;
+  std::vector<Vec3> moved;
+  for (const Vec3& v : m.vertices) moved.push_back(a * v);
+  const std::vector<Vec3> got = meanValuePoints(w, moved);
+  for (size_t i = 0; i < pts.size(); ++i) EXPECT_LT((got[i] - a * pts[i]).norm(), 1e-5);
+}
+
+}  // namespace
+}  // namespace sphereset
