@@ -182,7 +182,9 @@ Expected<LoadedAnimation> loadAnimation(const std::string& path,
       if (out.asset.clips[a] == options.clip) anim = scene->mAnimations[a];
     if (!anim) {
       std::string list;
-      for (const std::string& c : out.asset.clips) list += (list.empty() ? "'" : ", '") + c + "'";
+      for (const std::string& c : out.asset.clips)
+        list +=
+            (list.empty() ? "" : ", ") + (c.empty() ? std::string("one unnamed") : "'" + c + "'");
       return Error{ErrorCode::kInvalidArgument,
                    path + ": no clip '" + options.clip + "' (it has " + list + ")"};
     }

@@ -4,11 +4,13 @@
 // against every sphere) confirms both.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <random>
 
 #include "animate/bent_bar.hpp"
 #include "sphereset/animate.hpp"
 #include "sphereset/solid_index.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
@@ -151,6 +153,81 @@ TEST(Animate, PointBoneWeightsFollowTheNearestSurface) {
   EXPECT_NEAR(w.row(2).sum(), 1.0, 1e-12);
   EXPECT_GT(w(2, 0), 0.0);
   EXPECT_GT(w(2, 1), 0.0);
+}
+
+}  // namespace
+}  // namespace sphereset
+
+namespace sphereset {
+namespace {
+
+// A skinned asset written here (Valve SMD, read through assimp): a 1 × 1 × 2 box whose bottom
+// follows bone "root" and whose top follows bone "tip" (at z = 1), turned about x by 0, 0.3 and
+// 0.6 radians in a 3-frame clip.
+std::string writeSkinnedBox(const std::filesystem::path& path) {
+  const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                       {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  std::ofstream f(path);
+  f << "version 1\nnodes\n0 \"root\" -1\n1 \"tip\" 0\nend\nskeleton\n";
+  const double angles[3] = {0.0, 0.3, 0.6};
+  for (int t = 0; t < 3; ++t)
+    f << "time " << t << "\n0 0 0 0 0 0 0\n1 0 0 1 " << angles[t] << " 0 0\n";
+  f << "end\ntriangles\n";
+  for (const auto& face : q)
+    for (const auto& tri : {std::array<int, 3>{face[0], face[1], face[2]},
+                            std::array<int, 3>{face[0], face[2], face[3]}}) {
+      f << "skin\n";
+      for (int i : tri) {
+        const int x = i & 1, y = (i >> 1) & 1, z = (i >> 2) & 1;
+        f << z << ' ' << x << ' ' << y << ' ' << 2 * z << " 0 0 1 0 0 1 " << z << " 1\n";
+      }
+    }
+  f << "end\n";
+  return path.string();
+}
+
+TEST(SkinnedAsset, ReadsBindPoseSkinAndClip) {
+  const std::string path = writeSkinnedBox(test::tempPath("skinned_box.smd"));
+  auto a = loadAnimation(path);
+  ASSERT_TRUE(a.ok()) << a.error().message;
+  ASSERT_EQ(a->asset.rest.vertices.size(), 8u);
+  EXPECT_GT(signedVolume(a->asset.rest), 1.99);
+  ASSERT_EQ(a->frames.size(), 3u);
+  for (const AnimationFrame& fr : a->frames) ASSERT_EQ(fr.vertices.size(), 8u);
+  const double angles[3] = {0.0, 0.3, 0.6};
+  for (int t = 0; t < 3; ++t) {
+    const Eigen::Affine3d tip = Eigen::Translation3d(0, 0, 1) *
+                                Eigen::AngleAxisd(angles[t], Vec3::UnitX()) *
+                                Eigen::Translation3d(0, 0, -1);
+    for (size_t i = 0; i < 8; ++i) {
+      const Vec3& v = a->asset.rest.vertices[i];
+      const Vec3 expect = v.z() > 1.0 ? Vec3(tip * v) : v;
+      EXPECT_LT((a->frames[t].vertices[i] - expect).norm(), 1e-5) << t << ' ' << i;
+    }
+  }
+  // Sampled at a rate instead of the keyframe times.
+  SkinnedLoadOptions o;
+  o.fps = 2.0 / a->duration;  // frames at 0, duration / 2, duration
+  auto b = loadAnimation(path, o);
+  ASSERT_TRUE(b.ok());
+  EXPECT_EQ(b->frames.size(), 3u);
+  o.clip = "walk";
+  auto c = loadAnimation(path, o);
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_NE(c.error().message.find("no clip 'walk'"), std::string::npos);
+  std::filesystem::remove(path);
+}
+
+TEST(SkinnedAsset, AnAssetWithoutAnimationIsAnError) {
+  const auto path = test::tempPath("static_box.off");
+  std::ofstream(path)
+      << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  auto a = loadAnimation(path.string());
+  ASSERT_FALSE(a.ok());
+  EXPECT_EQ(a.error().code, ErrorCode::kInvalidData);
+  EXPECT_NE(a.error().message.find("no animation"), std::string::npos);
+  std::filesystem::remove(path);
 }
 
 }  // namespace
