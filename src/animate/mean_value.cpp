@@ -35,6 +35,8 @@ constexpr double kOnEdgeEps = 1e-6;
 // the triangle's spherical projection has no area.
 // Rows of the per-frame update per parallel task.
 constexpr Eigen::Index kRowsPerTask = 16;
+// Weights (points × vertices) below which the update runs on one thread.
+constexpr Eigen::Index kParallelProduct = Eigen::Index{1} << 20;
 // Vertices per single-precision partial sum of the update (its rounding error grows with the
 // chunk's length; the chunks are summed in double precision).
 constexpr Eigen::Index kVerticesPerChunk = 512;
@@ -153,7 +155,10 @@ std::vector<Vec3> meanValuePoints(const MeanValueWeights& w, const std::vector<V
                       .transpose();
   std::vector<Vec3> out = w.points;
   const auto np = static_cast<Eigen::Index>(out.size());
-  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, np, kRowsPerTask),
+  // Small products run on the calling thread (waking workers would cost more than the work).
+  const Eigen::Index grain =
+      np * nv < kParallelProduct ? std::max<Eigen::Index>(np, 1) : kRowsPerTask;
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, np, grain),
                     [&](const tbb::blocked_range<Eigen::Index>& r) {
                       const Eigen::Index rows = r.end() - r.begin();
                       Eigen::Matrix<double, Eigen::Dynamic, 3> acc =
