@@ -27,7 +27,7 @@ namespace {
 constexpr const char* kHeader =
     "source,vertices,spheres,weighting,frames,weights_s,update_ms,covered_fixed,"
     "fraction_covered_fixed,mean_er_fixed,max_gap,mean_er_rebound,covered_rebound,"
-    "mean_radius_growth,max_radius_growth,mean_er_fresh,fresh_s";
+    "mean_radius_growth,max_radius_growth,mean_er_fresh,fresh_s,eval_s,rebound_s";
 
 int die(const std::string& m) {
   std::fprintf(stderr, "animate_table: %s\n", m.c_str());
@@ -133,10 +133,13 @@ int main(int argc, char** argv) {
     o.rebound = true;
     auto r = animateSpheres(m.rest, *spheres, m.frames, o, &m.skin);
     if (!r) return die(r.error().message);
+    double ev = 0.0, rb = 0.0;
     double upd = 0.0, er = 0.0, erb = 0.0, gap = 0.0, growth = 0.0, max_growth = 0.0;
     int64_t covered_rb = 0;
     for (const AnimateFrameResult& f : r->frames) {
       upd += f.update_seconds;
+      ev += f.eval_seconds;
+      rb += f.rebound_seconds;
       er += f.er;
       erb += f.er_rebound;
       gap = std::max(gap, f.max_gap);
@@ -146,14 +149,14 @@ int main(int argc, char** argv) {
     }
     const double nf = double(r->frames.size());
     const std::string name = source.substr(source.find_last_of('/') + 1);
-    std::printf("%s,%zu,%zu,%s,%zu,%.4f,%.5f,%lld,%.3f,%.4f,%.3g,%.4f,%lld,%.4f,%.4f,%s,%s\n",
-                name.c_str(), m.rest.vertices.size(), spheres->size(),
-                w == CentreWeighting::kBones ? "bones" : "mean_value", r->frames.size(),
-                r->weights_seconds, 1e3 * upd / nf, static_cast<long long>(r->frames_covered),
-                double(r->frames_covered) / nf, er / nf, gap, erb / nf,
-                static_cast<long long>(covered_rb), growth / nf, max_growth,
-                fresh ? std::to_string(er_fresh).c_str() : "",
-                fresh ? std::to_string(fresh_s).c_str() : "");
+    std::printf(
+        "%s,%zu,%zu,%s,%zu,%.4f,%.5f,%lld,%.3f,%.4f,%.3g,%.4f,%lld,%.4f,%.4f,%s,%s,%.3f,%.3f\n",
+        name.c_str(), m.rest.vertices.size(), spheres->size(),
+        w == CentreWeighting::kBones ? "bones" : "mean_value", r->frames.size(), r->weights_seconds,
+        1e3 * upd / nf, static_cast<long long>(r->frames_covered), double(r->frames_covered) / nf,
+        er / nf, gap, erb / nf, static_cast<long long>(covered_rb), growth / nf, max_growth,
+        fresh ? std::to_string(er_fresh).c_str() : "", fresh ? std::to_string(fresh_s).c_str() : "",
+        ev / nf, rb / nf);
     std::fflush(stdout);
   }
   return 0;
