@@ -96,6 +96,7 @@ struct RawSkin {
   std::vector<Vec3> vertices;
   std::vector<Triangle> triangles;
   std::vector<std::vector<std::pair<int32_t, double>>> weights;  // per raw vertex
+  std::vector<bool> rigid;  // per raw vertex: no aiBone moves it (it follows its mesh node)
   std::vector<BoneDef> bones;
 };
 
@@ -132,8 +133,10 @@ void collect(const aiScene* scene, const aiNode* node,
       if (sum > 0.0) {
         for (auto& bw : w[i]) bw.second /= sum;
         raw->weights.push_back(std::move(w[i]));
+        raw->rigid.push_back(false);
       } else {
         raw->weights.push_back({{rigid, 1.0}});
+        raw->rigid.push_back(true);
       }
     }
     for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
@@ -207,10 +210,25 @@ Expected<LoadedAnimation> loadAnimation(const std::string& path,
   std::vector<Triangle> tris = raw.triangles;
   for (Triangle& t : tris)
     for (int32_t& v : t) v = map[static_cast<size_t>(v)];
+  // The weights of a welded vertex: the mean of those of its copies that some aiBone moves (a
+  // file may weight only some copies of a split vertex), else its first copy's rigid bone.
   std::vector<int32_t> first_raw(welded.size(), -1);
-  for (size_t i = 0; i < map.size(); ++i)
-    if (first_raw[static_cast<size_t>(map[i])] < 0)
-      first_raw[static_cast<size_t>(map[i])] = static_cast<int32_t>(i);
+  std::vector<std::map<int32_t, double>> merged(welded.size());
+  std::vector<int> weighted(welded.size(), 0);
+  for (size_t i = 0; i < map.size(); ++i) {
+    const auto w = static_cast<size_t>(map[i]);
+    if (first_raw[w] < 0) first_raw[w] = static_cast<int32_t>(i);
+    if (raw.rigid[i]) continue;
+    ++weighted[w];
+    for (const auto& [b, x] : raw.weights[i]) merged[w][b] += x;
+  }
+  for (size_t w = 0; w < welded.size(); ++w) {
+    if (weighted[w] == 0) {
+      for (const auto& [b, x] : raw.weights[static_cast<size_t>(first_raw[w])]) merged[w][b] += x;
+    } else {
+      for (auto& bx : merged[w]) bx.second /= weighted[w];
+    }
+  }
   auto cleaned = cleanMesh(welded, tris, LoadOptions{}, path);
   if (!cleaned) return cleaned.error();
   out.asset.rest = std::move(cleaned->mesh);
@@ -225,13 +243,13 @@ Expected<LoadedAnimation> loadAnimation(const std::string& path,
     const auto it = by_pos.find({p.x(), p.y(), p.z()});
     if (it == by_pos.end())
       return Error{ErrorCode::kInvalidData, path + ": a cleaned vertex has no source vertex"};
-    source[i] = first_raw[static_cast<size_t>(it->second)];
+    source[i] = it->second;
   }
   const auto nb = static_cast<int>(raw.bones.size());
   out.asset.skin.bones = nb;
   out.asset.skin.vertex_weights = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(nv), nb);
   for (size_t i = 0; i < nv; ++i)
-    for (const auto& [b, w] : raw.weights[static_cast<size_t>(source[i])])
+    for (const auto& [b, w] : merged[static_cast<size_t>(source[i])])
       out.asset.skin.vertex_weights(static_cast<Eigen::Index>(i), b) += w;
   for (const BoneDef& b : raw.bones) out.asset.bone_names.push_back(b.name);
 
