@@ -134,6 +134,7 @@ int runAnimate(const AnimateArgs& a, const CLI::App* cmd) {
                         {"surface_covered", f.surface_covered},
                         {"interior_covered", f.interior_covered},
                         {"max_gap", f.max_gap},
+                        {"crossings", f.crossings},
                         {"update_seconds", f.update_seconds}};
     if (a.rebound) {
       j["er_rebound"] = f.er_rebound;
@@ -154,6 +155,7 @@ int runAnimate(const AnimateArgs& a, const CLI::App* cmd) {
                             {"rebound", a.rebound},
                             {"weights_seconds", res->weights_seconds},
                             {"frames_covered", res->frames_covered},
+                            {"frames_crossing", res->frames_crossing},
                             {"fraction_covered", n ? double(res->frames_covered) / double(n) : 0.0},
                             {"seconds", res->seconds},
                             {"frames", js}};
@@ -165,6 +167,10 @@ int runAnimate(const AnimateArgs& a, const CLI::App* cmd) {
     std::cerr << "animate: " << n << " frames, " << res->frames_covered
               << " covered with fixed radii (" << (bones ? "bone" : "mean value")
               << " weights), written to " << a.out << '\n';
+  if (!a.quiet && res->frames_crossing > 0)
+    std::cerr << "animate: " << res->frames_crossing
+              << " frames pass through themselves (crossing triangles): their E_r and coverage "
+                 "are not meaningful\n";
   return kOk;
 }
 

@@ -27,7 +27,7 @@ namespace {
 constexpr const char* kHeader =
     "source,vertices,spheres,weighting,frames,weights_s,update_ms,covered_fixed,"
     "fraction_covered_fixed,mean_er_fixed,max_gap,mean_er_rebound,covered_rebound,"
-    "mean_radius_growth,max_radius_growth,mean_er_fresh,fresh_s,eval_s,rebound_s";
+    "mean_radius_growth,max_radius_growth,mean_er_fresh,fresh_s,eval_s,rebound_s,frames_crossing";
 
 int die(const std::string& m) {
   std::fprintf(stderr, "animate_table: %s\n", m.c_str());
@@ -150,13 +150,14 @@ int main(int argc, char** argv) {
     const double nf = double(r->frames.size());
     const std::string name = source.substr(source.find_last_of('/') + 1);
     std::printf(
-        "%s,%zu,%zu,%s,%zu,%.4f,%.5f,%lld,%.3f,%.4f,%.3g,%.4f,%lld,%.4f,%.4f,%s,%s,%.3f,%.3f\n",
+        "%s,%zu,%zu,%s,%zu,%.4f,%.5f,%lld,%.3f,%.4f,%.3g,%.4f,%lld,%.4f,%.4f,%s,%s,%.3f,%.3f,%"
+        "lld\n",
         name.c_str(), m.rest.vertices.size(), spheres->size(),
         w == CentreWeighting::kBones ? "bones" : "mean_value", r->frames.size(), r->weights_seconds,
         1e3 * upd / nf, static_cast<long long>(r->frames_covered), double(r->frames_covered) / nf,
         er / nf, gap, erb / nf, static_cast<long long>(covered_rb), growth / nf, max_growth,
         fresh ? std::to_string(er_fresh).c_str() : "", fresh ? std::to_string(fresh_s).c_str() : "",
-        ev / nf, rb / nf);
+        ev / nf, rb / nf, static_cast<long long>(r->frames_crossing));
     std::fflush(stdout);
   }
   return 0;

@@ -88,6 +88,8 @@ struct AnimateOptions {
     e.shadow_resolution = 0;
     return e;
   }();
+  // Crossing pairs counted per frame (0 skips the check).
+  int64_t max_crossings = 1000;
   // Called after each frame with its index (from the calling thread).
   std::function<void(int frame, int frames)> progress;
 };
@@ -99,6 +101,10 @@ struct AnimateFrameResult {
   double er = 0.0;  // E_r: Σ outside volume / volume of the deformed mesh
   bool surface_covered = false, interior_covered = false;
   double max_gap = 0.0;  // largest surface or interior gap / diagonal of the deformed mesh
+  // Crossing triangle pairs of the deformed mesh (at most AnimateOptions::max_crossings are
+  // counted). Skinning can fold a mesh through itself; such a frame is no longer a solid, and
+  // its E_r and certificates (and a fresh fit) are not meaningful.
+  int64_t crossings = 0;
   // With rebound: the grown set (in `spheres`), certified again.
   double er_rebound = 0.0;
   bool rebound_covered = false;
@@ -115,6 +121,7 @@ struct AnimateResult {
   std::vector<AnimateFrameResult> frames;
   double weights_seconds = 0.0;  // precomputation of the centre weights
   int64_t frames_covered = 0;    // frames whose moved set covers surface and interior
+  int64_t frames_crossing = 0;   // frames whose deformed mesh passes through itself
   double seconds = 0.0;
 };
 

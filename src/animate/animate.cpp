@@ -16,6 +16,7 @@
 #include <string>
 
 #include "fit/bound.hpp"
+#include "sphereset/mesh_defects.hpp"
 #include "sphereset/solid_index.hpp"
 
 namespace sphereset {
@@ -149,6 +150,12 @@ Expected<AnimateResult> animateSpheres(const Mesh& rest, const std::vector<Spher
     if (!(signedVolume(deformed) > 0.0))
       return Error{ErrorCode::kNotSolid,
                    "frame " + std::to_string(f) + ": the deformed mesh has no positive volume"};
+    if (options.max_crossings > 0) {
+      SelfIntersectionOptions so;
+      so.max_pairs = options.max_crossings;
+      fr.crossings = static_cast<int64_t>(findSelfIntersections(deformed, so).pairs.size());
+      if (fr.crossings > 0) ++res.frames_crossing;
+    }
     const SolidIndex index(deformed);
     const Certificate c = certify(index, moved, options.eval);
     fr.er = c.er;

@@ -130,6 +130,23 @@ TEST(Animate, SharpBendLosesCoverageReboundRestoresIt) {
   }
 }
 
+TEST(Animate, FramesThatPassThroughThemselvesAreFlagged) {
+  const auto bar = makeBentBar();
+  // Bent by 2.5 radians about the bar's axis (not its inner edge): the inner side folds.
+  AnimationFrame fold;
+  const Vec3 joint(2.0, 0.0, 0.0);
+  fold.bones = {Eigen::Affine3d::Identity(),
+                Eigen::Affine3d(Eigen::Translation3d(joint) *
+                                Eigen::AngleAxisd(2.5, Vec3::UnitZ()) *
+                                Eigen::Translation3d(-joint))};
+  fold.vertices = skinPoints(bar.rest.vertices, bar.skin.vertex_weights, fold.bones);
+  auto r = animateSpheres(bar.rest, barSpheres(), {bendFrame(bar, 1.4), fold});
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->frames[0].crossings, 0);
+  EXPECT_GT(r->frames[1].crossings, 0);
+  EXPECT_EQ(r->frames_crossing, 1);
+}
+
 TEST(Animate, BadInput) {
   const auto bar = makeBentBar();
   AnimationFrame f = bendFrame(bar, 0.3);
