@@ -156,24 +156,27 @@ std::vector<Vec3> meanValuePoints(const MeanValueWeights& w, const std::vector<V
   std::vector<Vec3> out = w.points;
   const auto np = static_cast<Eigen::Index>(out.size());
   // Small products run on the calling thread (waking workers would cost more than the work).
+  // The simple partitioner always cuts the rows into the same blocks, so the products, and
+  // their rounding, do not depend on the number of threads.
   const Eigen::Index grain =
       np * nv < kParallelProduct ? std::max<Eigen::Index>(np, 1) : kRowsPerTask;
-  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, np, grain),
-                    [&](const tbb::blocked_range<Eigen::Index>& r) {
-                      const Eigen::Index rows = r.end() - r.begin();
-                      Eigen::Matrix<double, Eigen::Dynamic, 3> acc =
-                          Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(rows, 3);
-                      // Single-precision products over chunks of vertices, summed in double
-                      // precision.
-                      for (Eigen::Index j0 = 0; j0 < nv; j0 += kVerticesPerChunk) {
-                        const Eigen::Index cols = std::min(kVerticesPerChunk, nv - j0);
-                        acc +=
-                            (w.compact.block(r.begin(), j0, rows, cols) * disp.middleRows(j0, cols))
-                                .cast<double>();
-                      }
-                      for (Eigen::Index i = 0; i < rows; ++i)
-                        out[static_cast<size_t>(r.begin() + i)] += acc.row(i).transpose();
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<Eigen::Index>(0, np, grain),
+      [&](const tbb::blocked_range<Eigen::Index>& r) {
+        const Eigen::Index rows = r.end() - r.begin();
+        Eigen::Matrix<double, Eigen::Dynamic, 3> acc =
+            Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(rows, 3);
+        // Single-precision products over chunks of vertices, summed in double
+        // precision.
+        for (Eigen::Index j0 = 0; j0 < nv; j0 += kVerticesPerChunk) {
+          const Eigen::Index cols = std::min(kVerticesPerChunk, nv - j0);
+          acc += (w.compact.block(r.begin(), j0, rows, cols) * disp.middleRows(j0, cols))
+                     .cast<double>();
+        }
+        for (Eigen::Index i = 0; i < rows; ++i)
+          out[static_cast<size_t>(r.begin() + i)] += acc.row(i).transpose();
+      },
+      tbb::simple_partitioner());
   return out;
 }
 

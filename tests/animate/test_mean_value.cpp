@@ -201,3 +201,32 @@ TEST(MeanValue, PerFrameUpdateFollowsAnAffineMap) {
 
 }  // namespace
 }  // namespace sphereset
+
+#include <tbb/global_control.h>
+
+namespace sphereset {
+namespace {
+
+TEST(MeanValue, UpdateDoesNotDependOnTheThreadCount) {
+  // Large enough (points × vertices) for the update to run in parallel.
+  const Mesh m = test::makeIcosphere(1.0, 4);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  std::vector<Vec3> pts(512);
+  for (Vec3& p : pts) p = Vec3(u(rng), u(rng), u(rng));
+  const MeanValueWeights w = meanValueWeights(m, pts);
+  std::vector<Vec3> moved;
+  for (const Vec3& v : m.vertices) moved.push_back(Vec3(1.2 * v.x(), v.y() + 0.3 * v.x(), v.z()));
+  const std::vector<Vec3> many = meanValuePoints(w, moved);
+  std::vector<Vec3> one;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = meanValuePoints(w, moved);
+    const MeanValueWeights w1 = meanValueWeights(m, pts);
+    EXPECT_TRUE(w1.weights == w.weights);
+  }
+  EXPECT_EQ(one, many);
+}
+
+}  // namespace
+}  // namespace sphereset
