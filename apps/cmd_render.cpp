@@ -9,6 +9,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "sphereset/animate.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/render.hpp"
 #include "sphereset/robot.hpp"
@@ -27,6 +28,10 @@ struct RenderArgs {
   bool up_given = false;
   RenderOptions ro;
   bool no_ground = false;
+  // One PNG per frame of a deforming mesh (see renderFrames).
+  std::vector<std::string> frames;
+  std::string animation, clip, spheres_dir;
+  double fps = 0.0;
 };
 
 // Completes the render options from the text options; kInvalidArgument for a bad size, view
@@ -77,7 +82,8 @@ int renderRobot(const RenderArgs& a, RenderOptions ro) {
     if (!m) return fail(Error{m.error().code, a.mesh.path + ": " + m.error().message});
     const auto base = static_cast<int32_t>(all.vertices.size());
     for (const Vec3& v : m->vertices) all.vertices.push_back(pose->second * v);
-    for (Triangle t : m->triangles) all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    for (Triangle t : m->triangles)
+      all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
   }
   std::vector<Sphere> spheres;
   if (!a.spheres.empty()) {
@@ -100,10 +106,74 @@ int renderRobot(const RenderArgs& a, RenderOptions ro) {
   return kOk;
 }
 
+// The PNG of frame i: OUT's stem followed by _0000, _0001..., in OUT's folder.
+std::string framePng(const std::string& out, size_t i) {
+  const std::filesystem::path p(out);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "_%04zu.png", i);
+  return (p.parent_path() / (p.stem().string() + buf)).string();
+}
+
+// A deforming mesh, one PNG per frame: the rest mesh's triangles with each frame's vertices
+// (--frames meshes in the rest mesh's vertex order, or a skinned asset's clip), and the spheres
+// `animate` wrote for that frame (--spheres-dir). Everything is read before anything is
+// written.
+int renderFrames(const RenderArgs& a, const RenderOptions& ro) {
+  LoadOptions lo;
+  lo.weld_tolerance = std::max(0.0, a.mesh.weld);
+  auto rest = loadMesh(a.mesh.path, lo);
+  if (!rest) return fail(rest.error());
+  std::vector<std::vector<Vec3>> frames;
+  if (!a.animation.empty()) {
+    SkinnedLoadOptions so;
+    so.clip = a.clip;
+    so.fps = a.fps;
+    auto anim = loadAnimation(a.animation, so);
+    if (!anim) return fail(anim.error());
+    for (AnimationFrame& f : anim->frames) frames.push_back(std::move(f.vertices));
+  } else {
+    for (const std::string& path : a.frames) {
+      auto m = loadMesh(path, lo);
+      if (!m) return fail(m.error());
+      frames.push_back(std::move(m->mesh.vertices));
+    }
+  }
+  for (size_t i = 0; i < frames.size(); ++i)
+    if (frames[i].size() != rest->mesh.vertices.size())
+      return fail(Error{ErrorCode::kInvalidData,
+                        (a.animation.empty() ? a.frames[i] : a.animation) + ": frame " +
+                            std::to_string(i) + " has " + std::to_string(frames[i].size()) +
+                            " vertices, the rest mesh " + a.mesh.path + " has " +
+                            std::to_string(rest->mesh.vertices.size())});
+  std::vector<std::vector<Sphere>> spheres(frames.size());
+  if (!a.spheres_dir.empty())
+    for (size_t i = 0; i < frames.size(); ++i) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "frame_%04zu", i);
+      std::filesystem::path p = std::filesystem::path(a.spheres_dir) / (std::string(buf) + ".json");
+      if (!std::filesystem::exists(p)) p.replace_extension(".txt");
+      auto s = readSpheres(p.string());
+      if (!s) return fail(s.error());
+      spheres[i] = std::move(s).value();
+    }
+  for (size_t i = 0; i < frames.size(); ++i) {
+    const Mesh m{frames[i], rest->mesh.triangles};
+    const SolidIndex index(m);
+    auto img = renderScene(&index, spheres[i], ro);
+    if (!img) return fail(img.error());
+    Status st = writePng(framePng(a.out, i), *img);
+    if (!st) return fail(st.error());
+  }
+  return kOk;
+}
+
 int runRender(const RenderArgs& a) {
   RenderOptions ro = a.ro;
   Status opts = renderOptions(a, &ro);
   if (!opts) return fail(opts.error());
+  if (!a.frames.empty() || !a.animation.empty()) return renderFrames(a, ro);
+  if (!a.spheres_dir.empty())
+    return fail(Error{ErrorCode::kInvalidArgument, "--spheres-dir needs --frames or --animation"});
   if (std::filesystem::path(a.mesh.path).extension() == ".urdf") return renderRobot(a, ro);
   // The mesh is drawn even when it is not a closed solid.
   LoadOptions lo;
@@ -152,6 +222,18 @@ Command registerRender(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_flag("--no-ground", a->no_ground, "No ground plane");
+  auto* frames = cmd->add_option(
+      "--frames", a->frames,
+      "Deformed meshes in the mesh's vertex order: one PNG per frame, OUT_0000.png...");
+  auto* anim = cmd->add_option("--animation", a->animation,
+                               "Skinned, animated asset: one PNG per frame of its clip");
+  frames->excludes(anim);
+  cmd->add_option("--clip", a->clip, "Animation clip (default: the first)")->needs(anim);
+  cmd->add_option("--fps", a->fps, "Frames per second (default: the clip's keyframe times)")
+      ->needs(anim)
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--spheres-dir", a->spheres_dir,
+                  "Folder written by animate: frame_0000.json (or .txt)... drawn on the frames");
   return {cmd, [a] { return runRender(*a); }};
 }
 

@@ -22,5 +22,6 @@ Command registerExport(CLI::App& app);  // cmd_export.cpp
 Command registerQuery(CLI::App& app);   // cmd_query.cpp
 Command registerRobot(CLI::App& app);   // cmd_robot.cpp
 Command registerBatch(CLI::App& app);   // cmd_batch.cpp
+Command registerAnimate(CLI::App& app); // cmd_animate.cpp
 
 }  // namespace sphereset::cli

@@ -270,3 +270,53 @@ cli_test(batch_empty 0 ARGS batch ${work}/batch_empty -o ${work}/batch_empty_out
          STDERR "batch_empty: no meshes")
 cli_test(batch_bad_format 2 ARGS batch ${work}/batch_ok -o ${work}/never42 --format obj
          FORBID ${work}/never42)
+
+# Animation: a 1 x 1 x 2 box, rest and two deformed frames with the same vertices (the top
+# sheared, then pulled out), a skinned SMD box of two bones whose top bends in a 3-frame clip
+# (written here, no external asset), and a tetrahedron (a different vertex count).
+file(WRITE ${work}/box_rest.off "OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 2\n1 0 2\n0 1 2\n1 1 2\n3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n")
+file(WRITE ${work}/box_f1.off "OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0.3 0 2\n1.3 0 2\n0.3 1 2\n1.3 1 2\n3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n")
+file(WRITE ${work}/box_f2.off "OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0.5 0 2.6\n1.5 0 2.6\n0.5 1 2.6\n1.5 1 2.6\n3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n")
+file(WRITE ${work}/tet.off "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
+file(WRITE ${work}/box_one.txt "0.5 0.5 1 1.23\n")
+file(WRITE ${work}/box.smd "version 1\nnodes\n0 \"root\" -1\n1 \"tip\" 0\nend\nskeleton\ntime 0\n0 0 0 0 0 0 0\n1 0 0 1 0 0 0\ntime 1\n0 0 0 0 0 0 0\n1 0 0 1 0.3 0 0\ntime 2\n0 0 0 0 0 0 0\n1 0 0 1 0.6 0 0\nend\ntriangles\nskin\n0 0 0 0 0 0 1 0 0 1 0 1\n0 0 1 0 0 0 1 0 0 1 0 1\n0 1 1 0 0 0 1 0 0 1 0 1\nskin\n0 0 0 0 0 0 1 0 0 1 0 1\n0 1 1 0 0 0 1 0 0 1 0 1\n0 1 0 0 0 0 1 0 0 1 0 1\nskin\n1 0 0 2 0 0 1 0 0 1 1 1\n1 1 0 2 0 0 1 0 0 1 1 1\n1 1 1 2 0 0 1 0 0 1 1 1\nskin\n1 0 0 2 0 0 1 0 0 1 1 1\n1 1 1 2 0 0 1 0 0 1 1 1\n1 0 1 2 0 0 1 0 0 1 1 1\nskin\n0 0 0 0 0 0 1 0 0 1 0 1\n0 1 0 0 0 0 1 0 0 1 0 1\n1 1 0 2 0 0 1 0 0 1 1 1\nskin\n0 0 0 0 0 0 1 0 0 1 0 1\n1 1 0 2 0 0 1 0 0 1 1 1\n1 0 0 2 0 0 1 0 0 1 1 1\nskin\n0 0 1 0 0 0 1 0 0 1 0 1\n1 0 1 2 0 0 1 0 0 1 1 1\n1 1 1 2 0 0 1 0 0 1 1 1\nskin\n0 0 1 0 0 0 1 0 0 1 0 1\n1 1 1 2 0 0 1 0 0 1 1 1\n0 1 1 0 0 0 1 0 0 1 0 1\nskin\n0 0 0 0 0 0 1 0 0 1 0 1\n1 0 0 2 0 0 1 0 0 1 1 1\n1 0 1 2 0 0 1 0 0 1 1 1\nskin\n0 0 0 0 0 0 1 0 0 1 0 1\n1 0 1 2 0 0 1 0 0 1 1 1\n0 0 1 0 0 0 1 0 0 1 0 1\nskin\n0 1 0 0 0 0 1 0 0 1 0 1\n0 1 1 0 0 0 1 0 0 1 0 1\n1 1 1 2 0 0 1 0 0 1 1 1\nskin\n0 1 0 0 0 0 1 0 0 1 0 1\n1 1 1 2 0 0 1 0 0 1 1 1\n1 1 0 2 0 0 1 0 0 1 1 1\nend\n")
+cli_test(animate_frames 0 ARGS animate ${work}/box_rest.off ${work}/box_one.txt -o ${work}/anim
+         --frames ${work}/box_f1.off ${work}/box_f2.off --rebound -q
+         FILE ${work}/anim/frame_0001.json SPHERES 1)
+cli_test(animate_summary 0 ARGS animate ${work}/box_rest.off ${work}/box_one.txt -o ${work}/anim_s
+         --frames ${work}/box_rest.off ${work}/box_f2.off --rebound --format txt
+         STDERR "frame 2/2.*2 frames, 1 covered with fixed radii .mean value weights."
+         FILE ${work}/anim_s/summary.json)
+cli_test(animate_txt_frame 0 ARGS animate ${work}/box_rest.off ${work}/box_one.txt -o ${work}/anim_t
+         --frames ${work}/box_f1.off --format txt -q FILE ${work}/anim_t/frame_0000.txt SPHERES 1)
+cli_test(animate_skinned 0 ARGS animate ${work}/box.smd ${work}/box_one.txt -o ${work}/anim_smd
+         --animation ${work}/box.smd --rebound STDERR "3 frames, [0-9] covered with fixed radii .bone weights."
+         FILE ${work}/anim_smd/frame_0002.json SPHERES 1)
+cli_test(animate_skinned_fps 0 ARGS animate ${work}/box.smd ${work}/box_one.txt -o ${work}/anim_fps
+         --animation ${work}/box.smd --fps 50 --weighting mvc -q FILE ${work}/anim_fps/summary.json)
+cli_test(animate_vertex_mismatch 4 ARGS animate ${work}/box_rest.off ${work}/box_one.txt
+         -o ${work}/never60 --frames ${work}/box_f1.off ${work}/tet.off
+         STDERR "tet.off: 4 vertices, the rest mesh .*box_rest.off has 8" FORBID ${work}/never60)
+cli_test(animate_no_animation 4 ARGS animate ${work}/box_rest.off ${work}/box_one.txt
+         -o ${work}/never61 --animation ${work}/box_rest.off
+         STDERR "box_rest.off: the asset has no animation" FORBID ${work}/never61)
+cli_test(animate_unknown_clip 2 ARGS animate ${work}/box.smd ${work}/box_one.txt -o ${work}/never62
+         --animation ${work}/box.smd --clip walk STDERR "box.smd: no clip 'walk' .it has one unnamed"
+         FORBID ${work}/never62)
+cli_test(animate_frames_and_animation 2 ARGS animate ${work}/box_rest.off ${work}/box_one.txt
+         -o ${work}/never63 --frames ${work}/box_f1.off --animation ${work}/box.smd
+         FORBID ${work}/never63)
+cli_test(animate_neither 2 ARGS animate ${work}/box_rest.off ${work}/box_one.txt -o ${work}/never64
+         STDERR "give either --frames or --animation" FORBID ${work}/never64)
+cli_test(animate_bad_spheres 4 ARGS animate ${work}/box_rest.off ${work}/bad.txt -o ${work}/never65
+         --frames ${work}/box_f1.off STDERR "bad.txt:1: expected four numbers" FORBID ${work}/never65)
+cli_test(render_frames 0 ARGS render ${work}/box_rest.off --frames ${work}/box_f1.off
+         ${work}/box_f2.off --spheres-dir ${work}/anim -o ${work}/anim_shot.png --size 160x120
+         FILE ${work}/anim_shot_0001.png)
+set_tests_properties(cli.render_frames PROPERTIES DEPENDS cli.animate_frames)
+cli_test(render_animation 0 ARGS render ${work}/box.smd --animation ${work}/box.smd
+         --spheres-dir ${work}/anim_smd -o ${work}/smd_shot.png --size 160x120
+         FILE ${work}/smd_shot_0002.png)
+set_tests_properties(cli.render_animation PROPERTIES DEPENDS cli.animate_skinned)
+cli_test(render_frames_mismatch 4 ARGS render ${work}/box_rest.off --frames ${work}/tet.off
+         -o ${work}/never66.png STDERR "tet.off: frame 0 has 4 vertices" FORBID ${work}/never66_0000.png)

@@ -1,0 +1,251 @@
+// Animated sphere sets on a bar bent by two bones: centres follow the mesh (mean value
+// coordinates and bone weights), fixed radii lose coverage at a sharp bend, the rebound
+// restores it, and an independent brute-force check (random points on the deformed triangles
+// against every sphere) confirms both.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
+
+#include "animate/bent_bar.hpp"
+#include "sphereset/animate.hpp"
+#include "sphereset/solid_index.hpp"
+#include "test_support.hpp"
+
+namespace sphereset {
+namespace {
+
+using test::bendFrame;
+using test::makeBentBar;
+
+// Spheres along the bar, each just holding the square cross-sections within ±0.25 of its
+// centre: a tight cover of the straight bar.
+std::vector<Sphere> barSpheres() {
+  std::vector<Sphere> s;
+  for (int i = 0; i < 8; ++i) s.push_back({Vec3(0.25 + 0.5 * i, 0.0, 0.0), std::sqrt(0.5625)});
+  return s;
+}
+
+// Uniform random points on the triangles (by area) plus every vertex: how many lie in no sphere.
+int64_t uncoveredSamples(const Mesh& m, const std::vector<Sphere>& s, int64_t samples,
+                         uint64_t seed) {
+  constexpr double kTol = 1e-9;  // absolute, the bar is 4 units long
+  auto covered = [&](const Vec3& p) {
+    for (const Sphere& b : s)
+      if ((p - b.center).norm() <= b.radius + kTol) return true;
+    return false;
+  };
+  std::vector<double> cdf;
+  double total = 0.0;
+  for (const Triangle& t : m.triangles) {
+    total +=
+        0.5 *
+        (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]).norm();
+    cdf.push_back(total);
+  }
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int64_t missed = 0;
+  for (const Vec3& v : m.vertices) missed += !covered(v);
+  for (int64_t k = 0; k < samples; ++k) {
+    const auto it = std::lower_bound(cdf.begin(), cdf.end(), u(rng) * total);
+    const Triangle& t = m.triangles[std::min<size_t>(it - cdf.begin(), cdf.size() - 1)];
+    double a = u(rng), b = u(rng);
+    if (a + b > 1.0) a = 1.0 - a, b = 1.0 - b;
+    const Vec3 p = m.vertices[t[0]] + a * (m.vertices[t[1]] - m.vertices[t[0]]) +
+                   b * (m.vertices[t[2]] - m.vertices[t[0]]);
+    missed += !covered(p);
+  }
+  return missed;
+}
+
+TEST(Animate, RestFrameKeepsTheSetAndItsCoverage) {
+  const auto bar = makeBentBar();
+  const auto spheres = barSpheres();
+  for (CentreWeighting w : {CentreWeighting::kMeanValue, CentreWeighting::kBones}) {
+    AnimateOptions o;
+    o.weighting = w;
+    auto r = animateSpheres(bar.rest, spheres, {bendFrame(bar, 0.0)}, o, &bar.skin);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    ASSERT_EQ(r->frames.size(), 1u);
+    for (size_t i = 0; i < spheres.size(); ++i) {
+      EXPECT_LT((r->frames[0].spheres[i].center - spheres[i].center).norm(), 1e-9);
+      EXPECT_EQ(r->frames[0].spheres[i].radius, spheres[i].radius);
+    }
+    EXPECT_TRUE(r->frames[0].surface_covered);
+    EXPECT_EQ(r->frames_covered, 1);
+  }
+}
+
+TEST(Animate, RigidPartsMoveRigidly) {
+  // Far from the joint the mesh moves rigidly with bone 1, so both weightings move the last
+  // centre exactly with it.
+  const auto bar = makeBentBar();
+  const auto spheres = barSpheres();
+  const AnimationFrame f = bendFrame(bar, 0.6);
+  for (CentreWeighting w : {CentreWeighting::kMeanValue, CentreWeighting::kBones}) {
+    AnimateOptions o;
+    o.weighting = w;
+    auto r = animateSpheres(bar.rest, spheres, {f}, o, &bar.skin);
+    ASSERT_TRUE(r.ok());
+    const Vec3 expect = f.bones[1] * spheres.back().center;
+    // MVC of an interior point depend on the whole mesh, so only bone weights are exact.
+    EXPECT_LT((r->frames[0].spheres.back().center - expect).norm(),
+              w == CentreWeighting::kBones ? 1e-12 : 0.05);
+  }
+}
+
+TEST(Animate, SharpBendLosesCoverageReboundRestoresIt) {
+  const auto bar = makeBentBar();
+  const auto spheres = barSpheres();
+  const AnimationFrame f = bendFrame(bar, 1.4);  // about 80 degrees over a short blend
+  const Mesh deformed{f.vertices, bar.rest.triangles};
+  for (CentreWeighting w : {CentreWeighting::kMeanValue, CentreWeighting::kBones}) {
+    AnimateOptions o;
+    o.weighting = w;
+    o.rebound = false;
+    auto fixed = animateSpheres(bar.rest, spheres, {f}, o, &bar.skin);
+    ASSERT_TRUE(fixed.ok());
+    const AnimateFrameResult& a = fixed->frames[0];
+    EXPECT_FALSE(a.surface_covered);
+    EXPECT_GT(a.max_gap, 0.0);
+    EXPECT_EQ(fixed->frames_covered, 0);
+    EXPECT_GT(uncoveredSamples(deformed, a.spheres, 20000, 3), 0);
+
+    o.rebound = true;
+    auto grown = animateSpheres(bar.rest, spheres, {f}, o, &bar.skin);
+    ASSERT_TRUE(grown.ok());
+    const AnimateFrameResult& b = grown->frames[0];
+    EXPECT_FALSE(b.surface_covered);  // the moved set itself, before the rebound
+    EXPECT_TRUE(b.rebound_covered);
+    EXPECT_EQ(uncoveredSamples(deformed, b.spheres, 200000, 5), 0);
+    EXPECT_GT(b.grown, 0);
+    EXPECT_GT(b.radius_growth, 0.0);
+    EXPECT_GE(b.er_rebound, b.er);
+    // Centres are those of the moved set; radii only grew.
+    for (size_t i = 0; i < spheres.size(); ++i) {
+      EXPECT_EQ(b.spheres[i].center, a.spheres[i].center);
+      EXPECT_GE(b.spheres[i].radius, a.spheres[i].radius);
+    }
+  }
+}
+
+TEST(Animate, FramesThatPassThroughThemselvesAreFlagged) {
+  const auto bar = makeBentBar();
+  // Bent by 2.5 radians about the bar's axis (not its inner edge): the inner side folds.
+  AnimationFrame fold;
+  const Vec3 joint(2.0, 0.0, 0.0);
+  fold.bones = {Eigen::Affine3d::Identity(),
+                Eigen::Affine3d(Eigen::Translation3d(joint) *
+                                Eigen::AngleAxisd(2.5, Vec3::UnitZ()) *
+                                Eigen::Translation3d(-joint))};
+  fold.vertices = skinPoints(bar.rest.vertices, bar.skin.vertex_weights, fold.bones);
+  auto r = animateSpheres(bar.rest, barSpheres(), {bendFrame(bar, 1.4), fold});
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->frames[0].crossings, 0);
+  EXPECT_GT(r->frames[1].crossings, 0);
+  EXPECT_EQ(r->frames_crossing, 1);
+}
+
+TEST(Animate, BadInput) {
+  const auto bar = makeBentBar();
+  AnimationFrame f = bendFrame(bar, 0.3);
+  f.vertices.pop_back();
+  auto r = animateSpheres(bar.rest, barSpheres(), {f});
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_NE(r.error().message.find("vertices"), std::string::npos);
+  AnimateOptions o;
+  o.weighting = CentreWeighting::kBones;
+  EXPECT_FALSE(animateSpheres(bar.rest, barSpheres(), {bendFrame(bar, 0.3)}, o).ok());
+  EXPECT_FALSE(animateSpheres(bar.rest, {}, {bendFrame(bar, 0.3)}).ok());
+}
+
+TEST(Animate, PointBoneWeightsFollowTheNearestSurface) {
+  const auto bar = makeBentBar();
+  const Eigen::MatrixXd w =
+      pointBoneWeights(bar.rest, bar.skin, {{0.5, 0.0, 0.0}, {3.5, 0.1, 0.0}, {2.0, 0.0, 0.0}}, 8);
+  EXPECT_NEAR(w(0, 0), 1.0, 1e-12);
+  EXPECT_NEAR(w(1, 1), 1.0, 1e-12);
+  EXPECT_NEAR(w.row(2).sum(), 1.0, 1e-12);
+  EXPECT_GT(w(2, 0), 0.0);
+  EXPECT_GT(w(2, 1), 0.0);
+}
+
+}  // namespace
+}  // namespace sphereset
+
+namespace sphereset {
+namespace {
+
+// A skinned asset written here (Valve SMD, read through assimp): a 1 × 1 × 2 box whose bottom
+// follows bone "root" and whose top follows bone "tip" (at z = 1), turned about x by 0, 0.3 and
+// 0.6 radians in a 3-frame clip.
+std::string writeSkinnedBox(const std::filesystem::path& path) {
+  const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                       {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  std::ofstream f(path);
+  f << "version 1\nnodes\n0 \"root\" -1\n1 \"tip\" 0\nend\nskeleton\n";
+  const double angles[3] = {0.0, 0.3, 0.6};
+  for (int t = 0; t < 3; ++t)
+    f << "time " << t << "\n0 0 0 0 0 0 0\n1 0 0 1 " << angles[t] << " 0 0\n";
+  f << "end\ntriangles\n";
+  for (const auto& face : q)
+    for (const auto& tri : {std::array<int, 3>{face[0], face[1], face[2]},
+                            std::array<int, 3>{face[0], face[2], face[3]}}) {
+      f << "skin\n";
+      for (int i : tri) {
+        const int x = i & 1, y = (i >> 1) & 1, z = (i >> 2) & 1;
+        f << z << ' ' << x << ' ' << y << ' ' << 2 * z << " 0 0 1 0 0 1 " << z << " 1\n";
+      }
+    }
+  f << "end\n";
+  return path.string();
+}
+
+TEST(SkinnedAsset, ReadsBindPoseSkinAndClip) {
+  const std::string path = writeSkinnedBox(test::tempPath("skinned_box.smd"));
+  auto a = loadAnimation(path);
+  ASSERT_TRUE(a.ok()) << a.error().message;
+  ASSERT_EQ(a->asset.rest.vertices.size(), 8u);
+  EXPECT_GT(signedVolume(a->asset.rest), 1.99);
+  ASSERT_EQ(a->frames.size(), 3u);
+  for (const AnimationFrame& fr : a->frames) ASSERT_EQ(fr.vertices.size(), 8u);
+  const double angles[3] = {0.0, 0.3, 0.6};
+  for (int t = 0; t < 3; ++t) {
+    const Eigen::Affine3d tip = Eigen::Translation3d(0, 0, 1) *
+                                Eigen::AngleAxisd(angles[t], Vec3::UnitX()) *
+                                Eigen::Translation3d(0, 0, -1);
+    for (size_t i = 0; i < 8; ++i) {
+      const Vec3& v = a->asset.rest.vertices[i];
+      const Vec3 expect = v.z() > 1.0 ? Vec3(tip * v) : v;
+      EXPECT_LT((a->frames[t].vertices[i] - expect).norm(), 1e-5) << t << ' ' << i;
+    }
+  }
+  // Sampled at a rate instead of the keyframe times.
+  SkinnedLoadOptions o;
+  o.fps = 2.0 / a->duration;  // frames at 0, duration / 2, duration
+  auto b = loadAnimation(path, o);
+  ASSERT_TRUE(b.ok());
+  EXPECT_EQ(b->frames.size(), 3u);
+  o.clip = "walk";
+  auto c = loadAnimation(path, o);
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_NE(c.error().message.find("no clip 'walk'"), std::string::npos);
+  std::filesystem::remove(path);
+}
+
+TEST(SkinnedAsset, AnAssetWithoutAnimationIsAnError) {
+  const auto path = test::tempPath("static_box.off");
+  std::ofstream(path)
+      << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  auto a = loadAnimation(path.string());
+  ASSERT_FALSE(a.ok());
+  EXPECT_EQ(a.error().code, ErrorCode::kInvalidData);
+  EXPECT_NE(a.error().message.find("no animation"), std::string::npos);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace sphereset
