@@ -56,7 +56,9 @@ class Progress {
     ++done_;
     if (r.status == BatchStatus::kSkipped) ++skipped_;
     if (r.status == BatchStatus::kError) ++failed_;
-    if (r.status == BatchStatus::kOk && !r.covered) ++uncovered_;
+    // An item skipped as up to date keeps its recorded coverage: a resumed batch exits as the
+    // first run did.
+    if (r.status != BatchStatus::kError && !r.covered) ++uncovered_;
     if (r.status != BatchStatus::kSkipped) ++run_;
     if (quiet_) return;
     const double t = seconds();

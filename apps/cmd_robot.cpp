@@ -14,6 +14,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "cli_common.hpp"
@@ -53,7 +54,8 @@ struct LinkJob {
   std::unique_ptr<SolidIndex> index;
   RepairResult repair;
   std::vector<Sphere> primitives;
-  int fixed = -1;  // -1: from the budget
+  int fixed = -1;        // -1: from the budget
+  bool skipped = false;  // --link-spheres LINK=0: not fitted, not written (keeps its collisions)
   double padding = 0.0;
   LinkFitCurve curve;
   int count = 0;         // the count chosen
@@ -95,10 +97,13 @@ Expected<std::map<std::string, T>> namedValues(const std::vector<std::string>& i
       const std::string v = item.substr(eq + 1);
       const double x = std::stod(v, &used);
       if (used != v.size() || !(x >= 0.0) || !std::isfinite(x)) throw std::invalid_argument(v);
+      if (std::is_integral_v<T> && (x != std::floor(x) || x > 1e6)) throw std::invalid_argument(v);
       out[name] = static_cast<T>(x);
     } catch (const std::exception&) {
       return Error{ErrorCode::kInvalidArgument,
-                   std::string(option) + " " + item + ": the value must be a number >= 0"};
+                   std::string(option) + " " + item +
+                       (std::is_integral_v<T> ? ": the value must be a whole number >= 0"
+                                              : ": the value must be a number >= 0")};
     }
   }
   return out;
@@ -171,7 +176,16 @@ Status chooseCounts(const RobotArgs& a, std::vector<LinkJob>* jobs) {
     any_free = any_free || j.fixed < 0;
   }
   if (a.budget <= 0 || !any_free) {
-    for (LinkJob& j : *jobs) j.count = j.fixed >= 0 ? j.fixed : kDefaultLinkSpheres;
+    int total = 0;
+    for (LinkJob& j : *jobs) {
+      j.count = j.fixed >= 0 ? j.fixed : kDefaultLinkSpheres;
+      total += j.count + static_cast<int>(j.primitives.size());
+    }
+    if (a.budget > 0 && total > a.budget)
+      return Error{ErrorCode::kInvalidArgument, a.urdf + ": --budget " + std::to_string(a.budget) +
+                                                    ": the links' fixed counts "
+                                                    "and sphere primitives already come to " +
+                                                    std::to_string(total)};
     return {};
   }
   // Curves of the free links, the links in parallel (each fit is parallel too, and gives the
@@ -195,10 +209,17 @@ Status chooseCounts(const RobotArgs& a, std::vector<LinkJob>* jobs) {
     fixed.push_back(j.fixed);
     primitives += static_cast<int>(j.primitives.size());
   }
+  // The budget counts the sphere primitives, which are not fitted.
+  auto budgetError = [&](const Error& e) {
+    return Error{e.code, a.urdf + ": --budget " + std::to_string(a.budget) + ": " + e.message +
+                             (primitives > 0 ? " (after the URDF's " + std::to_string(primitives) +
+                                                   " sphere primitives)"
+                                             : "")};
+  };
   auto split = splitBudget(curves, fixed, a.budget - primitives);
-  if (!split) return split.error();
+  if (!split) return budgetError(split.error());
   auto even = evenSplit(fixed, a.budget - primitives);
-  if (!even) return even.error();
+  if (!even) return budgetError(even.error());
   for (size_t i = 0; i < jobs->size(); ++i) {
     LinkJob& j = (*jobs)[i];
     j.count = (*split)[i];
@@ -317,8 +338,8 @@ nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const std::vect
     nlohmann::json l = {{"link", j.link->name},      {"spheres", s},
                         {"count", j.spheres.size()}, {"primitives", j.primitives.size()},
                         {"files", j.files},          {"from_visual", j.link->from_visual},
-                        {"covered", covered(j)},     {"padding", j.padding},
-                        {"seconds", j.seconds}};
+                        {"skipped", j.skipped},      {"covered", covered(j)},
+                        {"padding", j.padding},      {"seconds", j.seconds}};
     if (!j.curve.counts.empty())
       l["budget_curve"] = {{"counts", j.curve.counts}, {"outside_volume", j.curve.outside_volume}};
     if (j.split_count >= 0)
@@ -349,7 +370,11 @@ void printSummary(const std::vector<LinkJob>& jobs, double seconds) {
     std::fprintf(stderr, "%-28s %9zu %-10s %7zu %9.4f %7s %7.2f\n", j.link->name.c_str(),
                  j.index ? j.repair.original.triangles.size() : size_t{0},
                  j.index ? repairName(j.repair.kind) : "-", j.spheres.size(),
-                 j.index ? j.eval.er_sum : 0.0, covered(j) ? "yes" : "NO", j.seconds);
+                 j.index ? j.eval.er_sum : 0.0,
+                 j.skipped    ? "skipped"
+                 : covered(j) ? "yes"
+                              : "NO",
+                 j.seconds);
   for (const LinkJob& j : jobs)
     if (j.link->from_visual)
       std::fprintf(stderr, "%s: no <collision> geometry, its <visual> geometry was used\n",
@@ -383,13 +408,18 @@ int runRobot(const RobotArgs& a) {
   if (!jobs) return fail(jobs.error());
   for (LinkJob& j : *jobs) {
     if (auto it = counts->find(j.link->name); it != counts->end()) j.fixed = it->second;
+    if (j.fixed == 0) {
+      j.skipped = true;
+      j.primitives.clear();
+    }
     auto p = pads->find(j.link->name);
     j.padding = p != pads->end() ? p->second : a.padding;
   }
   if (Status s = chooseCounts(a, &*jobs); !s) return fail(s.error());
   if (Status s = fitLinks(a, &*jobs); !s) return fail(s.error());
   std::vector<LinkSpheres> out;
-  for (const LinkJob& j : *jobs) out.push_back({j.link->name, j.spheres});
+  for (const LinkJob& j : *jobs)
+    if (!j.skipped) out.push_back({j.link->name, j.spheres});
   Status st;
   if (ext == ".json") {
     st = writeTextFile(a.out_path, robotJson(a, *robot, *jobs).dump(1) + "\n");

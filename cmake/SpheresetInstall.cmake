@@ -63,7 +63,7 @@ install(FILES ${PROJECT_BINARY_DIR}/spheresetConfig.cmake
 
 # pkg-config: a static library's dependencies are part of `pkg-config --libs sphereset`; a shared
 # one's are private.
-set(SPHERESET_PC_DEPENDENCIES "tbb assimp nlopt libpng yaml-cpp urdfdom")
+set(SPHERESET_PC_DEPENDENCIES "tbb assimp nlopt libpng yaml-cpp urdfdom tinyxml")
 if(BUILD_SHARED_LIBS)
   set(SPHERESET_PC_REQUIRES "eigen3")
   set(SPHERESET_PC_REQUIRES_PRIVATE "${SPHERESET_PC_DEPENDENCIES}")

@@ -12,6 +12,7 @@ packages=(
   nlohmann-json3-dev   # JSON input and output
   libyaml-cpp-dev      # YAML sphere files (cuRobo)
   liburdfdom-dev       # robot descriptions (URDF parser)
+  libtinyxml-dev       # URDF elements read and rewritten (the XML library urdfdom uses)
   libnlopt-cxx-dev     # derivative-free and gradient optimisers
   libgtest-dev         # unit tests
   libbenchmark-dev     # micro-benchmarks
