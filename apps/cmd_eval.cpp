@@ -1,5 +1,8 @@
 // sphereset eval: measures how tightly a sphere set (or each level of a tree) bounds a mesh.
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -9,6 +12,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "sphereset/evaluate.hpp"
+#include "sphereset/robot.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/sphere_tree.hpp"
@@ -19,6 +23,7 @@ namespace {
 struct EvalArgs {
   MeshArgs mesh;
   std::string spheres_path, up = "y", link;
+  std::vector<std::string> package_paths;  // MESH a URDF: where its package:// meshes are
   EvalOptions eo;
   bool json = false;
 };
@@ -77,7 +82,30 @@ int runEval(EvalArgs a) {
   EvalOptions& eo = a.eo;
   const std::string& spheres_path = a.spheres_path;
   eo.up_axis = a.up[0] - 'x';
-  auto m = loadSolid(a.mesh);
+  // MESH may be a URDF: the --link's collision geometry is then measured, placed in the link
+  // frame and repaired as the robot command does.
+  std::string ext = std::filesystem::path(a.mesh.path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  Expected<SolidInput> m = Error{ErrorCode::kInvalidArgument, ""};
+  if (ext == ".urdf") {
+    if (a.link.empty())
+      return fail(Error{ErrorCode::kInvalidArgument,
+                        a.mesh.path + ": a URDF needs --link LINK (the link to measure)"});
+    RobotLoadOptions lo;
+    lo.package_paths = a.package_paths;
+    auto robot = loadRobot(a.mesh.path, lo);
+    if (!robot) return fail(robot.error());
+    const RobotLink* link = nullptr;
+    for (const RobotLink& l : robot->links)
+      if (l.name == a.link) link = &l;
+    if (!link)
+      return fail(Error{ErrorCode::kInvalidArgument,
+                        a.mesh.path + ": no link '" + a.link + "' in " + robot->name});
+    m = linkSolid(*link, repairOptions(a.mesh), a.mesh.path + ": link '" + a.link + "'");
+  } else {
+    m = loadSolid(a.mesh);
+  }
   if (!m) return fail(m.error());
   // A tree file gets one report per level (root first); a plain set one report; --link picks
   // one link of a file of several (a robot's YAML) and reports it as a plain set.
@@ -149,7 +177,10 @@ Command registerEval(CLI::App& app) {
   addMeshArgs(cmd, &a->mesh);
   cmd->add_option("spheres", a->spheres_path, "Sphere set (.txt, .json, .sph, .yaml)")->required();
   cmd->add_option("--link", a->link,
-                  "The link to measure, in a file of several (a robot's YAML from `robot`)");
+                  "The link to measure, in a file of several (a robot's YAML from `robot`); "
+                  "with a URDF as MESH, also the link whose geometry is measured");
+  cmd->add_option("--package-path", a->package_paths,
+                  "With a URDF as MESH: folder searched for package://NAME/ paths (repeatable)");
   cmd->add_flag("--json", a->json, "Print one JSON object");
   cmd->add_option("--seed", eo.seed, "Seed for all sampling")->capture_default_str();
   cmd->add_option("--samples", eo.union_samples, "Monte Carlo samples for the union's E_r")

@@ -138,28 +138,18 @@ Expected<std::vector<LinkJob>> prepareLinks(const RobotArgs& a, const Robot& rob
     const RobotLink& link = *j.link;
     const std::string name = a.urdf + ": link '" + link.name + "'";
     j.primitives = linkSpheres(link);
-    RobotLink rest = link;
-    std::erase_if(rest.geometry,
-                  [](const LinkGeometry& g) { return g.kind == LinkGeometry::Kind::kSphere; });
-    for (const LinkGeometry& g : rest.geometry)
+    bool fitted = false;
+    for (const LinkGeometry& g : link.geometry) {
       if (g.kind == LinkGeometry::Kind::kMesh) j.files.push_back(g.mesh_path);
-    if (rest.geometry.empty()) return;
-    auto mesh = linkMesh(rest);
-    if (!mesh) {
-      status[i] = Error{mesh.error().code, a.urdf + ": " + mesh.error().message};
+      fitted = fitted || g.kind != LinkGeometry::Kind::kSphere;
+    }
+    if (!fitted) return;  // sphere primitives only
+    auto solid = linkSolid(link, repairOptions(a.repair), name);
+    if (!solid) {
+      status[i] = solid.error();
       return;
     }
-    auto clean = cleanMesh(std::move(mesh->vertices), std::move(mesh->triangles), {}, name);
-    if (!clean) {
-      status[i] = clean.error();
-      return;
-    }
-    auto r = repairMesh(clean->mesh, repairOptions(a.repair), name);
-    if (!r) {
-      status[i] = r.error();
-      return;
-    }
-    j.repair = std::move(r).value();
+    j.repair = std::move(solid->repair);
     j.index = std::make_unique<SolidIndex>(j.repair.solid);
   });
   for (const Status& st : status)

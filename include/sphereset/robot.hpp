@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sphereset/mesh.hpp"
+#include "sphereset/repair.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/status.hpp"
@@ -75,6 +76,14 @@ Expected<Mesh> linkMesh(const RobotLink& link, int cylinder_segments = 48);
 
 // The link's sphere primitives as exact spheres in the link frame.
 std::vector<Sphere> linkSpheres(const RobotLink& link);
+
+// What the robot command fits for a link: its geometry other than sphere primitives (which
+// stay exact spheres), as one mesh in the link frame, cleaned and repaired into a solid like a
+// mesh file (repair.hpp); `name` prefixes messages (e.g. "robot.urdf: link 'elbow'"). Errors:
+// kInvalidArgument when the link has no geometry other than spheres; those of linkMesh,
+// cleanMesh and repairMesh otherwise.
+Expected<SolidInput> linkSolid(const RobotLink& link, const RepairOptions& options,
+                               const std::string& name);
 
 // Forward kinematics: each link reachable from the root -> the pose of its frame in the root
 // frame. Joints missing from `joint_values` are at 0; revolute and prismatic values are clamped

@@ -145,4 +145,30 @@ std::vector<Sphere> linkSpheres(const RobotLink& link) {
   return spheres;
 }
 
+Expected<SolidInput> linkSolid(const RobotLink& link, const RepairOptions& options,
+                               const std::string& name) {
+  RobotLink rest = link;
+  std::erase_if(rest.geometry,
+                [](const LinkGeometry& g) { return g.kind == LinkGeometry::Kind::kSphere; });
+  if (rest.geometry.empty())
+    return Error{ErrorCode::kInvalidArgument,
+                 name + ": no geometry to fit (none, or only sphere primitives)"};
+  auto mesh = linkMesh(rest);
+  if (!mesh) {
+    // linkMesh names the link too; `name` already does.
+    std::string what = mesh.error().message;
+    const std::string own = "link '" + link.name + "': ";
+    if (what.starts_with(own)) what.erase(0, own.size());
+    return Error{mesh.error().code, name + ": " + what};
+  }
+  auto clean = cleanMesh(std::move(mesh->vertices), std::move(mesh->triangles), {}, name);
+  if (!clean) return clean.error();
+  auto r = repairMesh(clean->mesh, options, name);
+  if (!r) return r.error();
+  SolidInput out;
+  out.loaded = std::move(clean).value();
+  out.repair = std::move(r).value();
+  return out;
+}
+
 }  // namespace sphereset

@@ -237,6 +237,15 @@ cli_test(robot_fractional_count 2 ARGS robot ${robot}/three_link.urdf --package-
          --link-spheres link1=2.5 -o ${work}/never35.yml -q
          STDERR "--link-spheres link1=2.5: the value must be a whole number" FORBID ${work}/never35.yml)
 
+# eval with the URDF as MESH measures the link's geometry as placed (link2's mesh has an origin
+# and a scale, so the raw file would not be covered).
+cli_test(robot_eval_urdf_link 0 ARGS eval ${robot}/three_link.urdf ${work}/three.yml --link link2
+         --package-path ${robot} --samples 1000 --segments 0 --shadow-resolution 0
+         STDOUT "surface covered  yes")
+set_tests_properties(cli.robot_eval_urdf_link PROPERTIES DEPENDS cli.robot_budget)
+cli_test(robot_eval_urdf_needs_link 2 ARGS eval ${robot}/three_link.urdf ${work}/three.yml
+         --package-path ${robot} STDERR "three_link.urdf: a URDF needs --link LINK")
+
 # Batch: a folder (recursively) or a manifest, one sphere file per mesh, failed items reported,
 # up-to-date items skipped on the next run.
 file(REMOVE_RECURSE ${work}/batch_in ${work}/batch_ok ${work}/batch_empty)
