@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
-#include <tuple>
 
 #ifdef SPHERESET_WITH_REPAIR
 #include "sphereset/repair_cgal.hpp"
@@ -82,18 +81,8 @@ RepairOptions repairOptions(const MeshArgs& a) {
   return ro;
 }
 
-const Mesh* SolidInput::original() const {
-  const bool same =
-      repair.kind == RepairKind::kNone && repair.shells_dropped == 0 && repair.cavities_filled == 0;
-  return same ? nullptr : &repair.original;
-}
-
 Expected<SolidInput> loadSolid(const MeshArgs& a) {
-  auto m = loadMesh(a.path);
-  if (!m) return m.error();
-  auto r = repairMesh(m->mesh, repairOptions(a), a.path);
-  if (!r) return r.error();
-  return SolidInput{std::move(m).value(), std::move(r).value()};
+  return sphereset::loadSolid(a.path, repairOptions(a));
 }
 
 // --joint-positions j1=v1,j2=v2 (radians or metres), for joints of the robot.
@@ -118,9 +107,9 @@ Expected<std::map<std::string, double>> parseJointPositions(const std::string& t
       } catch (const std::exception&) {
       }
     if (!known || !number)
-      return Error{ErrorCode::kInvalidArgument, "--joint-positions " + item +
-                                                    ": expected JOINT=VALUE with a joint of " +
-                                                    robot.name};
+      return Error{
+          ErrorCode::kInvalidArgument,
+          "--joint-positions " + item + ": expected JOINT=VALUE with a joint of " + robot.name};
     out[name] = v;
     start = end + 1;
   }
@@ -174,6 +163,11 @@ void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
                                : "Output file: .sph (Bradshaw's layout) or .json (nodes with "
                                  "parent and children)")
       ->required();
+  addFitTuningArgs(cmd, a);
+  cmd->add_flag("-q,--quiet", a->quiet, "No progress on stderr");
+}
+
+void addFitTuningArgs(CLI::App* cmd, FitArgs* a) {
   cmd->add_option("--seed", a->fit.seed, "Seed for sampling and initialisation")
       ->capture_default_str();
   cmd->add_option("--points", a->points,
@@ -209,31 +203,27 @@ void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
                   "octree (occupied octree leaves); all end with the same guaranteed bound")
       ->capture_default_str()
       ->check(CLI::IsMember({"variational", "kmeans", "octree"}));
-  cmd->add_flag("-q,--quiet", a->quiet, "No progress on stderr");
+}
+
+FitRequest fitRequest(const FitArgs& a, const CLI::App* cmd) {
+  FitRequest r;
+  r.num_spheres = a.fit.num_spheres;
+  // The option checks admit only valid names.
+  r.quality = fitQualityFromName(a.quality).value();
+  r.seed = a.fit.seed;
+  r.padding = a.fit.padding;
+  r.points = a.points;
+  if (cmd->count("--iterations") > 0) r.iterations = a.fit.max_iterations;
+  if (cmd->count("--restarts") > 0) r.restarts = a.fit.restarts;
+  if (cmd->count("--decimation") > 0) r.decimation = a.fit.decimation;
+  r.optimizer = sphereOptimizerFromName(a.optimizer).value();
+  r.init = fitInitFromName(a.init).value();
+  r.method = fitMethodFromName(a.method).value();
+  return r;
 }
 
 FitOptions fitOptions(const FitArgs& a, const CLI::App* cmd) {
-  FitOptions fo = a.fit;
-  // Quality presets: (points factor, rounds, optimiser evaluations per sphere, failed
-  // teleports before stopping, restarts, decimation).
-  const std::map<std::string, std::tuple<double, int, int, int, int, double>> presets = {
-      {"fast", {0.4, 30, 30, 2, 1, 0.0}},
-      {"default", {1.0, 100, 60, 6, 1, 0.0}},
-      {"best", {1.0, 100, 60, 6, 4, 0.5}}};
-  const auto [pf, rounds, evals, failed, restarts, decimation] = presets.at(a.quality);
-  if (cmd->count("--iterations") == 0) fo.max_iterations = rounds;
-  if (cmd->count("--restarts") == 0) fo.restarts = restarts;
-  if (cmd->count("--decimation") == 0) fo.decimation = decimation;
-  fo.optimizer_evaluations = evals;
-  fo.max_failed_teleports = failed;
-  fo.target_points = a.points > 0
-                         ? a.points
-                         : static_cast<int64_t>(pf * std::max<int64_t>(5000, 100 * fo.num_spheres));
-  fo.optimizer = a.optimizer == "gradient" ? SphereOptimizer::kGradient : SphereOptimizer::kPowell;
-  fo.init = a.init == "random" ? FitInit::kRandom : FitInit::kFarthestPoint;
-  fo.method = a.method == "kmeans"   ? FitMethod::kKMeans
-              : a.method == "octree" ? FitMethod::kOctree
-                                     : FitMethod::kVariational;
+  FitOptions fo = fitOptionsFor(fitRequest(a, cmd));
   const bool tty = isatty(STDERR_FILENO) != 0;
   if (!a.quiet)
     fo.progress = [tty](const FitProgress& p) {

@@ -6,8 +6,8 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
 
@@ -30,14 +30,16 @@ enum Exit {
   kInvalid = 4,
   kNotSolid = 5,
   kWrite = 6,
-  kUncovered = 7,  // fit, tree: the result failed its own coverage check (the file is written)
+  kUncovered = 7,    // fit, tree: the result failed its own coverage check (the file is written)
+  kItemsFailed = 8,  // batch: some items failed (each is reported; the others are written)
 };
 
 // The footer of --help.
 inline constexpr const char* kExitCodesHelp =
     "Exit codes: 0 success, 1 internal error, 2 bad options, 3 unreadable input,\n"
     "4 invalid data, 5 mesh is not a closed solid, 6 output could not be written,\n"
-    "7 the result failed its own coverage check (fit, tree: the file is still written).";
+    "7 the result failed its own coverage check (fit, tree: the file is still written),\n"
+    "8 some items of a batch failed (batch: the others are written; see report.jsonl).";
 
 // The exit code for a library error.
 int exitFor(const Error& e);
@@ -67,14 +69,8 @@ void addRepairArgs(CLI::App* cmd, MeshArgs* a);
 // The repair options the arguments ask for, with the union and the wrapping of this build.
 RepairOptions repairOptions(const MeshArgs& a);
 
-// A loaded mesh and the solid made of it.
-struct SolidInput {
-  LoadedMesh loaded;
-  RepairResult repair;
-  // The input triangles when the solid differs from them (the fit and the evaluation must
-  // cover them too), else null.
-  const Mesh* original() const;
-};
+// A loaded mesh and the solid made of it (repair.hpp).
+using SolidInput = sphereset::SolidInput;
 
 // Loads the mesh and makes a solid of it (or says why it cannot).
 Expected<SolidInput> loadSolid(const MeshArgs& a);
@@ -104,7 +100,15 @@ struct FitArgs {
 // (`tree`).
 void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option);
 
-// Turns the parsed options into FitOptions: quality presets, optimiser, seeding, progress.
+// The options that tune the fit (--seed, --points, --iterations, --padding, --quality,
+// --restarts, --decimation, --optimizer, --init, --method), part of addFitArgs; for commands
+// with their own input and output options (batch).
+void addFitTuningArgs(CLI::App* cmd, FitArgs* a);
+
+// The fit the parsed options ask for: the quality preset and the options given explicitly.
+FitRequest fitRequest(const FitArgs& a, const CLI::App* cmd);
+
+// fitOptionsFor(fitRequest(a, cmd)) with the progress on stderr unless --quiet.
 FitOptions fitOptions(const FitArgs& a, const CLI::App* cmd);
 
 // What eval's coverage certificate does not confirm in `r`, e.g. "surface not covered (max gap

@@ -107,13 +107,8 @@ int runFit(const FitCommandArgs& c, const CLI::App* cmd) {
   meta.source_mesh = a.mesh.path;
   Status st = writeSpheres(a.out_path, r->spheres, meta);
   if (!st) return fail(st.error());
-  EvalOptions eo;
-  eo.seed = fo.seed;
-  eo.union_samples = 100000;
-  eo.proximity_segments = 0;
-  eo.shadow_resolution = 0;  // not part of the summary
-  eo.original = m->original();
-  const EvalResult ev = evaluateSpheres(index, r->spheres, eo);
+  const EvalResult ev =
+      evaluateSpheres(index, r->spheres, fitCheckEvalOptions(fo.seed, m->original()));
   if (c.json) std::cout << fitJson(a, fo, *r, ev, m->repair).dump() << '\n';
   if (!a.quiet) printFitSummary(a, *r, ev, *m);
   // The summary's evaluation is eval's coverage check (same certificate depths).

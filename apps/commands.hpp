@@ -21,5 +21,6 @@ Command registerRender(CLI::App& app);  // cmd_render.cpp
 Command registerExport(CLI::App& app);  // cmd_export.cpp
 Command registerQuery(CLI::App& app);   // cmd_query.cpp
 Command registerRobot(CLI::App& app);   // cmd_robot.cpp
+Command registerBatch(CLI::App& app);   // cmd_batch.cpp
 
 }  // namespace sphereset::cli

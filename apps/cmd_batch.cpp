@@ -1,0 +1,215 @@
+// sphereset batch: fits every mesh of a folder or a manifest as `sphereset fit` would, one sphere
+// file per mesh under the output folder and one report line per item (batch.hpp). Items that
+// are up to date are skipped; a failed item is reported and the batch goes on.
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "sphereset/batch.hpp"
+
+namespace sphereset::cli {
+namespace {
+
+struct BatchArgs {
+  FitArgs fit;  // the fit options (mesh.path is the input, out_path the output folder)
+  std::string format = "json";
+  int jobs = 1;
+  bool force = false, dry_run = false;
+};
+
+// "1 h 05 min", "4 min 10 s", "12 s".
+std::string duration(double s) {
+  char buf[48];
+  if (s >= 3600)
+    std::snprintf(buf, sizeof buf, "%d h %02d min", static_cast<int>(s / 3600),
+                  static_cast<int>(s / 60) % 60);
+  else if (s >= 60)
+    std::snprintf(buf, sizeof buf, "%d min %02d s", static_cast<int>(s / 60),
+                  static_cast<int>(s) % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%.0f s", s);
+  return buf;
+}
+
+// Counts of the items reported so far and the progress line.
+class Progress {
+ public:
+  Progress(size_t total, bool quiet)
+      : total_(total),
+        quiet_(quiet),
+        tty_(isatty(STDERR_FILENO) != 0),
+        start_(std::chrono::steady_clock::now()) {}
+
+  void add(const BatchItemReport& r) {
+    ++done_;
+    if (r.status == BatchStatus::kSkipped) ++skipped_;
+    if (r.status == BatchStatus::kError) ++failed_;
+    if (r.status == BatchStatus::kOk && !r.covered) ++uncovered_;
+    if (r.status != BatchStatus::kSkipped) ++run_;
+    if (quiet_) return;
+    const double t = seconds();
+    // Skipped items take no time: the rate counts the items fitted.
+    const double rate = run_ > 0 && t > 0 ? 60.0 * static_cast<double>(run_) / t : 0.0;
+    const size_t left = total_ - done_;
+    std::string eta = left == 0 ? "done" : rate > 0 ? duration(60.0 * left / rate) + " left" : "";
+    char item[512];
+    if (r.status == BatchStatus::kError)
+      std::snprintf(item, sizeof item, "error: %s", r.error.c_str());
+    else
+      std::snprintf(item, sizeof item, "%s -> %s %s, %d spheres, E_r %.4f%s (%.1f s)",
+                    r.mesh.c_str(), r.output.c_str(), batchStatusName(r.status), r.spheres,
+                    r.er_sum, r.covered ? "" : ", NOT covered", r.seconds);
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "batch: %zu/%zu items (%zu failed, %zu skipped), %.1f items/min, %s", done_,
+                  total_, failed_, skipped_, rate, eta.c_str());
+    if (tty_)
+      std::fprintf(stderr, "\r\033[K%s\n%s", item, line);
+    else
+      std::fprintf(stderr, "%s\n%s\n", item, line);
+    if (tty_ && left == 0) std::fprintf(stderr, "\n");
+  }
+
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  size_t failed() const { return failed_; }
+  size_t skipped() const { return skipped_; }
+  size_t uncovered() const { return uncovered_; }
+
+ private:
+  size_t total_, done_ = 0, run_ = 0, skipped_ = 0, failed_ = 0, uncovered_ = 0;
+  bool quiet_, tty_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+int runBatch(const BatchArgs& c, const CLI::App* cmd) {
+  const FitArgs& a = c.fit;
+  BatchOptions options;
+  options.fit = fitRequest(a, cmd);
+  options.repair = repairOptions(a.mesh);
+  options.format = c.format;
+  options.resume = !c.force;
+  auto items = listBatchItems(a.mesh.path, options);
+  if (!items) return fail(items.error());
+  const std::string& out = a.out_path;
+  if (c.dry_run) {
+    for (const BatchItem& it : *items)
+      std::printf("%s -> %s n=%d %s\n", it.mesh.c_str(), it.output.c_str(), it.fit.num_spheres,
+                  batchItemDone(it, out, options) ? "up to date" : "to fit");
+    return kOk;
+  }
+  if (Status st = startBatchReport(out); !st) return fail(st.error());
+  if (items->empty()) {
+    if (!a.quiet) std::fprintf(stderr, "batch: %s: no meshes\n", a.mesh.path.c_str());
+    return kOk;
+  }
+
+  // Workers take the items in order; the reports are appended in item order as soon as every
+  // item before them is done.
+  const size_t n = items->size();
+  std::vector<std::optional<BatchItemReport>> reports(n);
+  std::mutex mutex;
+  std::atomic<size_t> next{0};
+  size_t written = 0;
+  std::optional<Error> write_error;
+  Progress progress(n, a.quiet);
+  const auto work = [&] {
+    while (true) {
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (write_error) return;
+      }
+      const size_t i = next.fetch_add(1);
+      if (i >= n) return;
+      BatchItemReport r = processBatchItem((*items)[i], out, options);
+      std::lock_guard<std::mutex> lock(mutex);
+      reports[i] = std::move(r);
+      while (written < n && reports[written] && !write_error) {
+        if (Status st = appendBatchReport(out, *reports[written]); !st) write_error = st.error();
+        progress.add(*reports[written]);
+        ++written;
+      }
+    }
+  };
+  const int jobs = static_cast<int>(std::min<size_t>(static_cast<size_t>(c.jobs), n));
+  std::vector<std::thread> threads;
+  for (int t = 1; t < jobs; ++t) threads.emplace_back(work);
+  work();
+  for (std::thread& t : threads) t.join();
+  if (write_error) return fail(*write_error);
+
+  if (!a.quiet)
+    std::fprintf(stderr, "batch: %zu items: %zu fitted, %zu skipped, %zu failed in %s -> %s\n", n,
+                 n - progress.skipped() - progress.failed(), progress.skipped(), progress.failed(),
+                 duration(progress.seconds()).c_str(), batchReportPath(out).c_str());
+  if (progress.failed() > 0) {
+    std::fprintf(stderr, "sphereset: %s: %zu of %zu items failed (see %s)\n", a.mesh.path.c_str(),
+                 progress.failed(), n, batchReportPath(out).c_str());
+    return kItemsFailed;
+  }
+  if (progress.uncovered() > 0) {
+    std::fprintf(stderr,
+                 "sphereset: %s: %zu of %zu items failed the coverage check (written anyway; see "
+                 "%s)\n",
+                 a.mesh.path.c_str(), progress.uncovered(), n, batchReportPath(out).c_str());
+    return kUncovered;
+  }
+  return kOk;
+}
+
+}  // namespace
+
+Command registerBatch(CLI::App& app) {
+  auto c = std::make_shared<BatchArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "batch",
+      "Fit every mesh of a folder (recursively) or of a manifest (.csv/.jsonl), one sphere file "
+      "per mesh and a report line per item in OUT_DIR/report.jsonl; resumable");
+  FitArgs& a = c->fit;
+  cmd->add_option("input", a.mesh.path,
+                  "A folder (every file assimp reads, recursively) or a manifest: .csv with a "
+                  "header (mesh,n,output,quality,seed,...) or .jsonl with one object per line; "
+                  "mesh paths relative to the manifest's folder")
+      ->required();
+  cmd->add_option("-o,--output", a.out_path,
+                  "Output folder: the sphere files mirror the input's layout, and report.jsonl")
+      ->required();
+  cmd->add_option("-n,--spheres", a.fit.num_spheres,
+                  "Number of spheres of items whose manifest line gives none")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  cmd->add_option("--format", c->format, "Sphere files written: json, txt, sph or yaml")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"json", "txt", "sph", "yaml"}));
+  cmd->add_option("--weld-tolerance", a.mesh.weld,
+                  "Merge vertices closer than this distance (default: exact duplicates, then up "
+                  "to 1e-6 of the diagonal if that closes the mesh)")
+      ->check(CLI::NonNegativeNumber);
+  addRepairArgs(cmd, &a.mesh);
+  addFitTuningArgs(cmd, &a);
+  cmd->add_option("-j,--jobs", c->jobs,
+                  "Items fitted at once (each fit is parallel already; more can help with many "
+                  "small meshes)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+  cmd->add_flag("--force", c->force, "Fit every item again, even those up to date");
+  cmd->add_flag("--dry-run", c->dry_run,
+                "List the items (mesh -> output, n, up to date or not) on stdout and stop");
+  cmd->add_flag("-q,--quiet", a.quiet, "No progress on stderr");
+  return {cmd, [c, cmd] { return runBatch(*c, cmd); }};
+}
+
+}  // namespace sphereset::cli

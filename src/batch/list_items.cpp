@@ -1,0 +1,419 @@
+// The items of a batch (batch.hpp): the meshes of a folder that assimp can import, or the lines
+// of a CSV or JSONL manifest with per-item fit options. Not from the paper: the batch runs its
+// fit (Wang et al. 2006) over collections.
+#include <algorithm>
+#include <assimp/Importer.hpp>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "batch/batch_internal.hpp"
+#include "sphereset/batch.hpp"
+#include "sphereset/sphere_io.hpp"
+#include "util/read_file.hpp"
+
+namespace sphereset {
+namespace fs = std::filesystem;
+namespace {
+
+// Bounds of the per-item options, those of the command line's checks.
+constexpr int kMaxSpheres = 1000000;
+constexpr int64_t kMaxPoints = 100000000;
+constexpr int kMaxIterations = 100000;
+constexpr int kMinRestarts = 1, kMaxRestarts = 1000;
+constexpr double kMaxDecimation = 16.0;
+
+const char* const kColumns[] = {"mesh",      "n",          "output",   "quality",    "seed",
+                                "points",    "iterations", "restarts", "decimation", "padding",
+                                "optimizer", "init",       "method"};
+
+std::string columnList() {
+  std::string s;
+  for (const char* c : kColumns) s += (s.empty() ? "" : ", ") + std::string(c);
+  return s;
+}
+
+bool knownColumn(const std::string& name) {
+  return std::find_if(std::begin(kColumns), std::end(kColumns),
+                      [&](const char* c) { return name == c; }) != std::end(kColumns);
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+std::string trim(const std::string& s) {
+  size_t b = 0, e = s.size();
+  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
+  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
+  return s.substr(b, e - b);
+}
+
+// An integer in [lo, hi] written in full (no trailing characters).
+template <class T>
+bool parseInteger(const std::string& text, T lo, T hi, T* out) {
+  T v{};
+  const char* end = text.data() + text.size();
+  const auto [p, ec] = std::from_chars(text.data(), end, v);
+  if (ec != std::errc() || p != end || v < lo || v > hi) return false;
+  *out = v;
+  return true;
+}
+
+bool parseReal(const std::string& text, double lo, double hi, double* out) {
+  double v = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [p, ec] = std::from_chars(text.data(), end, v);
+  if (ec != std::errc() || p != end || !std::isfinite(v) || v < lo || v > hi) return false;
+  *out = v;
+  return true;
+}
+
+// A relative path with '/' separators, no "." or ".." parts, not empty.
+bool cleanRelativePath(const std::string& p) {
+  if (p.empty() || p.front() == '/' || p.back() == '/') return false;
+  size_t start = 0;
+  while (start <= p.size()) {
+    size_t end = p.find('/', start);
+    if (end == std::string::npos) end = p.size();
+    const std::string part = p.substr(start, end - start);
+    if (part.empty() || part == "." || part == "..") return false;
+    start = end + 1;
+  }
+  return true;
+}
+
+// Sets the option `key` of the item from `text`; an error message (without the location) when
+// the value is bad.
+std::string applyValue(const std::string& key, const std::string& text, BatchItem* item,
+                       bool* output_given) {
+  FitRequest& f = item->fit;
+  const std::string quoted = key + " '" + text + "'";
+  if (key == "mesh") {
+    if (text.empty()) return "the mesh path is empty";
+    item->mesh = text;
+  } else if (key == "output") {
+    if (!cleanRelativePath(text))
+      return quoted + ": expected a relative path without '.' or '..' parts";
+    if (!sphereFormatFromPath(text))
+      return quoted + ": the extension must be .txt, .xyzr, .json, .sph, .yaml or .yml";
+    item->output = text;
+    *output_given = true;
+  } else if (key == "n") {
+    if (!parseInteger(text, 1, kMaxSpheres, &f.num_spheres))
+      return quoted + ": expected an integer from 1 to " + std::to_string(kMaxSpheres);
+  } else if (key == "quality") {
+    auto q = fitQualityFromName(text);
+    if (!q) return q.error().message;
+    f.quality = *q;
+  } else if (key == "seed") {
+    if (!parseInteger(text, uint64_t{0}, std::numeric_limits<uint64_t>::max(), &f.seed))
+      return quoted + ": expected an integer >= 0";
+  } else if (key == "points") {
+    if (!parseInteger(text, int64_t{0}, kMaxPoints, &f.points))
+      return quoted + ": expected an integer from 0 to " + std::to_string(kMaxPoints);
+  } else if (key == "iterations") {
+    int v = 0;
+    if (!parseInteger(text, 0, kMaxIterations, &v))
+      return quoted + ": expected an integer from 0 to " + std::to_string(kMaxIterations);
+    f.iterations = v;
+  } else if (key == "restarts") {
+    int v = 0;
+    if (!parseInteger(text, kMinRestarts, kMaxRestarts, &v))
+      return quoted + ": expected an integer from 1 to " + std::to_string(kMaxRestarts);
+    f.restarts = v;
+  } else if (key == "decimation") {
+    double v = 0.0;
+    if (!parseReal(text, 0.0, kMaxDecimation, &v))
+      return quoted + ": expected a number from 0 to 16";
+    f.decimation = v;
+  } else if (key == "padding") {
+    if (!parseReal(text, 0.0, std::numeric_limits<double>::max(), &f.padding))
+      return quoted + ": expected a number >= 0";
+  } else if (key == "optimizer") {
+    auto o = sphereOptimizerFromName(text);
+    if (!o) return o.error().message;
+    f.optimizer = *o;
+  } else if (key == "init") {
+    auto i = fitInitFromName(text);
+    if (!i) return i.error().message;
+    f.init = *i;
+  } else if (key == "method") {
+    auto m = fitMethodFromName(text);
+    if (!m) return m.error().message;
+    f.method = *m;
+  } else {
+    return "unknown column '" + key + "' (expected " + columnList() + ")";
+  }
+  return {};
+}
+
+// An item read from a manifest: the mesh path as written, whether an output was given.
+struct ManifestItem {
+  BatchItem item;
+  bool output_given = false;
+};
+
+// The fields of one CSV line; fields may be quoted ("a, b" with "" for a quote). Empty message
+// on success.
+std::string splitCsv(const std::string& line, std::vector<std::string>* fields) {
+  fields->clear();
+  size_t i = 0;
+  while (true) {
+    std::string field;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i < line.size() && line[i] == '"') {
+      ++i;
+      bool closed = false;
+      while (i < line.size()) {
+        if (line[i] == '"') {
+          if (i + 1 < line.size() && line[i + 1] == '"') {
+            field += '"';
+            i += 2;
+            continue;
+          }
+          ++i;
+          closed = true;
+          break;
+        }
+        field += line[i++];
+      }
+      if (!closed) return "unterminated quoted field";
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+      if (i < line.size() && line[i] != ',') return "text after a quoted field";
+    } else {
+      const size_t end = std::min(line.find(',', i), line.size());
+      field = trim(line.substr(i, end - i));
+      i = end;
+    }
+    fields->push_back(std::move(field));
+    if (i >= line.size()) break;
+    ++i;  // the comma
+  }
+  return {};
+}
+
+// The lines of a text, without their '\n' and a trailing '\r'.
+std::vector<std::string> splitLines(const std::string& text) {
+  std::vector<std::string> lines;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(std::move(line));
+    start = end + 1;
+  }
+  return lines;
+}
+
+Error lineError(const std::string& path, size_t line, const std::string& what) {
+  return Error{ErrorCode::kInvalidData, path + ":" + std::to_string(line) + ": " + what};
+}
+
+Expected<std::vector<ManifestItem>> readCsv(const std::string& path, const std::string& text,
+                                            const FitRequest& defaults) {
+  const std::vector<std::string> lines = splitLines(text);
+  std::vector<std::string> header, fields;
+  std::vector<ManifestItem> items;
+  for (size_t ln = 0; ln < lines.size(); ++ln) {
+    const std::string t = trim(lines[ln]);
+    if (t.empty() || t.front() == '#') continue;
+    const std::string bad = splitCsv(lines[ln], &fields);
+    if (!bad.empty()) return lineError(path, ln + 1, bad);
+    if (header.empty()) {
+      for (const std::string& f : fields) {
+        const std::string name = lower(f);
+        if (!knownColumn(name))
+          return lineError(path, ln + 1,
+                           "unknown column '" + f + "' (expected " + columnList() + ")");
+        if (std::find(header.begin(), header.end(), name) != header.end())
+          return lineError(path, ln + 1, "column '" + f + "' given twice");
+        header.push_back(name);
+      }
+      if (std::find(header.begin(), header.end(), "mesh") == header.end())
+        return lineError(path, ln + 1, "the header has no 'mesh' column");
+      continue;
+    }
+    if (fields.size() != header.size())
+      return lineError(path, ln + 1,
+                       "expected " + std::to_string(header.size()) +
+                           " fields as in the header, found " + std::to_string(fields.size()));
+    ManifestItem mi;
+    mi.item.fit = defaults;
+    mi.item.origin = path + ":" + std::to_string(ln + 1);
+    for (size_t c = 0; c < header.size(); ++c) {
+      if (fields[c].empty() && header[c] != "mesh") continue;  // the batch's value
+      const std::string err = applyValue(header[c], fields[c], &mi.item, &mi.output_given);
+      if (!err.empty()) return lineError(path, ln + 1, err);
+    }
+    items.push_back(std::move(mi));
+  }
+  return items;
+}
+
+Expected<std::vector<ManifestItem>> readJsonl(const std::string& path, const std::string& text,
+                                              const FitRequest& defaults) {
+  const std::vector<std::string> lines = splitLines(text);
+  std::vector<ManifestItem> items;
+  for (size_t ln = 0; ln < lines.size(); ++ln) {
+    if (trim(lines[ln]).empty()) continue;
+    const nlohmann::json j = nlohmann::json::parse(lines[ln], nullptr, false);
+    if (j.is_discarded()) return lineError(path, ln + 1, "not valid JSON");
+    if (!j.is_object()) return lineError(path, ln + 1, "expected a JSON object");
+    if (!j.contains("mesh")) return lineError(path, ln + 1, "no \"mesh\" key");
+    ManifestItem mi;
+    mi.item.fit = defaults;
+    mi.item.origin = path + ":" + std::to_string(ln + 1);
+    for (const auto& [key, value] : j.items()) {
+      if (!knownColumn(key))
+        return lineError(path, ln + 1,
+                         "unknown key \"" + key + "\" (expected " + columnList() + ")");
+      if (value.is_null() && key != "mesh") continue;  // the batch's value
+      std::string v;
+      if (value.is_string())
+        v = value.get<std::string>();
+      else if (value.is_number())
+        v = value.dump();
+      else
+        return lineError(path, ln + 1, "\"" + key + "\": expected a string or a number");
+      const std::string err = applyValue(key, v, &mi.item, &mi.output_given);
+      if (!err.empty()) return lineError(path, ln + 1, err);
+    }
+    items.push_back(std::move(mi));
+  }
+  return items;
+}
+
+// "a/b.obj" -> "a/b.json".
+std::string replaceExtension(const std::string& rel, const std::string& format) {
+  return fs::path(rel).replace_extension("." + format).generic_string();
+}
+
+// Gives each item without an output one derived from `rel` (its path relative to the input),
+// keeping the mesh's extension where two would meet; then checks that no two outputs are the
+// same.
+Status assignOutputs(std::vector<ManifestItem>* items, const std::vector<std::string>& rel,
+                     const std::string& format) {
+  std::map<std::string, int> count;
+  for (size_t i = 0; i < items->size(); ++i)
+    if (!(*items)[i].output_given) ++count[replaceExtension(rel[i], format)];
+  for (size_t i = 0; i < items->size(); ++i) {
+    ManifestItem& mi = (*items)[i];
+    if (mi.output_given) continue;
+    const std::string plain = replaceExtension(rel[i], format);
+    mi.item.output = count[plain] > 1 ? rel[i] + "." + format : plain;
+  }
+  std::map<std::string, const BatchItem*> seen;
+  for (const ManifestItem& mi : *items) {
+    auto [it, fresh] = seen.emplace(mi.item.output, &mi.item);
+    if (!fresh)
+      return Error{ErrorCode::kInvalidData, mi.item.origin + ": writes " + mi.item.output + " as " +
+                                                it->second->origin +
+                                                " does; give each an 'output'"};
+  }
+  return {};
+}
+
+Expected<std::vector<BatchItem>> listFolder(const std::string& input, const BatchOptions& options) {
+  const Assimp::Importer importer;
+  std::vector<std::string> rel;
+  std::error_code ec;
+  const fs::path root(input);
+  fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec);
+  if (ec)
+    return Error{ErrorCode::kUnreadable, input + ": cannot read the folder (" + ec.message() + ")"};
+  for (; it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (ec)
+      return Error{ErrorCode::kUnreadable,
+                   input + ": cannot read the folder (" + ec.message() + ")"};
+    const fs::path& p = it->path();
+    if (p.filename().string().front() == '.') {
+      if (it->is_directory(ec)) it.disable_recursion_pending();
+      continue;
+    }
+    if (!it->is_regular_file(ec)) continue;
+    const std::string ext = lower(p.extension().string());
+    if (ext.size() < 2 || !importer.IsExtensionSupported(ext)) continue;
+    rel.push_back(p.lexically_relative(root).generic_string());
+  }
+  std::sort(rel.begin(), rel.end());
+  std::vector<ManifestItem> items(rel.size());
+  for (size_t i = 0; i < rel.size(); ++i) {
+    items[i].item.mesh = (root / rel[i]).string();
+    items[i].item.fit = options.fit;
+    items[i].item.origin = items[i].item.mesh;
+  }
+  if (Status st = assignOutputs(&items, rel, options.format); !st) return st.error();
+  std::vector<BatchItem> out;
+  out.reserve(items.size());
+  for (ManifestItem& mi : items) out.push_back(std::move(mi.item));
+  return out;
+}
+
+Expected<std::vector<BatchItem>> listManifest(const std::string& input, const std::string& ext,
+                                              const BatchOptions& options) {
+  auto text = detail::readFileText(input);
+  if (!text) return text.error();
+  auto items =
+      ext == ".csv" ? readCsv(input, *text, options.fit) : readJsonl(input, *text, options.fit);
+  if (!items) return items.error();
+  const fs::path dir = fs::path(input).parent_path();
+  std::vector<std::string> rel;
+  for (ManifestItem& mi : *items) {
+    const fs::path written(mi.item.mesh);
+    const fs::path mesh = written.is_absolute() ? written : dir / written;
+    mi.item.mesh = mesh.string();
+    // The mesh's path below the manifest's folder, or its file name when it is elsewhere.
+    const std::string r =
+        written.is_absolute() ? std::string() : written.lexically_normal().generic_string();
+    rel.push_back(cleanRelativePath(r) ? r : mesh.filename().string());
+  }
+  if (Status st = assignOutputs(&*items, rel, options.format); !st) return st.error();
+  std::vector<BatchItem> out;
+  out.reserve(items->size());
+  for (ManifestItem& mi : *items) out.push_back(std::move(mi.item));
+  return out;
+}
+
+}  // namespace
+
+Status checkBatchOptions(const BatchOptions& options) {
+  if (!sphereFormatFromPath("x." + options.format))
+    return Error{ErrorCode::kInvalidArgument,
+                 "format '" + options.format + "': expected txt, json, sph or yaml"};
+  if (options.fit.num_spheres < 1 || options.fit.num_spheres > kMaxSpheres)
+    return Error{ErrorCode::kInvalidArgument, "n " + std::to_string(options.fit.num_spheres) +
+                                                  ": expected 1 to " + std::to_string(kMaxSpheres)};
+  if (options.threads < 0) return Error{ErrorCode::kInvalidArgument, "threads must be >= 0"};
+  return {};
+}
+
+Expected<std::vector<BatchItem>> listBatchItems(const std::string& input,
+                                                const BatchOptions& options) {
+  if (Status st = checkBatchOptions(options); !st) return st.error();
+  std::error_code ec;
+  const fs::file_status s = fs::status(input, ec);
+  if (ec || !fs::exists(s))
+    return Error{ErrorCode::kUnreadable, input + ": no such file or folder"};
+  if (fs::is_directory(s)) return listFolder(input, options);
+  const std::string ext = lower(fs::path(input).extension().string());
+  if (ext == ".csv" || ext == ".jsonl") return listManifest(input, ext, options);
+  return Error{ErrorCode::kUnreadable,
+               input + ": expected a folder of meshes or a manifest (.csv or .jsonl)"};
+}
+
+}  // namespace sphereset
