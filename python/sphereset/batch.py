@@ -7,7 +7,9 @@ INPUT is a folder (every mesh file below it) or a manifest (.csv / .jsonl), as f
 ``sphereset batch``. Each mesh is one dask.distributed task that runs the library's batch core
 (batch.hpp: processBatchItem) in a worker, so the sphere files, their records and
 OUT_DIR/report.jsonl (one line per item, in item order, appended as the items finish in order)
-are those the command line writes; items already up to date are skipped (resume).
+are those the command line writes; items already up to date are skipped (resume; --force fits
+them again). Exit codes are those of `sphereset batch` (8: some items failed, 7: some failed
+the coverage check).
 
 On a real cluster the workers need the ``sphereset`` package installed (the same version) and
 must see the input meshes and OUT_DIR at the same paths as this process: give absolute paths on
@@ -21,6 +23,7 @@ import argparse
 import os
 import sys
 import time
+import uuid
 from typing import Any, Dict, List, Optional
 
 from . import _sphereset as _core
@@ -87,8 +90,10 @@ def run_batch(input_path: str, out_dir: str, options: Dict[str, Any], client: An
     items = list_items(input_path, options)
     _core._batch_start_report(out_dir)
     t0 = time.monotonic()
-    # One task per mesh; pure=False: a task is an effect (files written), never deduplicated.
-    futures = [client.submit(process_item, it, out_dir, options, key=f"sphereset-{i}-{it['output']}",
+    # One task per mesh. A task is an effect (files written): its key is new for every run, so
+    # that the scheduler never hands back the result of an earlier run's task.
+    run = uuid.uuid4().hex
+    futures = [client.submit(process_item, it, out_dir, options, key=f"sphereset-{run}-{i}",
                              pure=False) for i, it in enumerate(items)]
     index = {f.key: i for i, f in enumerate(futures)}
     lines: List[Optional[str]] = [None] * len(items)
@@ -108,6 +113,16 @@ def run_batch(input_path: str, out_dir: str, options: Dict[str, Any], client: An
     if not quiet and items and sys.stderr.isatty():
         sys.stderr.write("\n")
     return [line for line in lines if line is not None]
+
+
+def _exit_code(e: Exception) -> int:
+    """The exit code `sphereset` gives the same error."""
+    for cls, code in ((_core.InvalidArgumentError, 2), (_core.UnreadableError, 3),
+                      (_core.InvalidDataError, 4), (_core.NotSolidError, 5),
+                      (_core.WriteError, 6)):
+        if isinstance(e, cls):
+            return code
+    return 1
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -144,7 +159,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--wrap-offset", type=float, default=0.0)
     p.add_argument("--format", default="json", choices=["json", "txt", "sph", "yaml"],
                    help="sphere file format (default json)")
-    p.add_argument("--no-resume", dest="resume", action="store_false", default=True,
+    p.add_argument("--force", action="store_true",
                    help="fit every item again, even those up to date")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
     return p
@@ -162,7 +177,7 @@ def main(argv: Optional[List[str]] = None) -> int:
         threads = a.threads if a.threads is not None else max(
             1, (os.cpu_count() or 1) // a.local_workers)
         cluster = LocalCluster(n_workers=a.local_workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+                               dashboard_address=":0")
         client = Client(cluster)
     else:
         threads = a.threads if a.threads is not None else 0
@@ -174,23 +189,35 @@ def main(argv: Optional[List[str]] = None) -> int:
             optimizer=a.optimizer, init=a.init, method=a.method, repair=a.repair,
             weld_tolerance=a.weld_tolerance, fill_cavities=a.fill_cavities,
             wrap_alpha=a.wrap_alpha, wrap_offset=a.wrap_offset, format=a.format,
-            resume=a.resume, threads=threads)
+            resume=not a.force, threads=threads)
         try:
             lines = run_batch(a.input, a.output, opts, client, quiet=a.quiet)
         except _core.Error as e:
             print(f"sphereset: {e}", file=sys.stderr)
-            return 2 if isinstance(e, _core.InvalidArgumentError) else (
-                3 if isinstance(e, _core.UnreadableError) else 4)
+            return _exit_code(e)
     finally:
         client.close()
         if cluster is not None:
             cluster.close()
     import json
-    failed = sum(json.loads(line)["status"] == "error" for line in lines)
+    reports = [json.loads(line) for line in lines]
+    failed = sum(r["status"] == "error" for r in reports)
+    skipped = sum(r["status"] == "skipped" for r in reports)
+    uncovered = sum(r["status"] != "error" and not r["covered"] for r in reports)
+    report = _core._batch_report_path(os.path.abspath(a.output))
     if not a.quiet:
-        print(f"sphereset.batch: {len(lines)} items, {failed} failed; report in "
-              f"{_core._batch_report_path(os.path.abspath(a.output))}", file=sys.stderr)
-    return 1 if failed else 0
+        print(f"batch: {len(lines)} items: {len(lines) - failed - skipped} fitted, {skipped} "
+              f"skipped, {failed} failed -> {report}", file=sys.stderr)
+    # The exit codes of `sphereset batch`.
+    if failed:
+        print(f"sphereset: {a.input}: {failed} of {len(lines)} items failed (see {report})",
+              file=sys.stderr)
+        return 8
+    if uncovered:
+        print(f"sphereset: {a.input}: {uncovered} of {len(lines)} items failed the coverage "
+              f"check (written anyway; see {report})", file=sys.stderr)
+        return 7
+    return 0
 
 
 if __name__ == "__main__":
