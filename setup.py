@@ -3,7 +3,9 @@
 Used by `pip install --no-build-isolation .` (pyproject.toml). The extension is configured with
 the interpreter that runs pip (-DPython3_EXECUTABLE), without tests, benchmarks or the CLI;
 CMAKE_ARGS in the environment adds options (e.g. "-DSPHERESET_WITH_REPAIR=OFF" for an MIT-only
-module), CMAKE_BUILD_PARALLEL_LEVEL sets the build jobs (default 2).
+module), CMAKE_BUILD_PARALLEL_LEVEL sets the build jobs (default 2). The CMake build and
+setuptools' own files go to build-pip/ in the source tree (SPHERESET_PIP_BUILD_DIR chooses
+another folder), where a second install builds incrementally.
 """
 
 import os
@@ -17,6 +19,7 @@ from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
 ROOT = Path(__file__).resolve().parent
+BUILD = Path(os.environ.get("SPHERESET_PIP_BUILD_DIR", ROOT / "build-pip")).resolve()
 
 
 class CMakeExtension(Extension):
@@ -26,7 +29,7 @@ class CMakeExtension(Extension):
 
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
-        build = Path(self.build_temp).resolve() / "cmake"
+        build = BUILD
         args = [
             "cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
             f"-DPython3_EXECUTABLE={sys.executable}", "-DSPHERESET_BUILD_TESTS=OFF",
@@ -54,4 +57,6 @@ setup(
     ext_modules=[CMakeExtension("sphereset._sphereset")],
     cmdclass={"build_ext": CMakeBuild},
     zip_safe=False,
+    options={"build": {"build_base": str(BUILD / "setuptools")},
+             "egg_info": {"egg_base": str(BUILD)}},
 )

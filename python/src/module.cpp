@@ -44,8 +44,7 @@ py::array_t<double> spheresToArray(const std::vector<Sphere>& spheres) {
   return out;
 }
 
-std::vector<Vec3> pointsFromArray(const py::handle& a, const std::string& what,
-                                  bool check_finite) {
+std::vector<Vec3> pointsFromArray(const py::handle& a, const std::string& what, bool check_finite) {
   py::array_t<double, py::array::c_style | py::array::forcecast> arr;
   try {
     arr = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
