@@ -114,7 +114,8 @@ struct BatchItemReport {
   // Wall time of the item: load, repair, fit, write, evaluation (of the run that fitted it).
   double seconds = 0.0;
   std::string error;  // status kError: one line naming the mesh and the problem; else ""
-  ErrorCode error_code = ErrorCode::kInvalidData;  // status kError only
+  // Status kError only; not part of the report line (parseReportLine gives kInvalidData).
+  ErrorCode error_code = ErrorCode::kInvalidData;
   // batchFingerprint of the item (16 hex digits); "" when the mesh could not be read.
   std::string fingerprint;
 };
@@ -137,9 +138,11 @@ Expected<std::string> batchFingerprint(const BatchItem& item, const BatchOptions
 // fitOptionsFor(item.fit) with the original triangles, fitCheckEvalOptions for the check), so
 // the spheres are those of `sphereset fit MESH -n N ... -o OUT/<output>`: writes the sphere file
 // atomically (creating the folders of item.output), then the item's record. Never throws for
-// bad data and never stops at a bad mesh: any failure gives status kError with the message (and
-// no sphere file; an earlier one of the same output is left as it was but its record is
-// removed). Thread-safe for distinct outputs.
+// bad data and never stops at a bad mesh: any failure gives status kError with the message.
+// The item's record is removed first, so a failed run never leaves the item up to date: a
+// failure before the sphere file is written leaves an earlier file of the same output as it
+// was; one after it (writing the record) leaves the new file. Thread-safe for distinct
+// outputs.
 BatchItemReport runBatchItem(const BatchItem& item, const std::string& out_dir,
                              const BatchOptions& options);
 

@@ -368,6 +368,8 @@ Expected<std::vector<BatchItem>> listManifest(const std::string& input, const st
                                               const BatchOptions& options) {
   auto text = detail::readFileText(input);
   if (!text) return text.error();
+  // A byte order mark, as spreadsheet programs write, is not part of the first column's name.
+  if (text->rfind("\xEF\xBB\xBF", 0) == 0) text->erase(0, 3);
   auto items =
       ext == ".csv" ? readCsv(input, *text, options.fit) : readJsonl(input, *text, options.fit);
   if (!items) return items.error();

@@ -1,12 +1,466 @@
-// Batch: listing, one item, report lines, resuming (batch.hpp).
+// Batch (batch.hpp): listing folders and manifests, bad manifest lines, one item fitted as
+// fitSpheres fits it, failed items, report lines, and resuming.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
 #include "sphereset/batch.hpp"
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/repair.hpp"
+#include "sphereset/solid_index.hpp"
+#include "sphereset/sphere_io.hpp"
+#include "test_meshes.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
 
-TEST(BatchReport, StatusNames) { EXPECT_STREQ(batchStatusName(BatchStatus::kSkipped), "skipped"); }
+namespace fs = std::filesystem;
+using test::TempDirTest;
+
+// The mesh as an OFF file.
+std::string offText(const Mesh& m) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "OFF\n" << m.vertices.size() << ' ' << m.triangles.size() << " 0\n";
+  for (const Vec3& v : m.vertices) s << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+  for (const Triangle& t : m.triangles) s << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  return s.str();
+}
+
+std::string readAll(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// A small, quick batch: few spheres, the fast preset.
+BatchOptions quickOptions() {
+  BatchOptions o;
+  o.fit.num_spheres = 3;
+  o.fit.quality = FitQuality::kFast;
+  return o;
+}
+
+class BatchTest : public TempDirTest {
+ protected:
+  // Writes a file, creating its folders.
+  std::string put(const std::string& name, const std::string& contents) {
+    fs::create_directories(fs::path(path(name)).parent_path());
+    return write(name, contents);
+  }
+  std::string box(const std::string& name, double size = 1.0) {
+    return put(name, offText(test::makeBox(Vec3::Zero(), Vec3(size, 0.5 * size, 0.3 * size))));
+  }
+  std::vector<std::string> outputs(const std::vector<BatchItem>& items) {
+    std::vector<std::string> o;
+    for (const BatchItem& it : items) o.push_back(it.output);
+    return o;
+  }
+};
+
+TEST_F(BatchTest, FolderIsScannedRecursivelyInSortedOrder) {
+  box("in/zeta/b.obj");
+  box("in/a.stl");
+  box("in/a.obj");  // shares a.json with a.stl: both keep their extension
+  box("in/m/UPPER.OFF");
+  box("in/.hidden/skipped.obj");
+  box("in/m/.skipped.obj");
+  put("in/notes.txt", "not a mesh\n");
+  put("in/m/spheres.json", "{}");
+  auto items = listBatchItems(path("in"), quickOptions());
+  ASSERT_TRUE(items.ok()) << items.error().message;
+  EXPECT_EQ(outputs(*items),
+            (std::vector<std::string>{"a.obj.json", "a.stl.json", "m/UPPER.json", "zeta/b.json"}));
+  EXPECT_EQ((*items)[3].mesh, (fs::path(path("in")) / "zeta/b.obj").string());
+  for (const BatchItem& it : *items) {
+    EXPECT_EQ(it.fit.num_spheres, 3);
+    EXPECT_EQ(it.fit.quality, FitQuality::kFast);
+  }
+}
+
+TEST_F(BatchTest, FolderOutputsFollowTheFormat) {
+  box("in/x/c.ply");
+  BatchOptions o = quickOptions();
+  o.format = "yaml";
+  auto items = listBatchItems(path("in"), o);
+  ASSERT_TRUE(items.ok()) << items.error().message;
+  EXPECT_EQ(outputs(*items), std::vector<std::string>{"x/c.yaml"});
+  o.format = "obj";
+  test::expectError(listBatchItems(path("in"), o), ErrorCode::kInvalidArgument, "obj", "format");
+}
+
+TEST_F(BatchTest, EmptyFolderGivesNoItems) {
+  fs::create_directories(path("empty"));
+  auto items = listBatchItems(path("empty"), quickOptions());
+  ASSERT_TRUE(items.ok());
+  EXPECT_TRUE(items->empty());
+}
+
+TEST_F(BatchTest, InputThatIsNeitherFolderNorManifestIsRefused) {
+  test::expectError(listBatchItems(path("missing"), quickOptions()), ErrorCode::kUnreadable,
+                    "missing", "no such file");
+  const std::string mesh = box("one.obj");
+  test::expectError(listBatchItems(mesh, quickOptions()), ErrorCode::kUnreadable, "one.obj",
+                    "manifest");
+}
+
+TEST_F(BatchTest, CsvManifestWithPerItemOptions) {
+  const std::string csv = put("lists/items.csv",
+                              "# comment line\n"
+                              "mesh, n, seed, quality, iterations, output\n"
+                              "parts/a.obj, 5, 7, best, 12,\n"
+                              "\n"
+                              "\"parts/with, comma.obj\",,,,, \"named/\"\"q\"\".txt\"\n"
+                              "/abs/elsewhere/c.stl,2,,,,\r\n"
+                              "../up/d.stl,4,,,,\n");
+  auto items = listBatchItems(csv, quickOptions());
+  ASSERT_TRUE(items.ok()) << items.error().message;
+  ASSERT_EQ(items->size(), 4u);
+  const BatchItem& a = (*items)[0];
+  EXPECT_EQ(a.mesh, (fs::path(path("lists")) / "parts/a.obj").string());
+  EXPECT_EQ(a.output, "parts/a.json");
+  EXPECT_EQ(a.fit.num_spheres, 5);
+  EXPECT_EQ(a.fit.seed, 7u);
+  EXPECT_EQ(a.fit.quality, FitQuality::kBest);
+  ASSERT_TRUE(a.fit.iterations.has_value());
+  EXPECT_EQ(*a.fit.iterations, 12);
+  EXPECT_EQ(a.origin, csv + ":3");
+  const BatchItem& b = (*items)[1];  // empty fields keep the batch's values
+  EXPECT_EQ(b.mesh, (fs::path(path("lists")) / "parts/with, comma.obj").string());
+  EXPECT_EQ(b.output, "named/\"q\".txt");
+  EXPECT_EQ(b.fit.num_spheres, 3);
+  EXPECT_EQ(b.fit.seed, 1u);
+  EXPECT_EQ(b.fit.quality, FitQuality::kFast);
+  EXPECT_FALSE(b.fit.iterations.has_value());
+  EXPECT_EQ((*items)[2].mesh, "/abs/elsewhere/c.stl");
+  EXPECT_EQ((*items)[2].output, "c.json");  // outside the manifest's folder: the file name
+  EXPECT_EQ((*items)[2].fit.num_spheres, 2);
+  EXPECT_EQ((*items)[3].output, "d.json");
+}
+
+TEST_F(BatchTest, CsvManifestFromASpreadsheet) {
+  // A byte order mark and CRLF line ends, as spreadsheet programs write them.
+  const std::string csv = put("sheet.csv", "\xEF\xBB\xBFMesh,N\r\na.stl,7\r\n");
+  auto items = listBatchItems(csv, quickOptions());
+  ASSERT_TRUE(items.ok()) << items.error().message;
+  ASSERT_EQ(items->size(), 1u);
+  EXPECT_EQ(items->front().fit.num_spheres, 7);
+  EXPECT_EQ(items->front().output, "a.json");
+}
+
+TEST_F(BatchTest, JsonlManifestWithPerItemOptions) {
+  const std::string jl = put("m.jsonl",
+                             "{\"mesh\": \"a.obj\", \"n\": 6, \"padding\": 0.25, \"method\": "
+                             "\"kmeans\", \"restarts\": 2}\n"
+                             "\n"
+                             "{\"mesh\": \"sub/b.off\", \"seed\": null, \"decimation\": 0.5, "
+                             "\"optimizer\": \"gradient\", \"init\": \"random\", \"points\": "
+                             "\"3000\"}\n");
+  auto items = listBatchItems(jl, quickOptions());
+  ASSERT_TRUE(items.ok()) << items.error().message;
+  ASSERT_EQ(items->size(), 2u);
+  const FitRequest& a = (*items)[0].fit;
+  EXPECT_EQ(a.num_spheres, 6);
+  EXPECT_DOUBLE_EQ(a.padding, 0.25);
+  EXPECT_EQ(a.method, FitMethod::kKMeans);
+  EXPECT_EQ(a.restarts, std::optional<int>(2));
+  const FitRequest& b = (*items)[1].fit;
+  EXPECT_EQ((*items)[1].output, "sub/b.json");
+  EXPECT_EQ(b.num_spheres, 3);
+  EXPECT_EQ(b.seed, 1u);
+  EXPECT_EQ(b.decimation, std::optional<double>(0.5));
+  EXPECT_EQ(b.optimizer, SphereOptimizer::kGradient);
+  EXPECT_EQ(b.init, FitInit::kRandom);
+  EXPECT_EQ(b.points, 3000);
+  EXPECT_EQ((*items)[1].origin, jl + ":3");
+}
+
+TEST_F(BatchTest, BadManifestLinesNameTheFileAndLine) {
+  struct Case {
+    const char* name;
+    const char* text;
+    const char* words;
+  };
+  const Case cases[] = {
+      {"unknown.csv", "mesh,spheres\na.obj,3\n", ":1: unknown column 'spheres'"},
+      {"nomesh.csv", "n\n3\n", ":1: the header has no 'mesh' column"},
+      {"twice.csv", "mesh,n,N\na.obj,3,4\n", ":1: column 'N' given twice"},
+      {"zero.csv", "mesh,n\na.obj,0\n", ":2: n '0': expected an integer from 1"},
+      {"word.csv", "mesh,n\n\na.obj,abc\n", ":3: n 'abc': expected an integer"},
+      {"fields.csv", "mesh,n\na.obj,3,4\n", ":2: expected 2 fields as in the header, found 3"},
+      {"quote.csv", "mesh,n\n\"a.obj,3\n", ":2: unterminated quoted field"},
+      {"empty.csv", "mesh,n\n,3\n", ":2: the mesh path is empty"},
+      {"quality.csv", "mesh,quality\na.obj,great\n", ":2: quality 'great': expected fast"},
+      {"padding.csv", "mesh,padding\na.obj,-1\n", ":2: padding '-1': expected a number >= 0"},
+      {"out.csv", "mesh,output\na.obj,../x.json\n", ":2: output '../x.json': expected a relative"},
+      {"outext.csv", "mesh,output\na.obj,x.obj\n", ":2: output 'x.obj': the extension"},
+      {"same.csv", "mesh,n\na.obj,3\na.obj,4\n", ":3: writes a.obj.json as"},
+      {"json.jsonl", "{\"mesh\": \"a.obj\"}\n{\"mesh\": \"b.obj\",\n", ":2: not valid JSON"},
+      {"array.jsonl", "[1, 2]\n", ":1: expected a JSON object"},
+      {"key.jsonl", "{\"mesh\": \"a.obj\", \"colour\": 1}\n", ":1: unknown key \"colour\""},
+      {"nomesh.jsonl", "{\"n\": 3}\n", ":1: no \"mesh\" key"},
+      {"float.jsonl", "{\"mesh\": \"a.obj\", \"n\": 3.5}\n", ":1: n '3.5': expected an integer"},
+      {"bool.jsonl", "{\"mesh\": \"a.obj\", \"seed\": true}\n",
+       ":1: \"seed\": expected a string or a number"},
+  };
+  for (const Case& c : cases) {
+    const std::string p = put(c.name, c.text);
+    SCOPED_TRACE(c.name);
+    test::expectError(listBatchItems(p, quickOptions()), ErrorCode::kInvalidData, p, c.words);
+  }
+}
+
+// The item's spheres are those of fitSpheres with the options of `sphereset fit`, on the solid
+// loadSolid makes; the file is the one writeSpheres writes.
+TEST_F(BatchTest, ItemGivesTheSpheresOfTheFit) {
+  box("in/part/box.off", 2.0);
+  BatchOptions o = quickOptions();
+  o.fit.seed = 5;
+  auto items = listBatchItems(path("in"), o);
+  ASSERT_TRUE(items.ok() && items->size() == 1);
+  const BatchItem& item = items->front();
+  const BatchItemReport r = runBatchItem(item, path("out"), o);
+  ASSERT_EQ(r.status, BatchStatus::kOk) << r.error;
+  EXPECT_EQ(r.output, "part/box.json");
+  EXPECT_EQ(r.repair, "none");
+
+  auto solid = loadSolid(item.mesh, o.repair);
+  ASSERT_TRUE(solid.ok());
+  const SolidIndex index(solid->repair.solid);
+  FitOptions fo = fitOptionsFor(item.fit);
+  EXPECT_EQ(fo.seed, 5u);
+  EXPECT_EQ(fo.max_iterations, 30);  // the fast preset
+  auto fit = fitSpheres(index, fo);
+  ASSERT_TRUE(fit.ok());
+  SphereFileMeta meta;
+  meta.name = "box";
+  meta.source_mesh = item.mesh;
+  EXPECT_EQ(readAll(path("out/part/box.json")),
+            formatSpheres(SphereFormat::kJson, fit->spheres, meta));
+  EXPECT_EQ(r.spheres, 3);
+  EXPECT_EQ(r.num_spheres, 3);
+  const EvalResult ev = evaluateSpheres(index, fit->spheres, fitCheckEvalOptions(5));
+  EXPECT_DOUBLE_EQ(r.er_sum, fit->energy / ev.mesh_volume);
+  EXPECT_DOUBLE_EQ(r.er_union, ev.er_union);
+  EXPECT_EQ(r.covered, ev.surface_covered && ev.interior_covered);
+  EXPECT_TRUE(r.covered);
+  EXPECT_GT(r.seconds, 0.0);
+  EXPECT_EQ(r.fingerprint, batchFingerprint(item, o).value());
+}
+
+TEST_F(BatchTest, ItemRunsInAnArenaWithTheSameResult) {
+  const std::string mesh = box("box.off");
+  BatchOptions o = quickOptions();
+  BatchItem item{mesh, "one.txt", o.fit, "test"};
+  ASSERT_EQ(runBatchItem(item, path("out"), o).status, BatchStatus::kOk);
+  o.threads = 1;
+  item.output = "two.txt";
+  ASSERT_EQ(runBatchItem(item, path("out"), o).status, BatchStatus::kOk);
+  EXPECT_EQ(readAll(path("out/one.txt")), readAll(path("out/two.txt")));
+}
+
+TEST_F(BatchTest, FailedItemsAreReportedNotThrown) {
+  const std::string garbage = put("bad.stl", "not a mesh at all");
+  BatchOptions o = quickOptions();
+  BatchItem item{garbage, "bad.json", o.fit, "test"};
+  BatchItemReport r = runBatchItem(item, path("out"), o);
+  EXPECT_EQ(r.status, BatchStatus::kError);
+  EXPECT_EQ(r.error_code, ErrorCode::kUnreadable);
+  EXPECT_NE(r.error.find("bad.stl"), std::string::npos) << r.error;
+  EXPECT_TRUE(std::isnan(r.er_sum));
+  EXPECT_FALSE(fs::exists(path("out/bad.json")));
+  EXPECT_FALSE(batchItemDone(item, path("out"), o));
+
+  // An open sheet with the repair off is not a solid.
+  const std::string sheet =
+      put("sheet.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+  o.repair.enabled = false;
+  r = runBatchItem(BatchItem{sheet, "sheet.json", o.fit, "test"}, path("out"), o);
+  EXPECT_EQ(r.status, BatchStatus::kError);
+  EXPECT_EQ(r.error_code, ErrorCode::kNotSolid);
+  EXPECT_NE(r.error.find("sheet.off"), std::string::npos) << r.error;
+
+  // More spheres than points.
+  o.repair.enabled = true;
+  BatchItem many{box("box.off"), "many.json", o.fit, "test"};
+  many.fit.points = 50;
+  many.fit.num_spheres = 500;
+  r = runBatchItem(many, path("out"), o);
+  EXPECT_EQ(r.status, BatchStatus::kError);
+  EXPECT_NE(r.error.find("box.off: "), std::string::npos) << r.error;
+  EXPECT_EQ(reportLine(r).find('\n'), std::string::npos);
+}
+
+TEST(BatchReport, LineRoundTrips) {
+  BatchItemReport r;
+  r.mesh = "in/a \"b\".obj";
+  r.output = "a.json";
+  r.status = BatchStatus::kOk;
+  r.num_spheres = 32;
+  r.spheres = 32;
+  r.er_sum = 0.125;
+  r.er_union = 0.1;
+  r.covered = true;
+  r.repair = "welded";
+  r.seconds = 1.5;
+  r.fingerprint = "0123456789abcdef";
+  const std::string line = reportLine(r);
+  EXPECT_EQ(line.find('\n'), std::string::npos);
+  EXPECT_EQ(line.rfind("{\"mesh\":", 0), 0u) << line;
+  auto back = parseReportLine(line);
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  EXPECT_EQ(reportLine(*back), line);
+  EXPECT_EQ(back->mesh, r.mesh);
+  EXPECT_EQ(back->repair, "welded");
+
+  r.status = BatchStatus::kError;
+  r.er_sum = std::nan("");
+  r.error = "a.obj: no such file";
+  const std::string bad = reportLine(r);
+  EXPECT_NE(bad.find("\"er_sum\":null"), std::string::npos) << bad;
+  back = parseReportLine(bad);
+  ASSERT_TRUE(back.ok());
+  EXPECT_TRUE(std::isnan(back->er_sum));
+  EXPECT_EQ(back->status, BatchStatus::kError);
+  EXPECT_EQ(back->error, r.error);
+
+  EXPECT_FALSE(parseReportLine("{\"mesh\": 3}").ok());
+  EXPECT_FALSE(parseReportLine("not json").ok());
+}
+
+TEST_F(BatchTest, ReportFileHoldsOneLinePerItemInOrder) {
+  const std::string out = path("deep/out");
+  ASSERT_TRUE(startBatchReport(out).ok());
+  EXPECT_EQ(readAll(batchReportPath(out)), "");
+  BatchItemReport r;
+  for (const char* name : {"first", "second"}) {
+    r.mesh = name;
+    ASSERT_TRUE(appendBatchReport(out, r).ok());
+  }
+  const std::string text = readAll(batchReportPath(out));
+  EXPECT_EQ(text, reportLine([&] {
+                    BatchItemReport a = r;
+                    a.mesh = "first";
+                    return a;
+                  }()) +
+                      "\n" + reportLine(r) + "\n");
+  ASSERT_TRUE(startBatchReport(out).ok());  // a new run starts a new report
+  EXPECT_EQ(readAll(batchReportPath(out)), "");
+}
+
+TEST_F(BatchTest, UpToDateItemsAreSkippedAndChangedOnesRunAgain) {
+  box("in/box.off");
+  const BatchOptions o = quickOptions();
+  auto items = listBatchItems(path("in"), o);
+  ASSERT_TRUE(items.ok() && items->size() == 1);
+  const BatchItem item = items->front();
+  const std::string out = path("out");
+  EXPECT_FALSE(batchItemDone(item, out, o));
+  const BatchItemReport first = processBatchItem(item, out, o);
+  ASSERT_EQ(first.status, BatchStatus::kOk) << first.error;
+  EXPECT_TRUE(batchItemDone(item, out, o));
+
+  // A second run skips it and reports the first run's figures.
+  const BatchItemReport again = processBatchItem(item, out, o);
+  EXPECT_EQ(again.status, BatchStatus::kSkipped);
+  EXPECT_EQ(again.er_sum, first.er_sum);
+  EXPECT_EQ(again.seconds, first.seconds);
+  EXPECT_EQ(again.fingerprint, first.fingerprint);
+  BatchOptions no_resume = o;
+  no_resume.resume = false;
+  EXPECT_EQ(processBatchItem(item, out, no_resume).status, BatchStatus::kOk);
+
+  // Changed options: not up to date.
+  BatchItem other = item;
+  other.fit.seed = 2;
+  EXPECT_FALSE(batchItemDone(other, out, o));
+  other = item;
+  other.fit.num_spheres = 4;
+  EXPECT_FALSE(batchItemDone(other, out, o));
+  other = item;
+  other.fit.quality = FitQuality::kDefault;
+  EXPECT_FALSE(batchItemDone(other, out, o));
+  other = item;
+  other.fit.padding = 0.01;
+  EXPECT_FALSE(batchItemDone(other, out, o));
+  BatchOptions changed = o;
+  changed.repair.fill_cavities = false;
+  EXPECT_FALSE(batchItemDone(item, out, changed));
+  // The same options spelled differently (the fast preset's own rounds): up to date.
+  other = item;
+  other.fit.iterations = 30;
+  EXPECT_TRUE(batchItemDone(other, out, o));
+  EXPECT_EQ(processBatchItem(other, out, o).status, BatchStatus::kSkipped);
+
+  // A changed sphere file or mesh, or a missing record: not up to date.
+  const std::string sphere_file = path("out/box.json");
+  const std::string kept = readAll(sphere_file);
+  std::ofstream(sphere_file, std::ios::app) << " ";
+  EXPECT_FALSE(batchItemDone(item, out, o));
+  std::ofstream(sphere_file, std::ios::trunc) << kept;
+  EXPECT_TRUE(batchItemDone(item, out, o));
+  box("in/box.off", 1.5);
+  EXPECT_FALSE(batchItemDone(item, out, o));
+  EXPECT_EQ(processBatchItem(item, out, o).status, BatchStatus::kOk);
+  EXPECT_TRUE(batchItemDone(item, out, o));
+  fs::remove(path("out/.sphereset-batch/box.json.json"));
+  EXPECT_FALSE(batchItemDone(item, out, o));
+  EXPECT_FALSE(skippedBatchItem(item, out, o).has_value());
+}
+
+// A failed run of an item forgets the earlier result: its sphere file stays but is not taken as
+// up to date.
+TEST_F(BatchTest, FailedRunOfADoneItemIsNotUpToDate) {
+  const std::string mesh = box("box.off");
+  const BatchOptions o = quickOptions();
+  const BatchItem item{mesh, "box.json", o.fit, "test"};
+  ASSERT_EQ(runBatchItem(item, path("out"), o).status, BatchStatus::kOk);
+  ASSERT_TRUE(batchItemDone(item, path("out"), o));
+  put("box.off", "garbage");
+  EXPECT_EQ(runBatchItem(item, path("out"), o).status, BatchStatus::kError);
+  box("box.off");
+  EXPECT_TRUE(fs::exists(path("out/box.json")));
+  EXPECT_FALSE(batchItemDone(item, path("out"), o));
+}
+
+TEST(FitPresets, NamesAndOverrides) {
+  for (FitQuality q : {FitQuality::kFast, FitQuality::kDefault, FitQuality::kBest})
+    EXPECT_EQ(fitQualityFromName(fitQualityName(q)).value(), q);
+  test::expectError(fitQualityFromName("great"), ErrorCode::kInvalidArgument, "great",
+                    "expected fast, default or best");
+  EXPECT_EQ(fitMethodFromName("octree").value(), FitMethod::kOctree);
+  EXPECT_FALSE(sphereOptimizerFromName("newton").ok());
+
+  const FitOptions fast = fitPreset(10, FitQuality::kFast);
+  EXPECT_EQ(fast.target_points, 2000);  // 0.4 × max(5000, 1000)
+  EXPECT_EQ(fast.max_iterations, 30);
+  EXPECT_EQ(fast.optimizer_evaluations, 30);
+  EXPECT_EQ(fast.max_failed_teleports, 2);
+  const FitOptions best = fitPreset(100, FitQuality::kBest);
+  EXPECT_EQ(best.target_points, 10000);
+  EXPECT_EQ(best.restarts, 4);
+  EXPECT_EQ(best.decimation, 0.5);
+  FitRequest req;
+  req.num_spheres = 100;
+  req.quality = FitQuality::kBest;
+  req.restarts = 2;
+  req.points = 777;
+  req.seed = 9;
+  const FitOptions fo = fitOptionsFor(req);
+  EXPECT_EQ(fo.restarts, 2);
+  EXPECT_EQ(fo.decimation, 0.5);
+  EXPECT_EQ(fo.target_points, 777);
+  EXPECT_EQ(fo.seed, 9u);
+  EXPECT_EQ(fo.max_iterations, 100);
+}
 
 }  // namespace
 }  // namespace sphereset

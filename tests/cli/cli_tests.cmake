@@ -217,3 +217,44 @@ cli_test(robot_summary 0 ARGS robot ${robot}/three_link.urdf --package-path ${ro
          --link-spheres base_link=2 --link-spheres link1=2 --link-spheres link2=3 --quality fast
          -o ${work}/three_summary.json
          STDERR "link +triangles +repair.*link2 +300 +none +3 .*tool: no <collision> geometry, its <visual> geometry was used")
+
+# Batch: a folder (recursively) or a manifest, one sphere file per mesh, failed items reported,
+# up-to-date items skipped on the next run.
+file(REMOVE_RECURSE ${work}/batch_in ${work}/batch_ok ${work}/batch_empty)
+file(MAKE_DIRECTORY ${work}/batch_in/sub ${work}/batch_ok/sub ${work}/batch_empty)
+file(COPY ${link} DESTINATION ${work}/batch_in)
+file(COPY ${link} DESTINATION ${work}/batch_ok)
+file(COPY ${work}/cavity.off DESTINATION ${work}/batch_in/sub)
+file(COPY ${work}/cavity.off DESTINATION ${work}/batch_ok/sub)
+file(WRITE ${work}/batch_in/bad.stl "not a mesh at all")
+file(WRITE ${work}/batch.csv "# items\nmesh,n,output\n${link},3,robot/link3.txt\ncavity.off,5,\n")
+file(WRITE ${work}/batch.jsonl "{\"mesh\": \"cavity.off\", \"n\": 5, \"seed\": 3}\n")
+file(WRITE ${work}/batch_bad.csv "mesh,n\ncavity.off,abc\n")
+cli_test(batch_failed_item 8 ARGS batch ${work}/batch_in -o ${work}/batch_in_out -n 4 --quality fast
+         -q STDERR "batch_in: 1 of 3 items failed .see .*report.jsonl"
+         FILE ${work}/batch_in_out/sub/cavity.json SPHERES 4)
+cli_test(batch_failed_dry_run 0 ARGS batch ${work}/batch_in -o ${work}/batch_in_out -n 4
+         --quality fast --dry-run
+         STDOUT "bad.stl -> bad.json n=4 to fit\n.*fr3_link1_collision.stl -> fr3_link1_collision.json n=4 up to date\n.*cavity.off -> sub/cavity.json n=4 up to date")
+set_tests_properties(cli.batch_failed_dry_run PROPERTIES DEPENDS cli.batch_failed_item)
+cli_test(batch_first 0 ARGS batch ${work}/batch_ok -o ${work}/batch_ok_out -n 4 --quality fast
+         --format txt STDERR "2 items: 2 fitted, 0 skipped, 0 failed"
+         FILE ${work}/batch_ok_out/fr3_link1_collision.txt SPHERES 4)
+cli_test(batch_resumed 0 ARGS batch ${work}/batch_ok -o ${work}/batch_ok_out -n 4 --quality fast
+         --format txt STDERR "2 items: 0 fitted, 2 skipped, 0 failed")
+set_tests_properties(cli.batch_resumed PROPERTIES DEPENDS cli.batch_first)
+cli_test(batch_changed_options 0 ARGS batch ${work}/batch_ok -o ${work}/batch_ok_out -n 4
+         --quality fast --format txt --seed 2 STDERR "2 items: 2 fitted, 0 skipped, 0 failed")
+set_tests_properties(cli.batch_changed_options PROPERTIES DEPENDS cli.batch_resumed)
+cli_test(batch_csv 0 ARGS batch ${work}/batch.csv -o ${work}/batch_csv_out --quality fast -q
+         FILE ${work}/batch_csv_out/robot/link3.txt SPHERES 3)
+cli_test(batch_jsonl 0 ARGS batch ${work}/batch.jsonl -o ${work}/batch_jsonl_out --quality fast -q
+         --format sph FILE ${work}/batch_jsonl_out/cavity.sph SPHERES 5)
+cli_test(batch_bad_manifest 4 ARGS batch ${work}/batch_bad.csv -o ${work}/never40 -q
+         STDERR "batch_bad.csv:2: n 'abc': expected an integer" FORBID ${work}/never40)
+cli_test(batch_missing 3 ARGS batch ${work}/missing_folder -o ${work}/never41 -q
+         STDERR "missing_folder: no such file or folder" FORBID ${work}/never41)
+cli_test(batch_empty 0 ARGS batch ${work}/batch_empty -o ${work}/batch_empty_out
+         STDERR "batch_empty: no meshes")
+cli_test(batch_bad_format 2 ARGS batch ${work}/batch_ok -o ${work}/never42 --format obj
+         FORBID ${work}/never42)
