@@ -24,6 +24,13 @@ packages=(
   libclang-rt-14-dev   # libFuzzer and the sanitizer runtimes for clang 14
   python3              # benchmark scripts (CSV tables)
   python3-matplotlib   # benchmark plots (PNG)
+  python3-dev          # Python module: headers of the interpreter it is built for
+  pybind11-dev         # Python module: C++ bindings
+  python3-numpy        # Python module: arrays in and out
+  python3-pytest       # Python module: its tests (python/tests, run by CTest)
+  python3-distributed  # Python module: the batch on a Dask cluster (sphereset.batch)
+  python3-venv         # Python module: `pip install .` into a virtual environment
+  python3-pip          # Python module: `pip install .`
 )
 
 missing=()

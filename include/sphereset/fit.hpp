@@ -69,7 +69,9 @@ struct FitOptions {
   // them too, exactly, after everything else (a last pass of the surface bound over them).
   // Not owned; may be null.
   const Mesh* original = nullptr;
-  std::function<void(const FitProgress&)> progress;  // called from the calling thread
+  // Called from the calling thread at each phase and round. It may throw to cancel the fit
+  // (how the Python module honours Ctrl-C): the exception leaves fitSpheres, nothing is returned.
+  std::function<void(const FitProgress&)> progress;
 };
 
 // teleport: choosing the moves and the decimation's removals (their rounds count as

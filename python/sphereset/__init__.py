@@ -1,0 +1,391 @@
+"""sphereset: bounding sphere sets for solid triangle meshes, from Python.
+
+Variational sphere-set approximation (Wang et al. 2006) with a guaranteed bound of the surface,
+sphere trees, queries, robots and sphere files, on numpy arrays::
+
+    import sphereset as ss
+    m = ss.load_mesh("spot.obj")           # ss.Mesh: .vertices (V, 3) float64, .faces (F, 3)
+    m = ss.Mesh(vertices, faces)           # from arrays, no file
+    r = ss.fit(m, n=32, seed=1)            # r.spheres: (32, 4) float64 rows x, y, z, r
+    e = ss.evaluate(m, r.spheres)          # E_r, coverage certificates, proximity, shadows
+
+`fit` takes the options of ``sphereset fit`` with the same defaults and gives the same spheres
+for the same seed. Meshes that are not clean solids are repaired as the command line does
+(``repair="off"`` refuses them). Errors raise subclasses of :class:`Error` (also ValueError or
+OSError) carrying the library's one-line message. Long calls release the GIL; Ctrl-C cancels a
+fit (KeyboardInterrupt) at its next progress report.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+from dataclasses import dataclass, field
+from typing import Any, Callable, Dict, List, Optional, Tuple, Union
+
+import numpy as np
+
+from . import _sphereset as _core
+from ._sphereset import (  # noqa: F401  (re-exported)
+    Error,
+    InvalidArgumentError,
+    InvalidDataError,
+    Mesh,
+    NotSolidError,
+    Robot,
+    Solid,
+    SphereTree,
+    UnreadableError,
+    WriteError,
+    curve_volume,
+    format_sphere_tree,
+    format_sphere_urdf,
+    format_spheres,
+    load_robot,
+    read_link_spheres,
+    read_sphere_tree,
+    read_spheres,
+    sphere_format,
+    split_budget,
+    write_link_spheres,
+    write_robot_spheres,
+    write_sphere_mesh,
+    write_sphere_tree,
+    write_sphere_urdf,
+    write_spheres,
+)
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "Error", "InvalidArgumentError", "InvalidDataError", "NotSolidError", "UnreadableError",
+    "WriteError", "Mesh", "Solid", "SphereTree", "Robot", "FitResult", "EvalResult",
+    "CheckResult", "TreeResult", "PointQueryResult", "PairQueryResult", "load_mesh", "solid",
+    "check", "diagnose", "fit", "evaluate", "tree", "build_tree", "query_tree", "point_distance",
+    "contains", "segment_outside_length", "separation", "overlaps", "read_spheres",
+    "write_spheres", "format_spheres", "sphere_format", "read_link_spheres", "write_link_spheres",
+    "read_sphere_tree", "write_sphere_tree", "format_sphere_tree", "write_sphere_mesh",
+    "load_robot", "write_robot_spheres", "write_sphere_urdf", "format_sphere_urdf",
+    "split_budget", "curve_volume",
+]
+
+PathLike = Union[str, "os.PathLike[str]"]
+MeshLike = Union[Mesh, Solid, PathLike]
+ProgressCallback = Callable[[Dict[str, Any]], None]
+
+
+def load_mesh(path: PathLike, *, weld_tolerance: float = 0.0) -> Mesh:
+    """Reads a mesh file (OBJ, PLY, STL, OFF, DAE, glTF/GLB, ... anything assimp reads).
+
+    Vertices closer than ``weld_tolerance`` are merged (0: exact duplicates only), degenerate
+    and duplicate triangles dropped, the orientation made outward. Raises UnreadableError
+    (missing file, unknown format) or InvalidDataError (NaN, bad index, no triangles).
+    """
+    return _core._load_mesh(os.fspath(path), weld_tolerance)
+
+
+def solid(mesh: MeshLike, *, repair: Union[str, bool] = "auto",
+          weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
+          wrap_alpha: float = 0.0, wrap_offset: float = 0.0) -> Solid:
+    """The solid the fit runs on: ``mesh`` repaired as ``sphereset fit`` does and indexed.
+
+    ``mesh`` is a Mesh, a path, or already a Solid (returned as it is). ``repair`` is "auto"
+    (weld, re-orient, cap holes, unite crossing shells, wrap) or "off" (a mesh that is not a clean
+    closed solid raises NotSolidError). ``weld_tolerance`` None welds automatically (exact, then
+    up to 1e-6 of the diagonal if that closes the mesh). ``fill_cavities`` fills inner cavities;
+    ``wrap_alpha``/``wrap_offset`` (absolute, 0: from the mesh) tune the wrapping.
+    """
+    if isinstance(mesh, Solid):
+        return mesh
+    if not isinstance(mesh, Mesh):
+        mesh = load_mesh(mesh)
+    if repair is True:
+        repair = "auto"
+    elif repair is False:
+        repair = "off"
+    return Solid(mesh, repair=repair, weld_tolerance=weld_tolerance,
+                 fill_cavities=fill_cavities, wrap_alpha=wrap_alpha, wrap_offset=wrap_offset)
+
+
+@dataclass
+class CheckResult:
+    """What ``sphereset check`` reports about a mesh: its diagnosis as loaded (topology,
+    volume, bounds), its shells and crossing triangles, and what the fit's repair does with it
+    (``repair`` is None and ``error`` says why when the fit refuses it)."""
+
+    name: str
+    diagnosis: Dict[str, Any]
+    load: Dict[str, Any]
+    shells: Dict[str, Any]
+    repair: Optional[Dict[str, Any]]
+    error: Optional[str]
+
+    @property
+    def fit_accepts(self) -> bool:
+        """Whether ``fit`` accepts the mesh with these repair options."""
+        return self.error is None
+
+
+def diagnose(mesh: Union[Mesh, PathLike]) -> Dict[str, Any]:
+    """Topological and geometric facts of a mesh (vertices, triangles, edges, boundary and
+    non-manifold edges, orientation, components, closed/manifold/oriented/solid, volume, area,
+    bounding box, edge lengths), as ``sphereset check --json`` reports them."""
+    if not isinstance(mesh, Mesh):
+        mesh = load_mesh(mesh)
+    return _core._diagnose(mesh)
+
+
+def check(mesh: Union[Mesh, PathLike], *, repair: Union[str, bool] = "auto",
+          weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
+          wrap_alpha: float = 0.0, wrap_offset: float = 0.0) -> CheckResult:
+    """Diagnoses a mesh as a solid and says what the fit does about its problems, like
+    ``sphereset check`` (same options as :func:`solid`). Never raises for a mesh the fit
+    refuses: ``result.error`` holds the reason; a file that cannot be read raises."""
+    if not isinstance(mesh, Mesh):
+        mesh = load_mesh(mesh, weld_tolerance=max(0.0, weld_tolerance or 0.0))
+    rep: Optional[Dict[str, Any]] = None
+    err: Optional[str] = None
+    try:
+        rep = solid(mesh, repair=repair, weld_tolerance=weld_tolerance,
+                    fill_cavities=fill_cavities, wrap_alpha=wrap_alpha,
+                    wrap_offset=wrap_offset).repair
+    except Error as e:
+        err = str(e)
+    return CheckResult(name=mesh.name, diagnosis=_core._diagnose(mesh), load=mesh.load_report,
+                       shells=_core._shells(mesh), repair=rep, error=err)
+
+
+@dataclass
+class FitResult:
+    """A fitted sphere set and the fit's diagnostics (fit.hpp's FitResult).
+
+    ``spheres`` is (n, 4) float64 rows x, y, z, r; ``outside_volume`` the exact outside volume
+    of each sphere; ``er_sum`` the paper's E_r (Σ outside volume / mesh volume, of the repaired
+    solid's volume when the mesh was repaired); ``seconds`` the timings by phase; ``options``
+    the options the fit ran with (after the quality preset); ``repair`` what the repair did.
+    """
+
+    spheres: np.ndarray
+    outside_volume: np.ndarray
+    energy_history: np.ndarray
+    energy: float
+    energy_before_bounding: float
+    mesh_volume: float
+    er_sum: float
+    er_sum_before_bounding: float
+    rounds: int
+    converged: bool
+    teleports: int
+    teleports_kept: int
+    points: int
+    interior_points: int
+    sov_queries: int
+    sov_queries_culled: int
+    optimizer_queries: int
+    bounding_enlarged: int
+    bounding_pieces: int
+    bounding_queries: int
+    bounding_interior_cells: int
+    shrink_passes: int
+    decimated: int
+    idle_teleports: int
+    restart: int
+    seconds: Dict[str, float]
+    options: Dict[str, Any]
+    repair: Dict[str, Any]
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The fields as a dict (arrays as lists), e.g. for JSON."""
+        return {k: (v.tolist() if isinstance(v, np.ndarray) else v)
+                for k, v in dataclasses.asdict(self).items()}
+
+
+def fit(mesh: MeshLike, n: int = 32, *, seed: int = 1, quality: str = "default",
+        padding: float = 0.0, points: int = 0, iterations: Optional[int] = None,
+        restarts: Optional[int] = None, decimation: Optional[float] = None,
+        optimizer: str = "powell", init: str = "fps", method: str = "variational",
+        repair: Union[str, bool] = "auto", weld_tolerance: Optional[float] = None,
+        fill_cavities: bool = True, wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
+        progress: Optional[ProgressCallback] = None) -> FitResult:
+    """Fits ``n`` spheres that bound the solid: the options and defaults of ``sphereset fit``.
+
+    ``quality`` "fast", "default" or "best" sets the points, rounds, optimiser effort, restarts
+    and decimation; ``points`` (0: max(5000, 100 n) times the preset's factor), ``iterations``,
+    ``restarts`` and ``decimation`` override it when given. ``padding`` is added to every radius.
+    ``optimizer`` "powell" or "gradient"; ``init`` "fps" or "random"; ``method`` "variational",
+    "kmeans" or "octree". The repair keywords are those of :func:`solid`. ``progress`` is called
+    with {"phase", "iteration", "energy", "spheres", "seconds"} at each round; an exception it
+    raises cancels the fit and propagates, and so does Ctrl-C (KeyboardInterrupt).
+
+    The spheres equal those of ``sphereset fit MESH -n N --seed S`` with the same options.
+    """
+    s = solid(mesh, repair=repair, weld_tolerance=weld_tolerance, fill_cavities=fill_cavities,
+              wrap_alpha=wrap_alpha, wrap_offset=wrap_offset)
+    d = _core._fit(s, int(n), quality, int(seed), float(padding), int(points), iterations,
+                   restarts, decimation, optimizer, init, method, progress)
+    return FitResult(**d)
+
+
+@dataclass
+class EvalResult:
+    """How tightly a sphere set bounds a solid (evaluate.hpp's EvalResult, as
+    ``sphereset eval --json`` reports it): E_r summed (exact) and of the union (Monte Carlo,
+    with its standard error), certified surface/interior/original coverage with the largest gaps
+    (fractions of the bounding-box diagonal), proximity and shadow errors."""
+
+    spheres: int
+    mesh_volume: float
+    bbox_diagonal: float
+    er_sum: float
+    er_union: float
+    er_union_stderr: float
+    outside_volume: np.ndarray
+    surface_covered: bool
+    max_surface_gap: float
+    surface_uncertified_area: float
+    uncovered_triangles: int
+    original_covered: bool
+    max_original_gap: float
+    original_uncovered_triangles: int
+    interior_covered: bool
+    max_interior_gap: float
+    interior_uncertified_cells: int
+    proximity_error: float
+    shadow_error_sky: float
+    shadow_error_lights: float
+    seconds: float
+    repair: Dict[str, Any]
+
+    @property
+    def covered(self) -> bool:
+        """Surface, interior and original triangles all certified covered."""
+        return self.surface_covered and self.interior_covered and self.original_covered
+
+    def to_dict(self) -> Dict[str, Any]:
+        return {k: (v.tolist() if isinstance(v, np.ndarray) else v)
+                for k, v in dataclasses.asdict(self).items()}
+
+
+def evaluate(mesh: MeshLike, spheres: Any, *, seed: int = 1, samples: int = 200000,
+             segments: int = 3000, up: str = "y", shadow_resolution: int = 48,
+             shadow_lights: int = 64, surface_max_depth: int = 10, interior_max_depth: int = 5,
+             repair: Union[str, bool] = "auto", weld_tolerance: Optional[float] = None,
+             fill_cavities: bool = True, wrap_alpha: float = 0.0,
+             wrap_offset: float = 0.0) -> EvalResult:
+    """Measures (N, 4) ``spheres`` against the solid with the defaults of ``sphereset eval``.
+
+    ``samples`` Monte Carlo samples for the union's E_r, ``segments`` random segments for the
+    proximity error, ``shadow_resolution`` (0 skips the shadows) and ``shadow_lights`` for the
+    shadow errors on a ground plane under the object along ``up``. The coverage check
+    ``sphereset fit`` runs is ``samples=100000, segments=0, shadow_resolution=0``.
+    """
+    s = solid(mesh, repair=repair, weld_tolerance=weld_tolerance, fill_cavities=fill_cavities,
+              wrap_alpha=wrap_alpha, wrap_offset=wrap_offset)
+    d = _core._evaluate(s, spheres, int(seed), int(samples), int(segments), up,
+                        int(shadow_resolution), int(shadow_lights), int(surface_max_depth),
+                        int(interior_max_depth))
+    return EvalResult(**d)
+
+
+@dataclass
+class TreeResult:
+    """A sphere tree (``tree``) and its levels' statistics, root first: spheres, Lloyd rounds,
+    convergence and outside volume (E_r when built against a solid); ``fit`` is the leaves' fit
+    when the tree was fitted to a mesh."""
+
+    tree: SphereTree
+    levels: List[Dict[str, Any]]
+    seconds: float
+    fit: Optional[FitResult] = None
+    repair: Optional[Dict[str, Any]] = None
+
+
+def tree(mesh: MeshLike, *, branching: int = 8, depth: int = 2, parents: str = "minimal",
+         n: Optional[int] = None, seed: int = 1, quality: str = "default", padding: float = 0.0,
+         points: int = 0, iterations: Optional[int] = None, restarts: Optional[int] = None,
+         decimation: Optional[float] = None, optimizer: str = "powell", init: str = "fps",
+         method: str = "variational", repair: Union[str, bool] = "auto",
+         weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
+         wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
+         progress: Optional[ProgressCallback] = None) -> TreeResult:
+    """Fits leaves and builds a sphere tree over them, like ``sphereset tree``: ``n`` leaves
+    (None: branching**depth), levels above by Lloyd clustering of the children, each parent the
+    minimal ball enclosing its children (``parents="minimal"``) or the enclosing ball of least
+    outside volume ("outside"). Fit options as :func:`fit`."""
+    s = solid(mesh, repair=repair, weld_tolerance=weld_tolerance, fill_cavities=fill_cavities,
+              wrap_alpha=wrap_alpha, wrap_offset=wrap_offset)
+    d = _core._fit_tree(s, int(branching), int(depth), parents, n, quality, int(seed),
+                        float(padding), int(points), iterations, restarts, decimation, optimizer,
+                        init, method, progress)
+    d["fit"] = FitResult(**d["fit"], options={}, repair=d["repair"])
+    return TreeResult(**d)
+
+
+def build_tree(leaves: Any, *, branching: int = 8, depth: int = 2, parents: str = "minimal",
+               iterations: int = 20, seed: int = 1,
+               solid: Optional[Solid] = None) -> TreeResult:  # noqa: F811
+    """Builds the levels above (N, 4) ``leaves`` (at most branching**depth). ``solid`` is needed
+    for ``parents="outside"`` and gives each level's outside volume."""
+    d = _core._build_tree(leaves, int(branching), int(depth), parents, int(iterations),
+                          int(seed), solid)
+    return TreeResult(**d)
+
+
+def query_tree(spheres: Any, branching: int = 8) -> SphereTree:
+    """A query tree over a plain (N, 4) set (minimal enclosing parents), to reuse across
+    queries; sphere ids it reports are slots of the tree."""
+    return _core._query_tree(spheres, int(branching))
+
+
+@dataclass
+class PointQueryResult:
+    """Per point: the signed distance to the sphere set (min |p - c| - r: exact distance to the
+    union when positive, the deepest penetration when <= 0), the sphere attaining it (its row in
+    an (N, 4) set, its slot in a SphereTree), and whether the point is inside the union."""
+
+    distance: np.ndarray
+    sphere: np.ndarray
+    inside: np.ndarray
+
+
+def point_distance(spheres: Union[SphereTree, Any], points: Any) -> PointQueryResult:
+    """Signed distance from each of (P, 3) ``points`` to a sphere set or tree."""
+    d, i, c = _core._point_distance(spheres, points)
+    return PointQueryResult(distance=d, sphere=i, inside=c)
+
+
+def contains(spheres: Union[SphereTree, Any], points: Any) -> np.ndarray:
+    """Whether each of (P, 3) ``points`` is inside the union of the spheres (bool array)."""
+    return _core._point_distance(spheres, points)[2]
+
+
+def segment_outside_length(spheres: Union[SphereTree, Any], a: Any, b: Any) -> np.ndarray:
+    """Length of each segment a[i] -> b[i] ((P, 3) each) outside the union of the spheres."""
+    return _core._segment_outside_length(spheres, a, b)
+
+
+@dataclass
+class PairQueryResult:
+    """The closest pair of spheres of two sets under their poses: signed distance
+    |c_a - c_b| - r_a - r_b (negative: overlap depth), the pair (rows of (N, 4) sets or slots of
+    trees), pairs examined; ``overlap`` for :func:`overlaps`."""
+
+    distance: float
+    sphere_a: int
+    sphere_b: int
+    visited: int
+    overlap: Optional[bool] = None
+
+
+def separation(a: Union[SphereTree, Any], b: Union[SphereTree, Any], *,
+               pose_a: Any = None, pose_b: Any = None) -> PairQueryResult:
+    """Signed distance between two sphere sets (or trees), each placed by a 4x4 rigid pose
+    (None: identity)."""
+    return PairQueryResult(**_core._separation(a, b, pose_a, pose_b, False))
+
+
+def overlaps(a: Union[SphereTree, Any], b: Union[SphereTree, Any], *, pose_a: Any = None,
+             pose_b: Any = None) -> PairQueryResult:
+    """Whether two sphere sets under their poses overlap; stops at the first overlapping pair
+    (returned). ``result.overlap`` is the answer."""
+    return PairQueryResult(**_core._separation(a, b, pose_a, pose_b, True))

@@ -1,0 +1,224 @@
+"""Fit a whole collection of meshes on a Dask cluster, as ``sphereset batch`` does on one machine.
+
+    python3 -m sphereset.batch INPUT -o OUT_DIR --scheduler tcp://HOST:8786 [fit options]
+    python3 -m sphereset.batch INPUT -o OUT_DIR --local-workers 2 [fit options]
+
+INPUT is a folder (every mesh file below it) or a manifest (.csv / .jsonl), as for
+``sphereset batch``. Each mesh is one dask.distributed task that runs the library's batch core
+(batch.hpp: processBatchItem) in a worker, so the sphere files, their records and
+OUT_DIR/report.jsonl (one line per item, in item order, appended as the items finish in order)
+are those the command line writes; items already up to date are skipped (resume; --force fits
+them again). Exit codes are those of `sphereset batch` (8: some items failed, 7: some failed
+the coverage check).
+
+On a real cluster the workers need the ``sphereset`` package installed (the same version) and
+must see the input meshes and OUT_DIR at the same paths as this process: give absolute paths on
+a shared file system (NFS, a mounted object store). Relative paths are resolved against the
+directory this command runs in, which the workers must share.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import time
+import uuid
+from typing import Any, Dict, List, Optional
+
+from . import _sphereset as _core
+
+__all__ = ["batch_options", "list_items", "process_item", "run_batch", "main"]
+
+
+def batch_options(n: int = 32, *, quality: str = "default", seed: int = 1, padding: float = 0.0,
+                  points: int = 0, iterations: Optional[int] = None,
+                  restarts: Optional[int] = None, decimation: Optional[float] = None,
+                  optimizer: str = "powell", init: str = "fps", method: str = "variational",
+                  repair: str = "auto", weld_tolerance: Optional[float] = None,
+                  fill_cavities: bool = True, wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
+                  format: str = "json", resume: bool = True,  # noqa: A002
+                  threads: int = 0) -> Dict[str, Any]:
+    """The options of a batch as a plain dict (picklable, sent to the workers): the fit and
+    repair options of ``sphereset fit``, the sphere file format, resuming, and the threads of
+    one item's fit (0: all of the worker's cores)."""
+    return {
+        "fit": {"n": int(n), "quality": quality, "seed": int(seed), "padding": float(padding),
+                "points": int(points), "iterations": iterations, "restarts": restarts,
+                "decimation": decimation, "optimizer": optimizer, "init": init,
+                "method": method},
+        "repair": repair,
+        "weld_tolerance": -1.0 if weld_tolerance is None else float(weld_tolerance),
+        "fill_cavities": bool(fill_cavities), "wrap_alpha": float(wrap_alpha),
+        "wrap_offset": float(wrap_offset), "format": format, "resume": bool(resume),
+        "threads": int(threads),
+    }
+
+
+def list_items(input_path: str, options: Dict[str, Any]) -> List[Dict[str, Any]]:
+    """The items of a batch in run order: dicts {mesh, output, origin, fit}."""
+    return _core._batch_items(os.fspath(input_path), options)
+
+
+def process_item(item: Dict[str, Any], out_dir: str, options: Dict[str, Any]) -> str:
+    """Fits one item into ``out_dir`` (or skips it when up to date) and returns its report line.
+    This is the task each Dask worker runs."""
+    return _core._batch_process(item, out_dir, options)
+
+
+def _progress(done: int, total: int, t0: float, failed: int, quiet: bool) -> None:
+    if quiet:
+        return
+    el = time.monotonic() - t0
+    rate = done / el * 60.0 if el > 0 else 0.0
+    left = (total - done) / (done / el) if done and el > 0 else float("nan")
+    msg = (f"\rbatch: {done}/{total} items, {rate:.1f} items/min, "
+           f"{left:.0f} s left, {failed} failed   ")
+    sys.stderr.write(msg if sys.stderr.isatty() else msg.strip() + "\n")
+    sys.stderr.flush()
+
+
+def run_batch(input_path: str, out_dir: str, options: Dict[str, Any], client: Any,
+              quiet: bool = False) -> List[str]:
+    """Runs every item of ``input_path`` as one task of the dask.distributed ``client`` and
+    writes OUT_DIR/report.jsonl in item order. Returns the report lines."""
+    import json
+
+    from distributed import as_completed
+
+    out_dir = os.path.abspath(out_dir)
+    items = list_items(input_path, options)
+    _core._batch_start_report(out_dir)
+    t0 = time.monotonic()
+    # One task per mesh. A task is an effect (files written): its key is new for every run, so
+    # that the scheduler never hands back the result of an earlier run's task.
+    run = uuid.uuid4().hex
+    futures = [client.submit(process_item, it, out_dir, options, key=f"sphereset-{run}-{i}",
+                             pure=False) for i, it in enumerate(items)]
+    index = {f.key: i for i, f in enumerate(futures)}
+    lines: List[Optional[str]] = [None] * len(items)
+    next_line = 0
+    done = failed = 0
+    for fut in as_completed(futures):
+        i = index[fut.key]
+        lines[i] = fut.result()
+        fut.release()
+        done += 1
+        failed += json.loads(lines[i])["status"] == "error"
+        # Whole lines, in item order: everything finished up to the first item still running.
+        while next_line < len(items) and lines[next_line] is not None:
+            _core._batch_append_report(out_dir, lines[next_line])
+            next_line += 1
+        _progress(done, len(items), t0, failed, quiet)
+    if not quiet and items and sys.stderr.isatty():
+        sys.stderr.write("\n")
+    return [line for line in lines if line is not None]
+
+
+def _exit_code(e: Exception) -> int:
+    """The exit code `sphereset` gives the same error."""
+    for cls, code in ((_core.InvalidArgumentError, 2), (_core.UnreadableError, 3),
+                      (_core.InvalidDataError, 4), (_core.NotSolidError, 5),
+                      (_core.WriteError, 6)):
+        if isinstance(e, cls):
+            return code
+    return 1
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog="python3 -m sphereset.batch",
+        description="Fit every mesh of a folder or manifest on a Dask cluster, one task per mesh; "
+                    "the same files and report as `sphereset batch`.")
+    p.add_argument("input", help="folder of meshes, or a manifest (.csv or .jsonl)")
+    p.add_argument("-o", "--output", required=True, help="output folder")
+    where = p.add_mutually_exclusive_group(required=True)
+    where.add_argument("--scheduler", help="address of a running Dask scheduler, e.g. "
+                                           "tcp://host:8786 (or a scheduler JSON file)")
+    where.add_argument("--local-workers", type=int, metavar="K",
+                       help="start a local cluster of K worker processes")
+    p.add_argument("--threads", type=int, default=None,
+                   help="threads of one item's fit (default: all of a remote worker's cores; "
+                        "cores / K for --local-workers)")
+    p.add_argument("-n", "--spheres", type=int, default=32, help="spheres per mesh (default 32)")
+    p.add_argument("--quality", default="default", choices=["fast", "default", "best"])
+    p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--points", type=int, default=0)
+    p.add_argument("--iterations", type=int, default=None)
+    p.add_argument("--restarts", type=int, default=None)
+    p.add_argument("--decimation", type=float, default=None)
+    p.add_argument("--padding", type=float, default=0.0)
+    p.add_argument("--optimizer", default="powell", choices=["powell", "gradient"])
+    p.add_argument("--init", default="fps", choices=["fps", "random"])
+    p.add_argument("--method", default="variational", choices=["variational", "kmeans", "octree"])
+    p.add_argument("--repair", default="auto", choices=["auto", "off"])
+    p.add_argument("--weld-tolerance", type=float, default=None)
+    p.add_argument("--fill-cavities", dest="fill_cavities", action="store_true", default=True)
+    p.add_argument("--keep-cavities", dest="fill_cavities", action="store_false")
+    p.add_argument("--wrap-alpha", type=float, default=0.0)
+    p.add_argument("--wrap-offset", type=float, default=0.0)
+    p.add_argument("--format", default="json", choices=["json", "txt", "sph", "yaml"],
+                   help="sphere file format (default json)")
+    p.add_argument("--force", action="store_true",
+                   help="fit every item again, even those up to date")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
+    return p
+
+
+def main(argv: Optional[List[str]] = None) -> int:
+    a = _parser().parse_args(argv)
+    from distributed import Client, LocalCluster
+
+    cluster = None
+    if a.local_workers is not None:
+        if a.local_workers < 1:
+            print("sphereset.batch: --local-workers must be at least 1", file=sys.stderr)
+            return 2
+        threads = a.threads if a.threads is not None else max(
+            1, (os.cpu_count() or 1) // a.local_workers)
+        cluster = LocalCluster(n_workers=a.local_workers, threads_per_worker=1, processes=True,
+                               dashboard_address=":0")
+        client = Client(cluster)
+    else:
+        threads = a.threads if a.threads is not None else 0
+        client = Client(a.scheduler)
+    try:
+        opts = batch_options(
+            a.spheres, quality=a.quality, seed=a.seed, padding=a.padding, points=a.points,
+            iterations=a.iterations, restarts=a.restarts, decimation=a.decimation,
+            optimizer=a.optimizer, init=a.init, method=a.method, repair=a.repair,
+            weld_tolerance=a.weld_tolerance, fill_cavities=a.fill_cavities,
+            wrap_alpha=a.wrap_alpha, wrap_offset=a.wrap_offset, format=a.format,
+            resume=not a.force, threads=threads)
+        try:
+            lines = run_batch(a.input, a.output, opts, client, quiet=a.quiet)
+        except _core.Error as e:
+            print(f"sphereset: {e}", file=sys.stderr)
+            return _exit_code(e)
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+    import json
+    reports = [json.loads(line) for line in lines]
+    failed = sum(r["status"] == "error" for r in reports)
+    skipped = sum(r["status"] == "skipped" for r in reports)
+    uncovered = sum(r["status"] != "error" and not r["covered"] for r in reports)
+    report = _core._batch_report_path(os.path.abspath(a.output))
+    if not a.quiet:
+        print(f"batch: {len(lines)} items: {len(lines) - failed - skipped} fitted, {skipped} "
+              f"skipped, {failed} failed -> {report}", file=sys.stderr)
+    # The exit codes of `sphereset batch`.
+    if failed:
+        print(f"sphereset: {a.input}: {failed} of {len(lines)} items failed (see {report})",
+              file=sys.stderr)
+        return 8
+    if uncovered:
+        print(f"sphereset: {a.input}: {uncovered} of {len(lines)} items failed the coverage "
+              f"check (written anyway; see {report})", file=sys.stderr)
+        return 7
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

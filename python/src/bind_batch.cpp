@@ -1,0 +1,135 @@
+// Bindings of the batch core (batch.hpp) for distributed runners (sphereset/batch.py): items
+// and options cross process boundaries as plain dicts, each worker processes one item as
+// `sphereset batch` does, and the driver appends the report lines in item order.
+#include "fit_args.hpp"
+#include "solid.hpp"
+#include "sphereset/batch.hpp"
+
+namespace sphereset::python {
+namespace {
+
+py::dict requestDict(const FitRequest& r) {
+  py::dict d;
+  d["n"] = r.num_spheres;
+  d["quality"] = fitQualityName(r.quality);
+  d["seed"] = r.seed;
+  d["padding"] = r.padding;
+  d["points"] = r.points;
+  d["iterations"] = r.iterations ? py::object(py::int_(*r.iterations)) : py::object(py::none());
+  d["restarts"] = r.restarts ? py::object(py::int_(*r.restarts)) : py::object(py::none());
+  d["decimation"] = r.decimation ? py::object(py::float_(*r.decimation)) : py::object(py::none());
+  d["optimizer"] = sphereOptimizerName(r.optimizer);
+  d["init"] = fitInitName(r.init);
+  d["method"] = fitMethodName(r.method);
+  return d;
+}
+
+FitRequest requestFrom(const py::dict& d) {
+  FitRequest r;
+  r.num_spheres = d["n"].cast<int>();
+  r.quality = unwrap(fitQualityFromName(d["quality"].cast<std::string>()));
+  r.seed = d["seed"].cast<uint64_t>();
+  r.padding = d["padding"].cast<double>();
+  r.points = d["points"].cast<int64_t>();
+  if (!d["iterations"].is_none()) r.iterations = d["iterations"].cast<int>();
+  if (!d["restarts"].is_none()) r.restarts = d["restarts"].cast<int>();
+  if (!d["decimation"].is_none()) r.decimation = d["decimation"].cast<double>();
+  r.optimizer = unwrap(sphereOptimizerFromName(d["optimizer"].cast<std::string>()));
+  r.init = unwrap(fitInitFromName(d["init"].cast<std::string>()));
+  r.method = unwrap(fitMethodFromName(d["method"].cast<std::string>()));
+  return r;
+}
+
+py::dict itemDict(const BatchItem& i) {
+  py::dict d;
+  d["mesh"] = i.mesh;
+  d["output"] = i.output;
+  d["origin"] = i.origin;
+  d["fit"] = requestDict(i.fit);
+  return d;
+}
+
+BatchItem itemFrom(const py::dict& d) {
+  BatchItem i;
+  i.mesh = d["mesh"].cast<std::string>();
+  i.output = d["output"].cast<std::string>();
+  i.origin = d["origin"].cast<std::string>();
+  i.fit = requestFrom(d["fit"].cast<py::dict>());
+  return i;
+}
+
+// Options dict: {"fit": request, "repair": "auto"/"off", "weld_tolerance", "fill_cavities",
+// "wrap_alpha", "wrap_offset", "format", "resume", "threads"}.
+BatchOptions optionsFrom(const py::dict& d) {
+  BatchOptions o;
+  o.fit = requestFrom(d["fit"].cast<py::dict>());
+  o.repair = repairOptions(d["repair"].cast<std::string>(), d["weld_tolerance"].cast<double>(),
+                           d["fill_cavities"].cast<bool>(), d["wrap_alpha"].cast<double>(),
+                           d["wrap_offset"].cast<double>());
+  o.format = d["format"].cast<std::string>();
+  o.resume = d["resume"].cast<bool>();
+  o.threads = d["threads"].cast<int>();
+  return o;
+}
+
+}  // namespace
+
+void bindBatch(py::module_& m) {
+  m.def(
+      "_batch_items",
+      [](const Path& input_arg, const py::dict& options) {
+        const std::string input = input_arg.string();
+        const BatchOptions o = optionsFrom(options);
+        std::vector<BatchItem> items;
+        {
+          py::gil_scoped_release release;
+          items = unwrap(listBatchItems(input, o));
+        }
+        py::list out;
+        for (const BatchItem& i : items) out.append(itemDict(i));
+        return out;
+      },
+      py::arg("input"), py::arg("options"),
+      "The items of a batch (listBatchItems), as dicts {mesh, output, origin, fit}.");
+  m.def(
+      "_batch_process",
+      [](const py::dict& item, const Path& out_dir_arg, const py::dict& options) {
+        const std::string out_dir = out_dir_arg.string();
+        const BatchItem i = itemFrom(item);
+        const BatchOptions o = optionsFrom(options);
+        py::gil_scoped_release release;
+        const BatchItemReport r = processBatchItem(i, out_dir, o);
+        return reportLine(r);
+      },
+      py::arg("item"), py::arg("out_dir"), py::arg("options"),
+      "Processes one item as `sphereset batch` does (skipped when up to date and resuming) and "
+      "returns its report line.");
+  m.def(
+      "_batch_done",
+      [](const py::dict& item, const Path& out_dir_arg, const py::dict& options) {
+        const std::string out_dir = out_dir_arg.string();
+        const BatchItem i = itemFrom(item);
+        const BatchOptions o = optionsFrom(options);
+        py::gil_scoped_release release;
+        return batchItemDone(i, out_dir, o);
+      },
+      py::arg("item"), py::arg("out_dir"), py::arg("options"));
+  m.def(
+      "_batch_start_report",
+      [](const Path& out_dir_arg) {
+        const std::string out_dir = out_dir_arg.string();
+        check(startBatchReport(out_dir));
+      },
+      py::arg("out_dir"));
+  m.def(
+      "_batch_append_report",
+      [](const Path& out_dir_arg, const std::string& line) {
+        const std::string out_dir = out_dir_arg.string();
+        check(appendBatchReport(out_dir, unwrap(parseReportLine(line))));
+      },
+      py::arg("out_dir"), py::arg("line"),
+      "Appends a report line (as _batch_process returns it) to OUT/report.jsonl.");
+  m.def("_batch_report_path", &batchReportPath, py::arg("out_dir"));
+}
+
+}  // namespace sphereset::python

@@ -1,0 +1,294 @@
+// Bindings of sphere trees (tree.hpp, sphere_tree.hpp) and of the queries on sphere sets and
+// trees (query.hpp): point distance and containment, segment outside length, set-to-set
+// separation and overlap.
+#include <map>
+#include <memory>
+#include <tuple>
+
+#include "fit_args.hpp"
+#include "solid.hpp"
+#include "sphereset/query.hpp"
+#include "sphereset/sphere_tree.hpp"
+#include "sphereset/tree.hpp"
+
+namespace sphereset::python {
+namespace {
+
+// A query target: a tree as given, or a plain set with its query tree and the position in the
+// set of each leaf slot (queries on a set report positions, as query.hpp promises for vectors).
+struct Target {
+  SphereTree tree;
+  std::vector<int64_t> slot_to_index;  // empty for a tree given as such
+  int64_t id(int64_t slot) const {
+    if (slot < 0 || slot_to_index.empty()) return slot;
+    return slot_to_index[static_cast<size_t>(slot)];
+  }
+};
+
+Target target(const py::object& o, const std::string& what) {
+  Target t;
+  if (py::isinstance<SphereTree>(o)) {
+    t.tree = o.cast<SphereTree>();
+    return t;
+  }
+  const std::vector<Sphere> s = spheresFromArray(o, what);
+  if (s.empty()) raise(ErrorCode::kInvalidData, what + ": no spheres");
+  t.tree = queryTree(s);
+  std::map<std::tuple<double, double, double, double>, int64_t> where;
+  for (size_t i = 0; i < s.size(); ++i)
+    where.emplace(std::make_tuple(s[i].center.x(), s[i].center.y(), s[i].center.z(), s[i].radius),
+                  static_cast<int64_t>(i));
+  t.slot_to_index.assign(t.tree.nodes.size(), -1);
+  const int64_t b = t.tree.levelBegin(t.tree.depth);
+  for (int64_t k = b; k < static_cast<int64_t>(t.tree.nodes.size()); ++k) {
+    const Sphere& n = t.tree.nodes[static_cast<size_t>(k)];
+    auto it = where.find({n.center.x(), n.center.y(), n.center.z(), n.radius});
+    if (it != where.end()) t.slot_to_index[static_cast<size_t>(k)] = it->second;
+  }
+  return t;
+}
+
+Pose pose(const py::object& o, const std::string& what) {
+  const Eigen::Isometry3d t = isometryFromArray(o, what);
+  Pose p;
+  p.rotation = t.linear();
+  p.translation = t.translation();
+  return p;
+}
+
+TreeParents parentsFromName(const std::string& s) {
+  if (s == "minimal") return TreeParents::kMinimal;
+  if (s == "outside") return TreeParents::kOutsideVolume;
+  raise(ErrorCode::kInvalidArgument, "parents must be 'minimal' or 'outside', not '" + s + "'");
+}
+
+py::list levelsList(const TreeResult& r, double volume) {
+  py::list out;
+  for (const TreeLevelStats& l : r.levels) {
+    py::dict d;
+    d["level"] = l.level;
+    d["spheres"] = l.nodes;
+    d["rounds"] = l.iterations;
+    d["converged"] = l.converged;
+    d["outside_volume"] = l.outside_volume;
+    d["er_sum"] = volume > 0.0 ? l.outside_volume / volume : 0.0;
+    out.append(d);
+  }
+  return out;
+}
+
+py::dict pairDict(const PairQuery& q, const Target& a, const Target& b) {
+  py::dict d;
+  d["distance"] = q.distance;
+  d["sphere_a"] = a.id(q.sphere_a);
+  d["sphere_b"] = b.id(q.sphere_b);
+  d["visited"] = q.visited;
+  return d;
+}
+
+}  // namespace
+
+void bindTree(py::module_& m) {
+  py::class_<SphereTree>(m, "SphereTree", R"doc(
+A complete B-ary sphere tree in Bradshaw's flat layout: level l holds B**l slots from
+(B**l - 1) / (B - 1); unused slots have a negative radius; every parent encloses its children.
+
+SphereTree(nodes, branching, depth) checks the layout and the enclosure (InvalidDataError).)doc")
+      .def(py::init([](const py::object& nodes, int branching, int depth) {
+             SphereTree t;
+             t.branching = branching;
+             t.depth = depth;
+             // Negative radii mark unused slots: read the rows without the radius check.
+             py::array_t<double, py::array::c_style | py::array::forcecast> arr =
+                 py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(nodes);
+             if (!arr || arr.ndim() != 2 || arr.shape(1) != 4)
+               raise(ErrorCode::kInvalidArgument, "nodes: expected an (M, 4) array");
+             auto v = arr.unchecked<2>();
+             for (py::ssize_t i = 0; i < arr.shape(0); ++i)
+               t.nodes.push_back(Sphere{Vec3(v(i, 0), v(i, 1), v(i, 2)), v(i, 3)});
+             if (branching < 2 || depth < 0 || SphereTree::slotCount(branching, depth) < 0)
+               raise(ErrorCode::kInvalidArgument, "branching must be >= 2 and depth >= 0");
+             check(checkSphereTree(t));
+             return t;
+           }),
+           py::arg("nodes"), py::arg("branching"), py::arg("depth"))
+      .def_readonly("branching", &SphereTree::branching)
+      .def_readonly("depth", &SphereTree::depth)
+      .def_property_readonly(
+          "nodes", [](const SphereTree& t) { return spheresToArray(t.nodes); },
+          "(M, 4) array of every slot (unused slots have a negative radius).")
+      .def_property_readonly("levels", &SphereTree::levels, "depth + 1")
+      .def(
+          "level",
+          [](const SphereTree& t, int l) {
+            if (l < 0 || l > t.depth)
+              raise(ErrorCode::kInvalidArgument, "level must be in 0.." + std::to_string(t.depth));
+            return spheresToArray(t.level(l));
+          },
+          py::arg("level"), "The used spheres of one level (0 is the root), (K, 4).")
+      .def(
+          "leaves", [](const SphereTree& t) { return spheresToArray(t.leaves()); },
+          "The used spheres of the last level, (K, 4).")
+      .def(
+          "check",
+          [](const SphereTree& t, double tolerance) { check(checkSphereTree(t, tolerance)); },
+          py::arg("tolerance") = 0.0, "Raises InvalidDataError when an invariant is broken.")
+      .def("__repr__", [](const SphereTree& t) {
+        return "<sphereset.SphereTree branching " + std::to_string(t.branching) + ", depth " +
+               std::to_string(t.depth) + ", " + std::to_string(t.leaves().size()) + " leaves>";
+      });
+
+  m.def(
+      "_build_tree",
+      [](const py::object& leaves, int branching, int depth, const std::string& parents,
+         int iterations, uint64_t seed, const std::shared_ptr<PySolid>& solid) {
+        const std::vector<Sphere> s = spheresFromArray(leaves, "leaves");
+        TreeOptions to;
+        to.branching = branching;
+        to.depth = depth;
+        to.parents = parentsFromName(parents);
+        to.max_iterations = iterations;
+        to.seed = seed;
+        if (to.parents == TreeParents::kOutsideVolume && !solid)
+          raise(ErrorCode::kInvalidArgument, "parents='outside' needs the solid");
+        Expected<TreeResult> r = Error{ErrorCode::kInvalidArgument, "not run"};
+        {
+          py::gil_scoped_release release;
+          r = buildSphereTree(s, to, solid ? solid->index.get() : nullptr);
+        }
+        TreeResult t = unwrap(std::move(r));
+        py::dict d;
+        d["tree"] = t.tree;
+        d["levels"] = levelsList(t, solid ? signedVolume(solid->repair.solid) : 0.0);
+        d["seconds"] = t.seconds;
+        return d;
+      },
+      py::arg("leaves"), py::arg("branching"), py::arg("depth"), py::arg("parents"),
+      py::arg("iterations"), py::arg("seed"), py::arg("solid"));
+
+  m.def(
+      "_fit_tree",
+      [](const std::shared_ptr<PySolid>& solid, int branching, int depth,
+         const std::string& parents, const py::object& n, const std::string& quality, uint64_t seed,
+         double padding, int64_t points, const py::object& iterations, const py::object& restarts,
+         const py::object& decimation, const std::string& optimizer, const std::string& init,
+         const std::string& method, const py::object& progress) {
+        if (branching < 2 || depth < 1)
+          raise(ErrorCode::kInvalidArgument, "branching must be >= 2 and depth >= 1");
+        FitArgs a{32,       quality,    seed,      padding, points, iterations,
+                  restarts, decimation, optimizer, init,    method};
+        if (n.is_none()) {
+          // B^D leaves, as `sphereset tree` does without -n.
+          int64_t leaves = 1;
+          for (int l = 0; l < depth && leaves <= (int64_t{1} << 16); ++l) leaves *= branching;
+          if (leaves > (int64_t{1} << 16))
+            raise(ErrorCode::kInvalidArgument, "branching^depth leaves is too many; give n");
+          a.n = static_cast<int>(leaves);
+        } else {
+          a.n = n.cast<int>();
+        }
+        FitOptions fo = fitOptions(a);
+        fo.original = solid->original();
+        installProgress(&fo, progress);
+        TreeOptions to;
+        to.branching = branching;
+        to.depth = depth;
+        to.parents = parentsFromName(parents);
+        to.seed = fo.seed;
+        Expected<TreeFitResult> r = Error{ErrorCode::kInvalidArgument, "not run"};
+        {
+          py::gil_scoped_release release;
+          r = fitSphereTree(*solid->index, fo, to);
+        }
+        if (!r) raise(r.error().code, solid->name + ": " + r.error().message);
+        const double volume = signedVolume(solid->repair.solid);
+        py::dict d;
+        d["tree"] = r->tree.tree;
+        d["levels"] = levelsList(r->tree, volume);
+        d["seconds"] = r->tree.seconds;
+        d["fit"] = fitResultDict(r->fit, volume);
+        d["repair"] = repairDict(solid->repair);
+        return d;
+      },
+      py::arg("solid"), py::arg("branching"), py::arg("depth"), py::arg("parents"), py::arg("n"),
+      py::arg("quality"), py::arg("seed"), py::arg("padding"), py::arg("points"),
+      py::arg("iterations"), py::arg("restarts"), py::arg("decimation"), py::arg("optimizer"),
+      py::arg("init"), py::arg("method"), py::arg("progress"));
+
+  m.def(
+      "_point_distance",
+      [](const py::object& set, const py::object& points) {
+        const Target t = target(set, "spheres");
+        const std::vector<Vec3> p = pointsFromArray(points, "points");
+        const auto np = static_cast<py::ssize_t>(p.size());
+        py::array_t<double> dist(np);
+        py::array_t<int64_t> ids(np);
+        py::array_t<bool> inside(np);
+        auto dv = dist.mutable_unchecked<1>();
+        auto iv = ids.mutable_unchecked<1>();
+        auto cv = inside.mutable_unchecked<1>();
+        {
+          py::gil_scoped_release release;
+          for (py::ssize_t i = 0; i < np; ++i) {
+            const PointQuery q = pointDistance(t.tree, p[static_cast<size_t>(i)]);
+            dv(i) = q.distance;
+            iv(i) = t.id(q.sphere);
+            cv(i) = containsPoint(t.tree, p[static_cast<size_t>(i)]);
+          }
+        }
+        return py::make_tuple(dist, ids, inside);
+      },
+      py::arg("spheres"), py::arg("points"));
+
+  m.def(
+      "_segment_outside_length",
+      [](const py::object& set, const py::object& a, const py::object& b) {
+        const Target t = target(set, "spheres");
+        const std::vector<Vec3> pa = pointsFromArray(a, "a");
+        const std::vector<Vec3> pb = pointsFromArray(b, "b");
+        if (pa.size() != pb.size())
+          raise(ErrorCode::kInvalidArgument, "a and b must hold as many points");
+        py::array_t<double> out(static_cast<py::ssize_t>(pa.size()));
+        auto v = out.mutable_unchecked<1>();
+        py::gil_scoped_release release;
+        for (size_t i = 0; i < pa.size(); ++i)
+          v(static_cast<py::ssize_t>(i)) = segmentOutsideLength(t.tree, pa[i], pb[i]);
+        return out;
+      },
+      py::arg("spheres"), py::arg("a"), py::arg("b"));
+
+  m.def(
+      "_separation",
+      [](const py::object& a, const py::object& b, const py::object& pose_a,
+         const py::object& pose_b, bool stop_at_overlap) {
+        const Target ta = target(a, "a");
+        const Target tb = target(b, "b");
+        const Pose pa = pose(pose_a, "pose_a");
+        const Pose pb = pose(pose_b, "pose_b");
+        PairQuery q;
+        bool any = false;
+        {
+          py::gil_scoped_release release;
+          if (stop_at_overlap)
+            any = overlaps(ta.tree, pa, tb.tree, pb, &q);
+          else
+            q = separation(ta.tree, pa, tb.tree, pb);
+        }
+        py::dict d = pairDict(q, ta, tb);
+        if (stop_at_overlap) d["overlap"] = any;
+        return d;
+      },
+      py::arg("a"), py::arg("b"), py::arg("pose_a"), py::arg("pose_b"), py::arg("stop_at_overlap"));
+
+  m.def(
+      "_query_tree",
+      [](const py::object& spheres, int branching) {
+        const std::vector<Sphere> s = spheresFromArray(spheres, "spheres");
+        if (s.empty()) raise(ErrorCode::kInvalidData, "spheres: no spheres");
+        if (branching < 2) raise(ErrorCode::kInvalidArgument, "branching must be >= 2");
+        return queryTree(s, branching);
+      },
+      py::arg("spheres"), py::arg("branching") = 8);
+}
+
+}  // namespace sphereset::python

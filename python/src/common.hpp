@@ -1,0 +1,74 @@
+// Shared pieces of the Python bindings: library errors raised as Python exceptions, numpy
+// conversions of points and spheres, and the registration function of each topic's file.
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sphereset/mesh.hpp"
+#include "sphereset/sphere.hpp"
+#include "sphereset/sphere_io.hpp"
+#include "sphereset/status.hpp"
+
+namespace sphereset::python {
+
+namespace py = pybind11;
+// Path arguments: str or os.PathLike.
+using Path = std::filesystem::path;
+
+// A library error on its way to Python: module.cpp turns it into the exception class of its
+// code (sphereset.InvalidArgumentError, UnreadableError, ...) carrying the message.
+class LibraryError : public std::runtime_error {
+ public:
+  explicit LibraryError(Error e) : std::runtime_error(e.message), error_(std::move(e)) {}
+  const Error& error() const { return error_; }
+
+ private:
+  Error error_;
+};
+
+[[noreturn]] inline void raise(const Error& e) { throw LibraryError(e); }
+[[noreturn]] inline void raise(ErrorCode code, std::string message) {
+  throw LibraryError(Error{code, std::move(message)});
+}
+inline void check(const Status& s) {
+  if (!s) raise(s.error());
+}
+template <class T>
+T unwrap(Expected<T>&& e) {
+  if (!e) raise(e.error());
+  return std::move(e).value();
+}
+
+// (N, 4) rows x, y, z, r from any array-like of numbers; kInvalidArgument names `what` when the
+// shape is wrong, kInvalidData when a value is NaN/infinite or a radius negative.
+std::vector<Sphere> spheresFromArray(const py::handle& a, const std::string& what);
+py::array_t<double> spheresToArray(const std::vector<Sphere>& spheres);
+// (P, 3) points (a single (3,) point is one row); kInvalidData for NaN/infinite coordinates
+// unless check_finite is false.
+std::vector<Vec3> pointsFromArray(const py::handle& a, const std::string& what,
+                                  bool check_finite = true);
+py::array_t<double> pointsToArray(const std::vector<Vec3>& points);
+// A 4x4 homogeneous rigid transform from an array-like (identity for None).
+Eigen::Isometry3d isometryFromArray(const py::handle& a, const std::string& what);
+py::array_t<double> isometryToArray(const Eigen::Isometry3d& t);
+// {link: (N, 4)} (or (name, spheres) pairs), in order.
+std::vector<LinkSpheres> linkSpheresFrom(const py::object& o);
+
+void bindMesh(py::module_& m);
+void bindFit(py::module_& m);
+void bindEval(py::module_& m);
+void bindTree(py::module_& m);
+void bindIo(py::module_& m);
+void bindRobot(py::module_& m);
+void bindBatch(py::module_& m);
+
+}  // namespace sphereset::python

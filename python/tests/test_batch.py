@@ -1,0 +1,91 @@
+"""The batch on a Dask cluster (sphereset.batch) against `sphereset batch`: a local cluster of two
+worker processes writes the same sphere files and the same report (timings aside)."""
+
+import json
+import shutil
+
+import pytest
+
+from conftest import DATA
+
+distributed = pytest.importorskip("distributed")
+
+import sphereset as ss  # noqa: E402
+from sphereset import batch  # noqa: E402
+
+
+def meshes(tmp_path):
+    src = tmp_path / "meshes"
+    (src / "sub").mkdir(parents=True)
+    shutil.copy(DATA / "fr3_link1_collision.stl", src / "link1.stl")
+    shutil.copy(DATA / "open_box.off", src / "sub" / "open_box.off")
+    shutil.copy(DATA / "overlapping_cubes.off", src / "sub" / "cubes.off")
+    shutil.copy(DATA / "robot" / "three_link_description" / "meshes" / "link.stl",
+                src / "sub" / "link.stl")
+    (src / "broken.off").write_text("OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n")
+    return src
+
+
+def report(path):
+    lines = [json.loads(x) for x in path.read_text().splitlines()]
+    for d in lines:
+        d.pop("seconds")
+    return lines
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                       dashboard_address=":0")
+    c = distributed.Client(cluster)
+    yield c
+    c.close()
+    cluster.close()
+
+
+def test_dask_batch_equals_cli_batch(cli, tmp_path, client):
+    src = meshes(tmp_path)
+    cli_out, dask_out = tmp_path / "cli", tmp_path / "dask"
+    r = cli("batch", src, "-o", cli_out, "-n", 3, "--quality", "fast", "-q", check=False)
+    assert (cli_out / "report.jsonl").exists(), r.stderr
+    opts = batch.batch_options(3, quality="fast", threads=1)
+    lines = batch.run_batch(str(src), str(dask_out), opts, client, quiet=True)
+    assert len(lines) == 5
+    want = report(cli_out / "report.jsonl")
+    got = report(dask_out / "report.jsonl")
+    assert [d["mesh"] for d in got] == [d["mesh"] for d in want]
+    assert got == want
+    statuses = [d["status"] for d in got]
+    assert statuses.count("error") == 1 and statuses.count("ok") == 4
+    for d in want:
+        if d["status"] == "ok":
+            a = (cli_out / d["output"]).read_bytes()
+            b = (dask_out / d["output"]).read_bytes()
+            assert a == b, d["output"]
+            assert ss.read_spheres(dask_out / d["output"]).shape == (3, 4)
+
+    # Resuming: nothing is fitted again, every fitted item is reported as skipped.
+    again = batch.run_batch(str(src), str(dask_out), opts, client, quiet=True)
+    st = [json.loads(x)["status"] for x in again]
+    assert st.count("skipped") == 4 and st.count("error") == 1
+
+
+def test_batch_items_and_bad_input(tmp_path):
+    src = meshes(tmp_path)
+    items = batch.list_items(str(src), batch.batch_options(5))
+    assert [i["output"] for i in items] == sorted(i["output"] for i in items)
+    assert all(i["fit"]["n"] == 5 for i in items) and len(items) == 5
+    with pytest.raises(ss.UnreadableError):
+        batch.list_items(str(tmp_path / "nothing"), batch.batch_options())
+
+
+def test_command_line_local_workers(tmp_path):
+    src = tmp_path / "one"
+    src.mkdir()
+    shutil.copy(DATA / "fr3_link1_collision.stl", src / "link1.stl")
+    out = tmp_path / "out"
+    code = batch.main([str(src), "-o", str(out), "--local-workers", "1", "-n", "2",
+                       "--quality", "fast", "-q", "--format", "txt"])
+    assert code == 0
+    assert ss.read_spheres(out / "link1.txt").shape == (2, 4)
+    assert json.loads((out / "report.jsonl").read_text())["status"] == "ok"

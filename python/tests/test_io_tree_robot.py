@@ -1,0 +1,131 @@
+"""Sphere files, trees, queries and robots through the module, against brute-force numpy."""
+
+import numpy as np
+import pytest
+
+import sphereset as ss
+from conftest import DATA, LINK
+
+RNG = np.random.default_rng(7)
+SPHERES = np.column_stack([RNG.normal(size=(20, 3)), RNG.uniform(0.1, 0.6, 20)])
+
+
+@pytest.mark.parametrize("ext", ["txt", "json", "sph", "yaml"])
+def test_sphere_io_round_trip(tmp_path, ext):
+    p = tmp_path / f"s.{ext}"
+    ss.write_spheres(p, SPHERES, name="link_a", source_mesh="m.obj")
+    assert ss.sphere_format(p) == ext
+    back = ss.read_spheres(p)
+    assert back.shape == SPHERES.shape and back.dtype == np.float64
+    assert np.array_equal(back, SPHERES)
+    assert p.read_text() == ss.format_spheres(ext, SPHERES, name="link_a", source_mesh="m.obj")
+
+
+def test_sphere_io_errors(tmp_path):
+    with pytest.raises(ss.InvalidArgumentError):
+        ss.sphere_format("a.xyz")
+    with pytest.raises(ss.UnreadableError):
+        ss.read_spheres(tmp_path / "none.txt")
+    bad = tmp_path / "bad.txt"
+    bad.write_text("0 0 0\n")
+    with pytest.raises(ss.InvalidDataError, match="bad.txt:1"):
+        ss.read_spheres(bad)
+    with pytest.raises(ss.WriteError):
+        ss.write_spheres(tmp_path / "no" / "dir" / "s.txt", SPHERES)
+
+
+def test_link_spheres_round_trip(tmp_path):
+    links = {"base": SPHERES[:3], "arm": SPHERES[3:8], "empty": np.zeros((0, 4))}
+    p = tmp_path / "robot.yml"
+    ss.write_link_spheres(p, links)
+    back = ss.read_link_spheres(p)
+    assert list(back) == ["base", "arm", "empty"]
+    for k in links:
+        assert np.array_equal(back[k].reshape(-1, 4), links[k])
+    two = ss.read_link_spheres(DATA / "curobo_two_links.yml")
+    assert len(two) == 2
+
+
+def test_tree_fit_build_and_files(tmp_path):
+    t = ss.tree(LINK, branching=4, depth=2, quality="fast")
+    assert t.tree.branching == 4 and t.tree.depth == 2 and t.tree.leaves().shape == (16, 4)
+    assert [lv["level"] for lv in t.levels] == [0, 1, 2]
+    t.tree.check()
+    for ext in ("sph", "json"):
+        p = tmp_path / f"t.{ext}"
+        ss.write_sphere_tree(p, t.tree)
+        back = ss.read_sphere_tree(p)
+        assert np.array_equal(back.nodes, t.tree.nodes) and back.depth == 2
+        assert p.read_text() == ss.format_sphere_tree(ext, t.tree)
+    b = ss.build_tree(SPHERES, branching=3, depth=3)
+    b.tree.check()
+    leaves = b.tree.leaves()
+    assert sorted(map(tuple, leaves)) == sorted(map(tuple, SPHERES))
+    # Every parent encloses its children.
+    root = b.tree.level(0)[0]
+    assert np.all(np.linalg.norm(SPHERES[:, :3] - root[:3], axis=1) + SPHERES[:, 3]
+                  <= root[3] * (1 + 1e-12))
+
+
+def test_queries_against_brute_force():
+    pts = RNG.normal(scale=2.0, size=(200, 3))
+    d_all = np.linalg.norm(pts[:, None, :] - SPHERES[None, :, :3], axis=2) - SPHERES[None, :, 3]
+    q = ss.point_distance(SPHERES, pts)
+    assert np.allclose(q.distance, d_all.min(axis=1), rtol=0, atol=1e-12)
+    assert np.allclose(d_all[np.arange(len(pts)), q.sphere], q.distance, atol=1e-12)
+    assert np.array_equal(q.inside, d_all.min(axis=1) <= 0)
+    assert np.array_equal(ss.contains(ss.query_tree(SPHERES), pts), q.inside)
+    # A segment far from every sphere is outside over its whole length.
+    a = np.array([[50.0, 0, 0]])
+    b = np.array([[60.0, 0, 0]])
+    assert ss.segment_outside_length(SPHERES, a, b)[0] == pytest.approx(10.0)
+    # Through one sphere alone: outside length = length - chord.
+    one = np.array([[0.0, 0, 0, 1.0]])
+    assert ss.segment_outside_length(one, [[-3.0, 0, 0]], [[3.0, 0, 0]])[0] == pytest.approx(4.0)
+    # Separation of two sets under poses, against all pairs.
+    other = SPHERES[:5].copy()
+    pose = np.eye(4)
+    pose[:3, 3] = [4.0, 0.5, 0.0]
+    moved = other[:, :3] + pose[:3, 3]
+    pair = (np.linalg.norm(SPHERES[:, None, :3] - moved[None], axis=2)
+            - SPHERES[:, None, 3] - other[None, :, 3])
+    s = ss.separation(SPHERES, other, pose_b=pose)
+    assert s.distance == pytest.approx(pair.min(), abs=1e-12)
+    assert pair[s.sphere_a, s.sphere_b] == pytest.approx(s.distance, abs=1e-12)
+    assert ss.overlaps(SPHERES, other, pose_b=pose).overlap == (pair.min() < 0)
+    assert ss.overlaps(SPHERES, SPHERES).overlap
+
+
+def test_robot(tmp_path):
+    urdf = DATA / "robot" / "three_link.urdf"
+    r = ss.load_robot(urdf, package_paths=[str(DATA / "robot")])
+    assert r.root in r.links and len(r.joints) == 3
+    poses = r.link_poses()
+    assert np.allclose(poses[r.root], np.eye(4))
+    moved = r.link_poses({r.joints[0]["name"]: 0.5})
+    assert set(moved) == set(poses)
+    links = {}
+    for name in r.links:
+        geo = r.link_geometry(name)
+        if not geo or all(g["kind"] == "sphere" for g in geo):
+            continue
+        m = r.link_mesh(name)
+        assert m.faces.shape[1] == 3
+        fit = ss.fit(ss.Mesh(m.vertices, m.faces, name=name), n=2, quality="fast")
+        links[name] = np.vstack([r.link_spheres(name), fit.spheres])
+    pairs = r.self_collision_pairs(links)
+    assert len(pairs["adjacent"]) >= 2
+    out = tmp_path / "robot.yml"
+    ss.write_robot_spheres(out, links, robot=r)
+    assert "self_collision_ignore" in out.read_text()
+    assert list(ss.read_link_spheres(out)) == list(links)
+    u = tmp_path / "spheres.urdf"
+    ss.write_sphere_urdf(urdf, u, links)
+    assert u.read_text().count("<sphere") >= sum(len(s) for s in links.values())
+    with pytest.raises(ss.InvalidArgumentError, match="no link"):
+        r.link_mesh("nope")
+    with pytest.raises(ss.UnreadableError):
+        ss.load_robot(tmp_path / "none.urdf")
+    counts = ss.split_budget([([1, 2, 4], [8.0, 3.0, 1.0]), ([1, 2, 4], [1.0, 0.9, 0.8])],
+                             [-1, -1], 6)
+    assert sum(counts) == 6 and counts[0] > counts[1]

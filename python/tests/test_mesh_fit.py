@@ -1,0 +1,198 @@
+"""Meshes, fit and evaluation through the module: the same spheres as the command line for the
+same seed, array shapes and dtypes, meshes given as arrays, errors as exceptions, cancellation."""
+
+import json
+import os
+import signal
+
+import numpy as np
+import pytest
+
+import sphereset as ss
+from conftest import DATA, LINK, cube_arrays
+
+
+def test_load_mesh_arrays():
+    m = ss.load_mesh(LINK)
+    assert m.vertices.dtype == np.float64 and m.vertices.ndim == 2 and m.vertices.shape[1] == 3
+    assert np.issubdtype(m.faces.dtype, np.integer) and m.faces.shape == (300, 3)
+    assert m.faces.min() >= 0 and m.faces.max() < len(m.vertices)
+    assert m.volume > 0 and m.load_report["file_triangles"] == 300
+    d = ss.diagnose(m)
+    assert d["solid"] and d["closed"] and d["triangles"] == 300 and d["vertices"] == 152
+
+
+@pytest.mark.parametrize("args", [
+    dict(n=6, seed=3, quality="fast"),
+    dict(n=4, seed=1, quality="default", padding=0.001, optimizer="gradient"),
+    dict(n=5, seed=2, quality="fast", method="kmeans", init="random"),
+])
+def test_same_spheres_as_cli(cli, tmp_path, args):
+    out = tmp_path / "cli.json"
+    cmd = ["fit", LINK, "-n", args["n"], "--seed", args["seed"], "--quality", args["quality"],
+           "-o", out, "-q", "--json"]
+    for k in ("padding", "optimizer", "method", "init"):
+        if k in args:
+            cmd += [f"--{k}", args[k]]
+    summary = json.loads(cli(*cmd).stdout)
+    r = ss.fit(ss.load_mesh(LINK), **args)
+    # JSON and text files hold shortest round-trip decimals: the same doubles.
+    assert np.array_equal(r.spheres, ss.read_spheres(out))
+    assert r.spheres.shape == (args["n"], 4) and r.spheres.dtype == np.float64
+    assert r.rounds == summary["rounds"] and r.points == summary["points"]
+    assert r.er_sum == pytest.approx(summary["er_sum"], rel=1e-12)
+    assert r.teleports == summary["teleports"] and r.restart == summary["restart"]
+
+
+def test_same_spheres_as_cli_after_repair(cli, tmp_path):
+    # The open box is capped by the repair, and its input triangles are bounded too.
+    out = tmp_path / "box.txt"
+    cli("fit", DATA / "open_box.off", "-n", 3, "--quality", "fast", "-o", out, "-q")
+    r = ss.fit(DATA / "open_box.off", n=3, quality="fast")
+    assert r.repair["kind"] == "capped"
+    assert np.array_equal(r.spheres, ss.read_spheres(out))
+
+
+def test_fit_diagnostics_and_options():
+    r = ss.fit(ss.load_mesh(LINK), n=4, quality="fast", iterations=5, restarts=2)
+    assert r.options["iterations"] == 5 and r.options["restarts"] == 2
+    assert r.options["points"] == int(0.4 * 5000)
+    assert r.outside_volume.shape == (4,) and np.all(r.outside_volume >= 0)
+    assert r.energy == pytest.approx(r.outside_volume.sum(), rel=1e-9)
+    assert r.er_sum == pytest.approx(r.energy / r.mesh_volume)
+    assert set(r.seconds) >= {"total", "sampling", "assignment", "update", "bounding"}
+    assert np.all(r.spheres[:, 3] > 0)
+    json.dumps(r.to_dict())
+
+
+def test_mesh_from_arrays_fitted_and_evaluated():
+    v, f = cube_arrays(2.0, (1.0, -1.0, 0.5))
+    m = ss.Mesh(v, f)
+    assert m.vertices.shape == (8, 3) and m.faces.shape == (12, 3)
+    assert m.volume == pytest.approx(8.0)
+    r = ss.fit(m, n=4, seed=5, quality="fast")
+    assert r.spheres.shape == (4, 4)
+    e = ss.evaluate(m, r.spheres, samples=20000, segments=100, shadow_resolution=16)
+    assert e.surface_covered and e.interior_covered and e.covered
+    assert e.er_sum == pytest.approx(r.er_sum, rel=1e-9)
+    assert e.outside_volume.shape == (4,)
+    # Every vertex of the cube is inside some sphere (the bound is guaranteed).
+    assert ss.contains(r.spheres, v).all()
+
+
+def test_arrays_and_file_give_the_same_fit(tmp_path):
+    v, f = cube_arrays()
+    off = tmp_path / "cube.off"
+    off.write_text("OFF\n8 12 0\n" + "".join(f"{a:.17g} {b:.17g} {c:.17g}\n" for a, b, c in v)
+                   + "".join(f"3 {a} {b} {c}\n" for a, b, c in f))
+    a = ss.fit(ss.Mesh(v, f), n=3, quality="fast")
+    b = ss.fit(off, n=3, quality="fast")
+    assert np.array_equal(a.spheres, b.spheres)
+
+
+def test_solid_reused_and_queries():
+    s = ss.solid(LINK)
+    assert s.repair["kind"] == "none" and s.original is None
+    r1 = ss.fit(s, n=3, quality="fast")
+    r2 = ss.fit(s, n=3, quality="fast")
+    assert np.array_equal(r1.spheres, r2.spheres)
+    assert np.allclose(s.outside_volume(r1.spheres), r1.outside_volume, rtol=1e-9, atol=1e-15)
+    centre = ss.load_mesh(LINK).vertices.mean(axis=0)
+    far = centre + 10.0
+    assert s.distance([far])[0] > 1.0 and not s.contains([far])[0]
+
+
+def test_check_reports_repair():
+    c = ss.check(DATA / "open_box.off")
+    assert not c.diagnosis["closed"] and c.diagnosis["boundary_edges"] == 4
+    assert c.fit_accepts and c.repair["kind"] == "capped"
+    off = ss.check(DATA / "open_box.off", repair="off")
+    assert not off.fit_accepts and "not a closed solid" in off.error
+    x = ss.check(DATA / "overlapping_cubes.off")
+    assert x.shells["intersecting_shell_pairs"] == 1 and x.shells["shells"] == 2
+
+
+def test_errors_are_exceptions(tmp_path):
+    with pytest.raises(ss.UnreadableError, match="missing.obj"):
+        ss.load_mesh(tmp_path / "missing.obj")
+    with pytest.raises(OSError):
+        ss.load_mesh(tmp_path / "missing.obj")
+    bad = tmp_path / "garbage.stl"
+    bad.write_text("not a mesh at all")
+    with pytest.raises(ss.Error):
+        ss.load_mesh(bad)
+    nan = tmp_path / "nan.off"
+    nan.write_text("OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n")
+    with pytest.raises(ss.InvalidDataError, match="vertex 1 has a NaN"):
+        ss.load_mesh(nan)
+    v, f = cube_arrays()
+    v_nan = v.copy()
+    v_nan[3, 1] = np.nan
+    with pytest.raises(ss.InvalidDataError, match="vertex 3 has a NaN"):
+        ss.Mesh(v_nan, f)
+    with pytest.raises(ss.InvalidDataError, match="vertex 3 has a NaN"):
+        ss.Mesh(v_nan, f, clean=False)
+    with pytest.raises(ValueError, match="references vertex 8 of 8"):
+        ss.Mesh(v, np.where(f == 7, 8, f))
+    with pytest.raises(ss.InvalidDataError):
+        ss.Mesh(v, -f - 1)
+    with pytest.raises(ss.InvalidArgumentError, match="integer"):
+        ss.Mesh(v, f.astype(float))
+    with pytest.raises(ss.InvalidArgumentError):
+        ss.Mesh(v[:, :2], f)
+    with pytest.raises(ss.InvalidArgumentError, match="n must be at least 1"):
+        ss.fit(ss.Mesh(v, f), n=0)
+    with pytest.raises(ss.InvalidArgumentError, match="quality"):
+        ss.fit(ss.Mesh(v, f), n=2, quality="perfect")
+    with pytest.raises(ss.NotSolidError, match="not a closed solid"):
+        ss.fit(DATA / "open_box.off", n=2, repair="off")
+    with pytest.raises(ss.InvalidDataError, match="negative radius"):
+        ss.evaluate(ss.Mesh(v, f), [[0, 0, 0, -1]])
+    with pytest.raises(ss.InvalidArgumentError, match=r"\(N, 4\)"):
+        ss.evaluate(ss.Mesh(v, f), [[0, 0, 0]])
+    assert issubclass(ss.UnreadableError, OSError) and issubclass(ss.NotSolidError, ValueError)
+
+
+def test_progress_and_cancel():
+    m = ss.load_mesh(LINK)
+    seen = []
+    r = ss.fit(m, n=4, quality="fast", progress=seen.append)
+    assert seen and seen[0]["phase"] == "sampling" and r.spheres.shape == (4, 4)
+    assert {p["phase"] for p in seen} >= {"sampling", "clustering", "bounding"}
+
+    class Stop(Exception):
+        pass
+
+    def stop(p):
+        if p["phase"] == "clustering":
+            raise Stop()
+
+    with pytest.raises(Stop):
+        ss.fit(m, n=4, quality="fast", progress=stop)
+
+    # Ctrl-C: SIGINT during the fit raises KeyboardInterrupt at the next progress report.
+    def interrupt(p):
+        if p["phase"] == "clustering":
+            os.kill(os.getpid(), signal.SIGINT)
+
+    with pytest.raises(KeyboardInterrupt):
+        ss.fit(m, n=4, quality="fast", progress=interrupt)
+
+    # A signal that arrives while the library runs (no Python callback at all) is handled at the
+    # next progress report, inside the fit.
+    def alarm(*_):
+        raise KeyboardInterrupt()
+
+    s = ss.solid(m)
+    old = signal.signal(signal.SIGALRM, alarm)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.05)  # the fit takes much longer
+        with pytest.raises(KeyboardInterrupt) as info:
+            ss.fit(s, n=8, quality="default")
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+    # Raised inside the fit: the handler's frame sits on fit's, not on the test's.
+    assert [e.name for e in info.traceback][-2:] == ["fit", "alarm"]
+    # The module is usable afterwards and gives the same result.
+    assert np.array_equal(ss.fit(m, n=4, quality="fast").spheres, r.spheres)
