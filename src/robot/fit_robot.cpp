@@ -90,6 +90,8 @@ Expected<std::vector<Job>> prepareLinks(const RobotFitOptions& o, const Robot& r
       fitted = fitted || g.kind != LinkGeometry::Kind::kSphere;
     }
     if (!fitted) return;  // sphere primitives only
+    if (auto it = o.link_spheres.find(link.name); it != o.link_spheres.end() && it->second == 0)
+      return;  // skipped: not worth repairing
     auto solid = linkSolid(link, o.repair, name);
     if (!solid) {
       status[i] = solid.error();
