@@ -25,6 +25,11 @@ struct AnimateArgs {
   bool rebound = false, fresh_fit = false, quiet = false;
 };
 
+// How far (relative to the bounding-box diagonal) a rest mesh's vertex may lie from the
+// asset's bind pose: the asset's skinning matrices are single precision, and a mesh file
+// written from the same pose rounds its coordinates.
+constexpr double kBindPoseTolerance = 1e-5;
+
 // The frames of the command line: deformed meshes with the rest mesh's vertices, or a skinned
 // asset's clip.
 struct Frames {
@@ -49,6 +54,20 @@ Expected<Frames> readFrames(const AnimateArgs& a, const Mesh& rest) {
                                                 std::to_string(anim->asset.rest.vertices.size()) +
                                                 " vertices, " + a.rest + " has " +
                                                 std::to_string(rest.vertices.size())};
+    // The frames and the skin follow the asset's own vertex order and triangles: REST_MESH must
+    // be its bind pose (the same file, or one with the same vertices and triangles).
+    const Mesh& bind = anim->asset.rest;
+    const double tol = kBindPoseTolerance * boundingBox(bind).diagonal();
+    size_t moved = bind.vertices.size();
+    for (size_t i = 0; i < bind.vertices.size() && moved == bind.vertices.size(); ++i)
+      if ((bind.vertices[i] - rest.vertices[i]).norm() > tol) moved = i;
+    if (moved < bind.vertices.size() || bind.triangles != rest.triangles)
+      return Error{
+          ErrorCode::kInvalidData,
+          a.rest + ": not the bind pose of " + a.animation +
+              (moved < bind.vertices.size() ? " (vertex " + std::to_string(moved) + " differs)"
+                                            : " (its triangles differ)") +
+              "; give the asset itself as the rest mesh"};
     out.frames = std::move(anim->frames);
     out.skin = std::move(anim->asset.skin);
     out.skinned = true;
@@ -64,6 +83,10 @@ Expected<Frames> readFrames(const AnimateArgs& a, const Mesh& rest) {
                        " vertices, the rest mesh " + a.rest + " has " +
                        std::to_string(rest.vertices.size()) +
                        " (frames need the same vertices in the same order)"};
+    if (m->mesh.triangles != rest.triangles)
+      return Error{ErrorCode::kInvalidData,
+                   path + ": its triangles differ from the rest mesh " + a.rest +
+                       "'s (frames need the same vertices in the same order)"};
     AnimationFrame f;
     f.time = static_cast<double>(out.frames.size());
     f.vertices = std::move(m->mesh.vertices);

@@ -116,8 +116,8 @@ std::string framePng(const std::string& out, size_t i) {
 
 // A deforming mesh, one PNG per frame: the rest mesh's triangles with each frame's vertices
 // (--frames meshes in the rest mesh's vertex order, or a skinned asset's clip), and the spheres
-// `animate` wrote for that frame (--spheres-dir). Everything is read before anything is
-// written.
+// `animate` wrote for that frame (--spheres-dir), all seen by the same cameras. Everything is
+// read before anything is written, and a failure removes what was written.
 int renderFrames(const RenderArgs& a, const RenderOptions& ro) {
   LoadOptions lo;
   lo.weld_tolerance = std::max(0.0, a.mesh.weld);
@@ -156,13 +156,33 @@ int renderFrames(const RenderArgs& a, const RenderOptions& ro) {
       if (!s) return fail(s.error());
       spheres[i] = std::move(s).value();
     }
+  // One view for the whole motion: the cameras frame every frame's mesh and spheres.
+  RenderOptions fo = ro;
+  Aabb all;
+  for (size_t i = 0; i < frames.size(); ++i) {
+    for (const Vec3& v : frames[i]) all.extend(v);
+    for (const Sphere& s : spheres[i]) {
+      all.extend(s.center - Vec3::Constant(s.radius));
+      all.extend(s.center + Vec3::Constant(s.radius));
+    }
+  }
+  fo.bounds = all;
+  // A failure part-way removes the frames already written: all of them or none.
+  std::vector<std::string> written;
+  auto undo = [&](const Error& e) {
+    std::error_code ec;
+    for (const std::string& w : written) std::filesystem::remove(w, ec);
+    return fail(e);
+  };
   for (size_t i = 0; i < frames.size(); ++i) {
     const Mesh m{frames[i], rest->mesh.triangles};
     const SolidIndex index(m);
-    auto img = renderScene(&index, spheres[i], ro);
-    if (!img) return fail(img.error());
-    Status st = writePng(framePng(a.out, i), *img);
-    if (!st) return fail(st.error());
+    auto img = renderScene(&index, spheres[i], fo);
+    if (!img) return undo(img.error());
+    const std::string path = framePng(a.out, i);
+    Status st = writePng(path, *img);
+    if (!st) return undo(st.error());
+    written.push_back(path);
   }
   return kOk;
 }

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@ struct RenderOptions {
   double sphere_opacity = 0.3;  // per sphere surface crossed
   bool ground = true;           // ground plane under the object, with shadows
   double field_of_view = 30.0;  // degrees, vertical
+  // The box the cameras frame, the ground lies under and the light scales with; unset: the
+  // scene's own bounds. Frames of a motion share one box so that the motion shows.
+  std::optional<Aabb> bounds;
 };
 
 struct Image {

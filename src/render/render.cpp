@@ -134,7 +134,7 @@ bool Camera::project(const Vec3& p, double* px, double* py) const {
 
 std::vector<Camera> renderCameras(const SolidIndex* mesh, const std::vector<Sphere>& spheres,
                                   const RenderOptions& o) {
-  const Aabb b = sceneBounds(mesh, spheres);
+  const Aabb b = o.bounds ? *o.bounds : sceneBounds(mesh, spheres);
   const Vec3 centre = b.center();
   const double radius = std::max(0.5 * b.diagonal(), 1e-12);
   const Vec3 up = Vec3::Unit(o.up_axis);
@@ -187,7 +187,7 @@ Expected<Image> renderScene(const SolidIndex* mesh, const std::vector<Sphere>& s
     return Error{ErrorCode::kInvalidArgument, "between one and four views"};
   if (o.up_axis < 0 || o.up_axis > 2 || !(o.sphere_opacity >= 0.0 && o.sphere_opacity <= 1.0))
     return Error{ErrorCode::kInvalidArgument, "render options out of range"};
-  const Aabb b = sceneBounds(mesh, spheres);
+  const Aabb b = o.bounds ? *o.bounds : sceneBounds(mesh, spheres);
   Scene sc;
   sc.mesh = mesh;
   sc.spheres = &spheres;
@@ -197,7 +197,7 @@ Expected<Image> renderScene(const SolidIndex* mesh, const std::vector<Sphere>& s
   sc.centre = b.center();
   sc.radius = std::max(0.5 * b.diagonal(), 1e-12);
   // The ground touches the object's lowest point (the mesh's, when there is one).
-  sc.ground = (mesh ? mesh->bounds().min : b.min).dot(sc.up);
+  sc.ground = (mesh && !o.bounds ? mesh->bounds().min : b.min).dot(sc.up);
   sc.ground_half = kGroundScale * sc.radius;
   sc.has_ground = o.ground;
   sc.opacity = o.sphere_opacity;

@@ -296,6 +296,14 @@ file(WRITE ${work}/box_f2.off "OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0.5 0 2.
 file(WRITE ${work}/tet.off "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
 file(WRITE ${work}/box_one.txt "0.5 0.5 1 1.23\n")
 file(WRITE ${work}/box.smd "version 1\nnodes\n0 \"root\" -1\n1 \"tip\" 0\nend\nskeleton\ntime 0\n0 0 0 0 0 0 0\n1 0 0 1 0 0 0\ntime 1\n0 0 0 0 0 0 0\n1 0 0 1 0.3 0 0\ntime 2\n0 0 0 0 0 0 0\n1 0 0 1 0.6 0 0\nend\ntriangles\nskin\n0 0 0 0 0 0 1 0 0 1 0 1\n0 0 1 0 0 0 1 0 0 1 0 1\n0 1 1 0 0 0 1 0 0 1 0 1\nskin\n0 0 0 0 0 0 1 0 0 1 0 1\n0 1 1 0 0 0 1 0 0 1 0 1\n0 1 0 0 0 0 1 0 0 1 0 1\nskin\n1 0 0 2 0 0 1 0 0 1 1 1\n1 1 0 2 0 0 1 0 0 1 1 1\n1 1 1 2 0 0 1 0 0 1 1 1\nskin\n1 0 0 2 0 0 1 0 0 1 1 1\n1 1 1 2 0 0 1 0 0 1 1 1\n1 0 1 2 0 0 1 0 0 1 1 1\nskin\n0 0 0 0 0 0 1 0 0 1 0 1\n0 1 0 0 0 0 1 0 0 1 0 1\n1 1 0 2 0 0 1 0 0 1 1 1\nskin\n0 0 0 0 0 0 1 0 0 1 0 1\n1 1 0 2 0 0 1 0 0 1 1 1\n1 0 0 2 0 0 1 0 0 1 1 1\nskin\n0 0 1 0 0 0 1 0 0 1 0 1\n1 0 1 2 0 0 1 0 0 1 1 1\n1 1 1 2 0 0 1 0 0 1 1 1\nskin\n0 0 1 0 0 0 1 0 0 1 0 1\n1 1 1 2 0 0 1 0 0 1 1 1\n0 1 1 0 0 0 1 0 0 1 0 1\nskin\n0 0 0 0 0 0 1 0 0 1 0 1\n1 0 0 2 0 0 1 0 0 1 1 1\n1 0 1 2 0 0 1 0 0 1 1 1\nskin\n0 0 0 0 0 0 1 0 0 1 0 1\n1 0 1 2 0 0 1 0 0 1 1 1\n0 0 1 0 0 0 1 0 0 1 0 1\nskin\n0 1 0 0 0 0 1 0 0 1 0 1\n0 1 1 0 0 0 1 0 0 1 0 1\n1 1 1 2 0 0 1 0 0 1 1 1\nskin\n0 1 0 0 0 0 1 0 0 1 0 1\n1 1 1 2 0 0 1 0 0 1 1 1\n1 1 0 2 0 0 1 0 0 1 1 1\nend\n")
+# The same vertices with two triangles' corners permuted: not the rest mesh's triangles.
+file(WRITE ${work}/box_perm.off "OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 2\n1 0 2\n0 1 2\n1 1 2\n3 0 3 1\n3 0 2 3\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n")
+cli_test(animate_frame_triangles 4 ARGS animate ${work}/box_rest.off ${work}/box_one.txt
+         -o ${work}/never66 --frames ${work}/box_perm.off
+         STDERR "box_perm.off: its triangles differ from the rest mesh" FORBID ${work}/never66)
+cli_test(animate_not_bind_pose 4 ARGS animate ${work}/box_f1.off ${work}/box_one.txt
+         -o ${work}/never67 --animation ${work}/box.smd
+         STDERR "box_f1.off: not the bind pose of .*box.smd" FORBID ${work}/never67)
 cli_test(animate_frames 0 ARGS animate ${work}/box_rest.off ${work}/box_one.txt -o ${work}/anim
          --frames ${work}/box_f1.off ${work}/box_f2.off --rebound -q
          FILE ${work}/anim/frame_0001.json SPHERES 1)
