@@ -179,4 +179,5 @@ PYBIND11_MODULE(_sphereset, m) {
   bindIo(m);
   bindRobot(m);
   bindBatch(m);
+  bindAnimate(m);
 }
