@@ -2,8 +2,16 @@
 // outside volume most, from each link's outside volume measured at a few sphere counts.
 #pragma once
 
+#include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/repair.hpp"
+#include "sphereset/robot.hpp"
+#include "sphereset/sphere.hpp"
 #include "sphereset/status.hpp"
 
 namespace sphereset {
@@ -55,5 +63,54 @@ struct LinkCandidate {
 // Errors (kInvalidArgument): an empty list, or no choice within the budget.
 Expected<std::vector<int>> pickCandidates(const std::vector<std::vector<LinkCandidate>>& candidates,
                                           int budget);
+
+// Fitting a whole robot (what `sphereset robot` does; fit_robot.cpp).
+struct RobotFitOptions {
+  // Spheres over the whole robot, sphere primitives included (at most: the split may use fewer
+  // where fewer fitted better). 0: `default_link_spheres` per link not fixed below.
+  int budget = 0;
+  std::map<std::string, int> link_spheres;     // link -> its count; 0 skips the link
+  double padding = 0.0;                        // added to every radius (absolute units)
+  std::map<std::string, double> link_padding;  // link -> its padding instead
+  FitQuality quality = FitQuality::kDefault;   // the presets of fit.hpp
+  uint64_t seed = 1;
+  RepairOptions repair;  // how each link's geometry is made a solid (repair.hpp)
+  int default_link_spheres = 8;
+  std::string name;  // prefixes messages (e.g. the URDF's path)
+};
+
+// One link with geometry.
+struct RobotLinkFit {
+  std::string link;
+  std::vector<Sphere> spheres;  // its sphere primitives, then the fitted spheres; padded
+  int primitives = 0;
+  bool skipped = false;      // link_spheres fixed it at 0: no spheres
+  bool from_visual = false;  // fitted to its <visual> geometry (it has no <collision>)
+  bool fitted = false;       // some spheres were fitted (it has geometry other than spheres)
+  bool covered = true;       // the certificates of eval (surface, interior, original triangles)
+  std::vector<std::string> files;  // the mesh files of its geometry
+  RepairResult repair;             // when fitted: how its geometry became a solid
+  EvalResult eval;                 // when fitted: of the fitted spheres, before padding
+  double outside_volume = 0.0;     // Σ outside volume of the fitted spheres, before padding
+  double padding = 0.0;
+  LinkFitCurve curve;                            // under a budget: the quick fits' outside volumes
+  int split_count = -1, even_count = -1;         // under a budget: both splits' counts...
+  double split_volume = 0.0, even_volume = 0.0;  // ...and their fits' outside volumes
+  double seconds = 0.0;                          // fitting (all its fits), without repair
+};
+
+struct RobotFitResult {
+  std::vector<RobotLinkFit> links;  // the links with geometry, in the robot's order
+  bool budget_split = false;        // some link's count came from the budget
+  // Totals over the links the budget split: as chosen, and for each split alone.
+  double outside_volume = 0.0, split_outside_volume = 0.0, even_outside_volume = 0.0;
+  double seconds = 0.0;
+};
+
+// Fits every link of `robot`. Errors (messages prefixed by options.name): link_spheres or
+// link_padding naming no link (kInvalidArgument), a budget too small for the fixed counts and
+// one sphere per other link (kInvalidArgument), a link's geometry that cannot be loaded or
+// made a solid (as linkSolid).
+Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& options);
 
 }  // namespace sphereset

@@ -232,7 +232,7 @@ cli_test(robot_budget_summary 0 ARGS robot ${robot}/three_link.urdf --package-pa
 
 cli_test(robot_skip_link 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres link1=0 --link-spheres tool=0 --quality fast -o ${work}/three_skip.yml
-         STDERR "link1 +192 +none +0 +0.0000 +skipped.*tool +0 - +0 +0.0000 +skipped")
+         STDERR "link1 +0 - +0 +0.0000 +skipped.*tool +0 - +0 +0.0000 +skipped")
 cli_test(robot_fractional_count 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres link1=2.5 -o ${work}/never35.yml -q
          STDERR "--link-spheres link1=2.5: the value must be a whole number" FORBID ${work}/never35.yml)

@@ -1,0 +1,309 @@
+// fitRobot: collision spheres for every link of a robot (robot_fit.hpp). Each link's collision
+// geometry (visual when it has none) is one solid (linkSolid), fitted like a mesh file; sphere
+// primitives stay exact spheres. Counts: fixed per link, or a budget split over the links by
+// marginal gain on quick fits at a few counts (budget.cpp), checked against an even split by
+// fitting both (pickCandidates). Links are prepared and fitted in parallel; every fit gives the
+// same spheres for any thread count, and so does the whole.
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sphereset/robot_fit.hpp"
+#include "sphereset/solid_index.hpp"
+
+namespace sphereset {
+namespace {
+
+// Sphere counts at which each free link is fitted to measure its curve for the budget split.
+constexpr int kCurveCounts[] = {1, 2, 4, 8, 16, 32};
+// The curve fits are quick ones: fewer points and rounds than the final fit.
+constexpr int64_t kCurvePoints = 3000;
+constexpr int kCurveRounds = 20;
+
+// One link to fit: its solid (repaired), its exact sphere primitives, and the results.
+struct Job {
+  const RobotLink* link = nullptr;
+  std::vector<std::string> files;
+  std::unique_ptr<SolidIndex> index;
+  RepairResult repair;
+  std::vector<Sphere> primitives;
+  int fixed = -1;        // -1: from the budget
+  bool skipped = false;  // fixed at 0: not fitted
+  double padding = 0.0;
+  LinkFitCurve curve;
+  int count = 0;         // the count chosen
+  int split_count = -1;  // under a budget: the curve split's count and the even split's
+  int even_count = -1;
+  std::vector<Sphere> spheres;
+  EvalResult eval;
+  double outside_volume = 0.0;  // of the chosen fit (Σ over its spheres, before padding)
+  double split_volume = 0.0, even_volume = 0.0;  // of the fits at split_count and even_count
+  double seconds = 0.0;
+};
+
+// One fit of a link at one count (the budget fits each free link at two counts and keeps one).
+struct LinkFit {
+  int count = 0;
+  std::vector<Sphere> spheres;
+  EvalResult eval;
+  double outside_volume = 0.0;
+  double seconds = 0.0;
+  std::string error;
+};
+
+FitOptions linkFitOptions(const RobotFitOptions& o, const Job& j, int n, bool quick) {
+  // The quality presets of `fit` (fit.hpp); the curve fits are quick ones: the fast preset
+  // with fewer points and rounds.
+  FitOptions fo = fitPreset(n, quick ? FitQuality::kFast : o.quality);
+  if (quick) {
+    fo.target_points = kCurvePoints;
+    fo.max_iterations = kCurveRounds;
+  }
+  fo.seed = o.seed;
+  fo.original = j.repair.kind == RepairKind::kNone ? nullptr : &j.repair.original;
+  return fo;
+}
+
+// Loads, repairs and indexes every link with geometry, the links in parallel (the wrap is
+// single-threaded); the first error in link order is reported.
+Expected<std::vector<Job>> prepareLinks(const RobotFitOptions& o, const Robot& robot) {
+  std::vector<Job> jobs;
+  for (const RobotLink& link : robot.links)
+    if (!link.geometry.empty()) {
+      jobs.emplace_back();
+      jobs.back().link = &link;
+    }
+  std::vector<Status> status(jobs.size());
+  tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t i) {
+    Job& j = jobs[i];
+    const RobotLink& link = *j.link;
+    const std::string name = o.name + ": link '" + link.name + "'";
+    j.primitives = linkSpheres(link);
+    bool fitted = false;
+    for (const LinkGeometry& g : link.geometry) {
+      if (g.kind == LinkGeometry::Kind::kMesh) j.files.push_back(g.mesh_path);
+      fitted = fitted || g.kind != LinkGeometry::Kind::kSphere;
+    }
+    if (!fitted) return;  // sphere primitives only
+    if (auto it = o.link_spheres.find(link.name); it != o.link_spheres.end() && it->second == 0)
+      return;  // skipped: not worth repairing
+    auto solid = linkSolid(link, o.repair, name);
+    if (!solid) {
+      status[i] = solid.error();
+      return;
+    }
+    j.repair = std::move(solid->repair);
+    j.index = std::make_unique<SolidIndex>(j.repair.solid);
+  });
+  for (const Status& st : status)
+    if (!st) return st.error();
+  return jobs;
+}
+// The sphere counts: fixed links, then, under a budget, the split by measured curves
+// (split_count) and the even split (even_count); the fits decide between them (fitLinks).
+Status chooseCounts(const RobotFitOptions& o, std::vector<Job>* jobs) {
+  bool any_free = false;
+  for (Job& j : *jobs) {
+    if (!j.index) j.fixed = 0;  // only sphere primitives: nothing to fit
+    any_free = any_free || j.fixed < 0;
+  }
+  if (o.budget <= 0 || !any_free) {
+    int total = 0;
+    for (Job& j : *jobs) {
+      j.count = j.fixed >= 0 ? j.fixed : o.default_link_spheres;
+      total += j.count + static_cast<int>(j.primitives.size());
+    }
+    if (o.budget > 0 && total > o.budget)
+      return Error{ErrorCode::kInvalidArgument, o.name + ": --budget " + std::to_string(o.budget) +
+                                                    ": the links' fixed counts "
+                                                    "and sphere primitives already come to " +
+                                                    std::to_string(total)};
+    return {};
+  }
+  // Curves of the free links, the links in parallel (each fit is parallel too, and gives the
+  // same spheres for any thread count).
+  tbb::parallel_for(size_t{0}, jobs->size(), [&](size_t i) {
+    Job& j = (*jobs)[i];
+    if (j.fixed >= 0) return;
+    for (int k : kCurveCounts) {
+      if (k > o.budget) break;
+      auto f = fitSpheres(*j.index, linkFitOptions(o, j, k, true));
+      if (!f) break;
+      j.curve.counts.push_back(k);
+      j.curve.outside_volume.push_back(f->energy);
+    }
+  });
+  std::vector<LinkFitCurve> curves;
+  std::vector<int> fixed;
+  int primitives = 0;
+  for (const Job& j : *jobs) {
+    curves.push_back(j.curve);
+    fixed.push_back(j.fixed);
+    primitives += static_cast<int>(j.primitives.size());
+  }
+  // The budget counts the sphere primitives, which are not fitted.
+  auto budgetError = [&](const Error& e) {
+    return Error{e.code, o.name + ": --budget " + std::to_string(o.budget) + ": " + e.message +
+                             (primitives > 0 ? " (after the URDF's " + std::to_string(primitives) +
+                                                   " sphere primitives)"
+                                             : "")};
+  };
+  auto split = splitBudget(curves, fixed, o.budget - primitives);
+  if (!split) return budgetError(split.error());
+  auto even = evenSplit(fixed, o.budget - primitives);
+  if (!even) return budgetError(even.error());
+  for (size_t i = 0; i < jobs->size(); ++i) {
+    Job& j = (*jobs)[i];
+    j.count = (*split)[i];
+    if (j.fixed < 0) {
+      j.split_count = (*split)[i];
+      j.even_count = (*even)[i];
+    }
+  }
+  return {};
+}
+// One fit of the link at `count` spheres, with eval's certificates of it.
+LinkFit fitLinkAt(const RobotFitOptions& o, const Job& j, int count) {
+  const auto t0 = std::chrono::steady_clock::now();
+  LinkFit out;
+  out.count = count;
+  if (j.index && count > 0) {
+    auto f = fitSpheres(*j.index, linkFitOptions(o, j, count, false));
+    if (!f) {
+      out.error = f.error().message;
+      return out;
+    }
+    out.spheres = f->spheres;
+    out.outside_volume = f->energy;
+    EvalOptions eo;
+    eo.seed = o.seed;
+    eo.union_samples = 0;
+    eo.proximity_segments = 0;
+    eo.shadow_resolution = 0;
+    eo.original = j.repair.kind == RepairKind::kNone ? nullptr : &j.repair.original;
+    out.eval = evaluateSpheres(*j.index, f->spheres, eo);
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+// Fits every link at its count, and free links under a budget at both the curve split's and
+// the even split's counts (all fits in parallel); then keeps, per link, the fit of whichever
+// count gives the least total outside volume within the budget (pickCandidates), so the
+// result is never worse than either split. Fails with the first error in link order.
+Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
+  std::vector<std::pair<size_t, int>> tasks;  // (link, count)
+  for (size_t i = 0; i < jobs->size(); ++i) {
+    const Job& j = (*jobs)[i];
+    tasks.emplace_back(i, j.count);
+    if (j.even_count >= 0 && j.even_count != j.count) tasks.emplace_back(i, j.even_count);
+  }
+  std::vector<LinkFit> fits(tasks.size());
+  tbb::parallel_for(size_t{0}, tasks.size(), [&](size_t t) {
+    fits[t] = fitLinkAt(o, (*jobs)[tasks[t].first], tasks[t].second);
+  });
+  for (size_t t = 0; t < tasks.size(); ++t)
+    if (!fits[t].error.empty())
+      return Error{
+          ErrorCode::kInvalidArgument,
+          o.name + ": link '" + (*jobs)[tasks[t].first].link->name + "': " + fits[t].error};
+  // Candidates per link, in task order; links with one fit have one candidate.
+  std::vector<std::vector<LinkCandidate>> cand(jobs->size());
+  std::vector<std::vector<size_t>> fit_of(jobs->size());
+  int budget = 0;
+  for (size_t t = 0; t < tasks.size(); ++t) {
+    cand[tasks[t].first].push_back({fits[t].count, fits[t].outside_volume});
+    fit_of[tasks[t].first].push_back(t);
+  }
+  for (const Job& j : *jobs) budget += j.count;
+  auto pick = pickCandidates(cand, budget);
+  if (!pick) return pick.error();
+  for (size_t i = 0; i < jobs->size(); ++i) {
+    Job& j = (*jobs)[i];
+    LinkFit& f = fits[fit_of[i][(*pick)[i]]];
+    j.count = f.count;
+    j.spheres = j.primitives;
+    j.spheres.insert(j.spheres.end(), f.spheres.begin(), f.spheres.end());
+    for (Sphere& sp : j.spheres) sp.radius += j.padding;
+    j.eval = f.eval;
+    j.outside_volume = f.outside_volume;
+    j.seconds = 0.0;
+    for (size_t t : fit_of[i]) j.seconds += fits[t].seconds;
+    // What each split would have cost, for the report.
+    for (size_t t : fit_of[i]) {
+      if (fits[t].count == j.split_count) j.split_volume = fits[t].outside_volume;
+      if (fits[t].count == j.even_count) j.even_volume = fits[t].outside_volume;
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  for (const auto& [name, n] : o.link_spheres)
+    if (std::none_of(robot.links.begin(), robot.links.end(),
+                     [&](const RobotLink& l) { return l.name == name; }) ||
+        n < 0)
+      return Error{ErrorCode::kInvalidArgument,
+                   o.name + ": link_spheres names '" + name + "', not a link of " + robot.name};
+  for (const auto& [name, d] : o.link_padding)
+    if (std::none_of(robot.links.begin(), robot.links.end(),
+                     [&](const RobotLink& l) { return l.name == name; }) ||
+        !(d >= 0.0))
+      return Error{ErrorCode::kInvalidArgument,
+                   o.name + ": link_padding names '" + name + "', not a link of " + robot.name};
+  auto jobs = prepareLinks(o, robot);
+  if (!jobs) return jobs.error();
+  for (Job& j : *jobs) {
+    if (auto it = o.link_spheres.find(j.link->name); it != o.link_spheres.end())
+      j.fixed = it->second;
+    if (j.fixed == 0) {
+      j.skipped = true;
+      j.primitives.clear();
+    }
+    auto p = o.link_padding.find(j.link->name);
+    j.padding = p != o.link_padding.end() ? p->second : o.padding;
+  }
+  if (Status s = chooseCounts(o, &*jobs); !s) return s.error();
+  if (Status s = fitLinks(o, &*jobs); !s) return s.error();
+  RobotFitResult res;
+  for (Job& j : *jobs) {
+    RobotLinkFit l;
+    l.link = j.link->name;
+    l.spheres = std::move(j.spheres);
+    l.primitives = static_cast<int>(j.primitives.size());
+    l.skipped = j.skipped;
+    l.from_visual = j.link->from_visual;
+    l.fitted = j.index != nullptr && j.count > 0;
+    l.covered =
+        !l.fitted || (j.eval.surface_covered && j.eval.interior_covered && j.eval.original_covered);
+    l.files = std::move(j.files);
+    l.repair = std::move(j.repair);
+    l.eval = j.eval;
+    l.outside_volume = j.outside_volume;
+    l.padding = j.padding;
+    l.curve = std::move(j.curve);
+    l.split_count = j.split_count;
+    l.even_count = j.even_count;
+    l.split_volume = j.split_volume;
+    l.even_volume = j.even_volume;
+    l.seconds = j.seconds;
+    if (l.split_count >= 0) {
+      res.budget_split = true;
+      res.outside_volume += l.outside_volume;
+      res.split_outside_volume += l.split_volume;
+      res.even_outside_volume += l.even_volume;
+    }
+    res.links.push_back(std::move(l));
+  }
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+}  // namespace sphereset

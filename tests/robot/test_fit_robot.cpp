@@ -1,0 +1,103 @@
+// The whole-robot fit (fitRobot) on the synthetic three-link robot: every fitted link is
+// covered (checked by brute force too), the budget is kept and never loses to either split,
+// fixed and skipped links are honoured, and the result does not depend on the thread count.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+
+#include "broken_meshes.hpp"
+#include "robot_data.hpp"
+#include "sphereset/robot_fit.hpp"
+#include "test_support.hpp"
+
+namespace sphereset::test {
+namespace {
+
+Robot threeLink() {
+  RobotLoadOptions lo;
+  lo.package_paths = {robotDir()};
+  auto r = loadRobot(threeLinkUrdf(), lo);
+  EXPECT_TRUE(r.ok()) << r.error().message;
+  return r.ok() ? *r : Robot{};
+}
+
+RobotFitOptions fastOptions() {
+  RobotFitOptions o;
+  o.quality = FitQuality::kFast;
+  o.name = "three_link.urdf";
+  return o;
+}
+
+const RobotLinkFit* find(const RobotFitResult& r, const std::string& link) {
+  for (const RobotLinkFit& l : r.links)
+    if (l.link == link) return &l;
+  return nullptr;
+}
+
+TEST(FitRobot, BudgetIsKeptEveryLinkCoveredAndNeitherSplitBeaten) {
+  const Robot robot = threeLink();
+  RobotFitOptions o = fastOptions();
+  o.budget = 12;
+  auto r = fitRobot(robot, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_TRUE(r->budget_split);
+  size_t total = 0;
+  for (const RobotLinkFit& l : r->links) {
+    total += l.spheres.size();
+    EXPECT_TRUE(l.covered) << l.link;
+    if (!l.fitted) continue;
+    // Independent check: random points on the link's original triangles, every sphere.
+    expectPointsCovered(l.repair.original, l.spheres);
+  }
+  EXPECT_LE(total, 12u);
+  EXPECT_LE(r->outside_volume, r->split_outside_volume * (1 + 1e-12));
+  EXPECT_LE(r->outside_volume, r->even_outside_volume * (1 + 1e-12));
+  // The tool link is one sphere primitive, kept exact.
+  const RobotLinkFit* tool = find(*r, "tool");
+  ASSERT_NE(tool, nullptr);
+  EXPECT_FALSE(tool->fitted);
+  EXPECT_EQ(tool->spheres.size(), 1u);
+}
+
+TEST(FitRobot, FixedSkippedAndPaddedLinks) {
+  const Robot robot = threeLink();
+  RobotFitOptions o = fastOptions();
+  o.link_spheres = {{"base_link", 2}, {"link1", 0}, {"link2", 3}};
+  o.link_padding = {{"link2", 0.01}};
+  auto r = fitRobot(robot, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(find(*r, "base_link")->spheres.size(), 2u);
+  EXPECT_TRUE(find(*r, "link1")->skipped);
+  EXPECT_TRUE(find(*r, "link1")->spheres.empty());
+  EXPECT_EQ(find(*r, "link2")->spheres.size(), 3u);
+  EXPECT_EQ(find(*r, "link2")->padding, 0.01);
+  EXPECT_FALSE(r->budget_split);
+  o.link_spheres = {{"elbow", 2}};
+  auto bad = fitRobot(robot, o);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message.find("'elbow'"), std::string::npos);
+}
+
+TEST(FitRobot, SameSpheresOnOneAndTwoThreads) {
+  const Robot robot = threeLink();
+  RobotFitOptions o = fastOptions();
+  o.budget = 10;
+  auto run = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return fitRobot(robot, o);
+  };
+  auto a = run(1), b = run(2);
+  ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_EQ(a->links.size(), b->links.size());
+  for (size_t i = 0; i < a->links.size(); ++i) {
+    ASSERT_EQ(a->links[i].spheres.size(), b->links[i].spheres.size());
+    for (size_t k = 0; k < a->links[i].spheres.size(); ++k) {
+      EXPECT_EQ(a->links[i].spheres[k].center, b->links[i].spheres[k].center);
+      EXPECT_EQ(a->links[i].spheres[k].radius, b->links[i].spheres[k].radius);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sphereset::test
