@@ -68,6 +68,7 @@ __all__ = [
     "load_robot", "write_robot_spheres", "write_sphere_urdf", "format_sphere_urdf",
     "split_budget", "curve_volume", "Animation", "AnimateResult", "mean_value_coordinates",
     "mean_value_weights", "point_bone_weights", "skin_points", "load_animation", "animate",
+    "RobotLinkFit", "RobotFitResult", "fit_robot",
 ]
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -582,3 +583,105 @@ def animate(rest_mesh: Union[Mesh, PathLike, None], spheres: Any,
         out[k] = np.array([f[k] for f in fr], dtype=t)
     out.update(d)
     return AnimateResult(**out)
+
+
+@dataclass
+class RobotLinkFit:
+    """One link of a robot fit (robot_fit.hpp's RobotLinkFit): ``spheres`` (N, 4), its sphere
+    primitives first then the fitted spheres, padded; ``skipped`` (link_spheres set it to 0),
+    ``from_visual`` (fitted to its <visual> geometry), ``fitted``, ``covered`` (the coverage
+    certificates of the fitted spheres), the mesh ``files``; when fitted, ``repair`` and
+    ``eval`` (E_r, coverage, gaps of the fitted spheres before padding) and ``er_sum``;
+    under a budget, ``budget_curve`` (the quick fits' outside volumes) and the counts and outside
+    volumes of the curve split and the even split."""
+
+    link: str
+    spheres: np.ndarray
+    primitives: int
+    skipped: bool
+    from_visual: bool
+    fitted: bool
+    covered: bool
+    files: List[str]
+    repair: Optional[Dict[str, Any]]
+    eval: Optional[Dict[str, Any]]
+    er_sum: float
+    outside_volume: float
+    padding: float
+    budget_curve: Optional[Dict[str, List[float]]]
+    split_count: int
+    even_count: int
+    split_volume: float
+    even_volume: float
+    seconds: float
+
+
+@dataclass
+class RobotFitResult:
+    """A whole robot fitted (robot_fit.hpp's RobotFitResult): ``links`` in the robot's order
+    (the links with geometry); with a budget, the total outside volume as chosen and for the
+    curve split and the even split alone."""
+
+    robot: str
+    urdf: str
+    links: List[RobotLinkFit]
+    budget_split: bool
+    outside_volume: float
+    split_outside_volume: float
+    even_outside_volume: float
+    seconds: float
+
+    @property
+    def spheres(self) -> Dict[str, np.ndarray]:
+        """{link: (N, 4) spheres} of the links not skipped, in order: what
+        :func:`write_robot_spheres` and :func:`write_sphere_urdf` take."""
+        return {lf.link: lf.spheres for lf in self.links if not lf.skipped}
+
+    @property
+    def covered(self) -> bool:
+        """Every link's spheres certified to cover it."""
+        return all(lf.covered for lf in self.links)
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The fields as a dict (arrays as lists), e.g. for JSON."""
+        def conv(v: Any) -> Any:
+            if isinstance(v, np.ndarray):
+                return v.tolist()
+            if isinstance(v, dict):
+                return {k: conv(x) for k, x in v.items()}
+            if isinstance(v, list):
+                return [conv(x) for x in v]
+            return v
+        return conv(dataclasses.asdict(self))
+
+
+def fit_robot(urdf: PathLike, *, budget: int = 0, link_spheres: Optional[Dict[str, int]] = None,
+              padding: float = 0.0, link_padding: Optional[Dict[str, float]] = None,
+              package_paths: Sequence[PathLike] = (), use_ros_package_path: bool = True,
+              seed: int = 1, quality: str = "default", repair: Union[str, bool] = "auto",
+              weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
+              wrap_alpha: float = 0.0, wrap_offset: float = 0.0) -> RobotFitResult:
+    """Fits collision spheres to every link of a URDF robot, like ``sphereset robot`` (the same
+    library call, options and defaults, so the same spheres for the same seed).
+
+    ``budget`` spheres over the whole robot, sphere primitives included (0: 8 per link not
+    fixed by ``link_spheres``), split over the links by what lowers the total outside volume
+    most; ``link_spheres`` {link: count} fixes a link's count (0 skips it); ``padding`` is added
+    to every radius, ``link_padding`` {link: padding} instead for those links; mesh paths
+    resolve through ``package_paths`` (package://), then ROS_PACKAGE_PATH. ``quality`` is the
+    fit preset ("fast", "default", "best"); the repair keywords are those of :func:`solid`.
+    Raises InvalidArgumentError (a link name the robot lacks, a budget too small), UnreadableError
+    (the URDF or a mesh), NotSolidError (a link's geometry cannot be made a solid). The call
+    releases the GIL; Ctrl-C takes effect when it returns.
+    """
+    if repair is True:
+        repair = "auto"
+    elif repair is False:
+        repair = "off"
+    d = _core._fit_robot(os.fspath(urdf), int(budget), dict(link_spheres or {}), float(padding),
+                         {k: float(v) for k, v in (link_padding or {}).items()},
+                         [os.fspath(p) for p in package_paths], bool(use_ros_package_path),
+                         int(seed), quality, repair, weld_tolerance, bool(fill_cavities),
+                         float(wrap_alpha), float(wrap_offset))
+    d["links"] = [RobotLinkFit(**lf) for lf in d["links"]]
+    return RobotFitResult(**d)

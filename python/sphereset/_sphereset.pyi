@@ -150,3 +150,8 @@ def _animate(rest: Mesh, spheres: ArrayLike, frames: List[ArrayLike], times: Any
              bone_weights: Any, bone_transforms: Any, weighting: str, bone_neighbours: int,
              rebound: bool, fresh_fit: bool, max_crossings: int,
              progress: Optional[Callable[[int, int], None]]) -> Dict[str, Any]: ...
+def _fit_robot(urdf: str, budget: int, link_spheres: Dict[str, int], padding: float,
+               link_padding: Dict[str, float], package_paths: List[str],
+               use_ros_package_path: bool, seed: int, quality: str, repair: str,
+               weld_tolerance: Optional[float], fill_cavities: bool, wrap_alpha: float,
+               wrap_offset: float) -> Dict[str, Any]: ...

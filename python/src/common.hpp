@@ -71,5 +71,6 @@ void bindIo(py::module_& m);
 void bindRobot(py::module_& m);
 void bindBatch(py::module_& m);
 void bindAnimate(py::module_& m);
+void bindRobotFit(py::module_& m);
 
 }  // namespace sphereset::python

@@ -180,4 +180,5 @@ PYBIND11_MODULE(_sphereset, m) {
   bindRobot(m);
   bindBatch(m);
   bindAnimate(m);
+  bindRobotFit(m);
 }
