@@ -21,7 +21,7 @@ from __future__ import annotations
 import dataclasses
 import os
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, List, Optional, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -66,7 +66,9 @@ __all__ = [
     "write_spheres", "format_spheres", "sphere_format", "read_link_spheres", "write_link_spheres",
     "read_sphere_tree", "write_sphere_tree", "format_sphere_tree", "write_sphere_mesh",
     "load_robot", "write_robot_spheres", "write_sphere_urdf", "format_sphere_urdf",
-    "split_budget", "curve_volume",
+    "split_budget", "curve_volume", "Animation", "AnimateResult", "mean_value_coordinates",
+    "mean_value_weights", "point_bone_weights", "skin_points", "load_animation", "animate",
+    "RobotLinkFit", "RobotFitResult", "fit_robot",
 ]
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -389,3 +391,297 @@ def overlaps(a: Union[SphereTree, Any], b: Union[SphereTree, Any], *, pose_a: An
     """Whether two sphere sets under their poses overlap; stops at the first overlapping pair
     (returned). ``result.overlap`` is the answer."""
     return PairQueryResult(**_core._separation(a, b, pose_a, pose_b, True))
+
+
+def mean_value_coordinates(mesh: Union[Mesh, PathLike], point: Any) -> np.ndarray:
+    """Mean value coordinates of one (3,) ``point`` over the vertices of a closed,
+    outward-oriented triangle mesh (Ju, Schaefer and Warren 2005): a (V,) float64 array ``w``
+    with ``w.sum() == 1`` and ``w @ mesh.vertices == point``, for points inside and outside the
+    solid (outside, some weights are negative). A point on a triangle gets its barycentric
+    coordinates."""
+    if not isinstance(mesh, Mesh):
+        mesh = load_mesh(mesh)
+    return _core._mean_value_coordinates(mesh, point)
+
+
+def mean_value_weights(mesh: Union[Mesh, PathLike], points: Any) -> np.ndarray:
+    """Mean value coordinates of each of (N, 3) ``points``: an (N, V) float64 array whose row i
+    holds the coordinates of point i, so that ``weights @ deformed_vertices`` moves the points
+    with the mesh. Computed in parallel, rows independent (deterministic)."""
+    if not isinstance(mesh, Mesh):
+        mesh = load_mesh(mesh)
+    return _core._mean_value_weights(mesh, points)[0]
+
+
+def point_bone_weights(mesh: Mesh, bone_weights: Any, points: Any, *,
+                       neighbours: int = 8) -> np.ndarray:
+    """Bone weights of (N, 3) ``points`` from the (V, B) ``bone_weights`` of the mesh's
+    vertices: the inverse-distance average over the ``neighbours`` nearest vertices, (N, B) rows
+    summing to 1 (0 where no nearby vertex has a bone)."""
+    return _core._point_bone_weights(mesh, bone_weights, points, int(neighbours))
+
+
+def skin_points(points: Any, weights: Any, bones: Any) -> np.ndarray:
+    """Linear blend skinning of (N, 3) ``points`` with (N, B) ``weights`` and (B, 4, 4) bone
+    transforms (rest pose to the frame): p' = Σ_b w_b T_b p; points without weight stay put."""
+    return _core._skin_points(points, weights, bones)
+
+
+@dataclass
+class Animation:
+    """A skinned, animated asset's clip (``load_animation``): the bind pose ``rest`` (welded as
+    ``load_mesh`` welds), one (V, 3) float64 vertex array per frame in ``frames`` (the rest's
+    vertices, same order) at ``times`` (seconds), the skin (``bone_weights`` (V, B) rows summing
+    to 1, or 0 for vertices no bone moves; None without bones) and each frame's (B, 4, 4) bone
+    transforms from the rest pose (``bone_transforms``)."""
+
+    path: str
+    rest: Mesh
+    frames: List[np.ndarray]
+    times: np.ndarray
+    bone_weights: Optional[np.ndarray]
+    bone_transforms: List[np.ndarray]
+    bone_names: List[str]
+    clip: str
+    clips: List[str]
+    duration: float
+
+    def __len__(self) -> int:
+        return len(self.frames)
+
+
+def load_animation(path: PathLike, clip: Optional[str] = None,
+                   fps: Optional[float] = None) -> Animation:
+    """Reads a skinned, animated asset through assimp (FBX, glTF 2.0, COLLADA, DirectX .x,
+    SMD, ...) and evaluates a clip (``clip`` None: the first) at its keyframe times, or every
+    1/``fps`` seconds. Raises UnreadableError (not readable), InvalidDataError (no triangles,
+    no animation) or InvalidArgumentError (no clip of that name: the message lists the clips;
+    ``fps`` not positive)."""
+    if fps is not None and not fps > 0.0:
+        raise InvalidArgumentError(f"fps must be positive (got {fps})")
+    d = _core._load_animation(os.fspath(path), clip or "", float(fps or 0.0))
+    if d["bone_weights"].shape[1] == 0:
+        d["bone_weights"] = None
+    return Animation(**d)
+
+
+@dataclass
+class AnimateResult:
+    """A sphere set moved through the frames of a deforming mesh (animate.hpp's AnimateResult,
+    with the per-frame fields of AnimateFrameResult as arrays over the F frames).
+
+    ``spheres`` (F, N, 4): the moved sets (grown, with ``rebound``). ``er``, ``surface_covered``,
+    ``interior_covered``, ``max_gap`` (largest gap / diagonal of the deformed mesh) certify the
+    moved set with the rest radii; ``crossings`` counts crossing triangle pairs of the deformed
+    mesh (a frame that passes through itself is no solid: its figures are not meaningful). With
+    ``rebound``: ``er_rebound``, ``rebound_covered``, ``radius_growth`` (Σ (r' - r) / Σ r),
+    ``max_radius_growth`` (max (r' - r) / r), ``grown`` (spheres that grew). With ``fresh_fit``:
+    ``er_fresh``, E_r of a fresh fit of each frame. Timings per frame and in total (seconds).
+    """
+
+    spheres: np.ndarray
+    times: np.ndarray
+    er: np.ndarray
+    surface_covered: np.ndarray
+    interior_covered: np.ndarray
+    max_gap: np.ndarray
+    crossings: np.ndarray
+    er_rebound: np.ndarray
+    rebound_covered: np.ndarray
+    radius_growth: np.ndarray
+    max_radius_growth: np.ndarray
+    grown: np.ndarray
+    er_fresh: np.ndarray
+    update_seconds: np.ndarray
+    eval_seconds: np.ndarray
+    rebound_seconds: np.ndarray
+    fresh_seconds: np.ndarray
+    weighting: str
+    rebound: bool
+    weights_seconds: float
+    frames_covered: int
+    frames_crossing: int
+    seconds: float
+
+    @property
+    def covered(self) -> np.ndarray:
+        """Per frame, whether the set in ``spheres`` is certified to cover the deformed surface
+        and interior: ``rebound_covered`` with rebound, else surface and interior covered."""
+        if self.rebound:
+            return self.rebound_covered.copy()
+        return self.surface_covered & self.interior_covered
+
+    def __len__(self) -> int:
+        return int(self.spheres.shape[0])
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The fields as a dict (arrays as lists), e.g. for JSON."""
+        return {k: (v.tolist() if isinstance(v, np.ndarray) else v)
+                for k, v in dataclasses.asdict(self).items()}
+
+
+_FRAME_FIELDS = {
+    "er": np.float64, "surface_covered": bool, "interior_covered": bool, "max_gap": np.float64,
+    "crossings": np.int64, "er_rebound": np.float64, "rebound_covered": bool,
+    "radius_growth": np.float64, "max_radius_growth": np.float64, "grown": np.int64,
+    "er_fresh": np.float64, "update_seconds": np.float64, "eval_seconds": np.float64,
+    "rebound_seconds": np.float64, "fresh_seconds": np.float64,
+}
+
+
+def animate(rest_mesh: Union[Mesh, PathLike, None], spheres: Any,
+            frames: Union[Animation, Sequence[Any], np.ndarray], *, rebound: bool = False,
+            weighting: str = "auto", bone_neighbours: int = 8, fresh_fit: bool = False,
+            max_crossings: int = 1000, times: Any = None,
+            progress: Optional[Callable[[int, int], None]] = None) -> AnimateResult:
+    """Moves (N, 4) ``spheres`` fitted to ``rest_mesh`` through ``frames`` (paper Sec. 6), like
+    ``sphereset animate``: centres move, radii stay, and every frame is certified.
+
+    ``frames`` is a list of (V, 3) vertex arrays (or Meshes, or one (F, V, 3) array) with the
+    rest mesh's vertices in its order, or an :class:`Animation` (``rest_mesh`` may then be None:
+    its bind pose). ``weighting`` "mvc" moves the centres by mean value coordinates of the rest
+    mesh, "bones" by the bone weights of the ``bone_neighbours`` nearest rest vertices (needs an
+    Animation with a skin), "auto" bones for a skinned Animation, else mvc. ``rebound`` grows
+    radii minimally per frame to restore exact coverage; ``fresh_fit`` also fits a fresh set to
+    every frame to compare E_r (slow). ``max_crossings`` caps the crossing pairs counted per
+    frame (0 skips the check). ``progress(frame, frames)`` is called after each frame; an
+    exception it raises, or Ctrl-C, abandons the call. Raises InvalidArgumentError (a frame
+    whose vertex count differs from the rest mesh, bones without a skin), NotSolidError (the
+    rest mesh or a frame has no positive volume).
+    """
+    bone_weights = None
+    bone_transforms = None
+    if isinstance(frames, Animation):
+        anim = frames
+        if rest_mesh is None:
+            rest_mesh = anim.rest
+        frames = anim.frames
+        if times is None:
+            times = anim.times
+        bone_weights = anim.bone_weights
+        bone_transforms = anim.bone_transforms
+    if rest_mesh is None:
+        raise InvalidArgumentError("rest_mesh is needed unless frames is an Animation")
+    if not isinstance(rest_mesh, Mesh):
+        rest_mesh = load_mesh(rest_mesh)
+    nv = len(rest_mesh.vertices)
+    if bone_weights is not None and len(bone_weights) != nv:
+        raise InvalidDataError(
+            f"{anim.path}: its bind pose has {len(bone_weights)} vertices, "
+            f"{rest_mesh.name} has {nv}")
+    frame_list = [f.vertices if isinstance(f, Mesh) else f for f in frames]
+    d = _core._animate(rest_mesh, spheres, frame_list, times, bone_weights, bone_transforms,
+                       weighting, int(bone_neighbours), bool(rebound), bool(fresh_fit),
+                       int(max_crossings), progress)
+    fr = d.pop("frames")
+    out: Dict[str, Any] = {
+        "spheres": (np.stack([f["spheres"] for f in fr]) if fr
+                    else np.zeros((0, 0, 4), dtype=np.float64)),
+        "times": np.array([f["time"] for f in fr], dtype=np.float64),
+    }
+    for k, t in _FRAME_FIELDS.items():
+        out[k] = np.array([f[k] for f in fr], dtype=t)
+    out.update(d)
+    return AnimateResult(**out)
+
+
+@dataclass
+class RobotLinkFit:
+    """One link of a robot fit (robot_fit.hpp's RobotLinkFit): ``spheres`` (N, 4), its sphere
+    primitives first then the fitted spheres, padded; ``skipped`` (link_spheres set it to 0),
+    ``from_visual`` (fitted to its <visual> geometry), ``fitted``, ``covered`` (the coverage
+    certificates of the fitted spheres), the mesh ``files``; when fitted, ``repair`` and
+    ``eval`` (E_r, coverage, gaps of the fitted spheres before padding) and ``er_sum``;
+    under a budget, ``budget_curve`` (the quick fits' outside volumes) and the counts and outside
+    volumes of the curve split and the even split."""
+
+    link: str
+    spheres: np.ndarray
+    primitives: int
+    skipped: bool
+    from_visual: bool
+    fitted: bool
+    covered: bool
+    files: List[str]
+    repair: Optional[Dict[str, Any]]
+    eval: Optional[Dict[str, Any]]
+    er_sum: float
+    outside_volume: float
+    padding: float
+    budget_curve: Optional[Dict[str, List[float]]]
+    split_count: int
+    even_count: int
+    split_volume: float
+    even_volume: float
+    seconds: float
+
+
+@dataclass
+class RobotFitResult:
+    """A whole robot fitted (robot_fit.hpp's RobotFitResult): ``links`` in the robot's order
+    (the links with geometry); with a budget, the total outside volume as chosen and for the
+    curve split and the even split alone."""
+
+    robot: str
+    urdf: str
+    links: List[RobotLinkFit]
+    budget_split: bool
+    outside_volume: float
+    split_outside_volume: float
+    even_outside_volume: float
+    seconds: float
+
+    @property
+    def spheres(self) -> Dict[str, np.ndarray]:
+        """{link: (N, 4) spheres} of the links not skipped, in order: what
+        :func:`write_robot_spheres` and :func:`write_sphere_urdf` take."""
+        return {lf.link: lf.spheres for lf in self.links if not lf.skipped}
+
+    @property
+    def covered(self) -> bool:
+        """Every link's spheres certified to cover it."""
+        return all(lf.covered for lf in self.links)
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The fields as a dict (arrays as lists), e.g. for JSON."""
+        def conv(v: Any) -> Any:
+            if isinstance(v, np.ndarray):
+                return v.tolist()
+            if isinstance(v, dict):
+                return {k: conv(x) for k, x in v.items()}
+            if isinstance(v, list):
+                return [conv(x) for x in v]
+            return v
+        return conv(dataclasses.asdict(self))
+
+
+def fit_robot(urdf: PathLike, *, budget: int = 0, link_spheres: Optional[Dict[str, int]] = None,
+              padding: float = 0.0, link_padding: Optional[Dict[str, float]] = None,
+              package_paths: Sequence[PathLike] = (), use_ros_package_path: bool = True,
+              seed: int = 1, quality: str = "default", repair: Union[str, bool] = "auto",
+              weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
+              wrap_alpha: float = 0.0, wrap_offset: float = 0.0) -> RobotFitResult:
+    """Fits collision spheres to every link of a URDF robot, like ``sphereset robot`` (the same
+    library call, options and defaults, so the same spheres for the same seed).
+
+    ``budget`` spheres over the whole robot, sphere primitives included (0: 8 per link not
+    fixed by ``link_spheres``), split over the links by what lowers the total outside volume
+    most; ``link_spheres`` {link: count} fixes a link's count (0 skips it); ``padding`` is added
+    to every radius, ``link_padding`` {link: padding} instead for those links; mesh paths
+    resolve through ``package_paths`` (package://), then ROS_PACKAGE_PATH. ``quality`` is the
+    fit preset ("fast", "default", "best"); the repair keywords are those of :func:`solid`.
+    Raises InvalidArgumentError (a link name the robot lacks, a budget too small), UnreadableError
+    (the URDF or a mesh), NotSolidError (a link's geometry cannot be made a solid). The call
+    releases the GIL; Ctrl-C takes effect when it returns.
+    """
+    if repair is True:
+        repair = "auto"
+    elif repair is False:
+        repair = "off"
+    d = _core._fit_robot(os.fspath(urdf), int(budget), dict(link_spheres or {}), float(padding),
+                         {k: float(v) for k, v in (link_padding or {}).items()},
+                         [os.fspath(p) for p in package_paths], bool(use_ros_package_path),
+                         int(seed), quality, repair, weld_tolerance, bool(fill_cavities),
+                         float(wrap_alpha), float(wrap_offset))
+    d["links"] = [RobotLinkFit(**lf) for lf in d["links"]]
+    return RobotFitResult(**d)

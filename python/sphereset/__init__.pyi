@@ -4,12 +4,12 @@ from __future__ import annotations
 import dataclasses
 import os
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, List, Optional, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 from . import _sphereset as _core
 from ._sphereset import Error, InvalidArgumentError, InvalidDataError, Mesh, NotSolidError, Robot, Solid, SphereTree, UnreadableError, WriteError, curve_volume, format_sphere_tree, format_sphere_urdf, format_spheres, load_robot, read_link_spheres, read_sphere_tree, read_spheres, sphere_format, split_budget, write_link_spheres, write_robot_spheres, write_sphere_mesh, write_sphere_tree, write_sphere_urdf, write_spheres
 __version__ = '0.1.0'
-__all__ = ['Error', 'InvalidArgumentError', 'InvalidDataError', 'NotSolidError', 'UnreadableError', 'WriteError', 'Mesh', 'Solid', 'SphereTree', 'Robot', 'FitResult', 'EvalResult', 'CheckResult', 'TreeResult', 'PointQueryResult', 'PairQueryResult', 'load_mesh', 'solid', 'check', 'diagnose', 'fit', 'evaluate', 'tree', 'build_tree', 'query_tree', 'point_distance', 'contains', 'segment_outside_length', 'separation', 'overlaps', 'read_spheres', 'write_spheres', 'format_spheres', 'sphere_format', 'read_link_spheres', 'write_link_spheres', 'read_sphere_tree', 'write_sphere_tree', 'format_sphere_tree', 'write_sphere_mesh', 'load_robot', 'write_robot_spheres', 'write_sphere_urdf', 'format_sphere_urdf', 'split_budget', 'curve_volume']
+__all__ = ['Error', 'InvalidArgumentError', 'InvalidDataError', 'NotSolidError', 'UnreadableError', 'WriteError', 'Mesh', 'Solid', 'SphereTree', 'Robot', 'FitResult', 'EvalResult', 'CheckResult', 'TreeResult', 'PointQueryResult', 'PairQueryResult', 'load_mesh', 'solid', 'check', 'diagnose', 'fit', 'evaluate', 'tree', 'build_tree', 'query_tree', 'point_distance', 'contains', 'segment_outside_length', 'separation', 'overlaps', 'read_spheres', 'write_spheres', 'format_spheres', 'sphere_format', 'read_link_spheres', 'write_link_spheres', 'read_sphere_tree', 'write_sphere_tree', 'format_sphere_tree', 'write_sphere_mesh', 'load_robot', 'write_robot_spheres', 'write_sphere_urdf', 'format_sphere_urdf', 'split_budget', 'curve_volume', 'Animation', 'AnimateResult', 'mean_value_coordinates', 'mean_value_weights', 'point_bone_weights', 'skin_points', 'load_animation', 'animate', 'RobotLinkFit', 'RobotFitResult', 'fit_robot']
 PathLike = Union[str, 'os.PathLike[str]']
 MeshLike = Union[Mesh, Solid, PathLike]
 ProgressCallback = Callable[[Dict[str, Any]], None]
@@ -135,4 +135,110 @@ class PairQueryResult:
 def separation(a: Union[SphereTree, Any], b: Union[SphereTree, Any], *, pose_a: Any=None, pose_b: Any=None) -> PairQueryResult:
     ...
 def overlaps(a: Union[SphereTree, Any], b: Union[SphereTree, Any], *, pose_a: Any=None, pose_b: Any=None) -> PairQueryResult:
+    ...
+def mean_value_coordinates(mesh: Union[Mesh, PathLike], point: Any) -> np.ndarray:
+    ...
+def mean_value_weights(mesh: Union[Mesh, PathLike], points: Any) -> np.ndarray:
+    ...
+def point_bone_weights(mesh: Mesh, bone_weights: Any, points: Any, *, neighbours: int=8) -> np.ndarray:
+    ...
+def skin_points(points: Any, weights: Any, bones: Any) -> np.ndarray:
+    ...
+@dataclass
+class Animation:
+    path: str
+    rest: Mesh
+    frames: List[np.ndarray]
+    times: np.ndarray
+    bone_weights: Optional[np.ndarray]
+    bone_transforms: List[np.ndarray]
+    bone_names: List[str]
+    clip: str
+    clips: List[str]
+    duration: float
+
+    def __len__(self) -> int:
+        ...
+def load_animation(path: PathLike, clip: Optional[str]=None, fps: Optional[float]=None) -> Animation:
+    ...
+@dataclass
+class AnimateResult:
+    spheres: np.ndarray
+    times: np.ndarray
+    er: np.ndarray
+    surface_covered: np.ndarray
+    interior_covered: np.ndarray
+    max_gap: np.ndarray
+    crossings: np.ndarray
+    er_rebound: np.ndarray
+    rebound_covered: np.ndarray
+    radius_growth: np.ndarray
+    max_radius_growth: np.ndarray
+    grown: np.ndarray
+    er_fresh: np.ndarray
+    update_seconds: np.ndarray
+    eval_seconds: np.ndarray
+    rebound_seconds: np.ndarray
+    fresh_seconds: np.ndarray
+    weighting: str
+    rebound: bool
+    weights_seconds: float
+    frames_covered: int
+    frames_crossing: int
+    seconds: float
+
+    @property
+    def covered(self) -> np.ndarray:
+        ...
+
+    def __len__(self) -> int:
+        ...
+
+    def to_dict(self) -> Dict[str, Any]:
+        ...
+def animate(rest_mesh: Union[Mesh, PathLike, None], spheres: Any, frames: Union[Animation, Sequence[Any], np.ndarray], *, rebound: bool=False, weighting: str='auto', bone_neighbours: int=8, fresh_fit: bool=False, max_crossings: int=1000, times: Any=None, progress: Optional[Callable[[int, int], None]]=None) -> AnimateResult:
+    ...
+@dataclass
+class RobotLinkFit:
+    link: str
+    spheres: np.ndarray
+    primitives: int
+    skipped: bool
+    from_visual: bool
+    fitted: bool
+    covered: bool
+    files: List[str]
+    repair: Optional[Dict[str, Any]]
+    eval: Optional[Dict[str, Any]]
+    er_sum: float
+    outside_volume: float
+    padding: float
+    budget_curve: Optional[Dict[str, List[float]]]
+    split_count: int
+    even_count: int
+    split_volume: float
+    even_volume: float
+    seconds: float
+@dataclass
+class RobotFitResult:
+    robot: str
+    urdf: str
+    links: List[RobotLinkFit]
+    budget_split: bool
+    outside_volume: float
+    split_outside_volume: float
+    even_outside_volume: float
+    seconds: float
+
+    @property
+    def spheres(self) -> Dict[str, np.ndarray]:
+        ...
+
+    @property
+    def covered(self) -> bool:
+        ...
+
+    def to_dict(self) -> Dict[str, Any]:
+        ...
+def fit_robot(urdf: PathLike, *, budget: int=0, link_spheres: Optional[Dict[str, int]]=None, padding: float=0.0, link_padding: Optional[Dict[str, float]]=None, package_paths: Sequence[PathLike]=(), use_ros_package_path: bool=True, seed: int=1, quality: str='default', repair: Union[str, bool]='auto', weld_tolerance: Optional[float]=None, fill_cavities: bool=True, wrap_alpha: float=0.0, wrap_offset: float=0.0) -> RobotFitResult:
     ...

@@ -70,5 +70,7 @@ void bindTree(py::module_& m);
 void bindIo(py::module_& m);
 void bindRobot(py::module_& m);
 void bindBatch(py::module_& m);
+void bindAnimate(py::module_& m);
+void bindRobotFit(py::module_& m);
 
 }  // namespace sphereset::python

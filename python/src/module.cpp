@@ -179,4 +179,6 @@ PYBIND11_MODULE(_sphereset, m) {
   bindIo(m);
   bindRobot(m);
   bindBatch(m);
+  bindAnimate(m);
+  bindRobotFit(m);
 }

@@ -1,5 +1,7 @@
 """Sphere files, trees, queries and robots through the module, against brute-force numpy."""
 
+import json
+
 import numpy as np
 import pytest
 
@@ -129,3 +131,33 @@ def test_robot(tmp_path):
     counts = ss.split_budget([([1, 2, 4], [8.0, 3.0, 1.0]), ([1, 2, 4], [1.0, 0.9, 0.8])],
                              [-1, -1], 6)
     assert sum(counts) == 6 and counts[0] > counts[1]
+
+
+def test_fit_robot_same_spheres_as_cli(cli, tmp_path):
+    urdf = DATA / "robot" / "three_link.urdf"
+    out = tmp_path / "robot.json"
+    cli("robot", urdf, "--package-path", DATA / "robot", "--quality", "fast", "--seed", 3,
+        "--budget", 12, "--link-spheres", "base_link=2", "--padding", 0.01, "--link-padding",
+        "link1=0.02", "-o", out, "-q")
+    r = ss.fit_robot(urdf, budget=12, link_spheres={"base_link": 2}, padding=0.01,
+                     link_padding={"link1": 0.02}, package_paths=[DATA / "robot"], seed=3,
+                     quality="fast")
+    ref = json.loads(out.read_text())
+    assert r.robot == ref["robot"]
+    assert [lf.link for lf in r.links] == [lf["link"] for lf in ref["links"]]
+    for lf, rl in zip(r.links, ref["links"]):
+        assert lf.spheres.shape == (rl["count"], 4) and lf.spheres.dtype == np.float64
+        np.testing.assert_array_equal(lf.spheres, np.array(rl["spheres"]).reshape(-1, 4))
+        assert (lf.primitives, lf.skipped, lf.covered, lf.padding) == (
+            rl["primitives"], rl["skipped"], rl["covered"], rl["padding"])
+        if lf.fitted:
+            assert lf.er_sum == rl["er_sum"] and lf.eval["er_sum"] == rl["er_sum"]
+            assert lf.repair["kind"] == rl["repair"]["kind"]
+    assert r.budget_split and r.outside_volume == ref["budget"]["outside_volume"]
+    spheres = r.spheres
+    assert len(spheres["base_link"]) == 2
+    assert sum(len(s) for s in spheres.values()) <= 12
+    assert r.covered
+    with pytest.raises(ss.InvalidArgumentError, match="no_such_link"):
+        ss.fit_robot(urdf, link_spheres={"no_such_link": 2}, package_paths=[DATA / "robot"],
+                     quality="fast")

@@ -1,0 +1,319 @@
+// Bindings of the animation of sphere sets (paper Sec. 6, animate.hpp): mean value coordinates,
+// skinned assets read through assimp, and animateSpheres with per-frame certificates; the frame
+// loop releases the GIL and Ctrl-C cancels it between frames.
+#include <memory>
+#include <optional>
+
+#include "solid.hpp"
+#include "sphereset/animate.hpp"
+
+namespace sphereset::python {
+namespace {
+
+py::array_t<double> matrixToArray(const Eigen::MatrixXd& m) {
+  py::array_t<double> out({static_cast<py::ssize_t>(m.rows()), static_cast<py::ssize_t>(m.cols())});
+  auto v = out.mutable_unchecked<2>();
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j)
+      v(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(j)) = m(i, j);
+  return out;
+}
+
+// A (rows, cols) float64 matrix from an array-like; cols < 0 accepts any column count.
+Eigen::MatrixXd matrixFromArray(const py::handle& a, const std::string& what, py::ssize_t rows,
+                                py::ssize_t cols = -1) {
+  py::array_t<double, py::array::c_style | py::array::forcecast> arr;
+  try {
+    arr = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  } catch (const py::error_already_set&) {
+  }
+  if (!arr || arr.ndim() != 2)
+    raise(ErrorCode::kInvalidArgument, what + ": expected a 2-D array of numbers");
+  if (arr.shape(0) != rows || (cols >= 0 && arr.shape(1) != cols))
+    raise(ErrorCode::kInvalidArgument,
+          what + ": expected " + std::to_string(rows) + " rows" +
+              (cols >= 0 ? " and " + std::to_string(cols) + " columns" : std::string()) + " (got " +
+              std::to_string(arr.shape(0)) + " x " + std::to_string(arr.shape(1)) + ")");
+  Eigen::MatrixXd m(arr.shape(0), arr.shape(1));
+  auto v = arr.unchecked<2>();
+  for (py::ssize_t i = 0; i < arr.shape(0); ++i)
+    for (py::ssize_t j = 0; j < arr.shape(1); ++j) m(i, j) = v(i, j);
+  if (!m.allFinite()) raise(ErrorCode::kInvalidData, what + ": a NaN or infinite value");
+  return m;
+}
+
+// (B, 4, 4) affine bone transforms.
+std::vector<Eigen::Affine3d> bonesFromArray(const py::handle& a, const std::string& what) {
+  py::array_t<double, py::array::c_style | py::array::forcecast> arr;
+  try {
+    arr = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  } catch (const py::error_already_set&) {
+  }
+  if (!arr || arr.ndim() != 3 || arr.shape(1) != 4 || arr.shape(2) != 4)
+    raise(ErrorCode::kInvalidArgument, what + ": expected a (B, 4, 4) array of transforms");
+  std::vector<Eigen::Affine3d> out(static_cast<size_t>(arr.shape(0)));
+  auto v = arr.unchecked<3>();
+  for (size_t b = 0; b < out.size(); ++b) {
+    out[b].matrix().setIdentity();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 4; ++j) out[b].matrix()(i, j) = v(static_cast<py::ssize_t>(b), i, j);
+    if (!out[b].matrix().allFinite())
+      raise(ErrorCode::kInvalidData, what + ": a NaN or infinite value");
+  }
+  return out;
+}
+
+py::array_t<double> bonesToArray(const std::vector<Eigen::Affine3d>& bones) {
+  py::array_t<double> out({static_cast<py::ssize_t>(bones.size()), py::ssize_t{4}, py::ssize_t{4}});
+  auto v = out.mutable_unchecked<3>();
+  for (size_t b = 0; b < bones.size(); ++b)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) v(static_cast<py::ssize_t>(b), i, j) = bones[b].matrix()(i, j);
+  return out;
+}
+
+// The rest mesh must be a clean closed solid (mean value coordinates need one), as the command
+// line demands.
+void requireSolid(const PyMesh& pm) {
+  MeshDiagnosis d;
+  {
+    py::gil_scoped_release release;
+    d = diagnoseMesh(pm.loaded.mesh);
+  }
+  if (!d.isSolid())
+    raise(ErrorCode::kNotSolid,
+          pm.loaded.report.path +
+              ": the rest mesh is not a closed, consistently oriented solid (boundary edges " +
+              std::to_string(d.boundary_edges) + ", non-manifold edges " +
+              std::to_string(d.nonmanifold_edges) + ")");
+}
+
+py::dict frameDict(const AnimateFrameResult& f) {
+  py::dict d;
+  d["time"] = f.time;
+  d["spheres"] = spheresToArray(f.spheres);
+  d["er"] = f.er;
+  d["surface_covered"] = f.surface_covered;
+  d["interior_covered"] = f.interior_covered;
+  d["max_gap"] = f.max_gap;
+  d["crossings"] = f.crossings;
+  d["er_rebound"] = f.er_rebound;
+  d["rebound_covered"] = f.rebound_covered;
+  d["radius_growth"] = f.radius_growth;
+  d["max_radius_growth"] = f.max_radius_growth;
+  d["grown"] = f.grown;
+  d["er_fresh"] = f.er_fresh;
+  d["update_seconds"] = f.update_seconds;
+  d["eval_seconds"] = f.eval_seconds;
+  d["rebound_seconds"] = f.rebound_seconds;
+  d["fresh_seconds"] = f.fresh_seconds;
+  return d;
+}
+
+}  // namespace
+
+void bindAnimate(py::module_& m) {
+  m.def(
+      "_mean_value_coordinates",
+      [](const PyMesh& pm, const py::object& point) {
+        const std::vector<Vec3> p = pointsFromArray(point, "point");
+        if (p.size() != 1) raise(ErrorCode::kInvalidArgument, "point: expected one (3,) point");
+        std::vector<double> w;
+        {
+          py::gil_scoped_release release;
+          w = meanValueCoordinates(pm.loaded.mesh, p[0]);
+        }
+        return py::array_t<double>(static_cast<py::ssize_t>(w.size()), w.data());
+      },
+      py::arg("mesh"), py::arg("point"));
+
+  m.def(
+      "_mean_value_weights",
+      [](const PyMesh& pm, const py::object& points) {
+        const std::vector<Vec3> p = pointsFromArray(points, "points");
+        MeanValueWeights w;
+        {
+          py::gil_scoped_release release;
+          w = meanValueWeights(pm.loaded.mesh, p);
+        }
+        return py::make_tuple(matrixToArray(w.weights), w.seconds);
+      },
+      py::arg("mesh"), py::arg("points"));
+
+  m.def(
+      "_point_bone_weights",
+      [](const PyMesh& pm, const py::object& bone_weights, const py::object& points,
+         int neighbours) {
+        if (neighbours < 1) raise(ErrorCode::kInvalidArgument, "neighbours must be >= 1");
+        SkinWeights skin;
+        skin.vertex_weights = matrixFromArray(
+            bone_weights, "bone_weights", static_cast<py::ssize_t>(pm.loaded.mesh.vertices.size()));
+        skin.bones = static_cast<int>(skin.vertex_weights.cols());
+        const std::vector<Vec3> p = pointsFromArray(points, "points");
+        Eigen::MatrixXd w;
+        {
+          py::gil_scoped_release release;
+          w = pointBoneWeights(pm.loaded.mesh, skin, p, neighbours);
+        }
+        return matrixToArray(w);
+      },
+      py::arg("mesh"), py::arg("bone_weights"), py::arg("points"), py::arg("neighbours"));
+
+  m.def(
+      "_skin_points",
+      [](const py::object& points, const py::object& weights, const py::object& bones) {
+        const std::vector<Vec3> p = pointsFromArray(points, "points");
+        const std::vector<Eigen::Affine3d> b = bonesFromArray(bones, "bones");
+        const Eigen::MatrixXd w =
+            matrixFromArray(weights, "weights", static_cast<py::ssize_t>(p.size()),
+                            static_cast<py::ssize_t>(b.size()));
+        std::vector<Vec3> out;
+        {
+          py::gil_scoped_release release;
+          out = skinPoints(p, w, b);
+        }
+        return pointsToArray(out);
+      },
+      py::arg("points"), py::arg("weights"), py::arg("bones"));
+
+  m.def(
+      "_load_animation",
+      [](const Path& path, const std::string& clip, double fps) {
+        SkinnedLoadOptions so;
+        so.clip = clip;
+        so.fps = fps;
+        LoadedAnimation a;
+        {
+          py::gil_scoped_release release;
+          a = unwrap(loadAnimation(path.string(), so));
+        }
+        auto rest = std::make_shared<PyMesh>();
+        rest->loaded.mesh = a.asset.rest;
+        rest->loaded.report.path = path.string();
+        rest->loaded.report.file_vertices = static_cast<int64_t>(a.asset.rest.vertices.size());
+        rest->loaded.report.file_faces = static_cast<int64_t>(a.asset.rest.triangles.size());
+        py::list frames, bones;
+        py::array_t<double> times(static_cast<py::ssize_t>(a.frames.size()));
+        auto t = times.mutable_unchecked<1>();
+        for (size_t i = 0; i < a.frames.size(); ++i) {
+          t(static_cast<py::ssize_t>(i)) = a.frames[i].time;
+          frames.append(pointsToArray(a.frames[i].vertices));
+          bones.append(bonesToArray(a.frames[i].bones));
+        }
+        py::dict d;
+        d["path"] = path.string();
+        d["rest"] = rest;
+        d["frames"] = frames;
+        d["times"] = times;
+        d["bone_weights"] = matrixToArray(a.asset.skin.vertex_weights);
+        d["bone_transforms"] = bones;
+        d["bone_names"] = a.asset.bone_names;
+        d["clip"] = a.clip;
+        d["clips"] = a.asset.clips;
+        d["duration"] = a.duration;
+        return d;
+      },
+      py::arg("path"), py::arg("clip"), py::arg("fps"));
+
+  m.def(
+      "_animate",
+      [](const std::shared_ptr<PyMesh>& rest, const py::object& spheres_arg,
+         const py::list& frame_vertices, const py::object& times, const py::object& bone_weights,
+         const py::object& bone_transforms, const std::string& weighting, int bone_neighbours,
+         bool rebound, bool fresh_fit, int64_t max_crossings, const py::object& progress) {
+        const std::string& name = rest->loaded.report.path;
+        requireSolid(*rest);
+        const std::vector<Sphere> spheres = spheresFromArray(spheres_arg, "spheres");
+        if (spheres.empty()) raise(ErrorCode::kInvalidData, "spheres: no spheres to animate");
+        const size_t nv = rest->loaded.mesh.vertices.size();
+        const bool skinned = !bone_weights.is_none();
+        if (weighting != "auto" && weighting != "mvc" && weighting != "bones")
+          raise(ErrorCode::kInvalidArgument,
+                "weighting must be 'auto', 'mvc' or 'bones', not '" + weighting + "'");
+        const bool bones = weighting == "bones" || (weighting == "auto" && skinned);
+        if (bones && !skinned)
+          raise(ErrorCode::kInvalidArgument,
+                "weighting 'bones' needs an animation with bone weights (load_animation)");
+        if (max_crossings < 0) raise(ErrorCode::kInvalidArgument, "max_crossings must be >= 0");
+        if (bone_neighbours < 1) raise(ErrorCode::kInvalidArgument, "bone_neighbours must be >= 1");
+
+        std::vector<AnimationFrame> frames(frame_vertices.size());
+        for (size_t i = 0; i < frames.size(); ++i) {
+          const std::string what = "frame " + std::to_string(i);
+          frames[i].vertices = pointsFromArray(frame_vertices[i], what);
+          if (frames[i].vertices.size() != nv)
+            raise(ErrorCode::kInvalidArgument,
+                  what + ": " + std::to_string(frames[i].vertices.size()) +
+                      " vertices, the rest mesh " + name + " has " + std::to_string(nv) +
+                      " (frames need the same vertices in the same order)");
+          frames[i].time = static_cast<double>(i);
+        }
+        if (!times.is_none()) {
+          const auto t =
+              py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(times);
+          if (!t || t.ndim() != 1 || static_cast<size_t>(t.shape(0)) != frames.size())
+            raise(ErrorCode::kInvalidArgument, "times: expected one time per frame");
+          for (size_t i = 0; i < frames.size(); ++i)
+            frames[i].time = t.at(static_cast<py::ssize_t>(i));
+        }
+        SkinWeights skin;
+        if (skinned) {
+          skin.vertex_weights =
+              matrixFromArray(bone_weights, "bone_weights", static_cast<py::ssize_t>(nv));
+          skin.bones = static_cast<int>(skin.vertex_weights.cols());
+          if (bones) {
+            const py::list bt = bone_transforms.is_none() ? py::list() : py::list(bone_transforms);
+            if (bt.size() != frames.size())
+              raise(ErrorCode::kInvalidArgument,
+                    "bone_transforms: expected one (B, 4, 4) array per frame");
+            for (size_t i = 0; i < frames.size(); ++i) {
+              frames[i].bones = bonesFromArray(bt[i], "bone_transforms " + std::to_string(i));
+              if (frames[i].bones.size() != static_cast<size_t>(skin.bones))
+                raise(ErrorCode::kInvalidArgument, "bone_transforms " + std::to_string(i) + ": " +
+                                                       std::to_string(frames[i].bones.size()) +
+                                                       " bones, the weights have " +
+                                                       std::to_string(skin.bones));
+            }
+          }
+        }
+
+        AnimateOptions o;
+        o.weighting = bones ? CentreWeighting::kBones : CentreWeighting::kMeanValue;
+        o.bone_neighbours = bone_neighbours;
+        o.rebound = rebound;
+        o.fresh_fit = fresh_fit;
+        o.fit.restarts = 1;  // as `sphereset animate --fresh-fit`
+        o.max_crossings = max_crossings;
+        // Between frames: run Python's signal handlers (Ctrl-C raises KeyboardInterrupt, which
+        // abandons the animation) and report progress.
+        const py::object* cb = &progress;
+        o.progress = [cb](int f, int n) {
+          py::gil_scoped_acquire gil;
+          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+          if (!cb->is_none()) (*cb)(f, n);
+        };
+        Expected<AnimateResult> r = Error{ErrorCode::kInvalidArgument, "not run"};
+        {
+          py::gil_scoped_release release;
+          r = animateSpheres(rest->loaded.mesh, spheres, frames, o, skinned ? &skin : nullptr);
+        }
+        if (!r) raise(r.error().code, name + ": " + r.error().message);
+        py::list fl;
+        for (const AnimateFrameResult& f : r->frames) fl.append(frameDict(f));
+        py::dict d;
+        d["frames"] = fl;
+        d["weighting"] = bones ? "bones" : "mvc";
+        d["rebound"] = rebound;
+        d["weights_seconds"] = r->weights_seconds;
+        d["frames_covered"] = r->frames_covered;
+        d["frames_crossing"] = r->frames_crossing;
+        d["seconds"] = r->seconds;
+        return d;
+      },
+      py::arg("rest"), py::arg("spheres"), py::arg("frames"), py::arg("times"),
+      py::arg("bone_weights"), py::arg("bone_transforms"), py::arg("weighting"),
+      py::arg("bone_neighbours"), py::arg("rebound"), py::arg("fresh_fit"),
+      py::arg("max_crossings"), py::arg("progress"));
+}
+
+}  // namespace sphereset::python

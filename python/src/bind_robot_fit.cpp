@@ -1,0 +1,121 @@
+// Binding of the whole-robot fit (robot_fit.hpp: fitRobot), what `sphereset robot` runs: every
+// link of a URDF fitted, a budget split over the links, per-link certificates.
+#include <cmath>
+#include <map>
+#include <memory>
+
+#include "solid.hpp"
+#include "sphereset/robot.hpp"
+#include "sphereset/robot_fit.hpp"
+
+namespace sphereset::python {
+namespace {
+
+py::dict evalDict(const EvalResult& r) {
+  py::dict d;
+  d["er_sum"] = r.er_sum;
+  d["mesh_volume"] = r.mesh_volume;
+  d["bbox_diagonal"] = r.bbox_diagonal;
+  d["outside_volume"] = py::array_t<double>(static_cast<py::ssize_t>(r.outside_volume.size()),
+                                            r.outside_volume.data());
+  d["surface_covered"] = r.surface_covered;
+  d["max_surface_gap"] = r.max_surface_gap;
+  d["uncovered_triangles"] = r.uncovered_triangles;
+  d["original_covered"] = r.original_covered;
+  d["max_original_gap"] = r.max_original_gap;
+  d["interior_covered"] = r.interior_covered;
+  d["max_interior_gap"] = r.max_interior_gap;
+  d["seconds"] = r.seconds;
+  return d;
+}
+
+py::dict linkDict(const RobotLinkFit& j) {
+  py::dict d;
+  d["link"] = j.link;
+  d["spheres"] = spheresToArray(j.spheres);
+  d["primitives"] = j.primitives;
+  d["skipped"] = j.skipped;
+  d["from_visual"] = j.from_visual;
+  d["fitted"] = j.fitted;
+  d["covered"] = j.covered;
+  d["files"] = j.files;
+  d["repair"] = j.fitted ? py::object(repairDict(j.repair)) : py::object(py::none());
+  d["eval"] = j.fitted ? py::object(evalDict(j.eval)) : py::object(py::none());
+  d["er_sum"] = j.fitted ? j.eval.er_sum : 0.0;
+  d["outside_volume"] = j.outside_volume;
+  d["padding"] = j.padding;
+  if (j.curve.counts.empty()) {
+    d["budget_curve"] = py::none();
+  } else {
+    py::dict c;
+    c["counts"] = j.curve.counts;
+    c["outside_volume"] = j.curve.outside_volume;
+    d["budget_curve"] = c;
+  }
+  d["split_count"] = j.split_count;
+  d["even_count"] = j.even_count;
+  d["split_volume"] = j.split_volume;
+  d["even_volume"] = j.even_volume;
+  d["seconds"] = j.seconds;
+  return d;
+}
+
+}  // namespace
+
+void bindRobotFit(py::module_& m) {
+  m.def(
+      "_fit_robot",
+      [](const Path& urdf_arg, int budget, const std::map<std::string, int>& link_spheres,
+         double padding, const std::map<std::string, double>& link_padding,
+         const std::vector<std::string>& package_paths, bool use_ros_package_path, uint64_t seed,
+         const std::string& quality, const std::string& repair, const py::object& weld, bool fill,
+         double alpha, double offset) {
+        const std::string urdf = urdf_arg.string();
+        if (budget < 0) raise(ErrorCode::kInvalidArgument, "budget must be >= 0");
+        if (!(padding >= 0.0)) raise(ErrorCode::kInvalidArgument, "padding must be >= 0");
+        for (const auto& [l, k] : link_spheres)
+          if (k < 0) raise(ErrorCode::kInvalidArgument, "link_spheres " + l + ": must be >= 0");
+        for (const auto& [l, p] : link_padding)
+          if (!(p >= 0.0) || !std::isfinite(p))
+            raise(ErrorCode::kInvalidArgument, "link_padding " + l + ": must be a number >= 0");
+        RobotFitOptions fo;
+        fo.budget = budget;
+        fo.link_spheres = link_spheres;
+        fo.padding = padding;
+        fo.link_padding = link_padding;
+        fo.quality = unwrap(fitQualityFromName(quality));
+        fo.seed = seed;
+        fo.repair =
+            repairOptions(repair, weld.is_none() ? -1.0 : weld.cast<double>(), fill, alpha, offset);
+        fo.name = urdf;
+        RobotLoadOptions lo;
+        lo.package_paths = package_paths;
+        lo.use_ros_package_path = use_ros_package_path;
+        Robot robot;
+        RobotFitResult r;
+        {
+          py::gil_scoped_release release;
+          robot = unwrap(loadRobot(urdf, lo));
+          r = unwrap(fitRobot(robot, fo));
+        }
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        py::list links;
+        for (const RobotLinkFit& j : r.links) links.append(linkDict(j));
+        py::dict d;
+        d["robot"] = robot.name;
+        d["urdf"] = urdf;
+        d["links"] = links;
+        d["budget_split"] = r.budget_split;
+        d["outside_volume"] = r.outside_volume;
+        d["split_outside_volume"] = r.split_outside_volume;
+        d["even_outside_volume"] = r.even_outside_volume;
+        d["seconds"] = r.seconds;
+        return d;
+      },
+      py::arg("urdf"), py::arg("budget"), py::arg("link_spheres"), py::arg("padding"),
+      py::arg("link_padding"), py::arg("package_paths"), py::arg("use_ros_package_path"),
+      py::arg("seed"), py::arg("quality"), py::arg("repair"), py::arg("weld_tolerance"),
+      py::arg("fill_cavities"), py::arg("wrap_alpha"), py::arg("wrap_offset"));
+}
+
+}  // namespace sphereset::python
