@@ -246,18 +246,18 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
 
 Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
-  for (const auto& [name, n] : o.link_spheres)
-    if (std::none_of(robot.links.begin(), robot.links.end(),
-                     [&](const RobotLink& l) { return l.name == name; }) ||
-        n < 0)
-      return Error{ErrorCode::kInvalidArgument,
-                   o.name + ": link_spheres names '" + name + "', not a link of " + robot.name};
-  for (const auto& [name, d] : o.link_padding)
-    if (std::none_of(robot.links.begin(), robot.links.end(),
-                     [&](const RobotLink& l) { return l.name == name; }) ||
-        !(d >= 0.0))
-      return Error{ErrorCode::kInvalidArgument,
-                   o.name + ": link_padding names '" + name + "', not a link of " + robot.name};
+  auto isLink = [&](const std::string& name) {
+    return std::any_of(robot.links.begin(), robot.links.end(),
+                       [&](const RobotLink& l) { return l.name == name; });
+  };
+  for (const auto& item : o.link_spheres)
+    if (!isLink(item.first) || item.second < 0)
+      return Error{ErrorCode::kInvalidArgument, o.name + ": link_spheres names '" + item.first +
+                                                    "', not a link of " + robot.name};
+  for (const auto& item : o.link_padding)
+    if (!isLink(item.first) || !(item.second >= 0.0))
+      return Error{ErrorCode::kInvalidArgument, o.name + ": link_padding names '" + item.first +
+                                                    "', not a link of " + robot.name};
   auto jobs = prepareLinks(o, robot);
   if (!jobs) return jobs.error();
   for (Job& j : *jobs) {
