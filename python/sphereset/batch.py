@@ -13,8 +13,10 @@ the coverage check).
 
 On a real cluster the workers need the ``sphereset`` package installed (the same version) and
 must see the input meshes and OUT_DIR at the same paths as this process: give absolute paths on
-a shared file system (NFS, a mounted object store). Relative paths are resolved against the
-directory this command runs in, which the workers must share.
+a shared file system (NFS, a mounted object store). The mesh paths of the items are passed to
+the workers as listed (a relative INPUT gives relative paths, as in `sphereset batch`'s
+report), so each worker resolves them against its own working directory: start the workers in
+the same folder, or give INPUT as an absolute path. OUT_DIR is made absolute here.
 """
 
 from __future__ import annotations
