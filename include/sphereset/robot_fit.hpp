@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -77,6 +78,10 @@ struct RobotFitOptions {
   RepairOptions repair;  // how each link's geometry is made a solid (repair.hpp)
   int default_link_spheres = 8;
   std::string name;  // prefixes messages (e.g. the URDF's path)
+  // Each link fit's progress (fit.hpp), with the link's name. Called from the threads that fit
+  // the links, several at once; it must be thread-safe. It may throw to cancel: the exception
+  // leaves fitRobot.
+  std::function<void(const std::string& link, const FitProgress& progress)> progress;
 };
 
 // One link with geometry.

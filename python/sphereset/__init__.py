@@ -672,7 +672,8 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, link_spheres: Optional[Dict[st
     fit preset ("fast", "default", "best"); the repair keywords are those of :func:`solid`.
     Raises InvalidArgumentError (a link name the robot lacks, a budget too small), UnreadableError
     (the URDF or a mesh), NotSolidError (a link's geometry cannot be made a solid). The call
-    releases the GIL; Ctrl-C takes effect when it returns.
+    releases the GIL; Ctrl-C raises KeyboardInterrupt at the next progress report of a link fit
+    on the calling thread and cancels the whole call.
     """
     if repair is True:
         repair = "auto"

@@ -88,6 +88,12 @@ void bindRobotFit(py::module_& m) {
         fo.repair =
             repairOptions(repair, weld.is_none() ? -1.0 : weld.cast<double>(), fill, alpha, offset);
         fo.name = urdf;
+        // Ctrl-C: Python runs signal handlers on the main thread only, which fits links too;
+        // there the check raises KeyboardInterrupt and the exception cancels the whole fit.
+        fo.progress = [](const std::string&, const FitProgress&) {
+          py::gil_scoped_acquire gil;
+          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        };
         RobotLoadOptions lo;
         lo.package_paths = package_paths;
         lo.use_ros_package_path = use_ros_package_path;

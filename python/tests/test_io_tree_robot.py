@@ -161,3 +161,27 @@ def test_fit_robot_same_spheres_as_cli(cli, tmp_path):
     with pytest.raises(ss.InvalidArgumentError, match="no_such_link"):
         ss.fit_robot(urdf, link_spheres={"no_such_link": 2}, package_paths=[DATA / "robot"],
                      quality="fast")
+
+
+def test_fit_robot_honours_ctrl_c():
+    # A signal while the links are fitted is handled at the next progress report of a fit on
+    # the calling thread, inside fit_robot; the module is usable afterwards.
+    import signal
+
+    urdf = DATA / "robot" / "three_link.urdf"
+
+    def alarm(*_):
+        raise KeyboardInterrupt()
+
+    old = signal.signal(signal.SIGALRM, alarm)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.05)  # the fit takes much longer
+        with pytest.raises(KeyboardInterrupt) as info:
+            ss.fit_robot(urdf, budget=40, package_paths=[DATA / "robot"], quality="default")
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+    assert [e.name for e in info.traceback][-2:] == ["fit_robot", "alarm"]
+    r = ss.fit_robot(urdf, link_spheres={"base_link": 1, "link1": 1, "link2": 1},
+                     package_paths=[DATA / "robot"], quality="fast")
+    assert r.covered

@@ -66,6 +66,8 @@ FitOptions linkFitOptions(const RobotFitOptions& o, const Job& j, int n, bool qu
   }
   fo.seed = o.seed;
   fo.original = j.repair.kind == RepairKind::kNone ? nullptr : &j.repair.original;
+  if (o.progress)
+    fo.progress = [&o, &link = j.link->name](const FitProgress& p) { o.progress(link, p); };
   return fo;
 }
 
