@@ -19,17 +19,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 # The closed meshes, linked into one folder with the same layout.
-mkdir -p "$tmp/in"
-count=0
-while IFS= read -r -d '' mesh; do
-  rel=${mesh#"$mesh_dir"/}
-  if build/apps/sphereset check "$mesh" --repair off >/dev/null 2>&1; then
-    mkdir -p "$tmp/in/$(dirname "$rel")"
-    ln -s "$(realpath "$mesh")" "$tmp/in/$rel"
-    count=$((count + 1))
-  fi
-done < <(find "$mesh_dir" -type f ! -name '*.tsv' ! -name '*.md' -print0 | sort -z)
-echo "$count closed meshes under $mesh_dir" >&2
+link_closed_meshes "$mesh_dir" "$tmp/in"
 
 echo "jobs,items,ok,failed,n,quality,wall_s,user_s,sys_s,cpu_utilisation,items_per_min,peak_mb,cores,load_1min_before,same_as_jobs_1" >"$out"
 for jobs in ${JOBS_LIST:-1 2}; do

@@ -7,3 +7,20 @@ mkdir -p bench/results
 bench_meshes() {
   if [ ${#args[@]} -gt 0 ]; then meshes=("${args[@]}"); else meshes=("$@"); fi
 }
+# link_closed_meshes MESH_DIR DEST: links every mesh under MESH_DIR that is a closed solid
+# as loaded (`sphereset check --repair off` exits 0) into DEST with the same layout; sets
+# `count` to how many.
+link_closed_meshes() {
+  local mesh_dir=$1 dest=$2 mesh rel
+  mkdir -p "$dest"
+  count=0
+  while IFS= read -r -d '' mesh; do
+    rel=${mesh#"$mesh_dir"/}
+    if build/apps/sphereset check "$mesh" --repair off >/dev/null 2>&1; then
+      mkdir -p "$dest/$(dirname "$rel")"
+      ln -s "$(realpath "$mesh")" "$dest/$rel"
+      count=$((count + 1))
+    fi
+  done < <(find "$mesh_dir" -type f ! -name '*.tsv' ! -name '*.md' -print0 | sort -z)
+  echo "$count closed meshes under $mesh_dir" >&2
+}
