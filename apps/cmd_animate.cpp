@@ -25,11 +25,6 @@ struct AnimateArgs {
   bool rebound = false, fresh_fit = false, quiet = false;
 };
 
-// How far (relative to the bounding-box diagonal) a rest mesh's vertex may lie from the
-// asset's bind pose: the asset's skinning matrices are single precision, and a mesh file
-// written from the same pose rounds its coordinates.
-constexpr double kBindPoseTolerance = 1e-5;
-
 // The frames of the command line: deformed meshes with the rest mesh's vertices, or a skinned
 // asset's clip.
 struct Frames {
@@ -39,7 +34,7 @@ struct Frames {
   std::string clip;
 };
 
-Expected<Frames> readFrames(const AnimateArgs& a, const Mesh& rest) {
+Expected<Frames> readFrames(const AnimateArgs& a) {
   Frames out;
   LoadOptions lo;
   lo.weld_tolerance = a.weld;
@@ -49,25 +44,8 @@ Expected<Frames> readFrames(const AnimateArgs& a, const Mesh& rest) {
     so.fps = a.fps;
     auto anim = loadAnimation(a.animation, so);
     if (!anim) return anim.error();
-    if (anim->asset.rest.vertices.size() != rest.vertices.size())
-      return Error{ErrorCode::kInvalidData, a.animation + ": its bind pose has " +
-                                                std::to_string(anim->asset.rest.vertices.size()) +
-                                                " vertices, " + a.rest + " has " +
-                                                std::to_string(rest.vertices.size())};
-    // The frames and the skin follow the asset's own vertex order and triangles: REST_MESH must
-    // be its bind pose (the same file, or one with the same vertices and triangles).
-    const Mesh& bind = anim->asset.rest;
-    const double tol = kBindPoseTolerance * boundingBox(bind).diagonal();
-    size_t moved = bind.vertices.size();
-    for (size_t i = 0; i < bind.vertices.size() && moved == bind.vertices.size(); ++i)
-      if ((bind.vertices[i] - rest.vertices[i]).norm() > tol) moved = i;
-    if (moved < bind.vertices.size() || bind.triangles != rest.triangles)
-      return Error{
-          ErrorCode::kInvalidData,
-          a.rest + ": not the bind pose of " + a.animation +
-              (moved < bind.vertices.size() ? " (vertex " + std::to_string(moved) + " differs)"
-                                            : " (its triangles differ)") +
-              "; give the asset itself as the rest mesh"};
+    // The frames and the skin follow the asset's own vertex order and triangles: the library
+    // refuses a rest mesh that is not the asset's bind pose (skin.bind_pose).
     out.frames = std::move(anim->frames);
     out.skin = std::move(anim->asset.skin);
     out.skinned = true;
@@ -77,19 +55,11 @@ Expected<Frames> readFrames(const AnimateArgs& a, const Mesh& rest) {
   for (const std::string& path : a.frames) {
     auto m = loadMesh(path, lo);
     if (!m) return m.error();
-    if (m->mesh.vertices.size() != rest.vertices.size())
-      return Error{ErrorCode::kInvalidData,
-                   path + ": " + std::to_string(m->mesh.vertices.size()) +
-                       " vertices, the rest mesh " + a.rest + " has " +
-                       std::to_string(rest.vertices.size()) +
-                       " (frames need the same vertices in the same order)"};
-    if (m->mesh.triangles != rest.triangles)
-      return Error{ErrorCode::kInvalidData,
-                   path + ": its triangles differ from the rest mesh " + a.rest +
-                       "'s (frames need the same vertices in the same order)"};
     AnimationFrame f;
     f.time = static_cast<double>(out.frames.size());
     f.vertices = std::move(m->mesh.vertices);
+    f.triangles = std::move(m->mesh.triangles);  // the library checks them against the rest's
+    f.name = path;
     out.frames.push_back(std::move(f));
   }
   return out;
@@ -101,11 +71,9 @@ std::string frameName(size_t i, const std::string& ext) {
   return buf + ext;
 }
 
-int runAnimate(const AnimateArgs& a, const CLI::App* cmd) {
+int runAnimate(const AnimateArgs& a) {
   if (a.frames.empty() == a.animation.empty())
     return fail(Error{ErrorCode::kInvalidArgument, "give either --frames or --animation"});
-  if (!a.animation.empty() && cmd->count("--fps") > 0 && !(a.fps > 0.0))
-    return fail(Error{ErrorCode::kInvalidArgument, "--fps must be positive"});
   LoadOptions lo;
   lo.weld_tolerance = a.weld;
   auto rest = loadMesh(a.rest, lo);
@@ -116,7 +84,7 @@ int runAnimate(const AnimateArgs& a, const CLI::App* cmd) {
   if (!spheres) return fail(spheres.error());
   if (spheres->empty())
     return fail(Error{ErrorCode::kInvalidData, a.spheres + ": the file holds no spheres"});
-  auto frames = readFrames(a, rest->mesh);
+  auto frames = readFrames(a);
   if (!frames) return fail(frames.error());
   if (std::filesystem::exists(a.out) && !std::filesystem::is_directory(a.out))
     return fail(Error{ErrorCode::kWriteFailed, a.out + ": exists and is not a folder"});
@@ -232,7 +200,7 @@ Command registerAnimate(CLI::App& app) {
                   "Merge vertices closer than this (absolute units; rest and frames alike)")
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", a->quiet, "No progress on stderr");
-  return {cmd, [a, cmd] { return runAnimate(*a, cmd); }};
+  return {cmd, [a] { return runAnimate(*a); }};
 }
 
 }  // namespace sphereset::cli

@@ -63,7 +63,7 @@ Motion bend(const Mesh& rest, int frames, double angle_deg, double band) {
     fr.bones = {Eigen::Affine3d::Identity(),
                 Eigen::Affine3d(Eigen::Translation3d(pivot) * Eigen::AngleAxisd(a, Vec3::UnitX()) *
                                 Eigen::Translation3d(-pivot))};
-    fr.vertices = skinPoints(rest.vertices, m.skin.vertex_weights, fr.bones);
+    fr.vertices = skinPoints(rest.vertices, m.skin.vertex_weights, fr.bones).value();
     m.frames.push_back(std::move(fr));
   }
   return m;

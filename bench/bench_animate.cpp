@@ -51,15 +51,16 @@ std::vector<Vec3> centres(int n) {
 void BM_MeanValueWeights(benchmark::State& st) {
   const Scene& s = scene();
   const auto c = centres(static_cast<int>(st.range(0)));
-  for (auto _ : st) benchmark::DoNotOptimize(meanValueWeights(s.mesh, c).weights.data());
+  for (auto _ : st) benchmark::DoNotOptimize(meanValueWeights(s.mesh, c).value().weights.data());
   st.counters["vertices"] = static_cast<double>(s.mesh.vertices.size());
 }
 BENCHMARK(BM_MeanValueWeights)->Arg(128)->Arg(1024)->Unit(benchmark::kMillisecond);
 
 void BM_MeanValueFrame(benchmark::State& st) {
   const Scene& s = scene();
-  const MeanValueWeights w = meanValueWeights(s.mesh, centres(static_cast<int>(st.range(0))));
-  for (auto _ : st) benchmark::DoNotOptimize(meanValuePoints(w, s.deformed).data());
+  const MeanValueWeights w =
+      meanValueWeights(s.mesh, centres(static_cast<int>(st.range(0)))).value();
+  for (auto _ : st) benchmark::DoNotOptimize(meanValuePoints(w, s.deformed).value().data());
 }
 BENCHMARK(BM_MeanValueFrame)->Arg(128)->Arg(1024)->Unit(benchmark::kMicrosecond);
 
@@ -75,10 +76,10 @@ void BM_BoneFrame(benchmark::State& st) {
     skin.vertex_weights(static_cast<Eigen::Index>(i), 1) = w;
   }
   const auto c = centres(static_cast<int>(st.range(0)));
-  const Eigen::MatrixXd bw = pointBoneWeights(s.mesh, skin, c, 8);
+  const Eigen::MatrixXd bw = pointBoneWeights(s.mesh, skin, c, 8).value();
   const std::vector<Eigen::Affine3d> bones = {
       Eigen::Affine3d::Identity(), Eigen::Affine3d(Eigen::AngleAxisd(0.5, Vec3::UnitZ()))};
-  for (auto _ : st) benchmark::DoNotOptimize(skinPoints(c, bw, bones).data());
+  for (auto _ : st) benchmark::DoNotOptimize(skinPoints(c, bw, bones).value().data());
 }
 BENCHMARK(BM_BoneFrame)->Arg(128)->Arg(1024)->Unit(benchmark::kMicrosecond);
 

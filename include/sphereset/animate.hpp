@@ -26,32 +26,43 @@ namespace sphereset {
 // negative.
 std::vector<double> meanValueCoordinates(const Mesh& rest, const Vec3& x);
 
-// Dense weights: row i holds the coordinates of point i over the rest mesh's vertices, so that
-// the points of a deformed mesh are weights() * P with P the (vertices × 3) positions.
+// The coordinates of every point in double precision, row i over the rest mesh's vertices, so
+// that the points of a deformed mesh are M * P with P the (vertices × 3) positions; rows in
+// parallel (deterministic: each row on its own). Errors: kInvalidArgument (no vertices, a
+// point that is not finite), kInvalidData (points × vertices beyond limits::kMaxArrayBytes).
+Expected<Eigen::MatrixXd> meanValueMatrix(const Mesh& rest, const std::vector<Vec3>& points);
+
+// What the per-frame update keeps of the coordinates: single precision only (half the memory
+// traffic of the dense product, which is what bounds its time, and a quarter of the memory of
+// keeping double precision too).
 struct MeanValueWeights {
-  Eigen::MatrixXd weights;  // points × rest vertices
-  // The same weights in single precision, row-major: what the per-frame update reads (half
-  // the memory traffic of the dense product, which is what bounds its time).
-  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> compact;
+  // points × rest vertices, row-major.
+  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> weights;
   std::vector<Vec3> points;         // the weighted points at the rest pose
   std::vector<Vec3> rest_vertices;  // the rest mesh's vertices
   double seconds = 0.0;             // precomputation time
 };
 
-// Coordinates of every point, in parallel (deterministic: each row on its own).
-MeanValueWeights meanValueWeights(const Mesh& rest, const std::vector<Vec3>& points);
+// The single-precision coordinates of every point (each row computed in double precision and
+// rounded). Errors as meanValueMatrix's.
+Expected<MeanValueWeights> meanValueWeights(const Mesh& rest, const std::vector<Vec3>& points);
 
 // The points moved with the mesh (deformed: same count and order as the rest mesh's vertices),
 // in displacement form: p + Σ_j w_j (v'_j - v_j), with the single-precision weights and
 // double-precision sums, rows in parallel. Equal to Σ_j w_j v'_j up to the weights' rounding
-// times the displacement, and exactly p at the rest pose.
-std::vector<Vec3> meanValuePoints(const MeanValueWeights& w, const std::vector<Vec3>& deformed);
+// times the displacement, and exactly p at the rest pose. Errors: kInvalidArgument (a vertex
+// count other than the rest mesh's).
+Expected<std::vector<Vec3>> meanValuePoints(const MeanValueWeights& w,
+                                            const std::vector<Vec3>& deformed);
 
 // Skinning data of a rest mesh: per vertex, the weights of the bones moving it (each row sums
 // to 1, or to 0 for a vertex no bone moves; such a vertex keeps its rest position).
 struct SkinWeights {
   int bones = 0;
   Eigen::MatrixXd vertex_weights;  // rest vertices × bones
+  // The mesh the weights belong to (the asset's bind pose; loadAnimation fills it). The frames'
+  // vertices follow its order, so animateSpheres refuses a rest mesh that is not this pose.
+  Mesh bind_pose;
 };
 
 // One pose of the deforming mesh: the vertices (same count and order as the rest mesh; the
@@ -60,6 +71,10 @@ struct SkinWeights {
 struct AnimationFrame {
   double time = 0.0;  // seconds (informative)
   std::vector<Vec3> vertices;
+  // The frame's own triangles when it was read from a mesh (empty: the rest mesh's). They must
+  // be the rest mesh's: animateSpheres refuses a frame whose triangles differ.
+  std::vector<Triangle> triangles;
+  std::string name;  // where the frame came from (its file), named in messages; may be empty
   std::vector<Eigen::Affine3d> bones;
 };
 
@@ -125,10 +140,18 @@ struct AnimateResult {
   double seconds = 0.0;
 };
 
+// How far (relative to the bind pose's bounding-box diagonal) a rest mesh's vertex may lie
+// from the skin's bind pose: an asset's skinning matrices are single precision, and a mesh
+// file written from the same pose rounds its coordinates.
+inline constexpr double kBindPoseTolerance = 1e-5;
+
 // Moves `spheres` (fitted to `rest`) through the frames. kBones needs `skin` (bone weights of
-// the rest vertices) and per-frame bone transforms. Errors: kInvalidArgument (no spheres, a
-// frame whose vertex count differs from the rest mesh, kBones without skin or bone transforms),
-// kNotSolid (the rest mesh or a frame has no positive volume).
+// the rest vertices) and per-frame bone transforms; whenever `skin` is given, `rest` must be its
+// bind pose (same triangles, vertices within kBindPoseTolerance). Errors: kInvalidArgument (no
+// spheres, kBones without skin or bone transforms, options out of range), kInvalidData (a frame
+// whose vertex count or triangles differ from the rest mesh's, a rest mesh that is not the
+// skin's bind pose, weights beyond limits::kMaxArrayBytes), kNotSolid (the rest mesh or a frame
+// has no positive volume).
 Expected<AnimateResult> animateSpheres(const Mesh& rest, const std::vector<Sphere>& spheres,
                                        const std::vector<AnimationFrame>& frames,
                                        const AnimateOptions& options = {},
@@ -136,11 +159,14 @@ Expected<AnimateResult> animateSpheres(const Mesh& rest, const std::vector<Spher
 
 // Bone weights of points from those of the nearest rest vertices (inverse-distance average of
 // `neighbours` vertices): points × bones, rows summing to 1 (or 0 where no vertex has a bone).
-Eigen::MatrixXd pointBoneWeights(const Mesh& rest, const SkinWeights& skin,
+// Errors: kInvalidArgument (skin rows other than the rest mesh's vertices, neighbours < 1),
+// kInvalidData (points × bones beyond limits::kMaxArrayBytes).
+Expected<Eigen::MatrixXd> pointBoneWeights(const Mesh& rest, const SkinWeights& skin,
                                  const std::vector<Vec3>& points, int neighbours);
 
-// Linear blend skinning of points: p' = Σ_b w_b T_b p (points with no weight stay put).
-std::vector<Vec3> skinPoints(const std::vector<Vec3>& points, const Eigen::MatrixXd& weights,
+// Linear blend skinning of points: p' = Σ_b w_b T_b p (points with no weight stay put). Errors:
+// kInvalidArgument (weight rows other than the points, columns other than the bones).
+Expected<std::vector<Vec3>> skinPoints(const std::vector<Vec3>& points, const Eigen::MatrixXd& weights,
                              const std::vector<Eigen::Affine3d>& bones);
 
 // A skinned, animated asset read through assimp (FBX, glTF 2.0, COLLADA, DirectX .x, SMD...).
@@ -165,8 +191,10 @@ struct LoadedAnimation {
 };
 
 // Reads the asset's bind pose and skin and evaluates the clip. Errors: kUnreadable (not
-// readable), kInvalidData (no triangles, no animation, fps < 0), kInvalidArgument (no clip of
-// that name; the message lists the clips).
+// readable), kInvalidData (no triangles, no animation; more than limits::kMaxBones bones, or
+// frames × vertices beyond limits::kMaxArrayBytes), kInvalidArgument (fps negative or not
+// finite, more than limits::kMaxFrames frames; no clip of that name: the message lists the
+// clips).
 Expected<LoadedAnimation> loadAnimation(const std::string& path,
                                         const SkinnedLoadOptions& options = {});
 

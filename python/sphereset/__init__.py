@@ -545,12 +545,15 @@ def animate(rest_mesh: Union[Mesh, PathLike, None], spheres: Any,
     radii minimally per frame to restore exact coverage; ``fresh_fit`` also fits a fresh set to
     every frame to compare E_r (slow). ``max_crossings`` caps the crossing pairs counted per
     frame (0 skips the check). ``progress(frame, frames)`` is called after each frame; an
-    exception it raises, or Ctrl-C, abandons the call. Raises InvalidArgumentError (a frame
-    whose vertex count differs from the rest mesh, bones without a skin), NotSolidError (the
-    rest mesh or a frame has no positive volume).
+    exception it raises, or Ctrl-C, abandons the call. Raises InvalidDataError (a frame whose
+    vertex count, or a Mesh frame whose triangles, differ from the rest mesh's; a rest mesh
+    that is not the Animation's bind pose; no spheres), InvalidArgumentError (bones without a
+    skin, options out of range), NotSolidError (the rest mesh or a frame has no positive
+    volume).
     """
     bone_weights = None
     bone_transforms = None
+    bind_pose = None
     if isinstance(frames, Animation):
         anim = frames
         if rest_mesh is None:
@@ -560,19 +563,14 @@ def animate(rest_mesh: Union[Mesh, PathLike, None], spheres: Any,
             times = anim.times
         bone_weights = anim.bone_weights
         bone_transforms = anim.bone_transforms
+        bind_pose = anim.rest
     if rest_mesh is None:
         raise InvalidArgumentError("rest_mesh is needed unless frames is an Animation")
     if not isinstance(rest_mesh, Mesh):
         rest_mesh = load_mesh(rest_mesh)
-    nv = len(rest_mesh.vertices)
-    if bone_weights is not None and len(bone_weights) != nv:
-        raise InvalidDataError(
-            f"{anim.path}: its bind pose has {len(bone_weights)} vertices, "
-            f"{rest_mesh.name} has {nv}")
-    frame_list = [f.vertices if isinstance(f, Mesh) else f for f in frames]
-    d = _core._animate(rest_mesh, spheres, frame_list, times, bone_weights, bone_transforms,
-                       weighting, int(bone_neighbours), bool(rebound), bool(fresh_fit),
-                       int(max_crossings), progress)
+    d = _core._animate(rest_mesh, spheres, list(frames), times, bone_weights, bone_transforms,
+                       bind_pose, weighting, int(bone_neighbours), bool(rebound),
+                       bool(fresh_fit), int(max_crossings), progress)
     fr = d.pop("frames")
     out: Dict[str, Any] = {
         "spheres": (np.stack([f["spheres"] for f in fr]) if fr

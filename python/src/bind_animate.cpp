@@ -1,6 +1,7 @@
 // Bindings of the animation of sphere sets (paper Sec. 6, animate.hpp): mean value coordinates,
 // skinned assets read through assimp, and animateSpheres with per-frame certificates; the frame
 // loop releases the GIL and Ctrl-C cancels it between frames.
+#include <chrono>
 #include <memory>
 #include <optional>
 
@@ -19,7 +20,8 @@ py::array_t<double> matrixToArray(const Eigen::MatrixXd& m) {
   return out;
 }
 
-// A (rows, cols) float64 matrix from an array-like; cols < 0 accepts any column count.
+// A (rows, cols) float64 matrix from an array-like; rows or cols < 0 accepts any count (the
+// library checks the shapes it needs).
 Eigen::MatrixXd matrixFromArray(const py::handle& a, const std::string& what, py::ssize_t rows,
                                 py::ssize_t cols = -1) {
   py::array_t<double, py::array::c_style | py::array::forcecast> arr;
@@ -29,7 +31,7 @@ Eigen::MatrixXd matrixFromArray(const py::handle& a, const std::string& what, py
   }
   if (!arr || arr.ndim() != 2)
     raise(ErrorCode::kInvalidArgument, what + ": expected a 2-D array of numbers");
-  if (arr.shape(0) != rows || (cols >= 0 && arr.shape(1) != cols))
+  if ((rows >= 0 && arr.shape(0) != rows) || (cols >= 0 && arr.shape(1) != cols))
     raise(ErrorCode::kInvalidArgument,
           what + ": expected " + std::to_string(rows) + " rows" +
               (cols >= 0 ? " and " + std::to_string(cols) + " columns" : std::string()) + " (got " +
@@ -131,12 +133,15 @@ void bindAnimate(py::module_& m) {
       "_mean_value_weights",
       [](const PyMesh& pm, const py::object& points) {
         const std::vector<Vec3> p = pointsFromArray(points, "points");
-        MeanValueWeights w;
+        Expected<Eigen::MatrixXd> w = Error{ErrorCode::kInvalidArgument, "not run"};
+        const auto t0 = std::chrono::steady_clock::now();
         {
           py::gil_scoped_release release;
-          w = meanValueWeights(pm.loaded.mesh, p);
+          w = meanValueMatrix(pm.loaded.mesh, p);
         }
-        return py::make_tuple(matrixToArray(w.weights), w.seconds);
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return py::make_tuple(matrixToArray(unwrap(std::move(w))), seconds);
       },
       py::arg("mesh"), py::arg("points"));
 
@@ -144,18 +149,16 @@ void bindAnimate(py::module_& m) {
       "_point_bone_weights",
       [](const PyMesh& pm, const py::object& bone_weights, const py::object& points,
          int neighbours) {
-        if (neighbours < 1) raise(ErrorCode::kInvalidArgument, "neighbours must be >= 1");
         SkinWeights skin;
-        skin.vertex_weights = matrixFromArray(
-            bone_weights, "bone_weights", static_cast<py::ssize_t>(pm.loaded.mesh.vertices.size()));
+        skin.vertex_weights = matrixFromArray(bone_weights, "bone_weights", -1);
         skin.bones = static_cast<int>(skin.vertex_weights.cols());
         const std::vector<Vec3> p = pointsFromArray(points, "points");
-        Eigen::MatrixXd w;
+        Expected<Eigen::MatrixXd> w = Error{ErrorCode::kInvalidArgument, "not run"};
         {
           py::gil_scoped_release release;
           w = pointBoneWeights(pm.loaded.mesh, skin, p, neighbours);
         }
-        return matrixToArray(w);
+        return matrixToArray(unwrap(std::move(w)));
       },
       py::arg("mesh"), py::arg("bone_weights"), py::arg("points"), py::arg("neighbours"));
 
@@ -164,15 +167,13 @@ void bindAnimate(py::module_& m) {
       [](const py::object& points, const py::object& weights, const py::object& bones) {
         const std::vector<Vec3> p = pointsFromArray(points, "points");
         const std::vector<Eigen::Affine3d> b = bonesFromArray(bones, "bones");
-        const Eigen::MatrixXd w =
-            matrixFromArray(weights, "weights", static_cast<py::ssize_t>(p.size()),
-                            static_cast<py::ssize_t>(b.size()));
-        std::vector<Vec3> out;
+        const Eigen::MatrixXd w = matrixFromArray(weights, "weights", -1);
+        Expected<std::vector<Vec3>> out = Error{ErrorCode::kInvalidArgument, "not run"};
         {
           py::gil_scoped_release release;
           out = skinPoints(p, w, b);
         }
-        return pointsToArray(out);
+        return pointsToArray(unwrap(std::move(out)));
       },
       py::arg("points"), py::arg("weights"), py::arg("bones"));
 
@@ -219,13 +220,12 @@ void bindAnimate(py::module_& m) {
       "_animate",
       [](const std::shared_ptr<PyMesh>& rest, const py::object& spheres_arg,
          const py::list& frame_vertices, const py::object& times, const py::object& bone_weights,
-         const py::object& bone_transforms, const std::string& weighting, int bone_neighbours,
+         const py::object& bone_transforms, const py::object& bind_pose,
+         const std::string& weighting, int bone_neighbours,
          bool rebound, bool fresh_fit, int64_t max_crossings, const py::object& progress) {
         const std::string& name = rest->loaded.report.path;
         requireSolid(*rest);
         const std::vector<Sphere> spheres = spheresFromArray(spheres_arg, "spheres");
-        if (spheres.empty()) raise(ErrorCode::kInvalidData, "spheres: no spheres to animate");
-        const size_t nv = rest->loaded.mesh.vertices.size();
         const bool skinned = !bone_weights.is_none();
         if (weighting != "auto" && weighting != "mvc" && weighting != "bones")
           raise(ErrorCode::kInvalidArgument,
@@ -234,18 +234,19 @@ void bindAnimate(py::module_& m) {
         if (bones && !skinned)
           raise(ErrorCode::kInvalidArgument,
                 "weighting 'bones' needs an animation with bone weights (load_animation)");
-        if (max_crossings < 0) raise(ErrorCode::kInvalidArgument, "max_crossings must be >= 0");
-        if (bone_neighbours < 1) raise(ErrorCode::kInvalidArgument, "bone_neighbours must be >= 1");
 
+        // A frame is a Mesh (its triangles are checked against the rest mesh's) or an array of
+        // vertices; the library checks counts and triangles.
         std::vector<AnimationFrame> frames(frame_vertices.size());
         for (size_t i = 0; i < frames.size(); ++i) {
-          const std::string what = "frame " + std::to_string(i);
-          frames[i].vertices = pointsFromArray(frame_vertices[i], what);
-          if (frames[i].vertices.size() != nv)
-            raise(ErrorCode::kInvalidArgument,
-                  what + ": " + std::to_string(frames[i].vertices.size()) +
-                      " vertices, the rest mesh " + name + " has " + std::to_string(nv) +
-                      " (frames need the same vertices in the same order)");
+          const py::handle f = frame_vertices[i];
+          if (py::isinstance<PyMesh>(f)) {
+            const PyMesh& fm = f.cast<const PyMesh&>();
+            frames[i].vertices = fm.loaded.mesh.vertices;
+            frames[i].triangles = fm.loaded.mesh.triangles;
+          } else {
+            frames[i].vertices = pointsFromArray(f, "frame " + std::to_string(i));
+          }
           frames[i].time = static_cast<double>(i);
         }
         if (!times.is_none()) {
@@ -258,9 +259,11 @@ void bindAnimate(py::module_& m) {
         }
         SkinWeights skin;
         if (skinned) {
-          skin.vertex_weights =
-              matrixFromArray(bone_weights, "bone_weights", static_cast<py::ssize_t>(nv));
+          skin.vertex_weights = matrixFromArray(bone_weights, "bone_weights", -1);
           skin.bones = static_cast<int>(skin.vertex_weights.cols());
+          if (bind_pose.is_none())
+            raise(ErrorCode::kInvalidArgument, "bone_weights need the bind pose they belong to");
+          skin.bind_pose = bind_pose.cast<const PyMesh&>().loaded.mesh;
           if (bones) {
             const py::list bt = bone_transforms.is_none() ? py::list() : py::list(bone_transforms);
             if (bt.size() != frames.size())
@@ -268,11 +271,6 @@ void bindAnimate(py::module_& m) {
                     "bone_transforms: expected one (B, 4, 4) array per frame");
             for (size_t i = 0; i < frames.size(); ++i) {
               frames[i].bones = bonesFromArray(bt[i], "bone_transforms " + std::to_string(i));
-              if (frames[i].bones.size() != static_cast<size_t>(skin.bones))
-                raise(ErrorCode::kInvalidArgument, "bone_transforms " + std::to_string(i) + ": " +
-                                                       std::to_string(frames[i].bones.size()) +
-                                                       " bones, the weights have " +
-                                                       std::to_string(skin.bones));
             }
           }
         }
@@ -311,7 +309,8 @@ void bindAnimate(py::module_& m) {
         return d;
       },
       py::arg("rest"), py::arg("spheres"), py::arg("frames"), py::arg("times"),
-      py::arg("bone_weights"), py::arg("bone_transforms"), py::arg("weighting"),
+      py::arg("bone_weights"), py::arg("bone_transforms"), py::arg("bind_pose"),
+      py::arg("weighting"),
       py::arg("bone_neighbours"), py::arg("rebound"), py::arg("fresh_fit"),
       py::arg("max_crossings"), py::arg("progress"));
 }

@@ -144,8 +144,12 @@ def test_progress_and_cancel():
 
 def test_bad_input_raises():
     m = box_mesh()
-    with pytest.raises(ss.InvalidArgumentError, match="13 vertices, the rest mesh"):
+    with pytest.raises(ss.InvalidDataError, match="frame 1 has 13 vertices, the rest mesh 14"):
         ss.animate(m, SPHERES, [m.vertices, m.vertices[:-1]])
+    # A Mesh frame is checked for the rest mesh's triangles too.
+    swapped = ss.Mesh(m.vertices, m.faces[::-1].copy())
+    with pytest.raises(ss.InvalidDataError, match="its triangles differ from the rest mesh's"):
+        ss.animate(m, SPHERES, [m, swapped])
     with pytest.raises(ss.InvalidArgumentError, match="bones"):
         ss.animate(m, SPHERES, [m.vertices], weighting="bones")
     with pytest.raises(ss.InvalidArgumentError, match="weighting"):
@@ -208,6 +212,11 @@ def test_load_animation_and_bone_weighting(tmp_path):
         ss.load_animation(tmp_path / "box.smd", fps=-1.0)
     with pytest.raises(ss.InvalidDataError, match="vertices"):
         ss.animate(box_mesh(), sp, a)
+    # The bind pose scaled by 3 and shifted: same vertices and triangles, not the bind pose.
+    moved = ss.Mesh(a.rest.vertices * 3.0 + np.array([1.0, 2.0, 0.0]), a.rest.faces)
+    for weighting in ("bones", "mvc"):
+        with pytest.raises(ss.InvalidDataError, match="not the skin's bind pose"):
+            ss.animate(moved, sp, a, weighting=weighting)
 
 
 def test_asset_without_animation_raises(tmp_path):

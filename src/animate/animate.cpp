@@ -14,8 +14,10 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <utility>
 
 #include "fit/bound.hpp"
+#include "sphereset/limits.hpp"
 #include "sphereset/mesh_defects.hpp"
 #include "sphereset/solid_index.hpp"
 
@@ -49,10 +51,98 @@ Certificate certify(const SolidIndex& index, const std::vector<Sphere>& sp, cons
           std::max(e.max_surface_gap, e.max_interior_gap)};
 }
 
+// Whether `rest` is the skin's bind pose: the same triangles, every vertex within
+// kBindPoseTolerance of the bind pose's diagonal.
+Status checkBindPose(const Mesh& rest, const Mesh& bind) {
+  if (bind.vertices.size() != rest.vertices.size())
+    return Error{ErrorCode::kInvalidData,
+                 "the rest mesh has " + std::to_string(rest.vertices.size()) +
+                     " vertices, the skin's bind pose " + std::to_string(bind.vertices.size())};
+  const double tol = kBindPoseTolerance * boundingBox(bind).diagonal();
+  for (size_t i = 0; i < bind.vertices.size(); ++i)
+    if (!((bind.vertices[i] - rest.vertices[i]).norm() <= tol))
+      return Error{ErrorCode::kInvalidData,
+                   "the rest mesh is not the skin's bind pose (vertex " + std::to_string(i) +
+                       " differs); give the asset's bind pose as the rest mesh"};
+  if (bind.triangles != rest.triangles)
+    return Error{ErrorCode::kInvalidData,
+                 "the rest mesh is not the skin's bind pose (its triangles differ); give the "
+                 "asset's bind pose as the rest mesh"};
+  return {};
+}
+
+// Every precondition of animateSpheres, before anything is allocated.
+Status checkAnimateInputs(const Mesh& rest, const std::vector<Sphere>& spheres,
+                          const std::vector<AnimationFrame>& frames, const AnimateOptions& o,
+                          const SkinWeights* skin) {
+  if (spheres.empty()) return Error{ErrorCode::kInvalidData, "no spheres to animate"};
+  for (size_t i = 0; i < spheres.size(); ++i)
+    if (!spheres[i].center.allFinite() || !(spheres[i].radius >= 0.0) ||
+        !std::isfinite(spheres[i].radius))
+      return Error{ErrorCode::kInvalidArgument,
+                   "sphere " + std::to_string(i) + " is not finite or has a negative radius"};
+  if (o.bone_neighbours < 1)
+    return Error{ErrorCode::kInvalidArgument, "bone_neighbours must be at least 1 (got " +
+                                                  std::to_string(o.bone_neighbours) + ")"};
+  if (o.max_crossings < 0)
+    return Error{ErrorCode::kInvalidArgument, "max_crossings must be at least 0 (got " +
+                                                  std::to_string(o.max_crossings) + ")"};
+  if (!(signedVolume(rest) > 0.0))
+    return Error{ErrorCode::kNotSolid, "the rest mesh has no positive volume"};
+  const bool bones = o.weighting == CentreWeighting::kBones;
+  const auto nv = static_cast<Eigen::Index>(rest.vertices.size());
+  if (skin) {
+    if (Status st = checkBindPose(rest, skin->bind_pose); !st) return st;
+  }
+  if (bones && (!skin || skin->bones <= 0 || skin->vertex_weights.rows() != nv))
+    return Error{ErrorCode::kInvalidArgument,
+                 "bone weighting needs the skin weights of the rest mesh's vertices"};
+  for (size_t f = 0; f < frames.size(); ++f) {
+    const std::string frame =
+        "frame " + std::to_string(f) + (frames[f].name.empty() ? "" : " (" + frames[f].name + ")");
+    if (frames[f].vertices.size() != rest.vertices.size())
+      return Error{ErrorCode::kInvalidData,
+                   frame + " has " +
+                       std::to_string(frames[f].vertices.size()) + " vertices, the rest mesh " +
+                       std::to_string(rest.vertices.size()) +
+                       " (frames need the rest mesh's vertices in its order)"};
+    if (!frames[f].triangles.empty() && frames[f].triangles != rest.triangles)
+      return Error{ErrorCode::kInvalidData,
+                   frame +
+                       ": its triangles differ from the rest mesh's (frames need the rest "
+                       "mesh's vertices in its order)"};
+    if (bones && frames[f].bones.size() != static_cast<size_t>(skin->bones))
+      return Error{ErrorCode::kInvalidArgument,
+                   frame + " has " + std::to_string(frames[f].bones.size()) +
+                       " bone transforms, the skin " + std::to_string(skin->bones)};
+  }
+  return {};
+}
+
 }  // namespace
 
-Eigen::MatrixXd pointBoneWeights(const Mesh& rest, const SkinWeights& skin,
-                                 const std::vector<Vec3>& points, int neighbours) {
+Expected<Eigen::MatrixXd> pointBoneWeights(const Mesh& rest, const SkinWeights& skin,
+                                           const std::vector<Vec3>& points, int neighbours) {
+  if (skin.bones < 0 || skin.vertex_weights.cols() != skin.bones ||
+      skin.vertex_weights.rows() != static_cast<Eigen::Index>(rest.vertices.size()))
+    return Error{ErrorCode::kInvalidArgument,
+                 "the skin has weights of " + std::to_string(skin.vertex_weights.rows()) +
+                     " vertices over " + std::to_string(skin.vertex_weights.cols()) +
+                     " bones, the rest mesh " + std::to_string(rest.vertices.size()) +
+                     " vertices and the skin " + std::to_string(skin.bones) + " bones"};
+  if (neighbours < 1)
+    return Error{ErrorCode::kInvalidArgument,
+                 "neighbours must be at least 1 (got " + std::to_string(neighbours) + ")"};
+  for (size_t i = 0; i < points.size(); ++i)
+    if (!points[i].allFinite())
+      return Error{ErrorCode::kInvalidArgument,
+                   "point " + std::to_string(i) + " is not finite (NaN or infinite)"};
+  if (Status st = limits::checkArray("bone weights of " + std::to_string(points.size()) +
+                                         " points over " + std::to_string(skin.bones) + " bones",
+                                     static_cast<double>(points.size()),
+                                     sizeof(double) * static_cast<double>(skin.bones));
+      !st)
+    return st.error();
   const auto np = static_cast<Eigen::Index>(points.size());
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(np, skin.bones);
   const size_t nv = rest.vertices.size();
@@ -75,8 +165,16 @@ Eigen::MatrixXd pointBoneWeights(const Mesh& rest, const SkinWeights& skin,
   return out;
 }
 
-std::vector<Vec3> skinPoints(const std::vector<Vec3>& points, const Eigen::MatrixXd& weights,
-                             const std::vector<Eigen::Affine3d>& bones) {
+Expected<std::vector<Vec3>> skinPoints(const std::vector<Vec3>& points,
+                                       const Eigen::MatrixXd& weights,
+                                       const std::vector<Eigen::Affine3d>& bones) {
+  if (weights.rows() != static_cast<Eigen::Index>(points.size()) ||
+      weights.cols() != static_cast<Eigen::Index>(bones.size()))
+    return Error{ErrorCode::kInvalidArgument,
+                 "weights of " + std::to_string(weights.rows()) + " points over " +
+                     std::to_string(weights.cols()) + " bones, for " +
+                     std::to_string(points.size()) + " points and " +
+                     std::to_string(bones.size()) + " bone transforms"};
   std::vector<Vec3> out(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
     Eigen::Matrix<double, 3, 4> m = Eigen::Matrix<double, 3, 4>::Zero();
@@ -97,36 +195,24 @@ Expected<AnimateResult> animateSpheres(const Mesh& rest, const std::vector<Spher
                                        const std::vector<AnimationFrame>& frames,
                                        const AnimateOptions& options, const SkinWeights* skin) {
   const auto t0 = Clock::now();
-  if (spheres.empty()) return Error{ErrorCode::kInvalidArgument, "no spheres to animate"};
-  if (!(signedVolume(rest) > 0.0))
-    return Error{ErrorCode::kNotSolid, "the rest mesh has no positive volume"};
+  if (Status st = checkAnimateInputs(rest, spheres, frames, options, skin); !st)
+    return st.error();
   const bool bones = options.weighting == CentreWeighting::kBones;
-  const auto nv = static_cast<Eigen::Index>(rest.vertices.size());
-  if (bones && (!skin || skin->bones <= 0 || skin->vertex_weights.rows() != nv))
-    return Error{ErrorCode::kInvalidArgument,
-                 "bone weighting needs the skin weights of the rest mesh's vertices"};
-  for (size_t f = 0; f < frames.size(); ++f) {
-    if (frames[f].vertices.size() != rest.vertices.size())
-      return Error{ErrorCode::kInvalidArgument, "frame " + std::to_string(f) + " has " +
-                                                    std::to_string(frames[f].vertices.size()) +
-                                                    " vertices, the rest mesh " +
-                                                    std::to_string(rest.vertices.size())};
-    if (bones && frames[f].bones.size() != static_cast<size_t>(skin->bones))
-      return Error{ErrorCode::kInvalidArgument,
-                   "frame " + std::to_string(f) + " has " + std::to_string(frames[f].bones.size()) +
-                       " bone transforms, the skin " + std::to_string(skin->bones)};
-  }
-
   std::vector<Vec3> centres(spheres.size());
   for (size_t i = 0; i < spheres.size(); ++i) centres[i] = spheres[i].center;
   AnimateResult res;
   const auto tw = Clock::now();
   MeanValueWeights mvc;
   Eigen::MatrixXd bone_w;
-  if (bones)
-    bone_w = pointBoneWeights(rest, *skin, centres, options.bone_neighbours);
-  else
-    mvc = meanValueWeights(rest, centres);
+  if (bones) {
+    auto bw = pointBoneWeights(rest, *skin, centres, options.bone_neighbours);
+    if (!bw) return bw.error();
+    bone_w = std::move(*bw);
+  } else {
+    auto w = meanValueWeights(rest, centres);
+    if (!w) return w.error();
+    mvc = std::move(*w);
+  }
   res.weights_seconds = since(tw);
 
   const auto n = static_cast<Eigen::Index>(spheres.size());
@@ -136,13 +222,11 @@ Expected<AnimateResult> animateSpheres(const Mesh& rest, const std::vector<Spher
     fr.time = frame.time;
     const auto tu = Clock::now();
     std::vector<Sphere> moved = spheres;
-    if (bones) {
-      const std::vector<Vec3> c = skinPoints(centres, bone_w, frame.bones);
-      for (size_t i = 0; i < moved.size(); ++i) moved[i].center = c[i];
-    } else {
-      const std::vector<Vec3> c = meanValuePoints(mvc, frame.vertices);
-      for (size_t i = 0; i < moved.size(); ++i) moved[i].center = c[i];
-    }
+    // The inputs were checked above: these cannot fail.
+    const std::vector<Vec3> moved_centres = bones
+                                                ? skinPoints(centres, bone_w, frame.bones).value()
+                                                : meanValuePoints(mvc, frame.vertices).value();
+    for (size_t i = 0; i < moved.size(); ++i) moved[i].center = moved_centres[i];
     fr.update_seconds = since(tu);
 
     const auto te = Clock::now();

@@ -11,8 +11,11 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "sphereset/animate.hpp"
+#include "sphereset/limits.hpp"
 
 namespace sphereset {
 namespace {
@@ -123,30 +126,75 @@ std::vector<double> meanValueCoordinates(const Mesh& rest, const Vec3& x) {
   return w;
 }
 
-MeanValueWeights meanValueWeights(const Mesh& rest, const std::vector<Vec3>& points) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto nv = static_cast<Eigen::Index>(rest.vertices.size());
-  const auto np = static_cast<Eigen::Index>(points.size());
-  // Row-major scratch per point, copied into the column-major result.
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows(np, nv);
+namespace {
+
+// The checks shared by meanValueMatrix and meanValueWeights: a mesh with vertices, finite
+// points, and the matrix within the memory limit (`bytes` per weight).
+Status checkWeightInputs(const Mesh& rest, const std::vector<Vec3>& points, double bytes) {
+  if (rest.vertices.empty())
+    return Error{ErrorCode::kInvalidArgument, "the rest mesh has no vertices"};
+  for (size_t i = 0; i < points.size(); ++i)
+    if (!points[i].allFinite())
+      return Error{ErrorCode::kInvalidArgument,
+                   "point " + std::to_string(i) + " is not finite (NaN or infinite)"};
+  return limits::checkArray("mean value weights of " + std::to_string(points.size()) +
+                                " points over " + std::to_string(rest.vertices.size()) +
+                                " vertices",
+                            static_cast<double>(points.size()),
+                            bytes * static_cast<double>(rest.vertices.size()));
+}
+
+// Row i of the coordinates (double precision) handed to `store(i, row)`, rows in parallel.
+template <class Store>
+void coordinateRows(const Mesh& rest, const std::vector<Vec3>& points, Store store) {
+  const size_t nv = rest.vertices.size();
   const double eps = kVertexEpsRel * boundingBox(rest).diagonal();
-  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, np), [&](const auto& r) {
-    std::vector<double> d(static_cast<size_t>(nv));
-    std::vector<Vec3> u(static_cast<size_t>(nv));
-    for (Eigen::Index i = r.begin(); i != r.end(); ++i)
-      coordinates(rest, points[static_cast<size_t>(i)], eps, rows.row(i).data(), d.data(),
-                  u.data());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()), [&](const auto& r) {
+    std::vector<double> row(nv), d(nv);
+    std::vector<Vec3> u(nv);
+    for (size_t i = r.begin(); i != r.end(); ++i) {
+      coordinates(rest, points[i], eps, row.data(), d.data(), u.data());
+      store(static_cast<Eigen::Index>(i), row);
+    }
   });
+}
+
+}  // namespace
+
+Expected<Eigen::MatrixXd> meanValueMatrix(const Mesh& rest, const std::vector<Vec3>& points) {
+  if (Status st = checkWeightInputs(rest, points, sizeof(double)); !st) return st.error();
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(points.size()),
+                      static_cast<Eigen::Index>(rest.vertices.size()));
+  coordinateRows(rest, points, [&](Eigen::Index i, const std::vector<double>& row) {
+    for (size_t j = 0; j < row.size(); ++j) out(i, static_cast<Eigen::Index>(j)) = row[j];
+  });
+  return out;
+}
+
+Expected<MeanValueWeights> meanValueWeights(const Mesh& rest, const std::vector<Vec3>& points) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (Status st = checkWeightInputs(rest, points, sizeof(float)); !st) return st.error();
   MeanValueWeights out;
-  out.weights = rows;
-  out.compact = rows.cast<float>();
+  out.weights.resize(static_cast<Eigen::Index>(points.size()),
+                     static_cast<Eigen::Index>(rest.vertices.size()));
+  coordinateRows(rest, points, [&](Eigen::Index i, const std::vector<double>& row) {
+    for (size_t j = 0; j < row.size(); ++j)
+      out.weights(i, static_cast<Eigen::Index>(j)) = static_cast<float>(row[j]);
+  });
   out.points = points;
   out.rest_vertices = rest.vertices;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
 
-std::vector<Vec3> meanValuePoints(const MeanValueWeights& w, const std::vector<Vec3>& deformed) {
+Expected<std::vector<Vec3>> meanValuePoints(const MeanValueWeights& w,
+                                            const std::vector<Vec3>& deformed) {
+  if (deformed.size() != w.rest_vertices.size() ||
+      w.weights.cols() != static_cast<Eigen::Index>(deformed.size()) ||
+      w.weights.rows() != static_cast<Eigen::Index>(w.points.size()))
+    return Error{ErrorCode::kInvalidArgument,
+                 "the deformed mesh has " + std::to_string(deformed.size()) +
+                     " vertices, the weights are over " + std::to_string(w.rest_vertices.size())};
   const auto nv = static_cast<Eigen::Index>(deformed.size());
   Eigen::Matrix<float, Eigen::Dynamic, 3> disp(nv, 3);
   for (Eigen::Index j = 0; j < nv; ++j)
@@ -170,7 +218,7 @@ std::vector<Vec3> meanValuePoints(const MeanValueWeights& w, const std::vector<V
         // precision.
         for (Eigen::Index j0 = 0; j0 < nv; j0 += kVerticesPerChunk) {
           const Eigen::Index cols = std::min(kVerticesPerChunk, nv - j0);
-          acc += (w.compact.block(r.begin(), j0, rows, cols) * disp.middleRows(j0, cols))
+          acc += (w.weights.block(r.begin(), j0, rows, cols) * disp.middleRows(j0, cols))
                      .cast<double>();
         }
         for (Eigen::Index i = 0; i < rows; ++i)

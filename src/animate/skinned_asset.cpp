@@ -15,6 +15,7 @@
 
 #include "mesh/weld.hpp"
 #include "sphereset/animate.hpp"
+#include "sphereset/limits.hpp"
 
 namespace sphereset {
 namespace {
@@ -165,7 +166,8 @@ void nameNodes(const aiNode* node, std::map<std::string, const aiNode*>* out) {
 Expected<LoadedAnimation> loadAnimation(const std::string& path,
                                         const SkinnedLoadOptions& options) {
   if (!(options.fps >= 0.0) || !std::isfinite(options.fps))
-    return Error{ErrorCode::kInvalidArgument, "--fps must be a positive number"};
+    return Error{ErrorCode::kInvalidArgument,
+                 "fps must be a positive number, or 0 for the clip's keyframe times"};
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
   if (!scene || !scene->mRootNode) {
@@ -245,6 +247,16 @@ Expected<LoadedAnimation> loadAnimation(const std::string& path,
       return Error{ErrorCode::kInvalidData, path + ": a cleaned vertex has no source vertex"};
     source[i] = it->second;
   }
+  if (raw.bones.size() > static_cast<size_t>(limits::kMaxBones))
+    return Error{ErrorCode::kInvalidData, path + ": " + std::to_string(raw.bones.size()) +
+                                              " bones (the limit is " +
+                                              std::to_string(limits::kMaxBones) + ")"};
+  if (Status st = limits::checkArray(
+          path + ": the skin of " + std::to_string(nv) + " vertices and " +
+              std::to_string(raw.bones.size()) + " bones",
+          static_cast<double>(nv), sizeof(double) * static_cast<double>(raw.bones.size()));
+      !st)
+    return st.error();
   const auto nb = static_cast<int>(raw.bones.size());
   out.asset.skin.bones = nb;
   out.asset.skin.vertex_weights = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(nv), nb);
@@ -270,6 +282,13 @@ Expected<LoadedAnimation> loadAnimation(const std::string& path,
   std::vector<double> ticks;
   if (options.fps > 0.0) {
     const double step = tps / options.fps;
+    // Checked before any frame is made: the count, then the memory of the frames' vertices.
+    const double count = std::floor((duration + kSameKeyTicks) / step) + 1.0;
+    if (!(count <= static_cast<double>(limits::kMaxFrames)))
+      return Error{ErrorCode::kInvalidArgument,
+                   path + ": " + std::to_string(out.duration) + " s at fps " +
+                       std::to_string(options.fps) + " would make more than " +
+                       std::to_string(limits::kMaxFrames) + " frames (the limit)"};
     for (int64_t k = 0; static_cast<double>(k) * step <= duration + kSameKeyTicks; ++k)
       ticks.push_back(static_cast<double>(k) * step);
   } else {
@@ -278,6 +297,14 @@ Expected<LoadedAnimation> loadAnimation(const std::string& path,
       if (ticks.empty() || k - ticks.back() > kSameKeyTicks) ticks.push_back(k);
     if (ticks.empty()) ticks.push_back(0.0);
   }
+  if (Status st = limits::checkArray(path + ": " + std::to_string(ticks.size()) + " frames of " +
+                                         std::to_string(nv) + " vertices",
+                                     static_cast<double>(ticks.size()),
+                                     static_cast<double>(nv * sizeof(Vec3) +
+                                                         raw.bones.size() * sizeof(Eigen::Affine3d)));
+      !st)
+    return st.error();
+  out.asset.skin.bind_pose = out.asset.rest;
 
   for (double t : ticks) {
     std::map<const aiNode*, aiMatrix4x4> g;
@@ -286,7 +313,9 @@ Expected<LoadedAnimation> loadAnimation(const std::string& path,
     fr.time = t / tps;
     for (const BoneDef& b : raw.bones)
       fr.bones.push_back(toEigen(g.at(b.node) * b.offset * b.mesh_bind_inverse));
-    fr.vertices = skinPoints(out.asset.rest.vertices, out.asset.skin.vertex_weights, fr.bones);
+    // The skin was built for these vertices and bones: this cannot fail.
+    fr.vertices =
+        skinPoints(out.asset.rest.vertices, out.asset.skin.vertex_weights, fr.bones).value();
     out.frames.push_back(std::move(fr));
   }
   return out;

@@ -66,8 +66,39 @@ LinkFitCurve curveEnvelope(const LinkFitCurve& c) {
   return hull;
 }
 
+namespace {
+
+Error budgetError(int budget, int used) {
+  return {ErrorCode::kInvalidArgument, "a budget of " + std::to_string(budget) +
+                                           " spheres is below the " + std::to_string(used) +
+                                           " the fixed links and one per other link need"};
+}
+
+// The curves of splitBudget: one per link, counts increasing from 1, one volume per count (an
+// empty curve, a link whose quick fits all failed, counts as volume 0).
+Status checkCurves(const std::vector<LinkFitCurve>& curves, const std::vector<int>& fixed) {
+  if (curves.size() != fixed.size())
+    return Error{ErrorCode::kInvalidArgument, std::to_string(curves.size()) + " curves for " +
+                                                  std::to_string(fixed.size()) + " links"};
+  for (size_t i = 0; i < curves.size(); ++i) {
+    const LinkFitCurve& c = curves[i];
+    bool ok = c.counts.size() == c.outside_volume.size();
+    for (size_t k = 0; ok && k < c.counts.size(); ++k)
+      ok = c.counts[k] >= 1 && (k == 0 || c.counts[k] > c.counts[k - 1]) &&
+           c.outside_volume[k] >= 0.0 && std::isfinite(c.outside_volume[k]);
+    if (!ok)
+      return Error{ErrorCode::kInvalidArgument,
+                   "curve " + std::to_string(i) +
+                       ": expected increasing counts from 1 and one finite volume >= 0 each"};
+  }
+  return {};
+}
+
+}  // namespace
+
 Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& measured,
                                        const std::vector<int>& fixed, int budget) {
+  if (Status st = checkCurves(measured, fixed); !st) return st.error();
   const size_t n = measured.size();
   std::vector<LinkFitCurve> curves;
   for (const LinkFitCurve& c : measured) curves.push_back(curveEnvelope(c));
@@ -78,9 +109,7 @@ Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& measured
     used += count[i];
   }
   if (used > budget)
-    return Error{ErrorCode::kInvalidArgument, "a budget of " + std::to_string(budget) +
-                                                  " spheres is below the " + std::to_string(used) +
-                                                  " the fixed links and one per other link need"};
+    return budgetError(budget, used);
   for (; used < budget; ++used) {
     size_t best = n;
     double best_gain = -1.0;
@@ -105,9 +134,7 @@ Expected<std::vector<int>> evenSplit(const std::vector<int>& fixed, int budget) 
     used += f >= 0 ? f : 1;
   }
   if (used > budget)
-    return Error{ErrorCode::kInvalidArgument, "a budget of " + std::to_string(budget) +
-                                                  " spheres is below the " + std::to_string(used) +
-                                                  " the fixed links and one per other link need"};
+    return budgetError(budget, used);
   std::vector<int> count(fixed.size(), 0);
   const int spare = budget - (used - free_links);  // spheres for the free links
   int k = 0;

@@ -7,12 +7,14 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "sphereset/limits.hpp"
 #include "sphereset/robot_fit.hpp"
 #include "sphereset/solid_index.hpp"
 
@@ -121,7 +123,7 @@ Status chooseCounts(const RobotFitOptions& o, std::vector<Job>* jobs) {
       total += j.count + static_cast<int>(j.primitives.size());
     }
     if (o.budget > 0 && total > o.budget)
-      return Error{ErrorCode::kInvalidArgument, o.name + ": --budget " + std::to_string(o.budget) +
+      return Error{ErrorCode::kInvalidArgument, o.name + ": budget " + std::to_string(o.budget) +
                                                     ": the links' fixed counts "
                                                     "and sphere primitives already come to " +
                                                     std::to_string(total)};
@@ -150,7 +152,7 @@ Status chooseCounts(const RobotFitOptions& o, std::vector<Job>* jobs) {
   }
   // The budget counts the sphere primitives, which are not fitted.
   auto budgetError = [&](const Error& e) {
-    return Error{e.code, o.name + ": --budget " + std::to_string(o.budget) + ": " + e.message +
+    return Error{e.code, o.name + ": budget " + std::to_string(o.budget) + ": " + e.message +
                              (primitives > 0 ? " (after the URDF's " + std::to_string(primitives) +
                                                    " sphere primitives)"
                                              : "")};
@@ -252,14 +254,31 @@ Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) 
     return std::any_of(robot.links.begin(), robot.links.end(),
                        [&](const RobotLink& l) { return l.name == name; });
   };
-  for (const auto& item : o.link_spheres)
-    if (!isLink(item.first) || item.second < 0)
-      return Error{ErrorCode::kInvalidArgument, o.name + ": link_spheres names '" + item.first +
-                                                    "', not a link of " + robot.name};
-  for (const auto& item : o.link_padding)
-    if (!isLink(item.first) || !(item.second >= 0.0))
-      return Error{ErrorCode::kInvalidArgument, o.name + ": link_padding names '" + item.first +
-                                                    "', not a link of " + robot.name};
+  if (Status st = limits::checkRange(o.name + ": budget", o.budget, 0, limits::kMaxSpheres); !st)
+    return st.error();
+  if (Status st = limits::checkRange(o.name + ": default_link_spheres", o.default_link_spheres,
+                                     1, limits::kMaxSpheres);
+      !st)
+    return st.error();
+  if (!(o.padding >= 0.0) || !std::isfinite(o.padding))
+    return Error{ErrorCode::kInvalidArgument, o.name + ": padding must be a finite distance >= 0"};
+  for (const auto& [link, count] : o.link_spheres) {
+    if (!isLink(link))
+      return Error{ErrorCode::kInvalidArgument,
+                   o.name + ": link_spheres names '" + link + "', not a link of " + robot.name};
+    if (Status st = limits::checkRange(o.name + ": link_spheres of '" + link + "'", count, 0,
+                                       limits::kMaxSpheres);
+        !st)
+      return st.error();
+  }
+  for (const auto& [link, padding] : o.link_padding) {
+    if (!isLink(link))
+      return Error{ErrorCode::kInvalidArgument,
+                   o.name + ": link_padding names '" + link + "', not a link of " + robot.name};
+    if (!(padding >= 0.0) || !std::isfinite(padding))
+      return Error{ErrorCode::kInvalidArgument, o.name + ": link_padding of '" + link +
+                                                    "' must be a finite distance >= 0"};
+  }
   auto jobs = prepareLinks(o, robot);
   if (!jobs) return jobs.error();
   for (Job& j : *jobs) {

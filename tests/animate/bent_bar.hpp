@@ -62,6 +62,7 @@ inline BentBar makeBentBar(double length = 4.0, int rings = 41, int k = 4, doubl
     b.skin.vertex_weights(static_cast<Eigen::Index>(i), 0) = 1.0 - w1;
     b.skin.vertex_weights(static_cast<Eigen::Index>(i), 1) = w1;
   }
+  b.skin.bind_pose = b.rest;
   return b;
 }
 
@@ -74,7 +75,7 @@ inline AnimationFrame bendFrame(const BentBar& b, double angle, double length = 
   Eigen::Affine3d t1 = Eigen::Translation3d(joint) * Eigen::AngleAxisd(angle, Vec3::UnitZ()) *
                        Eigen::Translation3d(-joint);
   f.bones = {Eigen::Affine3d::Identity(), t1};
-  f.vertices = skinPoints(b.rest.vertices, b.skin.vertex_weights, f.bones);
+  f.vertices = skinPoints(b.rest.vertices, b.skin.vertex_weights, f.bones).value();
   return f;
 }
 

@@ -4,6 +4,7 @@
 // against every sphere) confirms both.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <random>
 
@@ -139,7 +140,7 @@ TEST(Animate, FramesThatPassThroughThemselvesAreFlagged) {
                 Eigen::Affine3d(Eigen::Translation3d(joint) *
                                 Eigen::AngleAxisd(2.5, Vec3::UnitZ()) *
                                 Eigen::Translation3d(-joint))};
-  fold.vertices = skinPoints(bar.rest.vertices, bar.skin.vertex_weights, fold.bones);
+  fold.vertices = skinPoints(bar.rest.vertices, bar.skin.vertex_weights, fold.bones).value();
   auto r = animateSpheres(bar.rest, barSpheres(), {bendFrame(bar, 1.4), fold});
   ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_EQ(r->frames[0].crossings, 0);
@@ -153,7 +154,7 @@ TEST(Animate, BadInput) {
   f.vertices.pop_back();
   auto r = animateSpheres(bar.rest, barSpheres(), {f});
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_EQ(r.error().code, ErrorCode::kInvalidData);
   EXPECT_NE(r.error().message.find("vertices"), std::string::npos);
   AnimateOptions o;
   o.weighting = CentreWeighting::kBones;
@@ -161,10 +162,86 @@ TEST(Animate, BadInput) {
   EXPECT_FALSE(animateSpheres(bar.rest, {}, {bendFrame(bar, 0.3)}).ok());
 }
 
+// The rest mesh must be the skin's bind pose: the bind pose scaled by 3 and shifted has the
+// same vertex count and triangles, and would be animated into a set that covers nothing.
+TEST(Animate, RefusesARestMeshThatIsNotTheBindPose) {
+  const auto bar = makeBentBar();
+  Mesh scaled = bar.rest;
+  for (Vec3& v : scaled.vertices) v = 3.0 * v + Vec3(1.0, 2.0, 0.0);
+  AnimateOptions o;
+  o.weighting = CentreWeighting::kBones;
+  for (CentreWeighting w : {CentreWeighting::kBones, CentreWeighting::kMeanValue}) {
+    o.weighting = w;
+    auto r = animateSpheres(scaled, barSpheres(), {bendFrame(bar, 0.3)}, o, &bar.skin);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, ErrorCode::kInvalidData);
+    EXPECT_NE(r.error().message.find("not the skin's bind pose (vertex 0 differs)"),
+              std::string::npos)
+        << r.error().message;
+  }
+  // Same vertices, triangles in another order.
+  Mesh reordered = bar.rest;
+  std::swap(reordered.triangles[0], reordered.triangles[1]);
+  auto r = animateSpheres(reordered, barSpheres(), {bendFrame(bar, 0.3)}, o, &bar.skin);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().message.find("its triangles differ"), std::string::npos);
+  // A skin without its bind pose.
+  SkinWeights no_bind = bar.skin;
+  no_bind.bind_pose = {};
+  EXPECT_FALSE(animateSpheres(bar.rest, barSpheres(), {bendFrame(bar, 0.3)}, o, &no_bind).ok());
+  // The bind pose itself is accepted.
+  EXPECT_TRUE(animateSpheres(bar.rest, barSpheres(), {bendFrame(bar, 0.3)}, o, &bar.skin).ok());
+}
+
+TEST(Animate, RefusesAFrameWithOtherTriangles) {
+  const auto bar = makeBentBar();
+  AnimationFrame f = bendFrame(bar, 0.3);
+  f.triangles = bar.rest.triangles;
+  EXPECT_TRUE(animateSpheres(bar.rest, barSpheres(), {f}).ok());
+  std::swap(f.triangles[2][0], f.triangles[2][1]);
+  f.name = "bent.off";
+  auto r = animateSpheres(bar.rest, barSpheres(), {f});
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().code, ErrorCode::kInvalidData);
+  EXPECT_EQ(r.error().message,
+            "frame 0 (bent.off): its triangles differ from the rest mesh's (frames need the rest mesh's "
+            "vertices in its order)");
+}
+
+// The public kernels check their parallel arrays instead of reading past them.
+TEST(Animate, KernelsCheckTheirArraySizes) {
+  const auto bar = makeBentBar();
+  const std::vector<Vec3> pts = {{0.5, 0.0, 0.0}, {3.5, 0.1, 0.0}};
+  SkinWeights short_skin = bar.skin;
+  short_skin.vertex_weights.conservativeResize(3, 2);
+  auto bw = pointBoneWeights(bar.rest, short_skin, pts, 8);
+  ASSERT_FALSE(bw.ok());
+  EXPECT_EQ(bw.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_FALSE(pointBoneWeights(bar.rest, bar.skin, pts, 0).ok());
+  EXPECT_FALSE(pointBoneWeights(bar.rest, bar.skin, {{NAN, 0.0, 0.0}}, 8).ok());
+
+  const Eigen::MatrixXd w = Eigen::MatrixXd::Constant(2, 2, 0.5);
+  const std::vector<Eigen::Affine3d> two(2, Eigen::Affine3d::Identity());
+  EXPECT_TRUE(skinPoints(pts, w, two).ok());
+  EXPECT_FALSE(skinPoints(pts, w, {Eigen::Affine3d::Identity()}).ok());
+  EXPECT_FALSE(skinPoints({pts[0]}, w, two).ok());
+
+  auto mvw = meanValueWeights(bar.rest, pts);
+  ASSERT_TRUE(mvw.ok());
+  std::vector<Vec3> fewer = bar.rest.vertices;
+  fewer.pop_back();
+  auto moved = meanValuePoints(*mvw, fewer);
+  ASSERT_FALSE(moved.ok());
+  EXPECT_EQ(moved.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_FALSE(meanValueWeights(Mesh{}, pts).ok());
+  EXPECT_FALSE(meanValueMatrix(bar.rest, {{0.0, INFINITY, 0.0}}).ok());
+}
+
 TEST(Animate, PointBoneWeightsFollowTheNearestSurface) {
   const auto bar = makeBentBar();
   const Eigen::MatrixXd w =
-      pointBoneWeights(bar.rest, bar.skin, {{0.5, 0.0, 0.0}, {3.5, 0.1, 0.0}, {2.0, 0.0, 0.0}}, 8);
+      pointBoneWeights(bar.rest, bar.skin, {{0.5, 0.0, 0.0}, {3.5, 0.1, 0.0}, {2.0, 0.0, 0.0}}, 8)
+          .value();
   EXPECT_NEAR(w(0, 0), 1.0, 1e-12);
   EXPECT_NEAR(w(1, 1), 1.0, 1e-12);
   EXPECT_NEAR(w.row(2).sum(), 1.0, 1e-12);

@@ -66,6 +66,22 @@ TEST(RobotBudget, FixedLinksKeepTheirCountsAndTheBudgetMustAllowThem) {
   EXPECT_NE(bad.error().message.find("budget of 3"), std::string::npos);
 }
 
+// The parallel arrays are checked instead of read past: one curve per link, one volume per count.
+TEST(RobotBudget, SplitChecksItsArrays) {
+  const std::vector<LinkFitCurve> curves = {powerLaw(1.0, 1.0), powerLaw(1.0, 1.0)};
+  auto fewer = splitBudget(curves, {-1, -1, -1}, 9);
+  ASSERT_FALSE(fewer.ok());
+  EXPECT_EQ(fewer.error().message, "2 curves for 3 links");
+  LinkFitCurve ragged = powerLaw(1.0, 1.0);
+  ragged.outside_volume.pop_back();
+  auto r = splitBudget({ragged, powerLaw(1.0, 1.0)}, {-1, -1}, 9);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().code, ErrorCode::kInvalidArgument);
+  LinkFitCurve nan = powerLaw(1.0, 1.0);
+  nan.outside_volume[0] = std::nan("");
+  EXPECT_FALSE(splitBudget({nan, powerLaw(1.0, 1.0)}, {-1, -1}, 9).ok());
+}
+
 TEST(RobotBudget, EnvelopeIsDecreasingConvexAndBelowEveryMeasurement) {
   // The Kinova base link's quick fits: 8 spheres measured worse than 4.
   LinkFitCurve c;

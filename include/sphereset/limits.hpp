@@ -1,0 +1,52 @@
+// The limits on every size that input can drive, in one place. Each library function that
+// allocates in proportion to such a size checks it against these before allocating and returns
+// kInvalidArgument (an option) or kInvalidData (a file's content) naming the size and the limit.
+// The command line, the Python module and the batch take their bounds from here.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "sphereset/status.hpp"
+
+namespace sphereset::limits {
+
+// Memory a single input may make the library allocate for one array of its own (bytes). Large
+// enough for any mesh a user fits on a workstation; small enough that a typing error or a
+// hostile file is refused at once instead of exhausting the machine.
+inline constexpr double kMaxArrayBytes = 4.0 * 1024 * 1024 * 1024;  // 4 GiB
+
+// The fit.
+inline constexpr int kMaxSpheres = 1000000;             // spheres of one set
+inline constexpr int64_t kMaxPoints = 100000000;        // points clustered
+inline constexpr int kMaxIterations = 100000;           // assignment/update rounds
+inline constexpr int kMaxRestarts = 1000;               // independent fits
+inline constexpr double kMaxDecimation = 16.0;          // extra spheres, as a fraction of n
+inline constexpr int kMaxOptimizerEvaluations = 100000;  // per sphere and round
+
+// The evaluation.
+inline constexpr int64_t kMaxUnionSamples = 100000000;    // Monte Carlo samples
+inline constexpr int64_t kMaxProximitySegments = 10000000;  // proximity segments
+inline constexpr int kMaxShadowResolution = 4096;           // pixels per side
+inline constexpr int kMaxShadowLights = 4096;               // lights
+
+// Sphere trees: nodes of a tree (every level, root included).
+inline constexpr int64_t kMaxTreeNodes = 100000000;
+
+// Animation: frames of one clip, and bones of one skin.
+inline constexpr int64_t kMaxFrames = 1000000;
+inline constexpr int64_t kMaxBones = 100000;
+
+// Robots: nesting depth of a URDF's XML elements, links of one robot.
+inline constexpr int kMaxXmlDepth = 256;
+
+// kInvalidArgument "`what` must be from `lo` to `hi` (got `value`)" when value is outside
+// [lo, hi] or not a number; OK otherwise. The one wording of a range error.
+Status checkRange(const std::string& what, double value, double lo, double hi);
+
+// kInvalidData (or `code`) "`what` would need N GiB (more than the limit of 4 GiB)" when
+// count × bytes_each exceeds kMaxArrayBytes; OK otherwise.
+Status checkArray(const std::string& what, double count, double bytes_each,
+                  ErrorCode code = ErrorCode::kInvalidData);
+
+}  // namespace sphereset::limits

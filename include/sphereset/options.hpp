@@ -1,0 +1,53 @@
+// Option tables: one definition per option (name, type, limits, default, help) from which every
+// front door is made. The command line adds one flag per row, the batch manifest accepts one
+// column per row, and the Python module one keyword per row; all of them hand the text the user
+// gave to the library, which parses and checks it here, so that a value is refused with the same
+// message whichever door it came through.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "sphereset/status.hpp"
+
+namespace sphereset {
+
+enum class OptionType {
+  kInteger,   // a whole number in [min, max]
+  kUnsigned,  // a whole number from 0 to 2^64 - 1 (seeds)
+  kReal,      // a finite number in [min, max]
+  kChoice,    // one of `choices`
+};
+
+struct OptionSpec {
+  const char* name;  // the library's name: the Python keyword and the manifest column
+  const char* flag;  // the command line's flags, CLI11 style ("-n,--spheres")
+  OptionType type;
+  double min = 0.0, max = 0.0;         // kInteger, kReal: inclusive bounds
+  std::span<const char* const> choices;  // kChoice
+  const char* default_text;            // the default as help shows it
+  const char* help;
+};
+
+// Parsed values of one option, as the table's setters receive them.
+struct OptionValue {
+  int64_t integer = 0;  // kInteger
+  uint64_t unsigned_integer = 0;  // kUnsigned
+  double real = 0.0;    // kReal
+  std::string choice;   // kChoice
+};
+
+// `text` parsed and checked as `spec` says. kInvalidArgument "NAME 'TEXT': expected an integer
+// from 1 to 1000000" (or "a number from 0 to 16", "an integer from 0 to 18446744073709551615",
+// "fast, default or best") for anything else, including trailing characters, NaN, infinities,
+// numbers out of range and signs on unsigned values.
+Expected<OptionValue> parseOption(const OptionSpec& spec, const std::string& text);
+
+// "n, quality, seed, ..." : the names of a table, for messages listing them.
+std::string optionNames(std::span<const OptionSpec> table);
+
+// The row named `name`, or null.
+const OptionSpec* findOption(std::span<const OptionSpec> table, const std::string& name);
+
+}  // namespace sphereset

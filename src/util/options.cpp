@@ -1,0 +1,98 @@
+// Parsing and checking an option's text against its row of an option table (options.hpp): the
+// one place where a value a user typed becomes a number or a name.
+#include "sphereset/options.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <string>
+
+namespace sphereset {
+namespace {
+
+std::string bound(double v) {
+  char buf[40];
+  if (v == std::floor(v) && std::fabs(v) < 1e18)
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+  else
+    std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// "fast, default or best".
+std::string choiceList(std::span<const char* const> choices) {
+  std::string s;
+  for (size_t i = 0; i < choices.size(); ++i)
+    s += (i == 0 ? "" : (i + 1 == choices.size() ? " or " : ", ")) + std::string(choices[i]);
+  return s;
+}
+
+std::string expectation(const OptionSpec& spec) {
+  switch (spec.type) {
+    case OptionType::kInteger:
+      return "an integer from " + bound(spec.min) + " to " + bound(spec.max);
+    case OptionType::kUnsigned:
+      return "an integer from 0 to " + std::to_string(std::numeric_limits<uint64_t>::max());
+    case OptionType::kReal:
+      return spec.max == std::numeric_limits<double>::max()
+                 ? "a finite number >= " + bound(spec.min)
+                 : "a number from " + bound(spec.min) + " to " + bound(spec.max);
+    case OptionType::kChoice:
+      return choiceList(spec.choices);
+  }
+  return {};
+}
+
+// The whole of `text` as an integer of type T, nothing before or after it.
+template <class T>
+bool wholeInteger(const std::string& text, T* out) {
+  const char* end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, *out);
+  return ec == std::errc() && ptr == end && !text.empty();
+}
+
+}  // namespace
+
+Expected<OptionValue> parseOption(const OptionSpec& spec, const std::string& text) {
+  OptionValue v;
+  bool ok = false;
+  switch (spec.type) {
+    case OptionType::kInteger:
+      ok = wholeInteger(text, &v.integer) && static_cast<double>(v.integer) >= spec.min &&
+           static_cast<double>(v.integer) <= spec.max;
+      break;
+    case OptionType::kUnsigned:
+      ok = wholeInteger(text, &v.unsigned_integer);
+      break;
+    case OptionType::kReal: {
+      char* end = nullptr;
+      v.real = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
+      ok = !text.empty() && end == text.c_str() + text.size() && std::isfinite(v.real) &&
+           v.real >= spec.min && v.real <= spec.max;
+      break;
+    }
+    case OptionType::kChoice:
+      for (const char* c : spec.choices) ok = ok || text == c;
+      v.choice = text;
+      break;
+  }
+  if (ok) return v;
+  return Error{ErrorCode::kInvalidArgument,
+               std::string(spec.name) + " '" + text + "': expected " + expectation(spec)};
+}
+
+std::string optionNames(std::span<const OptionSpec> table) {
+  std::string s;
+  for (const OptionSpec& o : table) s += (s.empty() ? "" : ", ") + std::string(o.name);
+  return s;
+}
+
+const OptionSpec* findOption(std::span<const OptionSpec> table, const std::string& name) {
+  for (const OptionSpec& o : table)
+    if (name == o.name) return &o;
+  return nullptr;
+}
+
+}  // namespace sphereset
