@@ -151,79 +151,59 @@ std::string repairLine(const RepairResult& r) {
   return s + buf;
 }
 
+std::vector<std::pair<std::string, std::string>> TableArgs::given() const {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& [name, opt] : options)
+    if (opt->count() > 0) out.emplace_back(name, text.at(name));
+  return out;
+}
+
+void addTableOptions(CLI::App* cmd, TableArgs* a, std::span<const OptionSpec> table,
+                     std::initializer_list<std::string_view> skip) {
+  for (const OptionSpec& o : table) {
+    if (std::find(skip.begin(), skip.end(), std::string_view(o.name)) != skip.end()) continue;
+    const char* type = o.type == OptionType::kChoice  ? "TEXT"
+                       : o.type == OptionType::kReal ? "FLOAT"
+                                                     : "INT";
+    // No CLI11 checks: the library parses and checks the text (one message for every door).
+    a->options[o.name] =
+        cmd->add_option(o.flag, a->text[o.name], std::string(o.help) + " (default " +
+                                                     o.default_text + ")")
+            ->type_name(type)
+            ->allow_extra_args(false);
+  }
+}
+
 void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
   addMeshArgs(cmd, &a->mesh);
-  if (count_option)
-    cmd->add_option("-n,--spheres", a->fit.num_spheres, "Number of spheres")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 1000000));
   cmd->add_option("-o,--output", a->out_path,
                   count_option ? "Output file; the format follows the extension: .txt (x y z r), "
                                  ".json, .sph, .yaml (cuRobo collision_spheres)"
                                : "Output file: .sph (Bradshaw's layout) or .json (nodes with "
                                  "parent and children)")
       ->required();
-  addFitTuningArgs(cmd, a);
+  addFitTuningArgs(cmd, a, count_option);
   cmd->add_flag("-q,--quiet", a->quiet, "No progress on stderr");
 }
 
-void addFitTuningArgs(CLI::App* cmd, FitArgs* a) {
-  cmd->add_option("--seed", a->fit.seed, "Seed for sampling and initialisation")
-      ->capture_default_str();
-  cmd->add_option("--points", a->points,
-                  "Points to cluster (default 0: max(5000, 100 n), scaled by --quality)")
-      ->check(CLI::Range(int64_t{0}, int64_t{100000000}));
-  cmd->add_option("--iterations", a->fit.max_iterations,
-                  "Cap on assignment/update rounds (default 100; --quality fast: 30)")
-      ->check(CLI::Range(0, 100000));
-  cmd->add_option("--padding", a->fit.padding, "Distance added to every radius")
-      ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--quality", a->quality,
-                  "fast, default or best (points, rounds, optimiser effort)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"fast", "default", "best"}));
-  cmd->add_option("--restarts", a->fit.restarts,
-                  "Independent fits from derived seeds, best kept (default 1; --quality best: 4)")
-      ->check(CLI::Range(1, 1000));
-  cmd->add_option("--decimation", a->fit.decimation,
-                  "Extra spheres to start with, as a fraction of N, removed cheapest first "
-                  "(default 0; --quality best: 0.5)")
-      ->check(CLI::Range(0.0, 16.0));
-  cmd->add_option("--optimizer", a->optimizer,
-                  "Sphere update: powell (derivative-free BOBYQA) or gradient (MMA with exact "
-                  "derivatives)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"powell", "gradient"}));
-  cmd->add_option("--init", a->init, "Seeding: fps (farthest point) or random (as in the paper)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"fps", "random"}));
-  cmd->add_option("--method", a->method,
-                  "variational (the paper's), or the baselines kmeans (L2 Lloyd clusters) and "
-                  "octree (occupied octree leaves); all end with the same guaranteed bound")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"variational", "kmeans", "octree"}));
+void addFitTuningArgs(CLI::App* cmd, FitArgs* a, bool count_option) {
+  if (count_option)
+    addTableOptions(cmd, &a->fit, fitRequestOptions());
+  else
+    addTableOptions(cmd, &a->fit, fitRequestOptions(), {"n"});
 }
 
-FitRequest fitRequest(const FitArgs& a, const CLI::App* cmd) {
+Expected<FitRequest> fitRequest(const FitArgs& a) {
   FitRequest r;
-  r.num_spheres = a.fit.num_spheres;
-  // The option checks admit only valid names.
-  r.quality = fitQualityFromName(a.quality).value();
-  r.seed = a.fit.seed;
-  r.padding = a.fit.padding;
-  r.points = a.points;
-  if (cmd->count("--iterations") > 0) r.iterations = a.fit.max_iterations;
-  if (cmd->count("--restarts") > 0) r.restarts = a.fit.restarts;
-  if (cmd->count("--decimation") > 0) r.decimation = a.fit.decimation;
-  r.optimizer = sphereOptimizerFromName(a.optimizer).value();
-  r.init = fitInitFromName(a.init).value();
-  r.method = fitMethodFromName(a.method).value();
+  for (const auto& [name, text] : a.fit.given())
+    if (Status st = setFitRequestOption(&r, name, text); !st) return st.error();
   return r;
 }
 
-FitOptions fitOptions(const FitArgs& a, const CLI::App* cmd) {
-  FitOptions fo = fitOptionsFor(fitRequest(a, cmd));
+Expected<FitOptions> fitOptions(const FitArgs& a) {
+  auto request = fitRequest(a);
+  if (!request) return request.error();
+  FitOptions fo = fitOptionsFor(*request);
   const bool tty = isatty(STDERR_FILENO) != 0;
   if (!a.quiet)
     fo.progress = [tty](const FitProgress& p) {

@@ -9,11 +9,17 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <initializer_list>
+#include <span>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/mesh.hpp"
+#include "sphereset/options.hpp"
 #include "sphereset/repair.hpp"
 #include "sphereset/robot.hpp"
 #include "sphereset/sphere.hpp"
@@ -86,30 +92,42 @@ nlohmann::json repairJson(const RepairResult& r);
 // One line for the summaries on stderr, e.g. "repair: wrapped (...)"; empty for "none".
 std::string repairLine(const RepairResult& r);
 
+// The options of a library option table (options.hpp) as the user typed them: one flag per row,
+// the text handed to the library's setter unchanged.
+struct TableArgs {
+  std::map<std::string, std::string> text;     // row name -> the text given
+  std::map<std::string, CLI::Option*> options;  // row name -> its flag
+  // The rows given on the command line, in the table's order.
+  std::vector<std::pair<std::string, std::string>> given() const;
+};
+
+// One flag per row of `table` (help with the row's default), except the rows named in `skip`.
+void addTableOptions(CLI::App* cmd, TableArgs* a, std::span<const OptionSpec> table,
+                     std::initializer_list<std::string_view> skip = {});
+
 // Fit options shared by `fit` and `tree`.
 struct FitArgs {
   MeshArgs mesh;
-  FitOptions fit;
-  std::string out_path, link_name, quality = "default", optimizer = "powell", init = "fps",
-                                   method = "variational";
+  TableArgs fit;  // the rows of fitRequestOptions()
+  std::string out_path, link_name;
   bool quiet = false;
-  int64_t points = 0;
 };
 
-// `count_option`: whether -n is added here (`fit`) or by the caller with its own meaning
-// (`tree`).
+// `count_option`: whether -n is added here (`fit`, from the table) or by the caller with its own
+// meaning (`tree`).
 void addFitArgs(CLI::App* cmd, FitArgs* a, bool count_option);
 
-// The options that tune the fit (--seed, --points, --iterations, --padding, --quality,
-// --restarts, --decimation, --optimizer, --init, --method), part of addFitArgs; for commands
-// with their own input and output options (batch).
-void addFitTuningArgs(CLI::App* cmd, FitArgs* a);
+// The options that tune the fit (every row of fitRequestOptions() but n, and n too when
+// `count_option`), part of addFitArgs; for commands with their own input and output options
+// (batch).
+void addFitTuningArgs(CLI::App* cmd, FitArgs* a, bool count_option = false);
 
-// The fit the parsed options ask for: the quality preset and the options given explicitly.
-FitRequest fitRequest(const FitArgs& a, const CLI::App* cmd);
+// The fit the parsed options ask for: the quality preset and the options given explicitly, as
+// the library's setFitRequestOption parses them (its message for a bad value).
+Expected<FitRequest> fitRequest(const FitArgs& a);
 
-// fitOptionsFor(fitRequest(a, cmd)) with the progress on stderr unless --quiet.
-FitOptions fitOptions(const FitArgs& a, const CLI::App* cmd);
+// fitOptionsFor(fitRequest(a)) with the progress on stderr unless --quiet.
+Expected<FitOptions> fitOptions(const FitArgs& a);
 
 // What eval's coverage certificate does not confirm in `r`, e.g. "surface not covered (max gap
 // 0.002 of the diagonal, 3 triangles not covered)"; empty when surface and interior are covered.

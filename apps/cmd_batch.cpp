@@ -97,10 +97,12 @@ class Progress {
   std::chrono::steady_clock::time_point start_;
 };
 
-int runBatch(const BatchArgs& c, const CLI::App* cmd) {
+int runBatch(const BatchArgs& c) {
   const FitArgs& a = c.fit;
   BatchOptions options;
-  options.fit = fitRequest(a, cmd);
+  auto request = fitRequest(a);
+  if (!request) return fail(request.error());
+  options.fit = std::move(request).value();
   options.repair = repairOptions(a.mesh);
   options.format = c.format;
   options.resume = !c.force;
@@ -189,10 +191,6 @@ Command registerBatch(CLI::App& app) {
   cmd->add_option("-o,--output", a.out_path,
                   "Output folder: the sphere files mirror the input's layout, and report.jsonl")
       ->required();
-  cmd->add_option("-n,--spheres", a.fit.num_spheres,
-                  "Number of spheres of items whose manifest line gives none")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 1000000));
   cmd->add_option("--format", c->format, "Sphere files written: json, txt, sph or yaml")
       ->capture_default_str()
       ->check(CLI::IsMember({"json", "txt", "sph", "yaml"}));
@@ -201,7 +199,8 @@ Command registerBatch(CLI::App& app) {
                   "to 1e-6 of the diagonal if that closes the mesh)")
       ->check(CLI::NonNegativeNumber);
   addRepairArgs(cmd, &a.mesh);
-  addFitTuningArgs(cmd, &a);
+  // The fit's options (n included) are the defaults of items whose manifest line gives none.
+  addFitTuningArgs(cmd, &a, true);
   cmd->add_option("-j,--jobs", c->jobs,
                   "Items fitted at once (each fit is parallel already; more can help with many "
                   "small meshes)")
@@ -211,7 +210,7 @@ Command registerBatch(CLI::App& app) {
   cmd->add_flag("--dry-run", c->dry_run,
                 "List the items (mesh -> output, n, up to date or not) on stdout and stop");
   cmd->add_flag("-q,--quiet", a.quiet, "No progress on stderr");
-  return {cmd, [c, cmd] { return runBatch(*c, cmd); }};
+  return {cmd, [c] { return runBatch(*c); }};
 }
 
 }  // namespace sphereset::cli

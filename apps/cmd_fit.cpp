@@ -90,13 +90,16 @@ void printFitSummary(const FitArgs& a, const FitResult& r, const EvalResult& ev,
                  ev.original_covered ? "yes" : "NO");
 }
 
-int runFit(const FitCommandArgs& c, const CLI::App* cmd) {
+int runFit(const FitCommandArgs& c) {
   const FitArgs& a = c.fit;
   auto format = sphereFormatFromPath(a.out_path);
   if (!format) return fail(format.error());
+  if (auto request = fitRequest(a); !request) return fail(request.error());
   auto m = loadSolid(a.mesh);
   if (!m) return fail(m.error());
-  FitOptions fo = fitOptions(a, cmd);
+  auto options = fitOptions(a);
+  if (!options) return fail(options.error());
+  FitOptions fo = std::move(options).value();
   fo.original = m->original();
   const SolidIndex index(m->repair.solid);
   auto r = fitSpheres(index, fo);
@@ -124,7 +127,7 @@ Command registerFit(CLI::App& app) {
   cmd->add_option("--name", c->fit.link_name,
                   "Link name for .yaml output (default: the mesh's stem)");
   cmd->add_flag("--json", c->json, "Print the summary as one JSON object on stdout");
-  return {cmd, [c, cmd] { return runFit(*c, cmd); }};
+  return {cmd, [c] { return runFit(*c); }};
 }
 
 }  // namespace sphereset::cli

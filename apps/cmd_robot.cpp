@@ -26,12 +26,12 @@ namespace sphereset::cli {
 namespace {
 
 struct RobotArgs {
-  std::string urdf, out_path, quality = "default", joint_positions;
+  std::string urdf, out_path, joint_positions;
+  TableArgs fit;  // --quality and --seed
   std::vector<std::string> package_paths, link_spheres, link_padding;
   MeshArgs repair;  // repair options only (no mesh path)
   int budget = 0;
   double padding = 0.0;
-  uint64_t seed = 1;
   bool quiet = false, json = false;
 };
 
@@ -66,7 +66,8 @@ Expected<std::map<std::string, T>> namedValues(const std::vector<std::string>& i
   return out;
 }
 
-nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const RobotFitResult& r) {
+nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const RobotFitResult& r,
+                         uint64_t seed) {
   nlohmann::json links = nlohmann::json::array();
   for (const RobotLinkFit& j : r.links) {
     nlohmann::json s = nlohmann::json::array();
@@ -96,7 +97,7 @@ nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const RobotFitR
     links.push_back(l);
   }
   nlohmann::json out = {
-      {"robot", robot.name}, {"urdf", a.urdf}, {"seed", a.seed}, {"links", links}};
+      {"robot", robot.name}, {"urdf", a.urdf}, {"seed", seed}, {"links", links}};
   if (r.budget_split)
     out["budget"] = {{"spheres", a.budget},
                      {"outside_volume", r.outside_volume},
@@ -151,8 +152,11 @@ int runRobot(const RobotArgs& a) {
   fo.link_spheres = std::move(counts).value();
   fo.padding = a.padding;
   fo.link_padding = std::move(pads).value();
-  fo.quality = fitQualityFromName(a.quality).value();  // checked by the option parser
-  fo.seed = a.seed;
+  FitRequest request;
+  for (const auto& [name, text] : a.fit.given())
+    if (Status st = setFitRequestOption(&request, name, text); !st) return fail(st.error());
+  fo.quality = request.quality;
+  fo.seed = request.seed;
   fo.repair = repairOptions(a.repair);
   fo.name = a.urdf;
   auto fit = fitRobot(*robot, fo);
@@ -162,7 +166,7 @@ int runRobot(const RobotArgs& a) {
     if (!j.skipped) out.push_back({j.link, j.spheres});
   Status st;
   if (ext == ".json") {
-    st = writeTextFile(a.out_path, robotJson(a, *robot, *fit).dump(1) + "\n");
+    st = writeTextFile(a.out_path, robotJson(a, *robot, *fit, fo.seed).dump(1) + "\n");
   } else if (ext == ".urdf") {
     st = writeSphereUrdf(a.urdf, a.out_path, out);
   } else {
@@ -176,7 +180,7 @@ int runRobot(const RobotArgs& a) {
   if (!st) return fail(st.error());
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (a.json) std::cout << robotJson(a, *robot, *fit).dump() << '\n';
+  if (a.json) std::cout << robotJson(a, *robot, *fit, fo.seed).dump() << '\n';
   if (!a.quiet) printSummary(*fit, seconds);
   for (const RobotLinkFit& j : fit->links)
     if (!j.covered) {
@@ -212,10 +216,10 @@ Command registerRobot(CLI::App& app) {
   cmd->add_option("--padding", a->padding, "Distance added to every radius")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--link-padding", a->link_padding, "LINK=D: padding for this link; repeatable");
-  cmd->add_option("--seed", a->seed, "Seed for sampling and initialisation")->capture_default_str();
-  cmd->add_option("--quality", a->quality, "fast, default or best")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"fast", "default", "best"}));
+  // --quality and --seed: the fit table's rows, parsed by the library.
+  addTableOptions(cmd, &a->fit, fitRequestOptions(),
+                  {"n", "points", "iterations", "restarts", "decimation", "padding", "optimizer",
+                   "init", "method"});
   cmd->add_flag("-q,--quiet", a->quiet, "No summary on stderr");
   cmd->add_flag("--json", a->json, "Print the per-link summary as one JSON object on stdout");
   addRepairArgs(cmd, &a->repair);

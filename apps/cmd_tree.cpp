@@ -22,6 +22,7 @@ struct TreeArgs {
   TreeOptions to;
   std::string parents = "minimal";
   bool json = false;
+  int leaves = 0;  // -n: leaves to fit (0: B^D)
 };
 
 // The summary printed by --json.
@@ -61,21 +62,31 @@ void printTreeSummary(const TreeArgs& a, const TreeFitResult& r, double volume,
   std::fprintf(stderr, "  time %.2f s fit + %.2f s tree\n", r.fit.seconds.total, r.tree.seconds);
 }
 
-int runTree(TreeArgs a, const CLI::App* cmd) {
+int runTree(TreeArgs a) {
   auto format = sphereFormatFromPath(a.fit.out_path);
   if (!format) return fail(format.error());
   if (*format != SphereFormat::kSph && *format != SphereFormat::kJson)
     return fail(Error{ErrorCode::kInvalidArgument,
                       a.fit.out_path + ": a sphere tree is written as .sph or .json"});
+  auto options = fitOptions(a.fit);
+  if (!options) return fail(options.error());
+  FitOptions fo = std::move(options).value();
   auto m = loadSolid(a.fit.mesh);
   if (!m) return fail(m.error());
-  if (a.fit.fit.num_spheres == 0) {
+  if (a.leaves == 0) {
     // B^D leaves, when that is a sensible count (otherwise the library says why not).
     int64_t leaves = 1;
     for (int l = 0; l < a.to.depth && leaves <= (int64_t{1} << 16); ++l) leaves *= a.to.branching;
-    if (leaves <= (int64_t{1} << 16)) a.fit.fit.num_spheres = static_cast<int>(leaves);
+    if (leaves <= (int64_t{1} << 16)) a.leaves = static_cast<int>(leaves);
   }
-  FitOptions fo = fitOptions(a.fit, cmd);
+  // The leaves replace the table's n; the preset's points follow them.
+  FitRequest request = fitRequest(a.fit).value();
+  request.num_spheres = a.leaves;
+  if (a.leaves > 0)
+    if (Status st = checkFitRequest(request); !st) return fail(st.error());
+  const auto progress = fo.progress;
+  fo = fitOptionsFor(request);
+  fo.progress = progress;
   fo.original = m->original();
   a.to.parents = a.parents == "outside" ? TreeParents::kOutsideVolume : TreeParents::kMinimal;
   a.to.seed = fo.seed;
@@ -113,7 +124,6 @@ int runTree(TreeArgs a, const CLI::App* cmd) {
 
 Command registerTree(CLI::App& app) {
   auto a = std::make_shared<TreeArgs>();
-  a->fit.fit.num_spheres = 0;  // B^D unless -n is given
   CLI::App* cmd = app.add_subcommand(
       "tree", "Fit a sphere set and build a sphere-tree over it (Bradshaw .sph or JSON)");
   addFitArgs(cmd, &a->fit, false);
@@ -124,7 +134,7 @@ Command registerTree(CLI::App& app) {
                   "Levels below the root (D): D + 1 levels, at most B^D leaves")
       ->capture_default_str()
       ->check(CLI::Range(1, 26));
-  cmd->add_option("-n,--spheres", a->fit.fit.num_spheres, "Leaves to fit (default 0: B^D)")
+  cmd->add_option("-n,--spheres", a->leaves, "Leaves to fit (default 0: B^D)")
       ->check(CLI::Range(0, 1000000));
   cmd->add_option("--parents", a->parents,
                   "minimal (smallest ball enclosing the children) or outside (least outside "
@@ -132,7 +142,7 @@ Command registerTree(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"minimal", "outside"}));
   cmd->add_flag("--json", a->json, "Print the summary as one JSON object on stdout");
-  return {cmd, [a, cmd] { return runTree(*a, cmd); }};
+  return {cmd, [a] { return runTree(*a); }};
 }
 
 }  // namespace sphereset::cli

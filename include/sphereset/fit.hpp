@@ -4,9 +4,11 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "sphereset/options.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/status.hpp"
@@ -142,6 +144,20 @@ struct FitRequest {
   FitInit init = FitInit::kFarthestPoint;
   FitMethod method = FitMethod::kVariational;
 };
+
+// The options of a FitRequest, one row each (options.hpp), named as the Python keywords and the
+// batch manifest's columns: n, quality, seed, points, iterations, restarts, decimation,
+// padding, optimizer, init, method. The command line's flags, the manifest's columns and the
+// Python keywords are all made from this table.
+std::span<const OptionSpec> fitRequestOptions();
+
+// Sets the option `name` of `request` from the text a user gave (parseOption with its row).
+// kInvalidArgument: an unknown name (the message lists the names) or a bad value.
+Status setFitRequestOption(FitRequest* request, const std::string& name, const std::string& text);
+
+// Every number of `request` within the table's limits (for requests built in code), with the
+// message setFitRequestOption gives for the same value.
+Status checkFitRequest(const FitRequest& request);
 
 // fitPreset(request.num_spheres, request.quality) with the request's explicit values applied:
 // the options `sphereset fit` runs with for the same command line (no progress callback, no

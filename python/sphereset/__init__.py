@@ -221,10 +221,14 @@ def fit(mesh: MeshLike, n: int = 32, *, seed: int = 1, quality: str = "default",
 
     The spheres equal those of ``sphereset fit MESH -n N --seed S`` with the same options.
     """
+    # Checked by the library's fit table (the command line's messages) before any repair.
+    options = dict(n=n, quality=quality, seed=seed, padding=padding, points=points,
+                   iterations=iterations, restarts=restarts, decimation=decimation,
+                   optimizer=optimizer, init=init, method=method)
+    _core._check_fit_options(options)
     s = solid(mesh, repair=repair, weld_tolerance=weld_tolerance, fill_cavities=fill_cavities,
               wrap_alpha=wrap_alpha, wrap_offset=wrap_offset)
-    d = _core._fit(s, int(n), quality, int(seed), float(padding), int(points), iterations,
-                   restarts, decimation, optimizer, init, method, progress)
+    d = _core._fit(s, options, progress)
     return FitResult(**d)
 
 
@@ -314,11 +318,13 @@ def tree(mesh: MeshLike, *, branching: int = 8, depth: int = 2, parents: str = "
     (None: branching**depth), levels above by Lloyd clustering of the children, each parent the
     minimal ball enclosing its children (``parents="minimal"``) or the enclosing ball of least
     outside volume ("outside"). Fit options as :func:`fit`."""
+    options = dict(n=n, quality=quality, seed=seed, padding=padding, points=points,
+                   iterations=iterations, restarts=restarts, decimation=decimation,
+                   optimizer=optimizer, init=init, method=method)
+    _core._check_fit_options(options)
     s = solid(mesh, repair=repair, weld_tolerance=weld_tolerance, fill_cavities=fill_cavities,
               wrap_alpha=wrap_alpha, wrap_offset=wrap_offset)
-    d = _core._fit_tree(s, int(branching), int(depth), parents, n, quality, int(seed),
-                        float(padding), int(points), iterations, restarts, decimation, optimizer,
-                        init, method, progress)
+    d = _core._fit_tree(s, int(branching), int(depth), parents, options, progress)
     d["fit"] = FitResult(**d["fit"], options={}, repair=d["repair"])
     return TreeResult(**d)
 

@@ -45,8 +45,9 @@ def batch_options(n: int = 32, *, quality: str = "default", seed: int = 1, paddi
     repair options of ``sphereset fit``, the sphere file format, resuming, and the threads of
     one item's fit (0: all of the worker's cores)."""
     return {
-        "fit": {"n": int(n), "quality": quality, "seed": int(seed), "padding": float(padding),
-                "points": int(points), "iterations": iterations, "restarts": restarts,
+        # Parsed and checked by the library's fit table where the items are listed.
+        "fit": {"n": n, "quality": quality, "seed": seed, "padding": padding,
+                "points": points, "iterations": iterations, "restarts": restarts,
                 "decimation": decimation, "optimizer": optimizer, "init": init,
                 "method": method},
         "repair": repair,
@@ -142,17 +143,11 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--threads", type=int, default=None,
                    help="threads of one item's fit (default: all of a remote worker's cores; "
                         "cores / K for --local-workers)")
-    p.add_argument("-n", "--spheres", type=int, default=32, help="spheres per mesh (default 32)")
-    p.add_argument("--quality", default="default", choices=["fast", "default", "best"])
-    p.add_argument("--seed", type=int, default=1)
-    p.add_argument("--points", type=int, default=0)
-    p.add_argument("--iterations", type=int, default=None)
-    p.add_argument("--restarts", type=int, default=None)
-    p.add_argument("--decimation", type=float, default=None)
-    p.add_argument("--padding", type=float, default=0.0)
-    p.add_argument("--optimizer", default="powell", choices=["powell", "gradient"])
-    p.add_argument("--init", default="fps", choices=["fps", "random"])
-    p.add_argument("--method", default="variational", choices=["variational", "kmeans", "octree"])
+    # The fit's options: one per row of the library's fit table, parsed by the library.
+    for row in _core._fit_option_table():
+        p.add_argument(*row["flag"].split(","), dest=row["name"], default=None,
+                       metavar=row["type"].upper(),
+                       help=f'{row["help"]} (default {row["default"]})')
     p.add_argument("--repair", default="auto", choices=["auto", "off"])
     p.add_argument("--weld-tolerance", type=float, default=None)
     p.add_argument("--fill-cavities", dest="fill_cavities", action="store_true", default=True)
@@ -185,10 +180,9 @@ def main(argv: Optional[List[str]] = None) -> int:
         threads = a.threads if a.threads is not None else 0
         client = Client(a.scheduler)
     try:
+        fit = {row["name"]: getattr(a, row["name"]) for row in _core._fit_option_table()}
         opts = batch_options(
-            a.spheres, quality=a.quality, seed=a.seed, padding=a.padding, points=a.points,
-            iterations=a.iterations, restarts=a.restarts, decimation=a.decimation,
-            optimizer=a.optimizer, init=a.init, method=a.method, repair=a.repair,
+            **{k: v for k, v in fit.items() if v is not None}, repair=a.repair,
             weld_tolerance=a.weld_tolerance, fill_cavities=a.fill_cavities,
             wrap_alpha=a.wrap_alpha, wrap_offset=a.wrap_offset, format=a.format,
             resume=not a.force, threads=threads)

@@ -24,21 +24,8 @@ py::dict requestDict(const FitRequest& r) {
   return d;
 }
 
-FitRequest requestFrom(const py::dict& d) {
-  FitRequest r;
-  r.num_spheres = d["n"].cast<int>();
-  r.quality = unwrap(fitQualityFromName(d["quality"].cast<std::string>()));
-  r.seed = d["seed"].cast<uint64_t>();
-  r.padding = d["padding"].cast<double>();
-  r.points = d["points"].cast<int64_t>();
-  if (!d["iterations"].is_none()) r.iterations = d["iterations"].cast<int>();
-  if (!d["restarts"].is_none()) r.restarts = d["restarts"].cast<int>();
-  if (!d["decimation"].is_none()) r.decimation = d["decimation"].cast<double>();
-  r.optimizer = unwrap(sphereOptimizerFromName(d["optimizer"].cast<std::string>()));
-  r.init = unwrap(fitInitFromName(d["init"].cast<std::string>()));
-  r.method = unwrap(fitMethodFromName(d["method"].cast<std::string>()));
-  return r;
-}
+// The library's fit table parses the dict's values (fit_args.hpp), with its messages.
+FitRequest requestFrom(const py::dict& d) { return fitRequest(d); }
 
 py::dict itemDict(const BatchItem& i) {
   py::dict d;

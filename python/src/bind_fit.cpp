@@ -1,6 +1,7 @@
 // Bindings of the fit: sphereset.fit with the options and defaults of `sphereset fit`, the
 // progress callback, and cancellation by Ctrl-C.
 #include <memory>
+#include <span>
 
 #include "fit_args.hpp"
 #include "solid.hpp"
@@ -8,29 +9,37 @@
 
 namespace sphereset::python {
 
-FitOptions fitOptions(const FitArgs& a) {
-  if (a.n < 1)
-    raise(ErrorCode::kInvalidArgument, "n must be at least 1 (got " + std::to_string(a.n) + ")");
-  if (!(a.padding >= 0.0)) raise(ErrorCode::kInvalidArgument, "padding must be >= 0");
-  if (a.points < 0) raise(ErrorCode::kInvalidArgument, "points must be >= 0");
+FitRequest fitRequest(const py::dict& options) {
   FitRequest rq;
-  rq.num_spheres = a.n;
-  rq.quality = unwrap(fitQualityFromName(a.quality));
-  rq.seed = a.seed;
-  rq.padding = a.padding;
-  rq.points = a.points;
-  if (!a.iterations.is_none()) rq.iterations = a.iterations.cast<int>();
-  if (!a.restarts.is_none()) rq.restarts = a.restarts.cast<int>();
-  if (!a.decimation.is_none()) rq.decimation = a.decimation.cast<double>();
-  rq.optimizer = unwrap(sphereOptimizerFromName(a.optimizer));
-  rq.init = unwrap(fitInitFromName(a.init));
-  rq.method = unwrap(fitMethodFromName(a.method));
-  if (rq.iterations && *rq.iterations < 0)
-    raise(ErrorCode::kInvalidArgument, "iterations must be >= 0");
-  if (rq.restarts && *rq.restarts < 1) raise(ErrorCode::kInvalidArgument, "restarts must be >= 1");
-  if (rq.decimation && !(*rq.decimation >= 0.0))
-    raise(ErrorCode::kInvalidArgument, "decimation must be >= 0");
-  return fitOptionsFor(rq);
+  for (const auto& [key, value] : options) {
+    if (value.is_none()) continue;
+    check(setFitRequestOption(&rq, py::str(key), py::str(value)));
+  }
+  return rq;
+}
+
+FitOptions fitOptions(const py::dict& options) { return fitOptionsFor(fitRequest(options)); }
+
+// The fit table as Python sees it: one dict per row.
+py::list optionTable(std::span<const OptionSpec> table) {
+  py::list rows;
+  for (const OptionSpec& o : table) {
+    py::dict d;
+    d["name"] = o.name;
+    d["flag"] = o.flag;
+    d["type"] = o.type == OptionType::kChoice ? "choice"
+                : o.type == OptionType::kReal ? "real"
+                                              : "integer";
+    d["min"] = o.min;
+    d["max"] = o.max;
+    py::list choices;
+    for (const char* c : o.choices) choices.append(c);
+    d["choices"] = choices;
+    d["default"] = o.default_text;
+    d["help"] = o.help;
+    rows.append(d);
+  }
+  return rows;
 }
 
 void installProgress(FitOptions* fo, const py::object& progress) {
@@ -116,13 +125,9 @@ py::dict optionsDict(const FitOptions& fo) {
 void bindFit(py::module_& m) {
   m.def(
       "_fit",
-      [](const std::shared_ptr<PySolid>& solid, int n, const std::string& quality, uint64_t seed,
-         double padding, int64_t points, const py::object& iterations, const py::object& restarts,
-         const py::object& decimation, const std::string& optimizer, const std::string& init,
-         const std::string& method, const py::object& progress) {
-        FitArgs a{n,        quality,    seed,      padding, points, iterations,
-                  restarts, decimation, optimizer, init,    method};
-        FitOptions fo = fitOptions(a);
+      [](const std::shared_ptr<PySolid>& solid, const py::dict& options,
+         const py::object& progress) {
+        FitOptions fo = fitOptions(options);
         fo.original = solid->original();
         installProgress(&fo, progress);
         Expected<FitResult> r = Error{ErrorCode::kInvalidArgument, "not run"};
@@ -136,9 +141,11 @@ void bindFit(py::module_& m) {
         d["repair"] = repairDict(solid->repair);
         return d;
       },
-      py::arg("solid"), py::arg("n"), py::arg("quality"), py::arg("seed"), py::arg("padding"),
-      py::arg("points"), py::arg("iterations"), py::arg("restarts"), py::arg("decimation"),
-      py::arg("optimizer"), py::arg("init"), py::arg("method"), py::arg("progress"));
+      py::arg("solid"), py::arg("options"), py::arg("progress"));
+  m.def(
+      "_check_fit_options", [](const py::dict& options) { fitRequest(options); },
+      py::arg("options"));
+  m.def("_fit_option_table", [] { return optionTable(fitRequestOptions()); });
 }
 
 }  // namespace sphereset::python

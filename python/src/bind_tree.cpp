@@ -169,25 +169,19 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
   m.def(
       "_fit_tree",
       [](const std::shared_ptr<PySolid>& solid, int branching, int depth,
-         const std::string& parents, const py::object& n, const std::string& quality, uint64_t seed,
-         double padding, int64_t points, const py::object& iterations, const py::object& restarts,
-         const py::object& decimation, const std::string& optimizer, const std::string& init,
-         const std::string& method, const py::object& progress) {
+         const std::string& parents, const py::dict& fit_options, const py::object& progress) {
         if (branching < 2 || depth < 1)
           raise(ErrorCode::kInvalidArgument, "branching must be >= 2 and depth >= 1");
-        FitArgs a{32,       quality,    seed,      padding, points, iterations,
-                  restarts, decimation, optimizer, init,    method};
-        if (n.is_none()) {
+        FitRequest rq = fitRequest(fit_options);
+        if (!fit_options.contains("n") || fit_options["n"].is_none()) {
           // B^D leaves, as `sphereset tree` does without -n.
           int64_t leaves = 1;
           for (int l = 0; l < depth && leaves <= (int64_t{1} << 16); ++l) leaves *= branching;
           if (leaves > (int64_t{1} << 16))
             raise(ErrorCode::kInvalidArgument, "branching^depth leaves is too many; give n");
-          a.n = static_cast<int>(leaves);
-        } else {
-          a.n = n.cast<int>();
+          rq.num_spheres = static_cast<int>(leaves);
         }
-        FitOptions fo = fitOptions(a);
+        FitOptions fo = fitOptionsFor(rq);
         fo.original = solid->original();
         installProgress(&fo, progress);
         TreeOptions to;
@@ -210,10 +204,8 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
         d["repair"] = repairDict(solid->repair);
         return d;
       },
-      py::arg("solid"), py::arg("branching"), py::arg("depth"), py::arg("parents"), py::arg("n"),
-      py::arg("quality"), py::arg("seed"), py::arg("padding"), py::arg("points"),
-      py::arg("iterations"), py::arg("restarts"), py::arg("decimation"), py::arg("optimizer"),
-      py::arg("init"), py::arg("method"), py::arg("progress"));
+      py::arg("solid"), py::arg("branching"), py::arg("depth"), py::arg("parents"),
+      py::arg("fit_options"), py::arg("progress"));
 
   m.def(
       "_point_distance",

@@ -11,19 +11,15 @@
 
 namespace sphereset::python {
 
-struct FitArgs {
-  int n = 32;
-  std::string quality = "default";
-  uint64_t seed = 1;
-  double padding = 0.0;
-  int64_t points = 0;
-  py::object iterations, restarts, decimation;  // None: the preset's
-  std::string optimizer = "powell", init = "fps", method = "variational";
-};
+// The fit's keyword arguments, by the names of the library's fit table (fitRequestOptions():
+// n, quality, seed, points, ...); a value of None keeps the preset's. Each value is handed to
+// setFitRequestOption as its text (str()), so that the library parses and checks it exactly as
+// it does the command line's and the manifest's; its error is raised.
+FitRequest fitRequest(const py::dict& options);
 
-// The FitOptions `sphereset fit` runs with for the same options (kInvalidArgument for names
-// the CLI does not accept).
-FitOptions fitOptions(const FitArgs& a);
+// fitOptionsFor(fitRequest(options)): the FitOptions `sphereset fit` runs with for the same
+// options.
+FitOptions fitOptions(const py::dict& options);
 
 // Installs a progress callback on `fo` that reacquires the GIL, runs Python's signal handlers
 // (Ctrl-C raises KeyboardInterrupt there) and calls `progress` (a callable or None) with a dict

@@ -89,3 +89,16 @@ def test_command_line_local_workers(tmp_path):
     assert code == 0
     assert ss.read_spheres(out / "link1.txt").shape == (2, 4)
     assert json.loads((out / "report.jsonl").read_text())["status"] == "ok"
+
+
+def test_fit_options_are_checked_by_the_library_table(tmp_path):
+    # The batch's fit options go through the library's fit table: the command line's messages,
+    # InvalidArgumentError (exit 2 from the command), never a traceback or a wrapped seed.
+    shutil.copy(DATA / "open_box.off", tmp_path / "a.off")
+    for kw, words in ((dict(seed=-1), "seed '-1': expected an integer from 0 to"),
+                      (dict(n=0), "n '0': expected an integer from 1 to 1000000"),
+                      (dict(quality="great"), "quality 'great': expected fast, default or best"),
+                      (dict(decimation=17), "decimation '17': expected a number from 0 to 16")):
+        with pytest.raises(ss.InvalidArgumentError, match=words):
+            batch.list_items(str(tmp_path), batch.batch_options(**kw))
+    assert batch._exit_code(ss.InvalidArgumentError("x")) == 2

@@ -140,8 +140,17 @@ def test_errors_are_exceptions(tmp_path):
         ss.Mesh(v, f.astype(float))
     with pytest.raises(ss.InvalidArgumentError):
         ss.Mesh(v[:, :2], f)
-    with pytest.raises(ss.InvalidArgumentError, match="n must be at least 1"):
+    with pytest.raises(ss.InvalidArgumentError,
+                       match="n '0': expected an integer from 1 to 1000000"):
         ss.fit(ss.Mesh(v, f), n=0)
+    # The command line's upper limits, before any work (n = 10**8 used to run for minutes).
+    with pytest.raises(ss.InvalidArgumentError, match="n '100000000': expected an integer"):
+        ss.fit(ss.Mesh(v, f), n=10**8)
+    for seed in (-1, 2**64, 1e23):
+        with pytest.raises(ss.InvalidArgumentError, match="seed '.*': expected an integer"):
+            ss.fit(ss.Mesh(v, f), n=2, seed=seed)
+    with pytest.raises(ss.InvalidArgumentError, match="decimation 'nan'"):
+        ss.fit(ss.Mesh(v, f), n=2, decimation=float("nan"))
     with pytest.raises(ss.InvalidArgumentError, match="quality"):
         ss.fit(ss.Mesh(v, f), n=2, quality="perfect")
     with pytest.raises(ss.NotSolidError, match="not a closed solid"):

@@ -26,26 +26,11 @@ namespace sphereset {
 namespace fs = std::filesystem;
 namespace {
 
-// Bounds of the per-item options, those of the command line's checks.
-constexpr int kMaxSpheres = 1000000;
-constexpr int64_t kMaxPoints = 100000000;
-constexpr int kMaxIterations = 100000;
-constexpr int kMinRestarts = 1, kMaxRestarts = 1000;
-constexpr double kMaxDecimation = 16.0;
-
-const char* const kColumns[] = {"mesh",      "n",          "output",   "quality",    "seed",
-                                "points",    "iterations", "restarts", "decimation", "padding",
-                                "optimizer", "init",       "method"};
-
-std::string columnList() {
-  std::string s;
-  for (const char* c : kColumns) s += (s.empty() ? "" : ", ") + std::string(c);
-  return s;
-}
+// The manifest's columns: the mesh, its output, and the rows of the fit's option table.
+std::string columnList() { return "mesh, output, " + optionNames(fitRequestOptions()); }
 
 bool knownColumn(const std::string& name) {
-  return std::find_if(std::begin(kColumns), std::end(kColumns),
-                      [&](const char* c) { return name == c; }) != std::end(kColumns);
+  return name == "mesh" || name == "output" || findOption(fitRequestOptions(), name) != nullptr;
 }
 
 std::string lower(std::string s) {
@@ -59,26 +44,6 @@ std::string trim(const std::string& s) {
   while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
   while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
   return s.substr(b, e - b);
-}
-
-// An integer in [lo, hi] written in full (no trailing characters).
-template <class T>
-bool parseInteger(const std::string& text, T lo, T hi, T* out) {
-  T v{};
-  const char* end = text.data() + text.size();
-  const auto [p, ec] = std::from_chars(text.data(), end, v);
-  if (ec != std::errc() || p != end || v < lo || v > hi) return false;
-  *out = v;
-  return true;
-}
-
-bool parseReal(const std::string& text, double lo, double hi, double* out) {
-  double v = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [p, ec] = std::from_chars(text.data(), end, v);
-  if (ec != std::errc() || p != end || !std::isfinite(v) || v < lo || v > hi) return false;
-  *out = v;
-  return true;
 }
 
 // A relative path with '/' separators, no "." or ".." parts, not empty.
@@ -99,7 +64,6 @@ bool cleanRelativePath(const std::string& p) {
 // the value is bad.
 std::string applyValue(const std::string& key, const std::string& text, BatchItem* item,
                        bool* output_given) {
-  FitRequest& f = item->fit;
   const std::string quoted = key + " '" + text + "'";
   if (key == "mesh") {
     if (text.empty()) return "the mesh path is empty";
@@ -111,51 +75,9 @@ std::string applyValue(const std::string& key, const std::string& text, BatchIte
       return quoted + ": the extension must be .txt, .xyzr, .json, .sph, .yaml or .yml";
     item->output = text;
     *output_given = true;
-  } else if (key == "n") {
-    if (!parseInteger(text, 1, kMaxSpheres, &f.num_spheres))
-      return quoted + ": expected an integer from 1 to " + std::to_string(kMaxSpheres);
-  } else if (key == "quality") {
-    auto q = fitQualityFromName(text);
-    if (!q) return q.error().message;
-    f.quality = *q;
-  } else if (key == "seed") {
-    if (!parseInteger(text, uint64_t{0}, std::numeric_limits<uint64_t>::max(), &f.seed))
-      return quoted + ": expected an integer >= 0";
-  } else if (key == "points") {
-    if (!parseInteger(text, int64_t{0}, kMaxPoints, &f.points))
-      return quoted + ": expected an integer from 0 to " + std::to_string(kMaxPoints);
-  } else if (key == "iterations") {
-    int v = 0;
-    if (!parseInteger(text, 0, kMaxIterations, &v))
-      return quoted + ": expected an integer from 0 to " + std::to_string(kMaxIterations);
-    f.iterations = v;
-  } else if (key == "restarts") {
-    int v = 0;
-    if (!parseInteger(text, kMinRestarts, kMaxRestarts, &v))
-      return quoted + ": expected an integer from 1 to " + std::to_string(kMaxRestarts);
-    f.restarts = v;
-  } else if (key == "decimation") {
-    double v = 0.0;
-    if (!parseReal(text, 0.0, kMaxDecimation, &v))
-      return quoted + ": expected a number from 0 to 16";
-    f.decimation = v;
-  } else if (key == "padding") {
-    if (!parseReal(text, 0.0, std::numeric_limits<double>::max(), &f.padding))
-      return quoted + ": expected a number >= 0";
-  } else if (key == "optimizer") {
-    auto o = sphereOptimizerFromName(text);
-    if (!o) return o.error().message;
-    f.optimizer = *o;
-  } else if (key == "init") {
-    auto i = fitInitFromName(text);
-    if (!i) return i.error().message;
-    f.init = *i;
-  } else if (key == "method") {
-    auto m = fitMethodFromName(text);
-    if (!m) return m.error().message;
-    f.method = *m;
   } else {
-    return "unknown column '" + key + "' (expected " + columnList() + ")";
+    // The fit's options: parsed and checked by the library's table, as the command line's.
+    if (Status st = setFitRequestOption(&item->fit, key, text); !st) return st.error().message;
   }
   return {};
 }
@@ -397,9 +319,7 @@ Status checkBatchOptions(const BatchOptions& options) {
   if (!sphereFormatFromPath("x." + options.format))
     return Error{ErrorCode::kInvalidArgument,
                  "format '" + options.format + "': expected txt, json, sph or yaml"};
-  if (options.fit.num_spheres < 1 || options.fit.num_spheres > kMaxSpheres)
-    return Error{ErrorCode::kInvalidArgument, "n " + std::to_string(options.fit.num_spheres) +
-                                                  ": expected 1 to " + std::to_string(kMaxSpheres)};
+  if (Status st = checkFitRequest(options.fit); !st) return st;
   if (options.threads < 0) return Error{ErrorCode::kInvalidArgument, "threads must be >= 0"};
   return {};
 }

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -34,19 +35,28 @@
 #include "fit/samples.hpp"
 #include "fit/seeding.hpp"
 #include "fit/shrink.hpp"
+#include "sphereset/limits.hpp"
 
 namespace sphereset {
 namespace {
 
 Status checkOptions(const SolidIndex& index, const FitOptions& o) {
-  if (o.num_spheres < 1)
-    return Error{ErrorCode::kInvalidArgument, "the number of spheres must be at least 1"};
-  if (!(o.interior_share >= 0.0 && o.interior_share <= 1.0))
-    return Error{ErrorCode::kInvalidArgument, "interior share must be between 0 and 1"};
-  if (o.max_iterations < 0 || o.optimizer_evaluations < 0 || !(o.padding >= 0.0) ||
-      !std::isfinite(o.padding) || o.target_points < 0 || !(o.tolerance >= 0.0) ||
-      o.shrink_passes < 0 || !(o.decimation >= 0.0 && o.decimation <= 16.0))
-    return Error{ErrorCode::kInvalidArgument, "fit options out of range"};
+  using limits::checkRange;
+  for (Status st : {checkRange("num_spheres", o.num_spheres, 1, limits::kMaxSpheres),
+                    checkRange("target_points", static_cast<double>(o.target_points), 0,
+                               static_cast<double>(limits::kMaxPoints)),
+                    checkRange("interior_share", o.interior_share, 0.0, 1.0),
+                    checkRange("max_iterations", o.max_iterations, 0, limits::kMaxIterations),
+                    checkRange("tolerance", o.tolerance, 0.0, 1.0),
+                    checkRange("max_failed_teleports", o.max_failed_teleports, 0,
+                               limits::kMaxIterations),
+                    checkRange("optimizer_evaluations", o.optimizer_evaluations, 0,
+                               limits::kMaxOptimizerEvaluations),
+                    checkRange("padding", o.padding, 0.0, std::numeric_limits<double>::max()),
+                    checkRange("shrink_passes", o.shrink_passes, 0, limits::kMaxIterations),
+                    checkRange("decimation", o.decimation, 0.0, limits::kMaxDecimation),
+                    checkRange("restarts", o.restarts, 1, limits::kMaxRestarts)})
+    if (!st) return st;
   if (!(signedVolume(index.mesh()) > 0.0))
     return Error{ErrorCode::kNotSolid, "the mesh encloses no volume"};
   return {};
@@ -75,11 +85,10 @@ detail::Clustering baselineClusters(const SolidIndex& index, const detail::Point
 }  // namespace
 
 Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
-  if (o.restarts < 1) return Error{ErrorCode::kInvalidArgument, "restarts must be at least 1"};
+  if (Status st = checkOptions(index, o); !st) return st.error();
   if (o.restarts > 1) return detail::fitWithRestarts(index, o);
   const auto t0 = detail::FitClock::now();
   FitResult res;
-  if (Status s = checkOptions(index, o); !s) return s.error();
   const int n = o.num_spheres;
   auto report = [&](const std::string& phase, int it, double e) {
     if (o.progress) o.progress({phase, it, e, n, detail::secondsSince(t0)});

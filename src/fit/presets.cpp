@@ -3,9 +3,14 @@
 // points, rounds and optimiser effort of the clustering (Wang et al. 2006, Sec. 5) for time.
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <limits>
 #include <string>
+#include <string_view>
 
 #include "sphereset/fit.hpp"
+#include "sphereset/limits.hpp"
+#include "sphereset/options.hpp"
 
 namespace sphereset {
 namespace {
@@ -56,7 +61,83 @@ constexpr SphereOptimizer kOptimizers[] = {SphereOptimizer::kPowell, SphereOptim
 constexpr const char* kMethodNames[] = {"variational", "kmeans", "octree"};
 constexpr FitMethod kMethods[] = {FitMethod::kVariational, FitMethod::kKMeans, FitMethod::kOctree};
 
+// The options of a fit request (fit.hpp), the one table every front door is made from.
+constexpr double kRealMax = std::numeric_limits<double>::max();
+constexpr OptionSpec kFitRequestOptions[] = {
+    {"n", "-n,--spheres", OptionType::kInteger, 1, limits::kMaxSpheres, {}, "32",
+     "Number of spheres"},
+    {"quality", "--quality", OptionType::kChoice, 0, 0, kQualityNames, "default",
+     "Preset of points, rounds, optimiser effort, restarts and decimation: fast, default or "
+     "best"},
+    {"seed", "--seed", OptionType::kUnsigned, 0, 0, {}, "1",
+     "Seed for sampling and initialisation"},
+    {"points", "--points", OptionType::kInteger, 0, static_cast<double>(limits::kMaxPoints), {},
+     "0", "Points to cluster (0: max(5000, 100 n), scaled by the quality)"},
+    {"iterations", "--iterations", OptionType::kInteger, 0, limits::kMaxIterations, {},
+     "100; quality fast: 30", "Cap on assignment/update rounds"},
+    {"restarts", "--restarts", OptionType::kInteger, 1, limits::kMaxRestarts, {},
+     "1; quality best: 4", "Independent fits from derived seeds, the best kept"},
+    {"decimation", "--decimation", OptionType::kReal, 0.0, limits::kMaxDecimation, {},
+     "0; quality best: 0.5",
+     "Extra spheres to start with, as a fraction of n, removed cheapest first"},
+    {"padding", "--padding", OptionType::kReal, 0.0, kRealMax, {}, "0",
+     "Distance added to every radius (absolute units)"},
+    {"optimizer", "--optimizer", OptionType::kChoice, 0, 0, kOptimizerNames, "powell",
+     "Sphere update: powell (derivative-free BOBYQA) or gradient (MMA with exact derivatives)"},
+    {"init", "--init", OptionType::kChoice, 0, 0, kInitNames, "fps",
+     "Seeding: fps (farthest point) or random (as in the paper)"},
+    {"method", "--method", OptionType::kChoice, 0, 0, kMethodNames, "variational",
+     "variational (the paper's), or the baselines kmeans (L2 Lloyd clusters) and octree "
+     "(occupied octree leaves); all end with the same guaranteed bound"},
+};
+
 }  // namespace
+
+std::span<const OptionSpec> fitRequestOptions() { return kFitRequestOptions; }
+
+Status setFitRequestOption(FitRequest* r, const std::string& name, const std::string& text) {
+  const OptionSpec* spec = findOption(kFitRequestOptions, name);
+  if (!spec)
+    return Error{ErrorCode::kInvalidArgument, "unknown fit option '" + name + "' (expected " +
+                                                  optionNames(kFitRequestOptions) + ")"};
+  auto v = parseOption(*spec, text);
+  if (!v) return v.error();
+  const std::string_view n = spec->name;
+  const auto integer = static_cast<int>(v->integer);  // within the row's int bounds
+  if (n == "n") r->num_spheres = integer;
+  if (n == "quality") r->quality = fitQualityFromName(v->choice).value();
+  if (n == "seed") r->seed = v->unsigned_integer;
+  if (n == "points") r->points = v->integer;
+  if (n == "iterations") r->iterations = integer;
+  if (n == "restarts") r->restarts = integer;
+  if (n == "decimation") r->decimation = v->real;
+  if (n == "padding") r->padding = v->real;
+  if (n == "optimizer") r->optimizer = sphereOptimizerFromName(v->choice).value();
+  if (n == "init") r->init = fitInitFromName(v->choice).value();
+  if (n == "method") r->method = fitMethodFromName(v->choice).value();
+  return {};
+}
+
+Status checkFitRequest(const FitRequest& r) {
+  // Each number as its text, through the same parser as every front door's.
+  auto check = [](const char* name, const std::string& text) -> Status {
+    auto v = parseOption(*findOption(kFitRequestOptions, name), text);
+    if (!v) return v.error();
+    return {};
+  };
+  auto real = [](double x) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", x);
+    return std::string(buf);
+  };
+  Status st = check("n", std::to_string(r.num_spheres));
+  if (st) st = check("points", std::to_string(r.points));
+  if (st && r.iterations) st = check("iterations", std::to_string(*r.iterations));
+  if (st && r.restarts) st = check("restarts", std::to_string(*r.restarts));
+  if (st && r.decimation) st = check("decimation", real(*r.decimation));
+  if (st) st = check("padding", real(r.padding));
+  return st;
+}
 
 const char* fitQualityName(FitQuality quality) { return kQualityNames[static_cast<int>(quality)]; }
 const char* fitInitName(FitInit init) { return kInitNames[static_cast<int>(init)]; }

@@ -65,7 +65,7 @@ cli_test(fit_zero_spheres 2 ARGS fit ${link} -n 0 -o ${work}/never2.txt -q FORBI
 cli_test(fit_too_many 2 ARGS fit ${link} -n 50000 -o ${work}/never3.txt -q --points 1000
          STDERR "50000 spheres" FORBID ${work}/never3.txt)
 cli_test(fit_bad_decimation 2 ARGS fit ${link} -n 5 -o ${work}/never11.txt -q --decimation -1
-         STDERR "--decimation" FORBID ${work}/never11.txt)
+         STDERR "decimation '-1': expected a number from 0 to 16" FORBID ${work}/never11.txt)
 cli_test(fit_decimation 0 ARGS fit ${link} -n 5 -o ${work}/link5d.txt --quality fast --decimation 1
          -q --json STDOUT "decimated.:5" FILE ${work}/link5d.txt SPHERES 5)
 cli_test(fit_yaml 0 ARGS fit ${link} -n 3 -o ${work}/link3.yaml --name link1 --quality fast -q
