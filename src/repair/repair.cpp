@@ -12,8 +12,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <iterator>
+#include <limits>
+#include <numbers>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -42,6 +44,16 @@ constexpr double kWrapRateHalfInput = 37000.0;  // input triangles at which the 
 constexpr double kWrapSeconds = 0.5;
 constexpr double kWrapAlphaMinRel = 1.0 / 100.0, kWrapAlphaMaxRel = 1.0 / 50.0;
 constexpr double kWrapOffsetOfAlpha = 1.0 / 20.0;
+// Limits of a wrap, checked before CGAL runs. Its exact arithmetic raises a floating-point
+// signal in GMP (a double overflowing to infinity) when coordinates, alpha or offset are
+// astronomically large (seen at 1e80 and at alpha 1e200), and its time grows with the output:
+// alpha and offset at most kWrapMaxSizeRel times the diagonal, coordinates (units of the mesh)
+// at most kWrapMaxCoordinate, and, for an alpha or offset the user chose, at most
+// kWrapMaxTriangles predicted output triangles (about a minute: the wrap of a one-triangle mesh
+// of diagonal 1.4 at offset 2 predicts 0.26M and took 20 s).
+constexpr double kWrapMaxSizeRel = 100.0;
+constexpr double kWrapMaxCoordinate = 1e30;
+constexpr double kWrapMaxTriangles = 1e6;
 
 std::string fmt(const char* f, double x) {
   char buf[64];
@@ -200,6 +212,37 @@ void wrapParameters(const Mesh& m, const RepairOptions& o, double* alpha, double
                ? o.wrap_alpha
                : std::clamp(fit, kWrapAlphaMinRel * diag, kWrapAlphaMaxRel * diag);
   *offset = o.wrap_offset > 0.0 ? o.wrap_offset : kWrapOffsetOfAlpha * *alpha;
+}
+
+// Whether a wrap of `m` with these parameters stays within the limits above. The output's area is
+// at most about twice the input's (both sides of an open surface) plus the offset's sphere and
+// band around it (Steiner's formula with the diagonal for the mean width).
+Status checkWrap(const Mesh& m, const RepairOptions& o, double alpha, double offset,
+                 const std::string& name) {
+  const Aabb box = boundingBox(m);
+  const double coordinate = std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff());
+  if (!(coordinate <= kWrapMaxCoordinate))
+    return Error{ErrorCode::kInvalidData, name + ": coordinates up to " + fmt("%.3g", coordinate) +
+                                              " cannot be wrapped (the limit is " +
+                                              fmt("%.3g", kWrapMaxCoordinate) + ")"};
+  const double diag = box.diagonal();
+  for (const auto& [what, value] : {std::pair{"wrap_alpha", alpha}, {"wrap_offset", offset}})
+    if (!(value <= kWrapMaxSizeRel * diag))
+      return Error{ErrorCode::kInvalidArgument,
+                   name + ": " + what + " " + fmt("%.3g", value) + " is more than " +
+                       fmt("%.3g", kWrapMaxSizeRel) + " times the mesh's diagonal " +
+                       fmt("%.3g", diag)};
+  if (o.wrap_alpha > 0.0 || o.wrap_offset > 0.0) {
+    const double area = 2.0 * surfaceArea(m) + 4.0 * std::numbers::pi * offset * (offset + diag);
+    const double predicted = kWrapTrianglesPerArea * area / (alpha * alpha);
+    if (!(predicted <= kWrapMaxTriangles))
+      return Error{ErrorCode::kInvalidArgument,
+                   name + ": a wrap with alpha " + fmt("%.3g", alpha) + " and offset " +
+                       fmt("%.3g", offset) + " would make about " + fmt("%.3g", predicted) +
+                       " triangles (the limit is " + fmt("%.3g", kWrapMaxTriangles) +
+                       "); give a larger wrap_alpha or a smaller wrap_offset"};
+  }
+  return {};
 }
 
 Error needs(const std::string& name, const std::string& what, const std::string& why) {
@@ -433,6 +476,8 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
   if (!have_ops) return needs(name, "rebuild with SPHERESET_WITH_REPAIR=ON to wrap it", why);
   const Mesh& soup = res.holes_capped > 0 ? capped : m;
   wrapParameters(soup, o, &res.wrap_alpha, &res.wrap_offset);
+  if (Status st = checkWrap(soup, o, res.wrap_alpha, res.wrap_offset, name); !st)
+    return st.error();
   auto w = o.operations.wrap(soup, res.wrap_alpha, res.wrap_offset);
   if (!w) return Error{w.error().code, name + ": " + w.error().message};
   res.notes.push_back(why + ": wrapped (alpha " + fmt("%.3g", res.wrap_alpha) + ", offset " +

@@ -344,3 +344,18 @@ cli_test(render_animation 0 ARGS render ${work}/box.smd --animation ${work}/box.
 set_tests_properties(cli.render_animation PROPERTIES DEPENDS cli.animate_skinned)
 cli_test(render_frames_mismatch 4 ARGS render ${work}/box_rest.off --frames ${work}/tet.off
          -o ${work}/never66.png STDERR "tet.off: frame 0 has 4 vertices" FORBID ${work}/never66_0000.png)
+
+# The wrap's limits (the library's checks before CGAL runs): these used to end in a
+# floating-point signal inside GMP or run for minutes.
+if(SPHERESET_WITH_REPAIR)
+  file(WRITE ${work}/huge_tri.off "OFF\n3 1 0\n1e80 0 0\n2e80 0 0\n1e80 1e80 0\n3 0 1 2\n")
+  cli_test(wrap_alpha_huge 2 ARGS fit ${CMAKE_CURRENT_SOURCE_DIR}/data/bow_tie.off -n 4
+           -o ${work}/never80.json --wrap-alpha 1e200
+           STDERR "wrap_alpha 1e.200 is more than 100 times the mesh's diagonal" FORBID ${work}/never80.json)
+  cli_test(wrap_offset_huge 2 ARGS eval ${CMAKE_CURRENT_SOURCE_DIR}/data/bow_tie.off ${work}/bound.txt
+           --wrap-offset 1e308 STDERR "wrap_offset 1e.308 is more than 100 times")
+  cli_test(wrap_huge_coordinates 4 ARGS fit ${work}/huge_tri.off -n 4 -o ${work}/never81.json
+           STDERR "coordinates up to 2e.80 cannot be wrapped" FORBID ${work}/never81.json)
+  cli_test(wrap_offset_too_many_triangles 2 ARGS check ${work}/open.off --wrap-offset 10
+           STDOUT "fit will +refuse it: .*would make about .* triangles .the limit is 1e.06.")
+endif()

@@ -181,3 +181,41 @@ TEST(RepairLadder, KeptCavityAndItsIslandSurviveTheUnion) {
 
 }  // namespace
 }  // namespace sphereset::test
+
+namespace sphereset {
+namespace {
+
+// The wrap's limits are checked before CGAL runs: these used to raise a floating-point signal
+// inside GMP (alpha 1e200, offset 1e308, coordinates near 1e80) or run for minutes (offset 10 on
+// a mesh of diagonal 1.4).
+TEST(RepairLadder, WrapLimitsAreCheckedBeforeWrapping) {
+  RepairOptions o;
+  o.operations = cgalSolidOperations();
+  const Mesh tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}};
+  struct Case {
+    double alpha, offset, scale;
+    ErrorCode code;
+    const char* words;
+  };
+  const Case cases[] = {
+      {1e200, 0.0, 1.0, ErrorCode::kInvalidArgument, "wrap_alpha 1e+200 is more than 100 times"},
+      {0.0, 1e308, 1.0, ErrorCode::kInvalidArgument, "wrap_offset 1e+308 is more than 100 times"},
+      {0.0, 10.0, 1.0, ErrorCode::kInvalidArgument, "would make about"},
+      {0.0, 0.0, 1e80, ErrorCode::kInvalidData, "coordinates up to 1e+80 cannot be wrapped"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.words);
+    Mesh m = tri;
+    for (Vec3& v : m.vertices) v *= c.scale;
+    o.wrap_alpha = c.alpha;
+    o.wrap_offset = c.offset;
+    test::expectError(repairMesh(m, o, "tri.off"), c.code, "tri.off: ", c.words);
+  }
+  // Within the limits the wrap runs.
+  o.wrap_alpha = 0.0;
+  o.wrap_offset = 0.0;
+  EXPECT_TRUE(repairMesh(tri, o, "tri.off").ok());
+}
+
+}  // namespace
+}  // namespace sphereset
