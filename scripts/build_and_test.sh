@@ -5,6 +5,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 build=${BUILD_DIR:-build}
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release "$@"
+# Tests, benchmarks and the Python module on (a build folder configured by the demo has them
+# off); the Python module's default depends on the sanitizer options, so its cached value is
+# dropped and recomputed. Later arguments ("$@") override these.
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DSPHERESET_BUILD_TESTS=ON \
+  -DSPHERESET_BUILD_BENCH=ON -USPHERESET_BUILD_PYTHON "$@"
 cmake --build "$build" -j "$(nproc)"
 ctest --test-dir "$build" -j "$(nproc)" --output-on-failure

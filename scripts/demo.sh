@@ -3,8 +3,11 @@
 # spheres, measure them and draw them. Installs and builds first when needed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
-[ -f build/CMakeCache.txt ] || cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+bash scripts/setup.sh demo  # only the command's dependencies; the test command adds the rest
+# The command alone: no tests, benchmarks or Python module to configure (their packages are
+# installed by scripts/build_and_test.sh, which turns them on in the same build folder).
+[ -f build/CMakeCache.txt ] || cmake -S . -B build -DCMAKE_BUILD_TYPE=Release \
+  -DSPHERESET_BUILD_TESTS=OFF -DSPHERESET_BUILD_BENCH=OFF -DSPHERESET_BUILD_PYTHON=OFF >/dev/null
 cmake --build build -j "$(nproc)" --target sphereset_cli
 mkdir -p out
 ./build/apps/sphereset check examples/spot.obj

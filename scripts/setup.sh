@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Installs every build and test dependency of sphereset from Debian 12 packages.
-# Idempotent: packages already present are left as they are.
+# Installs the dependencies of sphereset from Debian 12 packages. Idempotent: packages already
+# present are left as they are.
+#   bash scripts/setup.sh        everything: build, tests, Python module, benchmarks, fuzzing
+#   bash scripts/setup.sh demo   only what the command needs (scripts/demo.sh)
 set -euo pipefail
 
-packages=(
-  build-essential cmake pkg-config time
+# The sphereset command: the library's dependencies.
+demo_packages=(
+  build-essential cmake pkg-config
   libassimp-dev        # mesh import (OBJ, PLY, STL, OFF, DAE, glTF/GLB)
   libeigen3-dev        # small dense linear algebra
   libtbb-dev           # parallel loops
@@ -14,12 +17,17 @@ packages=(
   liburdfdom-dev       # robot descriptions (URDF parser)
   libtinyxml-dev       # URDF elements read and rewritten (the XML library urdfdom uses)
   libnlopt-cxx-dev     # derivative-free and gradient optimisers
-  libgtest-dev         # unit tests
-  libbenchmark-dev     # micro-benchmarks
   libpng-dev           # PNG pictures
   libcgal-dev          # repair: corefinement and alpha wrapping, GPL, see README
   libgmp-dev           # exact arithmetic linked by CGAL's CMake target (CGAL::CGAL)
   libmpfr-dev          # exact arithmetic linked by CGAL's CMake target (CGAL::CGAL)
+)
+# Tests, the Python module, benchmarks and fuzzing: what scripts/build_and_test.sh and CI add.
+test_packages=(
+  time                 # wall time and peak memory in the benchmark scripts
+  ccache               # compiler cache (used by CMake when present)
+  libgtest-dev         # unit tests
+  libbenchmark-dev     # micro-benchmarks
   clang                # fuzzing (fuzz/run.sh): libFuzzer needs clang
   libclang-rt-14-dev   # libFuzzer and the sanitizer runtimes for clang 14
   python3              # benchmark scripts (CSV tables)
@@ -32,6 +40,12 @@ packages=(
   python3-venv         # Python module: `pip install .` into a virtual environment
   python3-pip          # Python module: `pip install .`
 )
+
+case "${1:-all}" in
+  demo) packages=("${demo_packages[@]}") ;;
+  all) packages=("${demo_packages[@]}" "${test_packages[@]}") ;;
+  *) echo "usage: bash scripts/setup.sh [demo]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do
