@@ -30,14 +30,13 @@ inline constexpr int64_t kMaxProximitySegments = 10000000;  // proximity segment
 inline constexpr int kMaxShadowResolution = 4096;           // pixels per side
 inline constexpr int kMaxShadowLights = 4096;               // lights
 
-// Sphere trees: nodes of a tree (every level, root included).
-inline constexpr int64_t kMaxTreeNodes = 100000000;
+// Sphere trees: SphereTree::kMaxSlots (sphere_tree.hpp) slots over all levels.
 
 // Animation: frames of one clip, and bones of one skin.
 inline constexpr int64_t kMaxFrames = 1000000;
 inline constexpr int64_t kMaxBones = 100000;
 
-// Robots: nesting depth of a URDF's XML elements, links of one robot.
+// Robots: nesting depth of a URDF's XML elements.
 inline constexpr int kMaxXmlDepth = 256;
 
 // kInvalidArgument "`what` must be from `lo` to `hi` (got `value`)" when value is outside

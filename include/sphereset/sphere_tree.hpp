@@ -27,8 +27,9 @@ struct SphereTree {
   int depth = 0;
   std::vector<Sphere> nodes;
 
-  // Largest layout accepted (slots over all levels), against absurd branching and depth.
-  static constexpr int64_t kMaxSlots = int64_t{1} << 26;
+  // Largest layout accepted (slots over all levels, 128 MiB of spheres), against absurd
+  // branching and depth: a 90-byte tree file must not make a reader allocate gigabytes.
+  static constexpr int64_t kMaxSlots = int64_t{1} << 22;
   // Slots of a tree of this branching and depth, or -1 when above kMaxSlots.
   static int64_t slotCount(int branching, int depth);
 

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -21,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "sphereset/limits.hpp"
 #include "sphereset/robot.hpp"
 
 namespace sphereset {
@@ -282,6 +284,50 @@ urdf::ModelInterfaceSharedPtr parseQuietly(const std::string& xml, std::string& 
   return model;
 }
 
+// The deepest nesting of elements in `xml` (a scan that skips comments, CDATA, declarations and
+// quoted attribute values), stopping once it passes `limit`. TinyXML and urdfdom recurse once
+// per level: tens of thousands of nested elements overflow the stack.
+int xmlDepth(const std::string& xml, int limit) {
+  int depth = 0, deepest = 0;
+  size_t i = 0;
+  auto skipPast = [&](const char* end) {
+    const size_t e = xml.find(end, i);
+    i = e == std::string::npos ? xml.size() : e + std::strlen(end);
+  };
+  while (i < xml.size() && deepest <= limit) {
+    if (xml[i] != '<') {
+      ++i;
+      continue;
+    }
+    if (xml.compare(i, 4, "<!--") == 0) {
+      skipPast("-->");
+    } else if (xml.compare(i, 9, "<![CDATA[") == 0) {
+      skipPast("]]>");
+    } else if (i + 1 < xml.size() && (xml[i + 1] == '?' || xml[i + 1] == '!')) {
+      skipPast(">");
+    } else if (i + 1 < xml.size() && xml[i + 1] == '/') {
+      --depth;
+      skipPast(">");
+    } else {
+      // An opening tag: to its '>' outside quotes; "/>" closes it at once.
+      char quote = 0;
+      size_t j = i + 1;
+      for (; j < xml.size(); ++j) {
+        if (quote != 0) {
+          if (xml[j] == quote) quote = 0;
+        } else if (xml[j] == '"' || xml[j] == '\'') {
+          quote = xml[j];
+        } else if (xml[j] == '>') {
+          break;
+        }
+      }
+      if (j >= xml.size() || xml[j - 1] != '/') deepest = std::max(deepest, ++depth);
+      i = j + 1;
+    }
+  }
+  return deepest;
+}
+
 }  // namespace
 
 Expected<Robot> loadRobot(const std::string& urdf_path, const RobotLoadOptions& options) {
@@ -292,6 +338,10 @@ Expected<Robot> loadRobot(const std::string& urdf_path, const RobotLoadOptions& 
   std::stringstream buffer;
   buffer << in.rdbuf();
   const std::string xml = buffer.str();
+  if (xmlDepth(xml, limits::kMaxXmlDepth) > limits::kMaxXmlDepth)
+    return Error{ErrorCode::kInvalidData, urdf_path + ": elements nested more than " +
+                                              std::to_string(limits::kMaxXmlDepth) +
+                                              " deep (the limit)"};
 
   std::string message;
   const urdf::ModelInterfaceSharedPtr model = parseQuietly(xml, message);

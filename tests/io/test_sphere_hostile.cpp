@@ -48,14 +48,25 @@ TEST_F(SphereHostile, JsonTreeIntegersMustBeIntegersInRange) {
 }
 
 TEST_F(SphereHostile, SphTreeLargerThanTheFileIsTruncated) {
-  // 2^26 - 1 slots declared in six bytes.
-  const std::string p = write("big.sph", "26 2\n");
-  expectError(readSphereTree(p), ErrorCode::kInvalidData, p, "truncated after 0 of 67108863");
+  // 2^22 - 1 slots declared in six bytes.
+  const std::string p = write("big.sph", "22 2\n");
+  expectError(readSphereTree(p), ErrorCode::kInvalidData, p, "truncated after 0 of 4194303");
   const std::string q = write("huge.sph", "2000000000 1\n0 0 0 1\n");
   expectError(readSphereTree(q), ErrorCode::kInvalidData, q, "too large");
   const std::string r = write("over.sph", "99999999999 2\n0 0 0 1\n");
   expectError(readSphereTree(r), ErrorCode::kInvalidData, r, "levels branching");
 }
 
+// A 90-byte JSON tree used to make every reader allocate 2.1 GB (branching 67108863, depth 1)
+// or 4.2 GB (branching 8191, depth 2): the layout is capped at SphereTree::kMaxSlots first.
+TEST_F(SphereHostile, JsonTreeLayoutIsCappedBeforeAllocating) {
+  for (const char* layout : {"67108863:1", "8191:2", "2048:2"}) {
+    const std::string l = layout;
+    const std::string p = write("wide.json", jsonTree(l.substr(0, l.find(':')),
+                                                      l.substr(l.find(':') + 1), "0"));
+    expectError(readSphereTree(p), ErrorCode::kInvalidData, p, "too large");
+  }
+  EXPECT_TRUE(readSphereTree(write("ok.json", jsonTree("2047", "2", "0"))).ok());
+}
 }  // namespace
 }  // namespace sphereset

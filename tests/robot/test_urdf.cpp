@@ -218,4 +218,21 @@ TEST_F(Urdf, BadFilesAreOneLineErrors) {
 }
 
 }  // namespace
+// 50 000 nested elements used to overflow the stack inside TinyXML (a segfault); the depth is
+// checked before parsing.
+TEST_F(Urdf, DeeplyNestedElementsAreRefused) {
+  std::string xml = "<robot name=\"deep\"><link name=\"a\"/>";
+  for (int i = 0; i < 50000; ++i) xml += "<x a='>'>";
+  for (int i = 0; i < 50000; ++i) xml += "</x>";
+  xml += "</robot>\n";
+  const std::string p = write("deep.urdf", xml);
+  test::expectError(loadRobot(p), ErrorCode::kInvalidData, p, "nested more than 256 deep");
+  // Comments (here 300 unclosed tags in one) and self-closing elements are not nesting.
+  std::string flat = "<robot name=\"flat\"><!--";
+  for (int i = 0; i < 300; ++i) flat += "<a>";
+  flat += "--><link name=\"a\"/></robot>\n";
+  auto r = loadRobot(write("flat.urdf", flat));
+  EXPECT_TRUE(r.ok()) << r.error().message;
+}
+
 }  // namespace sphereset
