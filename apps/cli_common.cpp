@@ -162,15 +162,14 @@ void addTableOptions(CLI::App* cmd, TableArgs* a, std::span<const OptionSpec> ta
                      std::initializer_list<std::string_view> skip) {
   for (const OptionSpec& o : table) {
     if (std::find(skip.begin(), skip.end(), std::string_view(o.name)) != skip.end()) continue;
-    const char* type = o.type == OptionType::kChoice  ? "TEXT"
+    const char* type = o.type == OptionType::kChoice ? "TEXT"
                        : o.type == OptionType::kReal ? "FLOAT"
                                                      : "INT";
     // No CLI11 checks: the library parses and checks the text (one message for every door).
-    a->options[o.name] =
-        cmd->add_option(o.flag, a->text[o.name], std::string(o.help) + " (default " +
-                                                     o.default_text + ")")
-            ->type_name(type)
-            ->allow_extra_args(false);
+    a->options[o.name] = cmd->add_option(o.flag, a->text[o.name],
+                                         std::string(o.help) + " (default " + o.default_text + ")")
+                             ->type_name(type)
+                             ->allow_extra_args(false);
   }
 }
 
@@ -203,9 +202,13 @@ Expected<FitRequest> fitRequest(const FitArgs& a) {
 Expected<FitOptions> fitOptions(const FitArgs& a) {
   auto request = fitRequest(a);
   if (!request) return request.error();
-  FitOptions fo = fitOptionsFor(*request);
+  return fitOptions(*request, a.quiet);
+}
+
+FitOptions fitOptions(const FitRequest& request, bool quiet) {
+  FitOptions fo = fitOptionsFor(request);
   const bool tty = isatty(STDERR_FILENO) != 0;
-  if (!a.quiet)
+  if (!quiet)
     fo.progress = [tty](const FitProgress& p) {
       if (tty)
         std::fprintf(stderr, "\r%-10s round %3d  outside volume %.6g  spheres %d  %.1f s   ",

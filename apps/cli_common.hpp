@@ -126,7 +126,10 @@ void addFitTuningArgs(CLI::App* cmd, FitArgs* a, bool count_option = false);
 // the library's setFitRequestOption parses them (its message for a bad value).
 Expected<FitRequest> fitRequest(const FitArgs& a);
 
-// fitOptionsFor(fitRequest(a)) with the progress on stderr unless --quiet.
+// fitOptionsFor(request) with the progress on stderr unless `quiet`.
+FitOptions fitOptions(const FitRequest& request, bool quiet);
+
+// fitOptions(fitRequest(a), a.quiet).
 Expected<FitOptions> fitOptions(const FitArgs& a);
 
 // What eval's coverage certificate does not confirm in `r`, e.g. "surface not covered (max gap

@@ -94,11 +94,10 @@ int runFit(const FitCommandArgs& c) {
   const FitArgs& a = c.fit;
   auto format = sphereFormatFromPath(a.out_path);
   if (!format) return fail(format.error());
-  if (auto request = fitRequest(a); !request) return fail(request.error());
+  auto options = fitOptions(a);  // bad options are refused before any loading
+  if (!options) return fail(options.error());
   auto m = loadSolid(a.mesh);
   if (!m) return fail(m.error());
-  auto options = fitOptions(a);
-  if (!options) return fail(options.error());
   FitOptions fo = std::move(options).value();
   fo.original = m->original();
   const SolidIndex index(m->repair.solid);

@@ -68,11 +68,8 @@ int runTree(TreeArgs a) {
   if (*format != SphereFormat::kSph && *format != SphereFormat::kJson)
     return fail(Error{ErrorCode::kInvalidArgument,
                       a.fit.out_path + ": a sphere tree is written as .sph or .json"});
-  auto options = fitOptions(a.fit);
-  if (!options) return fail(options.error());
-  FitOptions fo = std::move(options).value();
-  auto m = loadSolid(a.fit.mesh);
-  if (!m) return fail(m.error());
+  auto request = fitRequest(a.fit);
+  if (!request) return fail(request.error());
   if (a.leaves == 0) {
     // B^D leaves, when that is a sensible count (otherwise the library says why not).
     int64_t leaves = 1;
@@ -80,13 +77,12 @@ int runTree(TreeArgs a) {
     if (leaves <= (int64_t{1} << 16)) a.leaves = static_cast<int>(leaves);
   }
   // The leaves replace the table's n; the preset's points follow them.
-  FitRequest request = fitRequest(a.fit).value();
-  request.num_spheres = a.leaves;
+  request->num_spheres = a.leaves;
   if (a.leaves > 0)
-    if (Status st = checkFitRequest(request); !st) return fail(st.error());
-  const auto progress = fo.progress;
-  fo = fitOptionsFor(request);
-  fo.progress = progress;
+    if (Status st = checkFitRequest(*request); !st) return fail(st.error());
+  FitOptions fo = fitOptions(*request, a.fit.quiet);
+  auto m = loadSolid(a.fit.mesh);
+  if (!m) return fail(m.error());
   fo.original = m->original();
   a.to.parents = a.parents == "outside" ? TreeParents::kOutsideVolume : TreeParents::kMinimal;
   a.to.seed = fo.seed;

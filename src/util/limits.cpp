@@ -5,26 +5,15 @@
 #include <cstdio>
 #include <string>
 
+#include "util/number_text.hpp"
+
 namespace sphereset::limits {
-namespace {
-
-// A number as a user typed it: integers without a decimal point, others with 6 digits.
-std::string number(double v) {
-  char buf[40];
-  if (std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 1e15)
-    std::snprintf(buf, sizeof buf, "%.0f", v);
-  else
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
-}  // namespace
 
 Status checkRange(const std::string& what, double value, double lo, double hi) {
   if (value >= lo && value <= hi) return {};
-  return Error{ErrorCode::kInvalidArgument,
-               what + " must be from " + number(lo) + " to " + number(hi) + " (got " +
-                   number(value) + ")"};
+  return Error{ErrorCode::kInvalidArgument, what + " must be from " + detail::numberText(lo) +
+                                                " to " + detail::numberText(hi) + " (got " +
+                                                detail::numberText(value) + ")"};
 }
 
 Status checkArray(const std::string& what, double count, double bytes_each, ErrorCode code) {

@@ -9,17 +9,10 @@
 #include <limits>
 #include <string>
 
+#include "util/number_text.hpp"
+
 namespace sphereset {
 namespace {
-
-std::string bound(double v) {
-  char buf[40];
-  if (v == std::floor(v) && std::fabs(v) < 1e18)
-    std::snprintf(buf, sizeof buf, "%.0f", v);
-  else
-    std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 // "fast, default or best".
 std::string choiceList(std::span<const char* const> choices) {
@@ -32,13 +25,15 @@ std::string choiceList(std::span<const char* const> choices) {
 std::string expectation(const OptionSpec& spec) {
   switch (spec.type) {
     case OptionType::kInteger:
-      return "an integer from " + bound(spec.min) + " to " + bound(spec.max);
+      return "an integer from " + detail::numberText(spec.min) + " to " +
+             detail::numberText(spec.max);
     case OptionType::kUnsigned:
       return "an integer from 0 to " + std::to_string(std::numeric_limits<uint64_t>::max());
     case OptionType::kReal:
       return spec.max == std::numeric_limits<double>::max()
-                 ? "a finite number >= " + bound(spec.min)
-                 : "a number from " + bound(spec.min) + " to " + bound(spec.max);
+                 ? "a finite number >= " + detail::numberText(spec.min)
+                 : "a number from " + detail::numberText(spec.min) + " to " +
+                       detail::numberText(spec.max);
     case OptionType::kChoice:
       return choiceList(spec.choices);
   }
