@@ -23,35 +23,48 @@ struct QueryArgs {
   bool json = false;
 };
 
+template <class... Args>
+std::string format(const char* f, Args... args) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, f, args...);
+  return buf;
+}
+
 // A file that holds a sphere tree is queried through it; a plain set gets one built.
 SphereTree treeFor(const SphereTree& t) {
   return t.depth >= 2 && checkSphereTree(t).ok() ? t : queryTree(t.leaves());
 }
 
-// The --point and --segment queries, printed or added to `out`.
-void pointAndSegmentQueries(const QueryArgs& a, const SphereTree& qa, nlohmann::json* out) {
+// The --point and --segment queries, printed or added to `out`. Every query is answered before
+// anything is printed, so that a refused one prints nothing but its error.
+int pointAndSegmentQueries(const QueryArgs& a, const SphereTree& qa, nlohmann::json* out) {
+  std::vector<std::string> lines;
   const std::vector<double>& pts = a.points;
   for (size_t i = 0; i + 2 < pts.size(); i += 3) {
     const Vec3 p(pts[i], pts[i + 1], pts[i + 2]);
-    const PointQuery pq = pointDistance(qa, p);
-    const bool in = containsPoint(qa, p);
+    const auto pq = pointDistance(qa, p);
+    if (!pq) return fail(pq.error());
+    const bool in = *containsPoint(qa, p);  // the point passed the same check
     if (a.json)
-      (*out)["points"].push_back({{"point", vec(p)}, {"inside", in}, {"distance", pq.distance}});
+      (*out)["points"].push_back({{"point", vec(p)}, {"inside", in}, {"distance", pq->distance}});
     else
-      std::printf("point %g %g %g: %s, signed distance %.9g\n", p.x(), p.y(), p.z(),
-                  in ? "inside" : "outside", pq.distance);
+      lines.push_back(format("point %g %g %g: %s, signed distance %.9g", p.x(), p.y(), p.z(),
+                             in ? "inside" : "outside", pq->distance));
   }
   const std::vector<double>& sg = a.segments;
   for (size_t i = 0; i + 5 < sg.size(); i += 6) {
     const Vec3 pa(sg[i], sg[i + 1], sg[i + 2]);
     const Vec3 pb(sg[i + 3], sg[i + 4], sg[i + 5]);
-    const double len = segmentOutsideLength(qa, pa, pb);
+    const auto len = segmentOutsideLength(qa, pa, pb);
+    if (!len) return fail(len.error());
     if (a.json)
-      (*out)["segments"].push_back({{"a", vec(pa)}, {"b", vec(pb)}, {"outside_length", len}});
+      (*out)["segments"].push_back({{"a", vec(pa)}, {"b", vec(pb)}, {"outside_length", *len}});
     else
-      std::printf("segment %g %g %g -> %g %g %g: %.9g of %.9g outside\n", pa.x(), pa.y(), pa.z(),
-                  pb.x(), pb.y(), pb.z(), len, (pb - pa).norm());
+      lines.push_back(format("segment %g %g %g -> %g %g %g: %.9g of %.9g outside", pa.x(), pa.y(),
+                             pa.z(), pb.x(), pb.y(), pb.z(), *len, (pb - pa).norm()));
   }
+  for (const std::string& line : lines) std::printf("%s\n", line.c_str());
+  return kOk;
 }
 
 // The --other query (separation and overlap under --pose), printed or added to `out`.
@@ -66,9 +79,12 @@ int otherQuery(const QueryArgs& a, const SphereTree& qa, nlohmann::json* out) {
       return fail(Error{ErrorCode::kInvalidArgument, "--pose: the quaternion is zero"});
     pose.rotation = q.normalized().toRotationMatrix();
     pose.translation = Vec3(op[0], op[1], op[2]);
+    // The quaternion's NaNs are caught above; the translation is checked by the query.
   }
   const SphereTree qb = treeFor(*tb);
-  const PairQuery pq = separation(qa, Pose{}, qb, pose);
+  const auto found = separation(qa, Pose{}, qb, pose);
+  if (!found) return fail(found.error());
+  const PairQuery& pq = *found;
   const bool hit = pq.distance < 0.0;
   if (a.json)
     (*out)["other"] = {{"file", a.other_path},
@@ -91,7 +107,7 @@ int runQuery(const QueryArgs& a) {
   if (!ta) return fail(ta.error());
   nlohmann::json out;
   const SphereTree qa = treeFor(*ta);
-  pointAndSegmentQueries(a, qa, &out);
+  if (const int rc = pointAndSegmentQueries(a, qa, &out); rc != kOk) return rc;
   if (!a.other_path.empty()) {
     const int rc = otherQuery(a, qa, &out);
     if (rc != kOk) return rc;

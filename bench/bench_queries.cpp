@@ -68,7 +68,8 @@ void BM_PointDistance(benchmark::State& st, bool tree) {
   size_t k = 0;
   for (auto _ : st) {
     const Vec3& p = s.points[k++ % s.points.size()];
-    benchmark::DoNotOptimize(tree ? pointDistance(s.ta, p) : pointDistanceBruteForce(s.a, p));
+    benchmark::DoNotOptimize(tree ? pointDistance(s.ta, p)->distance
+                                  : pointDistanceBruteForce(s.a, p).distance);
   }
   st.SetItemsProcessed(st.iterations());
 }
@@ -78,7 +79,7 @@ void BM_SegmentOutside(benchmark::State& st, bool tree) {
   size_t k = 0;
   for (auto _ : st) {
     const size_t i = k++ % s.seg_a.size();
-    benchmark::DoNotOptimize(tree ? segmentOutsideLength(s.ta, s.seg_a[i], s.seg_b[i])
+    benchmark::DoNotOptimize(tree ? *segmentOutsideLength(s.ta, s.seg_a[i], s.seg_b[i])
                                   : segmentOutsideLengthBruteForce(s.a, s.seg_a[i], s.seg_b[i]));
   }
   st.SetItemsProcessed(st.iterations());
@@ -89,8 +90,8 @@ void BM_Separation(benchmark::State& st, bool tree) {
   size_t k = 0;
   for (auto _ : st) {
     const Pose& p = s.poses[k++ % s.poses.size()];
-    benchmark::DoNotOptimize(tree ? separation(s.ta, Pose{}, s.tb, p)
-                                  : separationBruteForce(s.a, Pose{}, s.b, p));
+    benchmark::DoNotOptimize(tree ? separation(s.ta, Pose{}, s.tb, p)->distance
+                                  : separationBruteForce(s.a, Pose{}, s.b, p).distance);
   }
   st.SetItemsProcessed(st.iterations());
 }
@@ -100,7 +101,7 @@ void BM_Overlap(benchmark::State& st, bool tree) {
   size_t k = 0;
   for (auto _ : st) {
     const Pose& p = s.poses[k++ % s.poses.size()];
-    benchmark::DoNotOptimize(tree ? overlaps(s.ta, Pose{}, s.tb, p)
+    benchmark::DoNotOptimize(tree ? *overlaps(s.ta, Pose{}, s.tb, p)
                                   : overlapsBruteForce(s.a, Pose{}, s.b, p));
   }
   st.SetItemsProcessed(st.iterations());

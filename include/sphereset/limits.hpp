@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 
 #include "sphereset/status.hpp"
@@ -16,16 +17,20 @@ namespace sphereset::limits {
 // hostile file is refused at once instead of exhausting the machine.
 inline constexpr double kMaxArrayBytes = 4.0 * 1024 * 1024 * 1024;  // 4 GiB
 
+// Coordinates a query, pose or wrap accepts (length units): squares and products of two such
+// numbers stay finite in double precision, so distances and lengths never overflow to inf.
+inline constexpr double kMaxCoordinate = 1e30;
+
 // The fit.
-inline constexpr int kMaxSpheres = 1000000;             // spheres of one set
-inline constexpr int64_t kMaxPoints = 100000000;        // points clustered
-inline constexpr int kMaxIterations = 100000;           // assignment/update rounds
-inline constexpr int kMaxRestarts = 1000;               // independent fits
-inline constexpr double kMaxDecimation = 16.0;          // extra spheres, as a fraction of n
+inline constexpr int kMaxSpheres = 1000000;              // spheres of one set
+inline constexpr int64_t kMaxPoints = 100000000;         // points clustered
+inline constexpr int kMaxIterations = 100000;            // assignment/update rounds
+inline constexpr int kMaxRestarts = 1000;                // independent fits
+inline constexpr double kMaxDecimation = 16.0;           // extra spheres, as a fraction of n
 inline constexpr int kMaxOptimizerEvaluations = 100000;  // per sphere and round
 
 // The evaluation.
-inline constexpr int64_t kMaxUnionSamples = 100000000;    // Monte Carlo samples
+inline constexpr int64_t kMaxUnionSamples = 100000000;      // Monte Carlo samples
 inline constexpr int64_t kMaxProximitySegments = 10000000;  // proximity segments
 inline constexpr int kMaxShadowResolution = 4096;           // pixels per side
 inline constexpr int kMaxShadowLights = 4096;               // lights
@@ -47,5 +52,9 @@ Status checkRange(const std::string& what, double value, double lo, double hi);
 // count × bytes_each exceeds kMaxArrayBytes; OK otherwise.
 Status checkArray(const std::string& what, double count, double bytes_each,
                   ErrorCode code = ErrorCode::kInvalidData);
+
+// kInvalidArgument "`what` (x y z): coordinates must be finite and at most 1e+30 in magnitude"
+// when a value is NaN, infinite or beyond kMaxCoordinate; OK otherwise.
+Status checkCoordinates(const std::string& what, std::span<const double> values);
 
 }  // namespace sphereset::limits

@@ -2,13 +2,20 @@
 // collision queries users run on sphere-trees). Tree queries visit a node's children only
 // when the node itself can matter, which is sound because every parent encloses its
 // children. Their brute-force twins, the tests' oracles, are private (src/tree/query_oracles.hpp).
+//
+// Every query checks its points and poses: coordinates must be finite and at most
+// limits::kMaxCoordinate in magnitude (kInvalidArgument otherwise, naming the input), so that
+// no answer is silently NaN or infinite. Trees are checked where they are made (readers,
+// buildSphereTree).
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_tree.hpp"
+#include "sphereset/status.hpp"
 
 namespace sphereset {
 
@@ -27,12 +34,12 @@ struct PointQuery {
   int64_t sphere = -1;  // the sphere attaining it: slot id in a tree, position in a vector
   int64_t visited = 0;  // spheres or nodes examined
 };
-PointQuery pointDistance(const SphereTree& tree, const Vec3& p);
-bool containsPoint(const SphereTree& tree, const Vec3& p);
+Expected<PointQuery> pointDistance(const SphereTree& tree, const Vec3& p);
+Expected<bool> containsPoint(const SphereTree& tree, const Vec3& p);
 
 // Length of segment [a, b] outside the union of the leaf spheres (paper Sec. 7: the 1D
 // intervals where the segment is inside some sphere are merged, overlaps counted once).
-double segmentOutsideLength(const SphereTree& tree, const Vec3& a, const Vec3& b);
+Expected<double> segmentOutsideLength(const SphereTree& tree, const Vec3& a, const Vec3& b);
 
 // Between two sets, each under its own pose: the signed distance of the closest pair of leaf
 // spheres, min |c_a - c_b| - r_a - r_b (negative when they overlap; then the magnitude is the
@@ -42,12 +49,17 @@ struct PairQuery {
   int64_t sphere_a = -1, sphere_b = -1;  // slot ids (trees) or positions (vectors)
   int64_t visited = 0;                   // node or sphere pairs examined
 };
-PairQuery separation(const SphereTree& a, const Pose& pose_a, const SphereTree& b,
-                     const Pose& pose_b);
+Expected<PairQuery> separation(const SphereTree& a, const Pose& pose_a, const SphereTree& b,
+                               const Pose& pose_b);
 // Whether any two leaf spheres overlap (distance < 0); stops at the first such pair, which is
 // returned in *pair when given (its distance field is that pair's signed distance).
-bool overlaps(const SphereTree& a, const Pose& pose_a, const SphereTree& b, const Pose& pose_b,
-              PairQuery* pair = nullptr);
+Expected<bool> overlaps(const SphereTree& a, const Pose& pose_a, const SphereTree& b,
+                        const Pose& pose_b, PairQuery* pair = nullptr);
+
+// A pose's translation within limits::kMaxCoordinate and its rotation orthonormal with
+// determinant +1 (to kPoseRotationTolerance); kInvalidArgument naming `what` otherwise.
+inline constexpr double kPoseRotationTolerance = 1e-6;  // max |RᵀR - I| entry, and |det R - 1|
+Status checkPose(const std::string& what, const Pose& pose);
 
 // A query tree over a plain set (minimal enclosing parents, branching 8, as deep as needed).
 SphereTree queryTree(const std::vector<Sphere>& spheres, int branching = 8);

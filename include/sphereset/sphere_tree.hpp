@@ -48,4 +48,12 @@ struct SphereTree {
 // names the first offending node.
 Status checkSphereTree(const SphereTree& tree, double tolerance = 0.0);
 
+// A tree from a file's or an array's slots (unused slots have a negative radius): checks the
+// layout, that used nodes are finite, and the invariants (checkSphereTree with `tolerance`;
+// infinity checks the structure only), all as kInvalidData naming the node. A used node without
+// used children above the last level is a leaf in Bradshaw's files; it is copied down to the
+// last level, where queries, exports and leaves() find every leaf.
+Expected<SphereTree> makeSphereTree(int branching, int depth, std::vector<Sphere> nodes,
+                                    double tolerance = 0.0);
+
 }  // namespace sphereset

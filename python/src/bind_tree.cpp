@@ -95,21 +95,16 @@ A complete B-ary sphere tree in Bradshaw's flat layout: level l holds B**l slots
 
 SphereTree(nodes, branching, depth) checks the layout and the enclosure (InvalidDataError).)doc")
       .def(py::init([](const py::object& nodes, int branching, int depth) {
-             SphereTree t;
-             t.branching = branching;
-             t.depth = depth;
              // Negative radii mark unused slots: read the rows without the radius check.
              py::array_t<double, py::array::c_style | py::array::forcecast> arr =
                  py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(nodes);
              if (!arr || arr.ndim() != 2 || arr.shape(1) != 4)
                raise(ErrorCode::kInvalidArgument, "nodes: expected an (M, 4) array");
              auto v = arr.unchecked<2>();
+             std::vector<Sphere> slots;
              for (py::ssize_t i = 0; i < arr.shape(0); ++i)
-               t.nodes.push_back(Sphere{Vec3(v(i, 0), v(i, 1), v(i, 2)), v(i, 3)});
-             if (branching < 2 || depth < 0 || SphereTree::slotCount(branching, depth) < 0)
-               raise(ErrorCode::kInvalidArgument, "branching must be >= 2 and depth >= 0");
-             check(checkSphereTree(t));
-             return t;
+               slots.push_back(Sphere{Vec3(v(i, 0), v(i, 1), v(i, 2)), v(i, 3)});
+             return unwrap(makeSphereTree(branching, depth, std::move(slots)));
            }),
            py::arg("nodes"), py::arg("branching"), py::arg("depth"))
       .def_readonly("branching", &SphereTree::branching)
@@ -219,15 +214,22 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
         auto dv = dist.mutable_unchecked<1>();
         auto iv = ids.mutable_unchecked<1>();
         auto cv = inside.mutable_unchecked<1>();
+        Status failed;
         {
           py::gil_scoped_release release;
-          for (py::ssize_t i = 0; i < np; ++i) {
-            const PointQuery q = pointDistance(t.tree, p[static_cast<size_t>(i)]);
-            dv(i) = q.distance;
-            iv(i) = t.id(q.sphere);
-            cv(i) = containsPoint(t.tree, p[static_cast<size_t>(i)]);
+          for (py::ssize_t i = 0; i < np && failed; ++i) {
+            const auto q = pointDistance(t.tree, p[static_cast<size_t>(i)]);
+            if (!q) {
+              failed =
+                  Error{q.error().code, "points[" + std::to_string(i) + "]: " + q.error().message};
+              break;
+            }
+            dv(i) = q->distance;
+            iv(i) = t.id(q->sphere);
+            cv(i) = *containsPoint(t.tree, p[static_cast<size_t>(i)]);  // same point, checked
           }
         }
+        check(failed);
         return py::make_tuple(dist, ids, inside);
       },
       py::arg("spheres"), py::arg("points"));
@@ -242,9 +244,20 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
           raise(ErrorCode::kInvalidArgument, "a and b must hold as many points");
         py::array_t<double> out(static_cast<py::ssize_t>(pa.size()));
         auto v = out.mutable_unchecked<1>();
-        py::gil_scoped_release release;
-        for (size_t i = 0; i < pa.size(); ++i)
-          v(static_cast<py::ssize_t>(i)) = segmentOutsideLength(t.tree, pa[i], pb[i]);
+        Status failed;
+        {
+          py::gil_scoped_release release;
+          for (size_t i = 0; i < pa.size(); ++i) {
+            const auto len = segmentOutsideLength(t.tree, pa[i], pb[i]);
+            if (!len) {
+              failed = Error{len.error().code,
+                             "segment " + std::to_string(i) + ": " + len.error().message};
+              break;
+            }
+            v(static_cast<py::ssize_t>(i)) = *len;
+          }
+        }
+        check(failed);
         return out;
       },
       py::arg("spheres"), py::arg("a"), py::arg("b"));
@@ -259,13 +272,24 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
         const Pose pb = pose(pose_b, "pose_b");
         PairQuery q;
         bool any = false;
+        Status failed;
         {
           py::gil_scoped_release release;
-          if (stop_at_overlap)
-            any = overlaps(ta.tree, pa, tb.tree, pb, &q);
-          else
-            q = separation(ta.tree, pa, tb.tree, pb);
+          if (stop_at_overlap) {
+            const auto hit = overlaps(ta.tree, pa, tb.tree, pb, &q);
+            if (hit)
+              any = *hit;
+            else
+              failed = hit.error();
+          } else {
+            const auto found = separation(ta.tree, pa, tb.tree, pb);
+            if (found)
+              q = *found;
+            else
+              failed = found.error();
+          }
         }
+        check(failed);
         py::dict d = pairDict(q, ta, tb);
         if (stop_at_overlap) d["overlap"] = any;
         return d;

@@ -98,6 +98,33 @@ def test_queries_against_brute_force():
     assert ss.overlaps(SPHERES, SPHERES).overlap
 
 
+def test_queries_refuse_non_finite_inputs():
+    # The library refuses what it cannot answer in finite numbers (it used to say "outside, inf").
+    with pytest.raises(ss.InvalidDataError, match="point 1 has a NaN"):
+        ss.point_distance(SPHERES, [[0.0, 0, 0], [np.nan, 0, 0]])
+    with pytest.raises(ss.InvalidArgumentError, match=r"points\[1\]: point \(1e\+31 0 0\)"):
+        ss.point_distance(SPHERES, [[0.0, 0, 0], [1e31, 0, 0]])
+    with pytest.raises(ss.InvalidArgumentError, match="segment end"):
+        ss.segment_outside_length(SPHERES, [[0.0, 0, 0]], [[1e154, 1e154, 1e154]])
+    pose = np.eye(4)
+    pose[0, 3] = 1e31
+    with pytest.raises(ss.InvalidArgumentError, match="pose_b translation"):
+        ss.separation(SPHERES, SPHERES, pose_b=pose)
+
+
+def test_unbalanced_tree_keeps_its_leaves():
+    # A root over two children, only the first with children: the second is a leaf.
+    none = [0.0, 0, 0, -1]
+    t = ss.SphereTree([[0, 0, 0, 10], [-3, 0, 0, 4], [5, 0, 0, 2], [-4, 0, 0, 1], [-2, 0, 0, 1],
+                       none, none], 2, 2)
+    assert len(t.leaves()) == 3
+    q = ss.point_distance(t, [[5.0, 0, 0]])
+    assert q.inside[0] and q.distance[0] == pytest.approx(-2.0)
+    with pytest.raises(ss.InvalidDataError, match="node 2"):
+        ss.SphereTree([[0, 0, 0, 10], [-3, 0, 0, 4], [np.nan, 0, 0, 2], [-4, 0, 0, 1],
+                       [-2, 0, 0, 1], none, none], 2, 2)
+
+
 def test_robot(tmp_path):
     urdf = DATA / "robot" / "three_link.urdf"
     r = ss.load_robot(urdf, package_paths=[str(DATA / "robot")])

@@ -107,6 +107,15 @@ SphereTree flatTree(const std::vector<Sphere>& spheres) {
   return t;
 }
 
+// A tree as read, through the library's one entry for trees (structure only: files from other
+// tools may hold parents that do not quite enclose their children; queries check that again).
+Expected<SphereTree> checkedTree(SphereTree t, const std::string& path) {
+  auto made = makeSphereTree(t.branching, t.depth, std::move(t.nodes),
+                             std::numeric_limits<double>::infinity());
+  if (!made) return Error{made.error().code, path + ": " + made.error().message};
+  return made;
+}
+
 }  // namespace
 
 namespace detail {
@@ -145,7 +154,7 @@ Expected<SphereTree> parseSphereTree(SphereFormat format, const std::string& tex
       if (s.radius <= 0.0) s = {Vec3::Zero(), -1.0};  // unused slot
       t.nodes.push_back(s);
     }
-    return t;
+    return checkedTree(std::move(t), path);
   }
   if (format == SphereFormat::kJson) {
     auto parsed = parseJson(in, path);
@@ -185,7 +194,7 @@ Expected<SphereTree> parseSphereTree(SphereFormat format, const std::string& tex
       } catch (const nlohmann::json::exception& e) {
         return Error{ErrorCode::kInvalidData, path + ": malformed sphere tree (" + e.what() + ")"};
       }
-      return t;
+      return checkedTree(std::move(t), path);
     }
   }
   auto flat = parseSpheres(format, text, path);

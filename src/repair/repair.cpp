@@ -22,6 +22,7 @@
 #include "repair/canonical_order.hpp"
 #include "repair/cap_holes.hpp"
 #include "repair/orient.hpp"
+#include "sphereset/limits.hpp"
 
 namespace sphereset {
 namespace {
@@ -39,7 +40,7 @@ constexpr double kAutoWeldSteps[] = {1e-8, 1e-7, kAutoWeldRel};
 // much (a chair's thin legs), and a large input more coarsely; it stays between d/100 and d/50
 // of the bounding box diagonal d. The offset is alpha / 20.
 constexpr double kWrapTrianglesPerArea = 2.35;
-constexpr double kWrapRate = 10000.0;          // output triangles per second, small inputs
+constexpr double kWrapRate = 10000.0;           // output triangles per second, small inputs
 constexpr double kWrapRateHalfInput = 37000.0;  // input triangles at which the rate halves
 constexpr double kWrapSeconds = 0.5;
 constexpr double kWrapAlphaMinRel = 1.0 / 100.0, kWrapAlphaMaxRel = 1.0 / 50.0;
@@ -48,11 +49,10 @@ constexpr double kWrapOffsetOfAlpha = 1.0 / 20.0;
 // signal in GMP (a double overflowing to infinity) when coordinates, alpha or offset are
 // astronomically large (seen at 1e80 and at alpha 1e200), and its time grows with the output:
 // alpha and offset at most kWrapMaxSizeRel times the diagonal, coordinates (units of the mesh)
-// at most kWrapMaxCoordinate, and, for an alpha or offset the user chose, at most
+// at most limits::kMaxCoordinate, and, for an alpha or offset the user chose, at most
 // kWrapMaxTriangles predicted output triangles (about a minute: the wrap of a one-triangle mesh
 // of diagonal 1.4 at offset 2 predicts 0.26M and took 20 s).
 constexpr double kWrapMaxSizeRel = 100.0;
-constexpr double kWrapMaxCoordinate = 1e30;
 constexpr double kWrapMaxTriangles = 1e6;
 
 std::string fmt(const char* f, double x) {
@@ -208,9 +208,8 @@ void wrapParameters(const Mesh& m, const RepairOptions& o, double* alpha, double
       kWrapRate / (1.0 + static_cast<double>(m.triangles.size()) / kWrapRateHalfInput);
   const double budget = rate * kWrapSeconds;  // output triangles
   const double fit = std::sqrt(kWrapTrianglesPerArea * surfaceArea(m) / budget);
-  *alpha = o.wrap_alpha > 0.0
-               ? o.wrap_alpha
-               : std::clamp(fit, kWrapAlphaMinRel * diag, kWrapAlphaMaxRel * diag);
+  *alpha = o.wrap_alpha > 0.0 ? o.wrap_alpha
+                              : std::clamp(fit, kWrapAlphaMinRel * diag, kWrapAlphaMaxRel * diag);
   *offset = o.wrap_offset > 0.0 ? o.wrap_offset : kWrapOffsetOfAlpha * *alpha;
 }
 
@@ -221,10 +220,10 @@ Status checkWrap(const Mesh& m, const RepairOptions& o, double alpha, double off
                  const std::string& name) {
   const Aabb box = boundingBox(m);
   const double coordinate = std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff());
-  if (!(coordinate <= kWrapMaxCoordinate))
+  if (!(coordinate <= limits::kMaxCoordinate))
     return Error{ErrorCode::kInvalidData, name + ": coordinates up to " + fmt("%.3g", coordinate) +
                                               " cannot be wrapped (the limit is " +
-                                              fmt("%.3g", kWrapMaxCoordinate) + ")"};
+                                              fmt("%.3g", limits::kMaxCoordinate) + ")"};
   const double diag = box.diagonal();
   for (const auto& [what, value] : {std::pair{"wrap_alpha", alpha}, {"wrap_offset", offset}})
     if (!(value <= kWrapMaxSizeRel * diag))
@@ -476,8 +475,7 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
   if (!have_ops) return needs(name, "rebuild with SPHERESET_WITH_REPAIR=ON to wrap it", why);
   const Mesh& soup = res.holes_capped > 0 ? capped : m;
   wrapParameters(soup, o, &res.wrap_alpha, &res.wrap_offset);
-  if (Status st = checkWrap(soup, o, res.wrap_alpha, res.wrap_offset, name); !st)
-    return st.error();
+  if (Status st = checkWrap(soup, o, res.wrap_alpha, res.wrap_offset, name); !st) return st.error();
   auto w = o.operations.wrap(soup, res.wrap_alpha, res.wrap_offset);
   if (!w) return Error{w.error().code, name + ": " + w.error().message};
   res.notes.push_back(why + ": wrapped (alpha " + fmt("%.3g", res.wrap_alpha) + ", offset " +
@@ -485,8 +483,7 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
   // The wrap is the outer envelope: whatever lies inside, cavities included, is filled.
   for (const Shell& s : res.shells.shells) res.cavities_filled += s.volume < 0.0 && s.parent >= 0;
   if (res.cavities_filled > 0 && !o.fill_cavities)
-    res.notes.push_back("the wrap fills " +
-                        count(res.cavities_filled, "cavity", "cavities") +
+    res.notes.push_back("the wrap fills " + count(res.cavities_filled, "cavity", "cavities") +
                         " that were to be kept");
   res.volume_ratio = ratio(*w);
   return done(detail::canonicalOrder(std::move(w).value()), RepairKind::kWrapped);

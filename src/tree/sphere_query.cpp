@@ -10,7 +10,10 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <span>
+#include <string>
 
+#include "sphereset/limits.hpp"
 #include "sphereset/query.hpp"
 #include "sphereset/sphere_tree.hpp"
 #include "sphereset/tree.hpp"
@@ -56,6 +59,10 @@ double pairGap(const Sphere& a, const Sphere& b) {
   return (a.center - b.center).norm() - a.radius - b.radius;
 }
 
+Status checkPoint(const char* what, const Vec3& p) {
+  return limits::checkCoordinates(what, std::span<const double>(p.data(), 3));
+}
+
 }  // namespace
 
 PointQuery pointDistanceBruteForce(const std::vector<Sphere>& spheres, const Vec3& p) {
@@ -72,7 +79,8 @@ PointQuery pointDistanceBruteForce(const std::vector<Sphere>& spheres, const Vec
   return q;
 }
 
-PointQuery pointDistance(const SphereTree& t, const Vec3& p) {
+Expected<PointQuery> pointDistance(const SphereTree& t, const Vec3& p) {
+  if (Status st = checkPoint("point", p); !st) return st.error();
   PointQuery q;
   q.distance = kInf;
   if (t.nodes.empty() || !t.used(0)) return q;
@@ -105,7 +113,8 @@ bool containsPointBruteForce(const std::vector<Sphere>& spheres, const Vec3& p) 
   return false;
 }
 
-bool containsPoint(const SphereTree& t, const Vec3& p) {
+Expected<bool> containsPoint(const SphereTree& t, const Vec3& p) {
+  if (Status st = checkPoint("point", p); !st) return st.error();
   if (t.nodes.empty() || !t.used(0)) return false;
   std::vector<int64_t> stack{0};
   while (!stack.empty()) {
@@ -133,7 +142,9 @@ double segmentOutsideLengthBruteForce(const std::vector<Sphere>& spheres, const 
   return uncoveredLength(&in, std::sqrt(dd));
 }
 
-double segmentOutsideLength(const SphereTree& t, const Vec3& a, const Vec3& b) {
+Expected<double> segmentOutsideLength(const SphereTree& t, const Vec3& a, const Vec3& b) {
+  if (Status st = checkPoint("segment start", a); !st) return st.error();
+  if (Status st = checkPoint("segment end", b); !st) return st.error();
   const Vec3 d = b - a;
   const double dd = d.squaredNorm();
   if (!(dd > 0.0) || t.nodes.empty() || !t.used(0)) return std::sqrt(std::max(dd, 0.0));
@@ -267,13 +278,32 @@ PairQuery dualTraversal(const Side& sa, const Side& sb, bool stop_at_overlap, bo
 
 }  // namespace
 
-PairQuery separation(const SphereTree& a, const Pose& pose_a, const SphereTree& b,
-                     const Pose& pose_b) {
+Status checkPose(const std::string& what, const Pose& pose) {
+  const Vec3& x = pose.translation;
+  if (Status st =
+          limits::checkCoordinates(what + " translation", std::span<const double>(x.data(), 3));
+      !st)
+    return st;
+  const Eigen::Matrix3d& r = pose.rotation;
+  const double err = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  if (!(err <= kPoseRotationTolerance) ||
+      !(std::fabs(r.determinant() - 1.0) <= kPoseRotationTolerance))
+    return Error{ErrorCode::kInvalidArgument,
+                 what + " rotation is not a rotation (orthonormal with determinant +1)"};
+  return {};
+}
+
+Expected<PairQuery> separation(const SphereTree& a, const Pose& pose_a, const SphereTree& b,
+                               const Pose& pose_b) {
+  if (Status st = checkPose("pose_a", pose_a); !st) return st.error();
+  if (Status st = checkPose("pose_b", pose_b); !st) return st.error();
   return dualTraversal({&a, &pose_a}, {&b, &pose_b}, false, nullptr);
 }
 
-bool overlaps(const SphereTree& a, const Pose& pose_a, const SphereTree& b, const Pose& pose_b,
-              PairQuery* pair) {
+Expected<bool> overlaps(const SphereTree& a, const Pose& pose_a, const SphereTree& b,
+                        const Pose& pose_b, PairQuery* pair) {
+  if (Status st = checkPose("pose_a", pose_a); !st) return st.error();
+  if (Status st = checkPose("pose_b", pose_b); !st) return st.error();
   bool found = false;
   const PairQuery q = dualTraversal({&a, &pose_a}, {&b, &pose_b}, true, &found);
   if (pair) *pair = q;

@@ -160,65 +160,6 @@ Sphere parentOf(const std::vector<Sphere>& kids, const TreeOptions& o, const Sol
 
 }  // namespace
 
-int64_t SphereTree::slotCount(int b, int d) {
-  int64_t total = 0, level = 1;
-  for (int l = 0; l <= d; ++l) {
-    total += level;
-    if (total > kMaxSlots) return -1;
-    if (l < d) level *= b;
-  }
-  return total;
-}
-
-int64_t SphereTree::levelSize(int l) const {
-  int64_t s = 1;
-  for (int i = 0; i < l; ++i) s *= branching;
-  return s;
-}
-
-int64_t SphereTree::levelBegin(int l) const {
-  int64_t begin = 0, s = 1;
-  for (int i = 0; i < l; ++i) {
-    begin += s;
-    s *= branching;
-  }
-  return begin;
-}
-
-std::vector<Sphere> SphereTree::level(int l) const {
-  std::vector<Sphere> out;
-  const int64_t b = levelBegin(l), e = b + levelSize(l);
-  for (int64_t i = b; i < e && i < static_cast<int64_t>(nodes.size()); ++i)
-    if (used(i)) out.push_back(nodes[i]);
-  return out;
-}
-
-Status checkSphereTree(const SphereTree& t, double tolerance) {
-  if (t.branching < 1 || t.depth < 0)
-    return Error{ErrorCode::kInvalidData, "sphere tree: bad branching or depth"};
-  const int64_t slots = SphereTree::slotCount(t.branching, t.depth);
-  if (slots < 0 || static_cast<int64_t>(t.nodes.size()) != slots)
-    return Error{ErrorCode::kInvalidData, "sphere tree: " + std::to_string(t.nodes.size()) +
-                                              " nodes, the layout needs " + std::to_string(slots)};
-  for (int l = 0; l < t.depth; ++l) {
-    const int64_t b = t.levelBegin(l), e = b + t.levelSize(l);
-    for (int64_t n = b; n < e; ++n)
-      for (int i = 0; i < t.branching; ++i) {
-        const int64_t c = t.child(n, i);
-        if (!t.used(c)) continue;
-        if (!t.used(n))
-          return Error{ErrorCode::kInvalidData, "sphere tree: node " + std::to_string(c) +
-                                                    " is used but its parent " + std::to_string(n) +
-                                                    " is not"};
-        if (reach(t.nodes[n].center, t.nodes[c]) - t.nodes[n].radius > tolerance)
-          return Error{ErrorCode::kInvalidData, "sphere tree: node " + std::to_string(c) +
-                                                    " sticks out of its parent " +
-                                                    std::to_string(n)};
-      }
-  }
-  return {};
-}
-
 Expected<TreeResult> buildSphereTree(std::span<const Sphere> leaves, const TreeOptions& o,
                                      const SolidIndex* index) {
   const auto t0 = std::chrono::steady_clock::now();

@@ -26,4 +26,18 @@ Status checkArray(const std::string& what, double count, double bytes_each, Erro
   return Error{code, what + buf};
 }
 
+Status checkCoordinates(const std::string& what, std::span<const double> values) {
+  bool ok = true;
+  for (double v : values) ok = ok && std::fabs(v) <= kMaxCoordinate;  // false for NaN
+  if (ok) return {};
+  std::string got;
+  for (double v : values) {
+    if (!got.empty()) got += ' ';
+    got += detail::numberText(v);
+  }
+  return Error{ErrorCode::kInvalidArgument,
+               what + " (" + got + "): coordinates must be finite and at most " +
+                   detail::numberText(kMaxCoordinate) + " in magnitude"};
+}
+
 }  // namespace sphereset::limits

@@ -88,6 +88,16 @@ cli_test(query_point 0 ARGS query ${work}/bound.txt --point 0,-0.037,-0.068 --po
 cli_test(query_bad_point 2 ARGS query ${work}/bound.txt --point 0,0 STDERR "--point takes x,y,z")
 cli_test(query_pair_json 0 ARGS query ${work}/bound.txt --other ${work}/bound.txt
          --pose 1,0,0,1,0,0,0 --json STDOUT "\"overlap\":false")
+# A Bradshaw tree whose root has two children, only the first with children: the second is a leaf.
+file(WRITE ${work}/unbalanced.sph "3 2\n0 0 0 10 0\n-3 0 0 4 0\n5 0 0 2 0\n-4 0 0 1 0\n-2 0 0 1 0\n0 0 0 -1 0\n0 0 0 -1 0\n")
+cli_test(query_unbalanced_tree 0 ARGS query ${work}/unbalanced.sph --point 5,0,0
+         STDOUT "inside, signed distance -2")
+cli_test(export_unbalanced_tree 0 ARGS export ${work}/unbalanced.sph -o ${work}/unbalanced.ply
+         --subdivisions 0 FILE ${work}/unbalanced.ply TRIANGLES 60)
+cli_test(query_nan_point 2 ARGS query ${work}/bound.txt --point nan,0,0
+         STDERR "point .nan 0 0.: coordinates must be finite" STDOUT "^$")
+cli_test(query_huge_segment 2 ARGS query ${work}/bound.txt --segment 0,0,0,1e154,1e154,1e154
+         STDERR "segment end .* at most 1e.30")
 cli_test(query_missing 3 ARGS query ${work}/missing.txt --point 0,0,0 STDERR "missing.txt")
 cli_test(render_png 0 ARGS render ${link} ${work}/bound.txt -o ${work}/link.png --size 160x120 --up z
          FILE ${work}/link.png)
