@@ -74,6 +74,9 @@ std::string frameName(size_t i, const std::string& ext) {
 int runAnimate(const AnimateArgs& a) {
   if (a.frames.empty() == a.animation.empty())
     return fail(Error{ErrorCode::kInvalidArgument, "give either --frames or --animation"});
+  std::vector<std::string> inputs = a.frames;
+  inputs.insert(inputs.end(), {a.rest, a.spheres, a.animation});
+  if (Status st = checkOutputFolder(a.out, inputs); !st) return fail(st.error());
   LoadOptions lo;
   lo.weld_tolerance = a.weld;
   auto rest = loadMesh(a.rest, lo);

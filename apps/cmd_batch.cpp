@@ -109,14 +109,17 @@ int runBatch(const BatchArgs& c) {
   auto items = listBatchItems(a.mesh.path, options);
   if (!items) return fail(items.error());
   const std::string& out = a.out_path;
+  if (Status st = checkOutputFolder(out, {a.mesh.path}); !st) return fail(st.error());
   if (c.dry_run) {
     for (const BatchItem& it : *items)
       std::printf("%s -> %s n=%d %s\n", it.mesh.c_str(), it.output.c_str(), it.fit.num_spheres,
                   batchItemDone(it, out, options) ? "up to date" : "to fit");
     return kOk;
   }
-  if (Status st = startBatchReport(out); !st) return fail(st.error());
+  auto report = BatchReport::start(out);  // locks the folder for this run
+  if (!report) return fail(report.error());
   if (items->empty()) {
+    if (Status st = report->finish(); !st) return fail(st.error());
     if (!a.quiet) std::fprintf(stderr, "batch: %s: no meshes\n", a.mesh.path.c_str());
     return kOk;
   }
@@ -142,7 +145,7 @@ int runBatch(const BatchArgs& c) {
       std::lock_guard<std::mutex> lock(mutex);
       reports[i] = std::move(r);
       while (written < n && reports[written] && !write_error) {
-        if (Status st = appendBatchReport(out, *reports[written]); !st) write_error = st.error();
+        if (Status st = report->append(*reports[written]); !st) write_error = st.error();
         progress.add(*reports[written]);
         ++written;
       }
@@ -154,6 +157,7 @@ int runBatch(const BatchArgs& c) {
   work();
   for (std::thread& t : threads) t.join();
   if (write_error) return fail(*write_error);
+  if (Status st = report->finish(); !st) return fail(st.error());
 
   if (!a.quiet)
     std::fprintf(stderr, "batch: %zu items: %zu fitted, %zu skipped, %zu failed in %s -> %s\n", n,

@@ -17,6 +17,7 @@ struct ExportArgs {
 };
 
 int runExport(const ExportArgs& a) {
+  if (Status st = checkOutputPath(a.out, {a.in}); !st) return fail(st.error());
   auto t = readSphereTree(a.in);
   if (!t) return fail(t.error());
   Status st = writeSphereSetMesh(a.out, t->leaves(), a.subdivisions);

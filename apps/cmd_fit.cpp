@@ -94,6 +94,8 @@ int runFit(const FitCommandArgs& c) {
   const FitArgs& a = c.fit;
   auto format = sphereFormatFromPath(a.out_path);
   if (!format) return fail(format.error());
+  // Before any work: the output is not the input, and its folder accepts it.
+  if (Status st = checkOutputPath(a.out_path, {a.mesh.path}); !st) return fail(st.error());
   auto options = fitOptions(a);  // bad options are refused before any loading
   if (!options) return fail(options.error());
   auto m = loadSolid(a.mesh);

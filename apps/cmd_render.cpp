@@ -191,6 +191,8 @@ int runRender(const RenderArgs& a) {
   RenderOptions ro = a.ro;
   Status opts = renderOptions(a, &ro);
   if (!opts) return fail(opts.error());
+  if (Status st = checkOutputPath(a.out, {a.mesh.path, a.spheres, a.animation}); !st)
+    return fail(st.error());
   if (!a.frames.empty() || !a.animation.empty()) return renderFrames(a, ro);
   if (!a.spheres_dir.empty())
     return fail(Error{ErrorCode::kInvalidArgument, "--spheres-dir needs --frames or --animation"});

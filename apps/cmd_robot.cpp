@@ -96,8 +96,7 @@ nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const RobotFitR
     }
     links.push_back(l);
   }
-  nlohmann::json out = {
-      {"robot", robot.name}, {"urdf", a.urdf}, {"seed", seed}, {"links", links}};
+  nlohmann::json out = {{"robot", robot.name}, {"urdf", a.urdf}, {"seed", seed}, {"links", links}};
   if (r.budget_split)
     out["budget"] = {{"spheres", a.budget},
                      {"outside_volume", r.outside_volume},
@@ -137,6 +136,7 @@ int runRobot(const RobotArgs& a) {
   if (ext != ".json" && ext != ".urdf" && (!format || *format != SphereFormat::kYaml))
     return fail(Error{ErrorCode::kInvalidArgument,
                       a.out_path + ": robot output is .yml/.yaml (cuRobo), .urdf or .json"});
+  if (Status st = checkOutputPath(a.out_path, {a.urdf}); !st) return fail(st.error());
   RobotLoadOptions lo;
   lo.package_paths = a.package_paths;
   auto robot = loadRobot(a.urdf, lo);

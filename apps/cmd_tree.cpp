@@ -68,6 +68,7 @@ int runTree(TreeArgs a) {
   if (*format != SphereFormat::kSph && *format != SphereFormat::kJson)
     return fail(Error{ErrorCode::kInvalidArgument,
                       a.fit.out_path + ": a sphere tree is written as .sph or .json"});
+  if (Status st = checkOutputPath(a.fit.out_path, {a.fit.mesh.path}); !st) return fail(st.error());
   auto request = fitRequest(a.fit);
   if (!request) return fail(request.error());
   if (a.leaves == 0) {

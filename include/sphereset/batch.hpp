@@ -164,12 +164,38 @@ BatchItemReport processBatchItem(const BatchItem& item, const std::string& out_d
 // OUT/report.jsonl.
 std::string batchReportPath(const std::string& out_dir);
 
-// Starts the report of a run: creates `out_dir` (and its parents) and an empty report.jsonl
-// (replacing the last run's). Errors: kWriteFailed naming the path.
-Status startBatchReport(const std::string& out_dir);
+// One run's report and its hold on the output folder.
+// - start() creates `out_dir` (and its parents), locks it for this run (OUT/.sphereset-batch/
+//   lock: an advisory lock that the system releases when the process ends, however it ends,
+//   holding the run's pid and start time) and starts OUT/report.jsonl.partial. A second run on
+//   the same folder, in any process, fails here with kWriteFailed naming the run that holds it,
+//   before it fits anything.
+// - append() adds reportLine(report) and a newline to the partial report in one write (call it
+//   in item order), so the partial report holds whole lines only.
+// - finish() renames the partial report over OUT/report.jsonl and releases the lock: report.jsonl
+//   is always the whole report of the last run that finished; a run that is killed leaves the
+//   previous report as it was, and its own lines in report.jsonl.partial.
+// Errors: kWriteFailed naming the path. Move-only; destruction releases the lock.
+class BatchReport {
+ public:
+  static Expected<BatchReport> start(const std::string& out_dir);
+  Status append(const BatchItemReport& report);
+  Status finish();
 
-// Appends reportLine(report) and a newline to report.jsonl in one write, so a batch that is
-// killed leaves whole lines only. Call in item order. Errors: kWriteFailed naming the path.
-Status appendBatchReport(const std::string& out_dir, const BatchItemReport& report);
+  BatchReport(BatchReport&& other) noexcept;
+  BatchReport& operator=(BatchReport&& other) noexcept;
+  BatchReport(const BatchReport&) = delete;
+  BatchReport& operator=(const BatchReport&) = delete;
+  ~BatchReport();
+
+ private:
+  BatchReport() = default;
+  void release();
+  std::string out_dir_;
+  int lock_fd_ = -1;
+};
+
+// OUT/report.jsonl.partial: the report of the run in progress (BatchReport).
+std::string batchPartialReportPath(const std::string& out_dir);
 
 }  // namespace sphereset

@@ -122,7 +122,8 @@ SelfCollisionPairs selfCollisionPairs(const Robot& robot, const std::vector<Link
 // NaN, an infinite value or a negative radius (kInvalidData).
 Expected<std::string> formatSphereUrdf(const std::string& in_urdf,
                                        const std::vector<LinkSpheres>& spheres);
-// The same, written atomically to `out_path`.
+// The same, written atomically to `out_path`; kInvalidArgument when `out_path` is `in_urdf`
+// (checkOutputPath).
 Status writeSphereUrdf(const std::string& in_urdf, const std::string& out_path,
                        const std::vector<LinkSpheres>& spheres);
 

@@ -73,6 +73,16 @@ std::string formatLinkSpheres(const std::vector<LinkSpheres>& links,
 // Writes any text atomically, as the sphere files are written (e.g. a command's JSON report).
 Status writeTextFile(const std::string& path, const std::string& text);
 
+// Before a long computation, whether `output` can be written when it ends: kInvalidArgument when
+// it is one of `inputs` (the same file once links and relative paths are resolved: a run that
+// overwrote its input would lose it, and a second run would fit spheres to spheres) or names a
+// folder; kWriteFailed when its folder does not exist or does not accept new files (tried by
+// creating and removing a temporary file there). Nothing is left behind.
+Status checkOutputPath(const std::string& output, const std::vector<std::string>& inputs);
+// The same for an output folder that a command fills (created when missing, with its parents):
+// not an input, not a file, and writable where it exists or would be created.
+Status checkOutputFolder(const std::string& folder, const std::vector<std::string>& inputs);
+
 // A robot's spheres for cuRobo: the collision_spheres mapping of writeLinkSpheres, followed,
 // when `pairs` is given, by the self_collision_ignore mapping (each link -> the list of links to
 // ignore with it; every pair of pairs->adjacent and pairs->overlapping once, under the link that

@@ -6,8 +6,9 @@
 INPUT is a folder (every mesh file below it) or a manifest (.csv / .jsonl), as for
 ``sphereset batch``. Each mesh is one dask.distributed task that runs the library's batch core
 (batch.hpp: processBatchItem) in a worker, so the sphere files, their records and
-OUT_DIR/report.jsonl (one line per item, in item order, appended as the items finish in order)
-are those the command line writes; items already up to date are skipped (resume; --force fits
+OUT_DIR/report.jsonl (one line per item, in item order, replaced when the run ends; the lines
+of the run in progress are in report.jsonl.partial) are those the command line writes, and the
+folder is locked for the run as the command line locks it; items already up to date are skipped (resume; --force fits
 them again). Exit codes are those of `sphereset batch` (8: some items failed, 7: some failed
 the coverage check).
 
@@ -90,8 +91,9 @@ def run_batch(input_path: str, out_dir: str, options: Dict[str, Any], client: An
     from distributed import as_completed
 
     out_dir = os.path.abspath(out_dir)
+    _core._check_output_folder(out_dir, [os.fspath(input_path)])
     items = list_items(input_path, options)
-    _core._batch_start_report(out_dir)
+    report = _core._BatchReport(out_dir)  # locks the folder for this run
     t0 = time.monotonic()
     # One task per mesh. A task is an effect (files written): its key is new for every run, so
     # that the scheduler never hands back the result of an earlier run's task.
@@ -110,11 +112,12 @@ def run_batch(input_path: str, out_dir: str, options: Dict[str, Any], client: An
         failed += json.loads(lines[i])["status"] == "error"
         # Whole lines, in item order: everything finished up to the first item still running.
         while next_line < len(items) and lines[next_line] is not None:
-            _core._batch_append_report(out_dir, lines[next_line])
+            report.append(lines[next_line])
             next_line += 1
         _progress(done, len(items), t0, failed, quiet)
     if not quiet and items and sys.stderr.isatty():
         sys.stderr.write("\n")
+    report.finish()
     return [line for line in lines if line is not None]
 
 

@@ -102,20 +102,25 @@ void bindBatch(py::module_& m) {
       },
       py::arg("item"), py::arg("out_dir"), py::arg("options"));
   m.def(
-      "_batch_start_report",
-      [](const Path& out_dir_arg) {
-        const std::string out_dir = out_dir_arg.string();
-        check(startBatchReport(out_dir));
+      "_check_output_folder",
+      [](const Path& folder, const std::vector<std::string>& inputs) {
+        check(checkOutputFolder(folder.string(), inputs));
       },
-      py::arg("out_dir"));
-  m.def(
-      "_batch_append_report",
-      [](const Path& out_dir_arg, const std::string& line) {
-        const std::string out_dir = out_dir_arg.string();
-        check(appendBatchReport(out_dir, unwrap(parseReportLine(line))));
-      },
-      py::arg("out_dir"), py::arg("line"),
-      "Appends a report line (as _batch_process returns it) to OUT/report.jsonl.");
+      py::arg("folder"), py::arg("inputs"));
+  py::class_<BatchReport>(m, "_BatchReport",
+                          "One run's report and its lock on the output folder (batch.hpp).")
+      .def(py::init(
+               [](const Path& out_dir) { return unwrap(BatchReport::start(out_dir.string())); }),
+           py::arg("out_dir"))
+      .def(
+          "append",
+          [](BatchReport& r, const std::string& line) {
+            check(r.append(unwrap(parseReportLine(line))));
+          },
+          py::arg("line"), "Appends a report line (as _batch_process returns it).")
+      .def(
+          "finish", [](BatchReport& r) { check(r.finish()); },
+          "Replaces OUT/report.jsonl with this run's report and releases the folder.");
   m.def("_batch_report_path", &batchReportPath, py::arg("out_dir"));
 }
 

@@ -2,6 +2,7 @@
 worker processes writes the same sphere files and the same report (timings aside)."""
 
 import json
+import os
 import shutil
 
 import pytest
@@ -89,6 +90,23 @@ def test_command_line_local_workers(tmp_path):
     assert code == 0
     assert ss.read_spheres(out / "link1.txt").shape == (2, 4)
     assert json.loads((out / "report.jsonl").read_text())["status"] == "ok"
+
+
+def test_one_run_per_output_folder(tmp_path, capsys):
+    # Two runs on one folder used to interleave report.jsonl and fit every item twice; the second
+    # now stops at once with the library's message (exit 6), naming the run that holds it.
+    src = tmp_path / "one"
+    src.mkdir()
+    shutil.copy(DATA / "open_box.off", src / "a.off")
+    out = tmp_path / "out"
+    held = ss._core._BatchReport(str(out))
+    code = batch.main([str(src), "-o", str(out), "--local-workers", "1", "-n", "2", "-q"])
+    assert code == 6
+    assert f"another batch run (pid {os.getpid()}" in capsys.readouterr().err
+    assert not (out / "a.json").exists()
+    held.finish()
+    assert batch.main([str(src), "-o", str(src), "--local-workers", "1", "-q"]) == 2
+    assert "is the input" in capsys.readouterr().err
 
 
 def test_fit_options_are_checked_by_the_library_table(tmp_path):

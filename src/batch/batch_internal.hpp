@@ -14,6 +14,9 @@ Status checkBatchOptions(const BatchOptions& options);
 
 namespace detail {
 
+// Folder of the batch's own state inside the output folder: the item records and the run's lock.
+inline constexpr const char* kBatchStateFolder = ".sphereset-batch";
+
 // FNV-1a, 64 bits (Fowler, Noll, Vo): a digest to notice changed inputs and outputs, not a
 // cryptographic hash.
 inline constexpr uint64_t kFnvOffset = 14695981039346656037ull;

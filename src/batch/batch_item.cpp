@@ -32,7 +32,7 @@ namespace {
 constexpr int kFingerprintVersion = 1;
 
 // Folder of the item records inside the output folder.
-constexpr const char* kRecordDir = ".sphereset-batch";
+constexpr const char* kRecordDir = detail::kBatchStateFolder;
 
 std::string outputPath(const std::string& out_dir, const BatchItem& item) {
   return (fs::path(out_dir) / item.output).string();

@@ -1,17 +1,21 @@
 // The batch's report (batch.hpp): one JSON line per item, read back for resuming, and the
-// report file, appended one whole line per write so a killed batch leaves whole lines only.
+// report file of a run: the folder locked for the run, the lines appended whole to a partial
+// report that replaces the last run's report only when the run finishes.
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <system_error>
+#include <utility>
 
 #include "batch/batch_internal.hpp"
 #include "sphereset/batch.hpp"
@@ -126,24 +130,20 @@ std::string batchReportPath(const std::string& out_dir) {
   return (std::filesystem::path(out_dir) / "report.jsonl").string();
 }
 
-Status startBatchReport(const std::string& out_dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  if (ec)
-    return Error{ErrorCode::kWriteFailed,
-                 out_dir + ": cannot create the folder (" + ec.message() + ")"};
-  return writeTextFile(batchReportPath(out_dir), "");
+std::string batchPartialReportPath(const std::string& out_dir) {
+  return batchReportPath(out_dir) + ".partial";
 }
 
-Status appendBatchReport(const std::string& out_dir, const BatchItemReport& report) {
-  const std::string path = batchReportPath(out_dir);
-  const std::string line = reportLine(report) + "\n";
+namespace {
+
+// Appends `text` in one write (retried until whole).
+Status appendToFile(const std::string& path, const std::string& text) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
   if (fd < 0)
     return Error{ErrorCode::kWriteFailed, path + ": cannot open (" + std::strerror(errno) + ")"};
   size_t done = 0;
-  while (done < line.size()) {
-    const ssize_t w = ::write(fd, line.data() + done, line.size() - done);
+  while (done < text.size()) {
+    const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
     if (w <= 0) {
       const std::string why = std::strerror(errno);
       ::close(fd);
@@ -155,5 +155,82 @@ Status appendBatchReport(const std::string& out_dir, const BatchItemReport& repo
     return Error{ErrorCode::kWriteFailed, path + ": cannot write (" + std::strerror(errno) + ")"};
   return {};
 }
+
+std::string utcNow() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S UTC", &tm);
+  return buf;
+}
+
+}  // namespace
+
+Expected<BatchReport> BatchReport::start(const std::string& out_dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path state = fs::path(out_dir) / detail::kBatchStateFolder;
+  fs::create_directories(state, ec);
+  if (ec)
+    return Error{ErrorCode::kWriteFailed,
+                 out_dir + ": cannot create the folder (" + ec.message() + ")"};
+  const std::string lock_path = (state / "lock").string();
+  BatchReport r;
+  r.out_dir_ = out_dir;
+  r.lock_fd_ = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (r.lock_fd_ < 0)
+    return Error{ErrorCode::kWriteFailed,
+                 lock_path + ": cannot open (" + std::strerror(errno) + ")"};
+  if (::flock(r.lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    const bool busy = errno == EWOULDBLOCK;
+    const std::string why = std::strerror(errno);
+    if (!busy) return Error{ErrorCode::kWriteFailed, lock_path + ": cannot lock (" + why + ")"};
+    char holder[128] = {};
+    const ssize_t got = ::pread(r.lock_fd_, holder, sizeof holder - 1, 0);
+    std::string who = got > 0 ? std::string(holder, static_cast<size_t>(got)) : "";
+    while (!who.empty() && (who.back() == '\n' || who.back() == '\r')) who.pop_back();
+    return Error{ErrorCode::kWriteFailed,
+                 out_dir + ": another batch run" + (who.empty() ? "" : " (" + who + ")") +
+                     " is writing to this folder; wait for it to end or choose another folder"};
+  }
+  const std::string me = "pid " + std::to_string(::getpid()) + ", started " + utcNow() + "\n";
+  if (::ftruncate(r.lock_fd_, 0) != 0 || ::pwrite(r.lock_fd_, me.data(), me.size(), 0) < 0)
+    return Error{ErrorCode::kWriteFailed,
+                 lock_path + ": cannot write (" + std::strerror(errno) + ")"};
+  if (Status st = writeTextFile(batchPartialReportPath(out_dir), ""); !st) return st.error();
+  return r;
+}
+
+Status BatchReport::append(const BatchItemReport& report) {
+  return appendToFile(batchPartialReportPath(out_dir_), reportLine(report) + "\n");
+}
+
+Status BatchReport::finish() {
+  const std::string from = batchPartialReportPath(out_dir_), to = batchReportPath(out_dir_);
+  if (std::rename(from.c_str(), to.c_str()) != 0)
+    return Error{ErrorCode::kWriteFailed, to + ": cannot write (" + std::strerror(errno) + ")"};
+  release();
+  return {};
+}
+
+void BatchReport::release() {
+  if (lock_fd_ >= 0) ::close(lock_fd_);  // closing the descriptor releases the flock
+  lock_fd_ = -1;
+}
+
+BatchReport::BatchReport(BatchReport&& other) noexcept
+    : out_dir_(std::move(other.out_dir_)), lock_fd_(std::exchange(other.lock_fd_, -1)) {}
+
+BatchReport& BatchReport::operator=(BatchReport&& other) noexcept {
+  if (this != &other) {
+    release();
+    out_dir_ = std::move(other.out_dir_);
+    lock_fd_ = std::exchange(other.lock_fd_, -1);
+  }
+  return *this;
+}
+
+BatchReport::~BatchReport() { release(); }
 
 }  // namespace sphereset

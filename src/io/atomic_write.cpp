@@ -52,4 +52,75 @@ Status writeFileAtomically(const std::string& path, const std::string& contents)
   return {};
 }
 
+namespace {
+
+namespace fs = std::filesystem;
+
+// The input that `output` would overwrite, if any: the same file (hard or symbolic links
+// included) when it exists, else the same normalised absolute path.
+const std::string* sameFile(const fs::path& output, const std::vector<std::string>& inputs) {
+  std::error_code ec;
+  const fs::path out_abs = fs::weakly_canonical(fs::absolute(output, ec), ec);
+  for (const std::string& in : inputs) {
+    if (in.empty()) continue;
+    std::error_code e1;
+    if (fs::equivalent(output, in, e1)) return &in;
+    std::error_code e2;
+    const fs::path in_abs = fs::weakly_canonical(fs::absolute(in, e2), e2);
+    if (!ec && !e2 && out_abs == in_abs) return &in;
+  }
+  return nullptr;
+}
+
+// Whether a new file can be made in `dir` (which exists): one is made and removed.
+Status folderAcceptsFiles(const fs::path& dir, const std::string& what) {
+  std::string tmpl = (dir / ".sphereset-check.XXXXXX").string();
+  std::vector<char> buf(tmpl.begin(), tmpl.end());
+  buf.push_back('\0');
+  const int fd = mkstemp(buf.data());
+  if (fd < 0)
+    return Error{ErrorCode::kWriteFailed, what + ": cannot create a file in '" + dir.string() +
+                                              "' (" + std::strerror(errno) + ")"};
+  ::close(fd);
+  std::remove(buf.data());
+  return {};
+}
+
+}  // namespace
+
+Status checkOutputPath(const std::string& output, const std::vector<std::string>& inputs) {
+  if (output.empty()) return Error{ErrorCode::kInvalidArgument, "the output path is empty"};
+  const fs::path out(output);
+  if (const std::string* in = sameFile(out, inputs))
+    return Error{ErrorCode::kInvalidArgument,
+                 output + ": is the input " + *in + "; write the output to another file"};
+  std::error_code ec;
+  if (fs::is_directory(out, ec))
+    return Error{ErrorCode::kInvalidArgument, output + ": is a folder; name a file"};
+  fs::path dir = out.parent_path();
+  if (dir.empty()) dir = ".";
+  if (!fs::is_directory(dir, ec))
+    return Error{ErrorCode::kWriteFailed,
+                 output + ": the folder '" + dir.string() + "' does not exist"};
+  return folderAcceptsFiles(dir, output);
+}
+
+Status checkOutputFolder(const std::string& folder, const std::vector<std::string>& inputs) {
+  if (folder.empty()) return Error{ErrorCode::kInvalidArgument, "the output folder is empty"};
+  const fs::path out(folder);
+  if (const std::string* in = sameFile(out, inputs))
+    return Error{ErrorCode::kInvalidArgument,
+                 folder + ": is the input " + *in + "; write the output to another folder"};
+  std::error_code ec;
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec))
+    return Error{ErrorCode::kInvalidArgument, folder + ": is a file, not a folder"};
+  // The deepest part of the path that exists must be a folder that accepts files.
+  fs::path existing = fs::absolute(out, ec);
+  while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (!fs::is_directory(existing, ec))
+    return Error{ErrorCode::kWriteFailed, folder + ": '" + existing.string() + "' is not a folder"};
+  return folderAcceptsFiles(existing, folder);
+}
+
 }  // namespace sphereset

@@ -13,6 +13,7 @@
 
 #include "io/atomic_write.hpp"
 #include "sphereset/robot.hpp"
+#include "sphereset/sphere_io.hpp"
 #include "util/read_file.hpp"
 
 namespace sphereset {
@@ -123,6 +124,8 @@ Expected<std::string> formatSphereUrdf(const std::string& in_urdf,
 
 Status writeSphereUrdf(const std::string& in_urdf, const std::string& out_path,
                        const std::vector<LinkSpheres>& spheres) {
+  // The robot's own description is never replaced by its spheres.
+  if (Status st = checkOutputPath(out_path, {in_urdf}); !st) return st;
   auto text = formatSphereUrdf(in_urdf, spheres);
   if (!text) return text.error();
   return writeFileAtomically(out_path, *text);

@@ -1,17 +1,28 @@
 // A whole file read into memory.
 #include "util/read_file.hpp"
 
+#include <exception>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
 namespace sphereset::detail {
 
 Expected<std::string> readFileText(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    return Error{ErrorCode::kUnreadable, path + ": is a folder, not a file"};
   std::ifstream in(path, std::ios::binary);
   if (!in) return Error{ErrorCode::kUnreadable, path + ": cannot be opened for reading"};
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return Error{ErrorCode::kUnreadable, path + ": read error"};
-  return text;
+  // Streams report errors of the underlying read (a folder, a device) by throwing from the
+  // iterator in some cases; both ways end as kUnreadable.
+  try {
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) return Error{ErrorCode::kUnreadable, path + ": read error"};
+    return text;
+  } catch (const std::exception& e) {
+    return Error{ErrorCode::kUnreadable, path + ": read error (" + e.what() + ")"};
+  }
 }
 
 }  // namespace sphereset::detail

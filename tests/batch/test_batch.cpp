@@ -1,6 +1,7 @@
 // Batch (batch.hpp): listing folders and manifests, bad manifest lines, one item fitted as
 // fitSpheres fits it, failed items, report lines, and resuming.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -199,7 +200,8 @@ TEST_F(BatchTest, BadManifestLinesNameTheFileAndLine) {
       {"quote.csv", "mesh,n\n\"a.obj,3\n", ":2: unterminated quoted field"},
       {"empty.csv", "mesh,n\n,3\n", ":2: the mesh path is empty"},
       {"quality.csv", "mesh,quality\na.obj,great\n", ":2: quality 'great': expected fast"},
-      {"padding.csv", "mesh,padding\na.obj,-1\n", ":2: padding '-1': expected a finite number >= 0"},
+      {"padding.csv", "mesh,padding\na.obj,-1\n",
+       ":2: padding '-1': expected a finite number >= 0"},
       {"out.csv", "mesh,output\na.obj,../x.json\n", ":2: output '../x.json': expected a relative"},
       {"outext.csv", "mesh,output\na.obj,x.obj\n", ":2: output 'x.obj': the extension"},
       {"same.csv", "mesh,n\na.obj,3\na.obj,4\n", ":3: writes a.obj.json as"},
@@ -338,22 +340,52 @@ TEST(BatchReport, LineRoundTrips) {
 
 TEST_F(BatchTest, ReportFileHoldsOneLinePerItemInOrder) {
   const std::string out = path("deep/out");
-  ASSERT_TRUE(startBatchReport(out).ok());
-  EXPECT_EQ(readAll(batchReportPath(out)), "");
   BatchItemReport r;
-  for (const char* name : {"first", "second"}) {
-    r.mesh = name;
-    ASSERT_TRUE(appendBatchReport(out, r).ok());
+  std::string first_run;
+  {
+    auto report = BatchReport::start(out);
+    ASSERT_TRUE(report.ok()) << report.error().message;
+    EXPECT_EQ(readAll(batchPartialReportPath(out)), "");
+    for (const char* name : {"first", "second"}) {
+      r.mesh = name;
+      ASSERT_TRUE(report->append(r).ok());
+    }
+    ASSERT_TRUE(report->finish().ok());
+    first_run = readAll(batchReportPath(out));
   }
-  const std::string text = readAll(batchReportPath(out));
-  EXPECT_EQ(text, reportLine([&] {
-                    BatchItemReport a = r;
-                    a.mesh = "first";
-                    return a;
-                  }()) +
-                      "\n" + reportLine(r) + "\n");
-  ASSERT_TRUE(startBatchReport(out).ok());  // a new run starts a new report
-  EXPECT_EQ(readAll(batchReportPath(out)), "");
+  EXPECT_EQ(first_run, reportLine([&] {
+                         BatchItemReport a = r;
+                         a.mesh = "first";
+                         return a;
+                       }()) +
+                           "\n" + reportLine(r) + "\n");
+  EXPECT_FALSE(std::filesystem::exists(batchPartialReportPath(out)));
+  // A run that stops before finishing (killed, or an error) leaves the last whole report.
+  {
+    auto report = BatchReport::start(out);
+    ASSERT_TRUE(report.ok());
+    ASSERT_TRUE(report->append(r).ok());
+  }
+  EXPECT_EQ(readAll(batchReportPath(out)), first_run);
+  EXPECT_EQ(readAll(batchPartialReportPath(out)), reportLine(r) + "\n");
+}
+
+// Two runs on one folder used to interleave report.jsonl and fit every item twice.
+TEST_F(BatchTest, OneRunAtATimePerOutputFolder) {
+  const std::string out = path("locked");
+  auto first = BatchReport::start(out);
+  ASSERT_TRUE(first.ok());
+  auto second = BatchReport::start(out);
+  ASSERT_FALSE(second.ok());
+  EXPECT_EQ(second.error().code, ErrorCode::kWriteFailed);
+  EXPECT_NE(second.error().message.find("another batch run (pid " + std::to_string(::getpid())),
+            std::string::npos)
+      << second.error().message;
+  ASSERT_TRUE(first->finish().ok());  // finishing releases the folder
+  auto third = BatchReport::start(out);
+  ASSERT_TRUE(third.ok());
+  BatchReport moved = std::move(third).value();
+  EXPECT_FALSE(BatchReport::start(out).ok());  // the moved-to report holds the lock
 }
 
 TEST_F(BatchTest, UpToDateItemsAreSkippedAndChangedOnesRunAgain) {

@@ -212,6 +212,30 @@ cli_test(robot_urdf 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot
 cli_test(robot_bad_joint 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --joint-positions joint9=1 -o ${work}/never34.yml -q
          STDERR "--joint-positions joint9=1: expected JOINT=VALUE" FORBID ${work}/never34.yml)
+file(MAKE_DIRECTORY ${work}/folder.txt)
+# An output that is an input is refused before any work (robot X.urdf -o X.urdf used to replace
+# the robot with its spheres); so is an output whose folder cannot take it.
+file(COPY_FILE ${robot}/three_link.urdf ${work}/self.urdf)
+file(CREATE_LINK ${work}/self.urdf ${work}/self_link.urdf SYMBOLIC)
+cli_test(robot_output_is_input 2 ARGS robot ${work}/self.urdf --package-path ${robot}
+         -o ${work}/self.urdf -q STDERR "self.urdf: is the input")
+cli_test(robot_output_is_input_through_link 2 ARGS robot ${work}/self.urdf --package-path
+         ${robot} -o ${work}/self_link.urdf -q STDERR "self_link.urdf: is the input")
+add_test(NAME cli.robot_input_unchanged
+         COMMAND ${CMAKE_COMMAND} -E compare_files ${robot}/three_link.urdf ${work}/self.urdf)
+set_tests_properties(cli.robot_input_unchanged PROPERTIES
+                     DEPENDS "cli.robot_output_is_input;cli.robot_output_is_input_through_link")
+cli_test(fit_output_is_input 2 ARGS fit ${work}/bound.txt -n 2 -o ${work}/bound.txt -q
+         STDERR "bound.txt: is the input")
+cli_test(fit_output_folder_missing 6 ARGS fit ${link} -n 2 -o ${work}/no/such/folder/x.json -q
+         STDERR "x.json: the folder .* does not exist")
+cli_test(fit_output_is_a_folder 2 ARGS fit ${link} -n 2 -o ${work}/folder.txt -q
+         STDERR "folder.txt: is a folder")
+cli_test(export_output_is_input 2 ARGS export ${work}/unbalanced.sph -o ${work}/unbalanced.sph
+         STDERR "is the input")
+cli_test(eval_spheres_folder 3 ARGS eval ${link} ${work}/folder.txt
+         STDERR "folder.txt: is a folder, not a file")
+cli_test(batch_output_is_input 2 ARGS batch ${work} -o ${work} -q STDERR "is the input")
 cli_test(robot_eval_link 0 ARGS eval ${robot}/three_link_description/meshes/link.stl
          ${work}/three.yml --link link1 --samples 1000 --segments 10 --shadow-resolution 0
          STDOUT "with [0-9]+ spheres")
