@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <string>
 
@@ -76,6 +77,27 @@ inline Mesh joined(const Mesh& a, const Mesh& b) {
 inline Mesh transformed(const Mesh& m, const Eigen::Matrix3d& R, const Vec3& t, double s) {
   Mesh out = m;
   for (Vec3& v : out.vertices) v = s * (R * v) + t;
+  return out;
+}
+
+// A glTF tetrahedron whose geometry is in an external buffer: the .gltf text naming `bin`, and
+// the buffer's bytes (4 float positions scaled by `scale`, then 12 uint16 indices, outward).
+inline std::string tetrahedronGltf(const std::string& bin) {
+  return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],
+"buffers":[{"uri":")" +
+         bin + R"(","byteLength":72}],
+"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},
+{"buffer":0,"byteOffset":48,"byteLength":24}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3",
+"min":[0,0,0],"max":[1,1,1]},
+{"bufferView":1,"componentType":5123,"count":12,"type":"SCALAR"}]})";
+}
+inline std::string tetrahedronBin(float scale) {
+  const float p[12] = {0, 0, 0, scale, 0, 0, 0, scale, 0, 0, 0, scale};
+  const uint16_t i[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+  std::string out(reinterpret_cast<const char*>(p), sizeof p);
+  out.append(reinterpret_cast<const char*>(i), sizeof i);
   return out;
 }
 

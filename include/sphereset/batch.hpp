@@ -147,8 +147,9 @@ BatchItemReport runBatchItem(const BatchItem& item, const std::string& out_dir,
                              const BatchOptions& options);
 
 // Whether the item is up to date in `out_dir`: its sphere file exists, its record exists with
-// status ok, the record's fingerprint equals batchFingerprint(item, options), and the sphere
-// file still has the digest recorded.
+// status ok, the record's fingerprint equals batchFingerprint(item, options), the sphere file
+// still has the digest recorded, and so has every file the mesh referenced when it was fitted
+// (LoadReport::files: a glTF's .bin buffers, an OBJ's .mtl).
 bool batchItemDone(const BatchItem& item, const std::string& out_dir, const BatchOptions& options);
 
 // The report of an up-to-date item (status kSkipped, figures and seconds from its record), or

@@ -61,6 +61,9 @@ struct LoadReport {
   int64_t degenerate_dropped = 0;  // triangles with repeated vertices or zero area, dropped
   int64_t duplicate_dropped = 0;   // triangles repeating another's vertex set, dropped
   bool flipped = false;            // orientation was reversed to make the volume positive
+  // Every file read, the mesh first, then the companions its format references as the reader
+  // opened them (a glTF's .bin buffers, an OBJ's .mtl): what the mesh depends on.
+  std::vector<std::string> files;
 };
 
 struct LoadedMesh {
@@ -69,9 +72,12 @@ struct LoadedMesh {
 };
 
 // Reads OBJ, PLY (ASCII/binary, strips), STL (ASCII/binary), OFF, DAE (scene-graph transforms
-// applied), glTF/GLB and any other format assimp knows. Welds, triangulates, drops degenerate
-// triangles and reports what was done. Errors: kUnreadable (missing, unknown format, parse
-// failure), kInvalidData (no triangles, NaN/Inf coordinates, out-of-range indices).
+// applied), glTF/GLB and any other format assimp knows. Besides the file itself, only the
+// companions a format references are opened: .bin buffers, .mtl libraries and files of the same
+// stem; any other file a mesh names (e.g. "mtllib /etc/passwd") is treated as missing. Welds,
+// triangulates, drops degenerate triangles and reports what was done. Errors: kUnreadable (missing,
+// unknown format, parse failure), kInvalidData (no triangles, NaN/Inf coordinates, out-of-range
+// indices).
 Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& options = {});
 
 // Builds a mesh from raw arrays with the same clean-up as loadMesh (used for in-memory data).

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/companion_io.hpp"
 #include "mesh/weld.hpp"
 #include "sphereset/animate.hpp"
 #include "sphereset/limits.hpp"
@@ -169,6 +170,7 @@ Expected<LoadedAnimation> loadAnimation(const std::string& path,
     return Error{ErrorCode::kInvalidArgument,
                  "fps must be a positive number, or 0 for the clip's keyframe times"};
   Assimp::Importer importer;
+  importer.SetIOHandler(new detail::CompanionIOSystem(path));  // owned by the importer
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
   if (!scene || !scene->mRootNode) {
     std::string why = importer.GetErrorString();
@@ -297,11 +299,11 @@ Expected<LoadedAnimation> loadAnimation(const std::string& path,
       if (ticks.empty() || k - ticks.back() > kSameKeyTicks) ticks.push_back(k);
     if (ticks.empty()) ticks.push_back(0.0);
   }
-  if (Status st = limits::checkArray(path + ": " + std::to_string(ticks.size()) + " frames of " +
-                                         std::to_string(nv) + " vertices",
-                                     static_cast<double>(ticks.size()),
-                                     static_cast<double>(nv * sizeof(Vec3) +
-                                                         raw.bones.size() * sizeof(Eigen::Affine3d)));
+  if (Status st = limits::checkArray(
+          path + ": " + std::to_string(ticks.size()) + " frames of " + std::to_string(nv) +
+              " vertices",
+          static_cast<double>(ticks.size()),
+          static_cast<double>(nv * sizeof(Vec3) + raw.bones.size() * sizeof(Eigen::Affine3d)));
       !st)
     return st.error();
   out.asset.skin.bind_pose = out.asset.rest;

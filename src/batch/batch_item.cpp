@@ -14,6 +14,8 @@
 #include <optional>
 #include <string>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 #include "batch/batch_internal.hpp"
 #include "sphereset/batch.hpp"
@@ -80,9 +82,17 @@ std::optional<std::string> fileDigest(const std::string& path) {
   return detail::hex64(detail::fnv1a(*bytes));
 }
 
-// The record of an item: its report line with the digest of its sphere file.
+// What a fit wrote and read besides the mesh: the digest of its sphere file, and the files the
+// mesh references (a glTF's .bin, an OBJ's .mtl) with their digests. Resuming compares both:
+// the fingerprint covers the mesh file's own bytes only.
+struct ItemFiles {
+  std::string output_digest;
+  std::vector<std::pair<std::string, std::string>> companions;  // (path as read, digest)
+};
+
+// The record of an item: its report line with the digests of ItemFiles.
 Status writeRecord(const std::string& out_dir, const BatchItem& item, const BatchItemReport& report,
-                   const std::string& digest) {
+                   const ItemFiles& files) {
   const std::string path = recordPath(out_dir, item);
   std::error_code ec;
   fs::create_directories(fs::path(path).parent_path(), ec);
@@ -90,13 +100,16 @@ Status writeRecord(const std::string& out_dir, const BatchItem& item, const Batc
     return Error{ErrorCode::kWriteFailed,
                  path + ": cannot create the folder (" + ec.message() + ")"};
   nlohmann::ordered_json j = nlohmann::ordered_json::parse(reportLine(report));
-  j["output_digest"] = digest;
+  j["output_digest"] = files.output_digest;
+  nlohmann::ordered_json companions = nlohmann::ordered_json::object();
+  for (const auto& [path, digest] : files.companions) companions[path] = digest;
+  j["companions"] = companions;
   return writeTextFile(path, j.dump() + "\n");
 }
 
 // The fitting itself; fills `rep` (status ok) or returns the error.
 Status fitItem(const BatchItem& item, const std::string& out_dir, const BatchOptions& options,
-               BatchItemReport* rep, std::string* digest) {
+               BatchItemReport* rep, ItemFiles* files) {
   if (Status st = checkBatchOptions(options); !st) return st;
   auto format = sphereFormatFromPath(item.output);
   if (!format) return format.error();
@@ -108,6 +121,14 @@ Status fitItem(const BatchItem& item, const std::string& out_dir, const BatchOpt
   auto solid = loadSolid(item.mesh, options.repair);
   if (!solid) return solid.error();
   rep->repair = repairName(solid->repair.kind);
+  const std::vector<std::string>& read = solid->loaded.report.files;
+  for (size_t i = 1; i < read.size(); ++i) {
+    auto d = fileDigest(read[i]);
+    if (!d)
+      return Error{ErrorCode::kUnreadable,
+                   read[i] + ": cannot be read (referenced by " + item.mesh + ")"};
+    files->companions.emplace_back(read[i], *d);
+  }
   FitOptions fo = fitOptionsFor(item.fit);
   fo.original = solid->original();
   const SolidIndex index(solid->repair.solid);
@@ -126,7 +147,7 @@ Status fitItem(const BatchItem& item, const std::string& out_dir, const BatchOpt
   if (Status st = writeSpheres(out, fit->spheres, meta); !st) return st;
   auto d = fileDigest(out);
   if (!d) return Error{ErrorCode::kWriteFailed, out + ": cannot read back the file written"};
-  *digest = *d;
+  files->output_digest = *d;
 
   const EvalResult ev =
       evaluateSpheres(index, fit->spheres, fitCheckEvalOptions(fo.seed, solid->original()));
@@ -157,6 +178,11 @@ std::optional<BatchItemReport> upToDate(const BatchItem& item, const std::string
   if (!bytes || fingerprintOf(*bytes, item, options) != rec->fingerprint) return std::nullopt;
   if (fileDigest(outputPath(out_dir, item)) != j["output_digest"].get<std::string>())
     return std::nullopt;
+  // The files the mesh referenced when it was fitted must be unchanged too. A record without
+  // the list (an older run) is not up to date.
+  if (!j.contains("companions") || !j["companions"].is_object()) return std::nullopt;
+  for (const auto& [path, digest] : j["companions"].items())
+    if (!digest.is_string() || fileDigest(path) != digest.get<std::string>()) return std::nullopt;
   BatchItemReport r = std::move(rec).value();
   r.mesh = item.mesh;
   r.num_spheres = item.fit.num_spheres;
@@ -180,14 +206,14 @@ BatchItemReport runBatchItem(const BatchItem& item, const std::string& out_dir,
   rep.output = item.output;
   rep.num_spheres = item.fit.num_spheres;
   rep.er_sum = rep.er_union = std::numeric_limits<double>::quiet_NaN();
-  std::string digest;
+  ItemFiles files;
   Status st;
   const auto body = [&] {
     // The record goes first: a sphere file rewritten by an unfinished run is never taken as up
     // to date.
     std::error_code ec;
     fs::remove(recordPath(out_dir, item), ec);
-    st = fitItem(item, out_dir, options, &rep, &digest);
+    st = fitItem(item, out_dir, options, &rep, &files);
   };
   try {
     if (options.threads > 0) {
@@ -202,7 +228,7 @@ BatchItemReport runBatchItem(const BatchItem& item, const std::string& out_dir,
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (st.ok()) {
     try {
-      st = writeRecord(out_dir, item, rep, digest);
+      st = writeRecord(out_dir, item, rep, files);
     } catch (const std::exception& e) {
       st = Error{ErrorCode::kWriteFailed, item.output + ": record not written: " + e.what()};
     }

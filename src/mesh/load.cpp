@@ -13,6 +13,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "mesh/companion_io.hpp"
 #include "mesh/off_ply.hpp"
 #include "mesh/weld.hpp"
 #include "sphereset/mesh.hpp"
@@ -119,7 +120,8 @@ Expected<LoadedMesh> cleanMesh(std::vector<Vec3> vertices, std::vector<Triangle>
                                                   " references vertex " + std::to_string(k) +
                                                   " of " + std::to_string(vertices.size())};
   if (triangles.empty())
-    return Error{ErrorCode::kInvalidData, name + ": the file contains no triangles (points or lines only, or nothing)"};
+    return Error{ErrorCode::kInvalidData,
+                 name + ": the file contains no triangles (points or lines only, or nothing)"};
 
   std::vector<Vec3> welded;
   const std::vector<int32_t> remap = weldVertices(vertices, options.weld_tolerance, &welded);
@@ -199,9 +201,12 @@ Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& option
     out.report.scene_meshes = 1;
     out.report.file_vertices = nv;
     out.report.file_faces = nf;
+    out.report.files = {path};
     return out;
   }
   Assimp::Importer importer;
+  auto* io = new detail::CompanionIOSystem(path);  // owned by the importer
+  importer.SetIOHandler(io);
   // No normals, no vertex joining (we weld positions ourselves, since assimp joins only
   // vertices whose every attribute matches). Points and lines are kept in the scene and
   // skipped when collecting (collectNode), so that a file of only points or lines is reported
@@ -221,7 +226,8 @@ Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& option
   if (bad_index)
     return Error{ErrorCode::kInvalidData, path + ": a face references a vertex out of range"};
   if (tris.empty())
-    return Error{ErrorCode::kInvalidData, path + ": the file contains no triangles (points or lines only, or nothing)"};
+    return Error{ErrorCode::kInvalidData,
+                 path + ": the file contains no triangles (points or lines only, or nothing)"};
   auto cleaned = cleanMesh(std::move(verts), std::move(tris), options, path);
   if (!cleaned) return cleaned.error();
   LoadedMesh out = std::move(cleaned).value();
@@ -229,6 +235,7 @@ Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& option
   out.report.scene_meshes = meshes;
   out.report.file_vertices = file_vertices;
   out.report.file_faces = file_faces;
+  out.report.files = io->files();
   return out;
 }
 

@@ -388,6 +388,28 @@ TEST_F(BatchTest, OneRunAtATimePerOutputFolder) {
   EXPECT_FALSE(BatchReport::start(out).ok());  // the moved-to report holds the lock
 }
 
+// Resuming used to keep the spheres of a glTF whose .bin had changed ("skipped", covered,
+// while eval said not covered): the files a mesh references are part of what is up to date.
+TEST_F(BatchTest, ChangedReferencedFilesMakeTheItemRunAgain) {
+  put("in/tet.gltf", test::tetrahedronGltf("tet.bin"));
+  put("in/tet.bin", test::tetrahedronBin(1.0f));
+  const BatchOptions o = quickOptions();
+  auto items = listBatchItems(path("in"), o);
+  ASSERT_TRUE(items.ok()) << items.error().message;
+  ASSERT_EQ(items->size(), 1u);  // the buffer is not an item of its own
+  const BatchItem item = items->front();
+  const std::string out = path("out");
+  const BatchItemReport first = processBatchItem(item, out, o);
+  ASSERT_EQ(first.status, BatchStatus::kOk) << first.error;
+  EXPECT_TRUE(batchItemDone(item, out, o));
+  put("in/tet.bin", test::tetrahedronBin(2.0f));
+  EXPECT_FALSE(batchItemDone(item, out, o));
+  const BatchItemReport again = processBatchItem(item, out, o);
+  EXPECT_EQ(again.status, BatchStatus::kOk);
+  EXPECT_TRUE(again.covered);
+  EXPECT_TRUE(batchItemDone(item, out, o));
+}
+
 TEST_F(BatchTest, UpToDateItemsAreSkippedAndChangedOnesRunAgain) {
   box("in/box.off");
   const BatchOptions o = quickOptions();

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "sphereset/mesh.hpp"
+#include "test_meshes.hpp"
 #include "test_support.hpp"
 
 namespace sphereset {
@@ -83,6 +84,29 @@ TEST_F(MeshHostile, PlyListCountsMustBeCountsTheDataCanHold) {
             "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n"
             "property float y\nproperty float z\nend_header\n");
   expectError(loadMesh(huge), ErrorCode::kUnreadable, huge, "truncated data in element 'vertex'");
+}
+
+// A mesh file may name other files. Only the companions its format needs are read (a glTF's
+// .bin, an OBJ's .mtl), and they are listed in the report; any other file is missing to the
+// loader (an OBJ naming /etc/passwd as its material library used to echo a line of it, and
+// a tiny file named so made the mesh unreadable).
+TEST_F(MeshHostile, OnlyCompanionFilesAreReadAndTheyAreListed) {
+  const std::string gltf = write("tet.gltf", test::tetrahedronGltf("tet.bin"));
+  write("tet.bin", test::tetrahedronBin(1.0f));
+  auto m = loadMesh(gltf);
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  EXPECT_EQ(m->mesh.triangles.size(), 4u);
+  ASSERT_EQ(m->report.files.size(), 2u);
+  EXPECT_EQ(m->report.files[0], gltf);
+  EXPECT_EQ(std::filesystem::path(m->report.files[1]).filename(), "tet.bin");
+
+  const std::string tiny = write("tiny.txt", "x\n");
+  const std::string obj = write("evil.obj", "mtllib " + tiny +
+                                                "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                                "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  auto o = loadMesh(obj);
+  ASSERT_TRUE(o.ok()) << o.error().message;
+  EXPECT_EQ(o->report.files, std::vector<std::string>{obj});
 }
 
 }  // namespace
