@@ -43,11 +43,18 @@ class CaptureErrors : public console_bridge::OutputHandler {
  public:
   void log(const std::string& text, console_bridge::LogLevel level, const char* /*filename*/,
            int /*line*/) override {
-    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR && first_error.empty()) {
-      first_error = text;
+    if (level < console_bridge::CONSOLE_BRIDGE_LOG_ERROR) return;
+    if (first_error.empty()) first_error = text;
+    // urdfdom follows an element's error with "Could not parse <what> element for Link [name]":
+    // the link is named once.
+    const size_t at = text.find("Link [");
+    if (link.empty() && at != std::string::npos) {
+      const size_t end = text.find(']', at);
+      if (end != std::string::npos) link = text.substr(at + 6, end - at - 6);
     }
   }
   std::string first_error;
+  std::string link;  // the link named by urdfdom's messages, if any
 };
 
 // One line: newlines of a parser message become spaces.
@@ -268,7 +275,8 @@ std::vector<std::string> namesInFileOrder(const std::string& xml, const char* ta
 
 // urdfdom's parse with its console output captured; serialised because console_bridge's
 // output handler is global.
-urdf::ModelInterfaceSharedPtr parseQuietly(const std::string& xml, std::string& message) {
+urdf::ModelInterfaceSharedPtr parseQuietly(const std::string& xml, std::string& message,
+                                           std::string& link) {
   static std::mutex mutex;
   std::lock_guard lock(mutex);
   CaptureErrors capture;
@@ -281,6 +289,7 @@ urdf::ModelInterfaceSharedPtr parseQuietly(const std::string& xml, std::string& 
   }
   console_bridge::restorePreviousOutputHandler();
   message = oneLine(capture.first_error);
+  link = capture.link;
   return model;
 }
 
@@ -343,12 +352,19 @@ Expected<Robot> loadRobot(const std::string& urdf_path, const RobotLoadOptions& 
                                               std::to_string(limits::kMaxXmlDepth) +
                                               " deep (the limit)"};
 
-  std::string message;
-  const urdf::ModelInterfaceSharedPtr model = parseQuietly(xml, message);
+  std::string message, bad_link;
+  const urdf::ModelInterfaceSharedPtr model = parseQuietly(xml, message, bad_link);
   if (!model) {
     return Error{ErrorCode::kInvalidData,
                  urdf_path + ": not a valid URDF" + (message.empty() ? "" : ": " + message)};
   }
+  // urdfdom drops an element it cannot parse (a <collision> with "0,2" for a number, a
+  // misspelled attribute) with an error on the console and goes on: the link would then be
+  // fitted to its visual geometry, or vanish. Any error it reports is ours.
+  if (!message.empty())
+    return Error{
+        ErrorCode::kInvalidData,
+        urdf_path + ": " + (bad_link.empty() ? "" : "link '" + bad_link + "': ") + message};
 
   const fs::path urdf_dir = fs::absolute(fs::path(urdf_path)).parent_path();
   Robot robot;

@@ -236,6 +236,9 @@ cli_test(export_output_is_input 2 ARGS export ${work}/unbalanced.sph -o ${work}/
 cli_test(eval_spheres_folder 3 ARGS eval ${link} ${work}/folder.txt
          STDERR "folder.txt: is a folder, not a file")
 cli_test(batch_output_is_input 2 ARGS batch ${work} -o ${work} -q STDERR "is the input")
+file(WRITE ${work}/comma.urdf "<robot name=\"r\"><link name=\"a\"><visual><geometry><box size=\"1 1 1\"/></geometry></visual><collision><origin xyz=\"0 0 0,2\"/><geometry><cylinder radius=\"0.025\" length=\"0.05\"/></geometry></collision></link></robot>\n")
+cli_test(robot_malformed_collision 4 ARGS robot ${work}/comma.urdf -o ${work}/never35.yml -q
+         STDERR "comma.urdf: link 'a': Unable to parse component .0,2." FORBID ${work}/never35.yml)
 cli_test(robot_eval_link 0 ARGS eval ${robot}/three_link_description/meshes/link.stl
          ${work}/three.yml --link link1 --samples 1000 --segments 10 --shadow-resolution 0
          STDOUT "with [0-9]+ spheres")

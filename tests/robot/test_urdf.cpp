@@ -217,6 +217,33 @@ TEST_F(Urdf, BadFilesAreOneLineErrors) {
   test::expectError(loadRobot(bad_joint), ErrorCode::kInvalidData, bad_joint, "not a valid URDF");
 }
 
+// urdfdom drops a <collision> it cannot parse, with a console message, and goes on: the link
+// was fitted to its 1 m visual box instead of its 5 cm cylinder, or vanished with no visual.
+// Each such message is now the load's error, naming the link.
+TEST_F(Urdf, ElementsUrdfdomCannotParseAreErrorsNotDropped) {
+  const std::string head =
+      "<robot name=\"r\"><link name=\"a\"><visual><geometry><box size=\"1 1 1\"/></geometry>"
+      "</visual><collision>";
+  const std::string tail = "</collision></link></robot>";
+  const std::string comma =
+      write("comma.urdf", head +
+                              "<origin xyz=\"0 0 0,2\"/><geometry><cylinder radius=\"0.025\" "
+                              "length=\"0.05\"/></geometry>" +
+                              tail);
+  test::expectError(loadRobot(comma), ErrorCode::kInvalidData, comma,
+                    "link 'a': Unable to parse component [0,2]");
+  const std::string typo =
+      write("typo.urdf",
+            head + "<geometry><cylinder radius=\"0.025\" lenght=\"0.05\"/></geometry>" + tail);
+  test::expectError(loadRobot(typo), ErrorCode::kInvalidData, typo,
+                    "link 'a': Cylinder shape must have both length and radius");
+  const std::string nan_origin =
+      write("nan_origin.urdf",
+            "<robot name=\"r\"><link name=\"b\"><collision><origin xyz=\"nan 0 0\"/><geometry>"
+            "<box size=\"1 1 1\"/></geometry></collision></link></robot>");
+  test::expectError(loadRobot(nan_origin), ErrorCode::kInvalidData, nan_origin, "link 'b'");
+}
+
 }  // namespace
 // 50 000 nested elements used to overflow the stack inside TinyXML (a segfault); the depth is
 // checked before parsing.
