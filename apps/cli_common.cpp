@@ -96,23 +96,25 @@ Expected<std::map<std::string, double>> parseJointPositions(const std::string& t
     const std::string item = text.substr(start, end - start);
     const size_t eq = item.find('=');
     const std::string name = item.substr(0, eq);
-    bool known = false;
-    for (const RobotJoint& jt : robot.joints) known = known || jt.name == name;
     double v = 0.0;
     size_t used = 0;
     bool number = false;
     if (eq != std::string::npos) try {
         v = std::stod(item.substr(eq + 1), &used);
-        number = used == item.size() - eq - 1 && std::isfinite(v);
+        number = used == item.size() - eq - 1;
       } catch (const std::exception&) {
       }
-    if (!known || !number)
-      return Error{
-          ErrorCode::kInvalidArgument,
-          "--joint-positions " + item + ": expected JOINT=VALUE with a joint of " + robot.name};
+    if (!number)
+      return Error{ErrorCode::kInvalidArgument,
+                   "--joint-positions " + item + ": expected JOINT=VALUE (a number)"};
     out[name] = v;
     start = end + 1;
   }
+  // The library checks the names and values, and says what it clamps.
+  auto state = jointState(robot, out);
+  if (!state) return Error{state.error().code, "--joint-positions: " + state.error().message};
+  for (const std::string& note : state->notes)
+    std::fprintf(stderr, "sphereset: warning: %s\n", note.c_str());
   return out;
 }
 

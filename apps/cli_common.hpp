@@ -5,11 +5,11 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <initializer_list>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <ostream>
-#include <initializer_list>
 #include <span>
 #include <string>
 #include <string_view>
@@ -82,7 +82,9 @@ using SolidInput = sphereset::SolidInput;
 Expected<SolidInput> loadSolid(const MeshArgs& a);
 
 // --joint-positions JOINT=VALUE,... (radians or metres) for joints of the robot; empty text
-// gives no values (every joint at 0). kInvalidArgument names the bad item.
+// gives no values (every joint at 0). kInvalidArgument names the bad item; the library's
+// jointState checks the names and values, and its notes (values clamped to the limits) are
+// printed as warnings.
 Expected<std::map<std::string, double>> parseJointPositions(const std::string& text,
                                                             const Robot& robot);
 
@@ -95,7 +97,7 @@ std::string repairLine(const RepairResult& r);
 // The options of a library option table (options.hpp) as the user typed them: one flag per row,
 // the text handed to the library's setter unchanged.
 struct TableArgs {
-  std::map<std::string, std::string> text;     // row name -> the text given
+  std::map<std::string, std::string> text;      // row name -> the text given
   std::map<std::string, CLI::Option*> options;  // row name -> its flag
   // The rows given on the command line, in the table's order.
   std::vector<std::pair<std::string, std::string>> given() const;

@@ -73,7 +73,9 @@ int renderRobot(const RenderArgs& a, RenderOptions ro) {
   if (!robot) return fail(robot.error());
   auto joints = parseJointPositions(a.joint_positions, *robot);
   if (!joints) return fail(joints.error());
-  const auto poses = linkPoses(*robot, *joints);
+  auto posed = linkPoses(*robot, *joints);
+  if (!posed) return fail(posed.error());
+  const std::map<std::string, Eigen::Isometry3d>& poses = *posed;
   Mesh all;
   for (const RobotLink& link : robot->links) {
     const auto pose = poses.find(link.name);

@@ -172,10 +172,11 @@ int runRobot(const RobotArgs& a) {
   } else {
     // cuRobo's self_collision_ignore: adjacent links and links whose spheres overlap at the
     // pose given (zero by default).
-    const SelfCollisionPairs pairs = selfCollisionPairs(*robot, out, *joints);
+    auto pairs = selfCollisionPairs(*robot, out, *joints);
+    if (!pairs) return fail(pairs.error());
     SphereFileMeta meta;
     meta.source_mesh = a.urdf;
-    st = writeRobotSpheres(a.out_path, out, &pairs, meta);
+    st = writeRobotSpheres(a.out_path, out, &*pairs, meta);
   }
   if (!st) return fail(st.error());
   const double seconds =

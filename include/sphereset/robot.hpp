@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,14 @@ struct RobotJoint {
   Vec3 axis = Vec3::UnitX();  // unit axis in the joint frame (revolute, continuous, prismatic)
   double lower = 0.0;         // limits (rad or m) of revolute and prismatic joints
   double upper = 0.0;
+  // <mimic joint="J" multiplier="m" offset="o">: this joint's value is m · value(J) + o (then
+  // clamped to its own limits), whatever is given for it (a gripper's second finger).
+  struct Mimic {
+    std::string joint;
+    double multiplier = 1.0;
+    double offset = 0.0;
+  };
+  std::optional<Mimic> mimic;
 };
 
 struct Robot {
@@ -85,10 +94,24 @@ std::vector<Sphere> linkSpheres(const RobotLink& link);
 Expected<SolidInput> linkSolid(const RobotLink& link, const RepairOptions& options,
                                const std::string& name);
 
+// A configuration of the robot from the values a user gave (joint -> radians or metres):
+// every joint's value, with joints not given at 0, revolute and prismatic values clamped to
+// their limits, and mimic joints following their leaders. Errors (kInvalidArgument): a name
+// that is not a joint of the robot, a value that is not a finite number, a value for a mimic
+// joint that differs from what its leader gives; kInvalidData: a mimic of a joint that does not
+// exist, or mimics in a cycle. `notes` says what was changed ("joint 'joint1': 100 is beyond
+// its upper limit 2.97, clamped"), one line each, for the doors to show as warnings.
+struct JointState {
+  std::map<std::string, double> values;  // every joint of the robot
+  std::vector<std::string> notes;
+};
+Expected<JointState> jointState(const Robot& robot,
+                                const std::map<std::string, double>& joint_values = {});
+
 // Forward kinematics: each link reachable from the root -> the pose of its frame in the root
-// frame. Joints missing from `joint_values` are at 0; revolute and prismatic values are clamped
-// to their limits; joints of other types (floating, planar) stay at their origin.
-std::map<std::string, Eigen::Isometry3d> linkPoses(
+// frame, at jointState(robot, joint_values) (its errors too); joints of other types (floating,
+// planar) stay at their origin.
+Expected<std::map<std::string, Eigen::Isometry3d>> linkPoses(
     const Robot& robot, const std::map<std::string, double>& joint_values = {});
 
 // Pairs of links to leave out of self-collision checking, as cuRobo lists them: links joined
@@ -106,8 +129,10 @@ struct SelfCollisionPairs {
 // entries of `spheres` naming no link of the robot or a link the root does not reach, take no
 // part in overlaps; entries naming the same link twice count as one set. Adjacent pairs come
 // from every joint between two links of the robot, whatever their spheres.
-SelfCollisionPairs selfCollisionPairs(const Robot& robot, const std::vector<LinkSpheres>& spheres,
-                                      const std::map<std::string, double>& joint_values = {});
+// Errors: those of jointState.
+Expected<SelfCollisionPairs> selfCollisionPairs(
+    const Robot& robot, const std::vector<LinkSpheres>& spheres,
+    const std::map<std::string, double>& joint_values = {});
 
 // The URDF file `in_urdf` with the collisions of the links listed in `spheres` replaced by their
 // spheres: each listed link loses all its <collision> elements and gets, where the first of them

@@ -47,16 +47,15 @@ const RobotLink& findLink(const Robot& r, const std::string& name) {
   raise(ErrorCode::kInvalidArgument, r.name + ": no link '" + name + "'");
 }
 
+// {joint: value} as given; the library checks names and values (jointState), and what it
+// clamps becomes a Python warning.
 std::map<std::string, double> jointValues(const Robot& r, const py::object& o) {
   std::map<std::string, double> out;
   if (o.is_none()) return out;
-  for (auto [k, v] : o.cast<py::dict>()) {
-    const std::string name = k.cast<std::string>();
-    bool known = false;
-    for (const RobotJoint& j : r.joints) known = known || j.name == name;
-    if (!known) raise(ErrorCode::kInvalidArgument, r.name + ": no joint '" + name + "'");
-    out[name] = v.cast<double>();
-  }
+  for (auto [k, v] : o.cast<py::dict>()) out[k.cast<std::string>()] = v.cast<double>();
+  const JointState state = unwrap(jointState(r, out));
+  for (const std::string& note : state.notes)
+    if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0) throw py::error_already_set();
   return out;
 }
 
@@ -122,12 +121,16 @@ geometry when a link has none), joints, forward kinematics.)doc")
               d["axis"] = py::make_tuple(j.axis.x(), j.axis.y(), j.axis.z());
               d["lower"] = j.lower;
               d["upper"] = j.upper;
+              if (j.mimic)
+                d["mimic"] = py::make_tuple(j.mimic->joint, j.mimic->multiplier, j.mimic->offset);
+              else
+                d["mimic"] = py::none();
               out.append(d);
             }
             return out;
           },
           "Joints in file order, as dicts (name, parent, child, type, origin, axis, lower, "
-          "upper).")
+          "upper, mimic: (leader, multiplier, offset) or None).")
       .def(
           "link_mesh",
           [](const Robot& r, const std::string& link, int cylinder_segments) {
@@ -157,7 +160,7 @@ geometry when a link has none), joints, forward kinematics.)doc")
       .def(
           "link_poses",
           [](const Robot& r, const py::object& joints) {
-            const auto poses = linkPoses(r, jointValues(r, joints));
+            const auto poses = unwrap(linkPoses(r, jointValues(r, joints)));
             py::dict out;
             for (const RobotLink& l : r.links) {
               auto it = poses.find(l.name);
@@ -167,12 +170,13 @@ geometry when a link has none), joints, forward kinematics.)doc")
           },
           py::arg("joint_values") = py::none(),
           "Forward kinematics: {link: 4x4 pose in the root frame} for the links the root "
-          "reaches; joints not given are at 0, values are clamped to the limits.")
+          "reaches; joints not given are at 0, values beyond the limits are clamped (with a "
+          "UserWarning), mimic joints follow their leaders.")
       .def(
           "self_collision_pairs",
           [](const Robot& r, const py::object& spheres, const py::object& joints) {
             const SelfCollisionPairs p =
-                selfCollisionPairs(r, linkSpheresFrom(spheres), jointValues(r, joints));
+                unwrap(selfCollisionPairs(r, linkSpheresFrom(spheres), jointValues(r, joints)));
             py::dict d;
             d["adjacent"] = pairList(p.adjacent);
             d["overlapping"] = pairList(p.overlapping);
@@ -215,7 +219,8 @@ geometry when a link has none), joints, forward kinematics.)doc")
           check(writeRobotSpheres(path, l, nullptr, meta));
           return;
         }
-        const SelfCollisionPairs p = selfCollisionPairs(*robot, l, jointValues(*robot, joints));
+        const SelfCollisionPairs p =
+            unwrap(selfCollisionPairs(*robot, l, jointValues(*robot, joints)));
         check(writeRobotSpheres(path, l, &p, meta));
       },
       py::arg("path"), py::arg("links"), py::kw_only(), py::arg("robot") = nullptr,

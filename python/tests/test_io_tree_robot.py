@@ -133,6 +133,14 @@ def test_robot(tmp_path):
     assert np.allclose(poses[r.root], np.eye(4))
     moved = r.link_poses({r.joints[0]["name"]: 0.5})
     assert set(moved) == set(poses)
+    # NaN used to give NaN matrices; a clamp was silent.
+    with pytest.raises(ss.InvalidArgumentError, match="joint 'joint1': nan is not a finite"):
+        r.link_poses({"joint1": float("nan")})
+    with pytest.raises(ss.InvalidArgumentError, match="no joint 'elbow'"):
+        r.link_poses({"elbow": 0.1})
+    with pytest.warns(UserWarning, match="joint 'joint1': 100 is beyond its upper limit 1.5"):
+        r.link_poses({"joint1": 100.0})
+    assert r.joints[0]["mimic"] is None
     links = {}
     for name in r.links:
         geo = r.link_geometry(name)

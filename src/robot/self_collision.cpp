@@ -26,8 +26,12 @@ bool overlap(const std::vector<Sphere>& a, const std::vector<Sphere>& b) {
 
 }  // namespace
 
-SelfCollisionPairs selfCollisionPairs(const Robot& robot, const std::vector<LinkSpheres>& spheres,
-                                      const std::map<std::string, double>& joint_values) {
+Expected<SelfCollisionPairs> selfCollisionPairs(const Robot& robot,
+                                                const std::vector<LinkSpheres>& spheres,
+                                                const std::map<std::string, double>& joint_values) {
+  auto found = linkPoses(robot, joint_values);
+  if (!found) return found.error();
+  const std::map<std::string, Eigen::Isometry3d>& poses = *found;
   // Link name -> its index in the robot's link order (the first, if a name repeats).
   std::map<std::string, size_t> index;
   for (size_t i = 0; i < robot.links.size(); ++i) index.emplace(robot.links[i].name, i);
@@ -44,7 +48,6 @@ SelfCollisionPairs selfCollisionPairs(const Robot& robot, const std::vector<Link
     out.adjacent.push_back({robot.links[a].name, robot.links[b].name});
 
   // The spheres of each link in the root frame, by link index.
-  const std::map<std::string, Eigen::Isometry3d> poses = linkPoses(robot, joint_values);
   std::map<size_t, std::vector<Sphere>> placed;
   for (const LinkSpheres& ls : spheres) {
     const auto i = index.find(ls.link);

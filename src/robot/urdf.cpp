@@ -256,6 +256,8 @@ RobotJoint convertJoint(const urdf::Joint& j) {
     out.lower = j.limits->lower;
     out.upper = j.limits->upper;
   }
+  if (j.mimic)
+    out.mimic = RobotJoint::Mimic{j.mimic->joint_name, j.mimic->multiplier, j.mimic->offset};
   return out;
 }
 

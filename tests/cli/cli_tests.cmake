@@ -211,7 +211,11 @@ cli_test(robot_urdf 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot
          --quality fast -o ${work}/three_spheres.urdf -q FILE ${work}/three_spheres.urdf)
 cli_test(robot_bad_joint 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --joint-positions joint9=1 -o ${work}/never34.yml -q
-         STDERR "--joint-positions joint9=1: expected JOINT=VALUE" FORBID ${work}/never34.yml)
+         STDERR "--joint-positions: no joint 'joint9' in robot" FORBID ${work}/never34.yml)
+cli_test(robot_clamped_joint 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --budget 12 --quality fast --joint-positions joint1=100 -o ${work}/three_clamped.yml -q
+         STDERR "warning: joint 'joint1': 100 is beyond its upper limit 1.5, clamped"
+         FILE ${work}/three_clamped.yml)
 file(MAKE_DIRECTORY ${work}/folder.txt)
 # An output that is an input is refused before any work (robot X.urdf -o X.urdf used to replace
 # the robot with its spheres); so is an output whose folder cannot take it.

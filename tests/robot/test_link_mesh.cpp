@@ -140,7 +140,7 @@ TEST(LinkMesh, MissingMeshFileNamesTheLink) {
 
 TEST(LinkPoses, ChainAtZero) {
   const Robot r = threeLink();
-  const auto poses = linkPoses(r);
+  const auto poses = *linkPoses(r);
   ASSERT_EQ(poses.size(), 4u);
   EXPECT_TRUE(poses.at("base_link").isApprox(Eigen::Isometry3d::Identity()));
   EXPECT_LT((poses.at("link1").translation() - Vec3(0, 0, 0.1)).norm(), kTol);
@@ -164,7 +164,7 @@ Eigen::Matrix3d rotY(double a) {
 TEST(LinkPoses, ChainAtJointValues) {
   const Robot r = threeLink();
   const double q1 = 0.7, q2 = 0.4;
-  const auto poses = linkPoses(r, {{"joint1", q1}, {"joint2", q2}});
+  const auto poses = *linkPoses(r, {{"joint1", q1}, {"joint2", q2}});
   EXPECT_LT((poses.at("link1").linear() - rotZ(q1)).norm(), kTol);
   EXPECT_LT((poses.at("link2").linear() - rotZ(q1) * rotY(q2)).norm(), kTol);
   EXPECT_LT((poses.at("link2").translation() - Vec3(0, 0, 0.5)).norm(), kTol);
@@ -176,13 +176,23 @@ TEST(LinkPoses, ChainAtJointValues) {
 
 TEST(LinkPoses, RevoluteValuesAreClampedToTheLimits) {
   const Robot r = threeLink();
-  const auto clamped = linkPoses(r, {{"joint1", 5.0}, {"joint2", -9.0}});
-  const auto at_limits = linkPoses(r, {{"joint1", 1.5}, {"joint2", -2.0}});
+  const auto clamped = *linkPoses(r, {{"joint1", 5.0}, {"joint2", -9.0}});
+  const auto at_limits = *linkPoses(r, {{"joint1", 1.5}, {"joint2", -2.0}});
   for (const char* name : {"link1", "link2", "tool"}) {
     EXPECT_TRUE(clamped.at(name).isApprox(at_limits.at(name), kTol)) << name;
   }
-  // Unknown joint names are ignored.
-  EXPECT_TRUE(linkPoses(r, {{"nope", 1.0}}).at("tool").isApprox(linkPoses(r).at("tool")));
+  // The clamps are said, one note each (they used to be silent).
+  const auto state = jointState(r, {{"joint1", 5.0}, {"joint2", -9.0}});
+  ASSERT_TRUE(state.ok());
+  ASSERT_EQ(state->notes.size(), 2u);
+  EXPECT_EQ(state->notes[0], "joint 'joint1': 5 is beyond its upper limit 1.5, clamped");
+  EXPECT_EQ(state->values.at("joint2"), -2.0);
+  EXPECT_TRUE(jointState(r, {{"joint1", 1.0}})->notes.empty());
+  // Unknown joints and values that are not numbers are refused (NaN used to give NaN poses).
+  test::expectError(linkPoses(r, {{"nope", 1.0}}), ErrorCode::kInvalidArgument, "'nope'",
+                    "no joint");
+  test::expectError(linkPoses(r, {{"joint1", std::nan("")}}), ErrorCode::kInvalidArgument,
+                    "'joint1'", "not a finite number");
 }
 
 TEST(LinkPoses, PrismaticSlidesAlongItsAxisWithinItsLimits) {
@@ -198,13 +208,52 @@ TEST(LinkPoses, PrismaticSlidesAlongItsAxisWithinItsLimits) {
   slide.lower = -0.5;
   slide.upper = 0.25;
   r.joints = {slide};
-  EXPECT_LT((linkPoses(r, {{"slide", 0.2}}).at("carriage").translation() - Vec3(1, 0.2, 0)).norm(),
-            kTol);
-  EXPECT_LT((linkPoses(r, {{"slide", 3.0}}).at("carriage").translation() - Vec3(1, 0.25, 0)).norm(),
+  EXPECT_LT((linkPoses(r, {{"slide", 0.2}})->at("carriage").translation() - Vec3(1, 0.2, 0)).norm(),
             kTol);
   EXPECT_LT(
-      (linkPoses(r, {{"slide", -3.0}}).at("carriage").translation() - Vec3(1, -0.5, 0)).norm(),
+      (linkPoses(r, {{"slide", 3.0}})->at("carriage").translation() - Vec3(1, 0.25, 0)).norm(),
       kTol);
+  EXPECT_LT(
+      (linkPoses(r, {{"slide", -3.0}})->at("carriage").translation() - Vec3(1, -0.5, 0)).norm(),
+      kTol);
+}
+
+// A parallel gripper: the right finger mimics the left one (multiplier -1), as grippers are
+// written. Mimic joints used to stay at 0, so poses and self-collision pairs were wrong.
+TEST(LinkPoses, MimicJointsFollowTheirLeader) {
+  Robot r;
+  r.name = "gripper";
+  r.root = "palm";
+  RobotJoint left;
+  left.name = "left";
+  left.parent = "palm";
+  left.child = "left_finger";
+  left.type = RobotJoint::Type::kPrismatic;
+  left.axis = Vec3::UnitY();
+  left.lower = 0.0;
+  left.upper = 0.04;
+  RobotJoint right = left;
+  right.name = "right";
+  right.child = "right_finger";
+  right.lower = -0.04;
+  right.upper = 0.0;
+  right.mimic = RobotJoint::Mimic{"left", -1.0, 0.0};
+  r.joints = {left, right};
+  const auto poses = linkPoses(r, {{"left", 0.03}});
+  ASSERT_TRUE(poses.ok()) << poses.error().message;
+  EXPECT_LT((poses->at("left_finger").translation() - Vec3(0, 0.03, 0)).norm(), kTol);
+  EXPECT_LT((poses->at("right_finger").translation() - Vec3(0, -0.03, 0)).norm(), kTol);
+  // The follower's own value: accepted when it agrees, refused when it does not.
+  EXPECT_TRUE(linkPoses(r, {{"left", 0.03}, {"right", -0.03}}).ok());
+  test::expectError(linkPoses(r, {{"left", 0.03}, {"right", 0.01}}), ErrorCode::kInvalidArgument,
+                    "'right' mimics 'left'", "give 'left' instead");
+  // A mimic of nothing, and mimics in a cycle, are bad data.
+  Robot bad = r;
+  bad.joints[1].mimic->joint = "nothing";
+  test::expectError(jointState(bad), ErrorCode::kInvalidData, "'right'", "not a joint");
+  bad = r;
+  bad.joints[0].mimic = RobotJoint::Mimic{"right", -1.0, 0.0};
+  test::expectError(jointState(bad), ErrorCode::kInvalidData, "joint '", "cycle");
 }
 
 }  // namespace

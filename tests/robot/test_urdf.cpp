@@ -244,6 +244,26 @@ TEST_F(Urdf, ElementsUrdfdomCannotParseAreErrorsNotDropped) {
   test::expectError(loadRobot(nan_origin), ErrorCode::kInvalidData, nan_origin, "link 'b'");
 }
 
+TEST_F(Urdf, MimicJointsAreRead) {
+  const std::string urdf = write(
+      "mimic.urdf",
+      "<robot name=\"g\"><link name=\"palm\"/><link name=\"l\"/><link name=\"r\"/>"
+      "<joint name=\"left\" type=\"prismatic\"><parent link=\"palm\"/><child link=\"l\"/>"
+      "<axis xyz=\"0 1 0\"/><limit lower=\"0\" upper=\"0.04\" effort=\"1\" velocity=\"1\"/>"
+      "</joint><joint name=\"right\" type=\"prismatic\"><parent link=\"palm\"/><child "
+      "link=\"r\"/><axis xyz=\"0 1 0\"/><limit lower=\"-0.04\" upper=\"0\" effort=\"1\" "
+      "velocity=\"1\"/><mimic joint=\"left\" multiplier=\"-1\" offset=\"0\"/></joint></robot>");
+  auto r = loadRobot(urdf);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_EQ(r->joints.size(), 2u);
+  ASSERT_TRUE(r->joints[1].mimic.has_value());
+  EXPECT_EQ(r->joints[1].mimic->joint, "left");
+  EXPECT_EQ(r->joints[1].mimic->multiplier, -1.0);
+  auto poses = linkPoses(*r, {{"left", 0.02}});
+  ASSERT_TRUE(poses.ok());
+  EXPECT_NEAR(poses->at("r").translation().y(), -0.02, 1e-12);
+}
+
 }  // namespace
 // 50 000 nested elements used to overflow the stack inside TinyXML (a segfault); the depth is
 // checked before parsing.
