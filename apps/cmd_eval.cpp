@@ -22,9 +22,9 @@ namespace {
 
 struct EvalArgs {
   MeshArgs mesh;
-  std::string spheres_path, up = "y", link;
+  std::string spheres_path, link;
   std::vector<std::string> package_paths;  // MESH a URDF: where its package:// meshes are
-  EvalOptions eo;
+  TableArgs eval;                          // the rows of evalOptionTable()
   bool json = false;
 };
 
@@ -79,9 +79,10 @@ void printEval(const EvalResult& r, const EvalOptions& eo) {
 }
 
 int runEval(EvalArgs a) {
-  EvalOptions& eo = a.eo;
+  EvalOptions eo;
+  for (const auto& [name, text] : a.eval.given())
+    if (Status st = setEvalOption(&eo, name, text); !st) return fail(st.error());
   const std::string& spheres_path = a.spheres_path;
-  eo.up_axis = a.up[0] - 'x';
   // MESH may be a URDF: the --link's collision geometry is then measured, placed in the link
   // frame and repaired as the robot command does.
   std::string ext = std::filesystem::path(a.mesh.path).extension().string();
@@ -142,7 +143,10 @@ int runEval(EvalArgs a) {
   for (int l = 0; l < static_cast<int>(sets.size()); ++l) {
     const std::vector<Sphere>& spheres = sets[l];
     if (spheres.empty()) return fail(Error{ErrorCode::kInvalidData, spheres_path + ": no spheres"});
-    const EvalResult r = evaluateSpheres(index, spheres, eo);
+    auto evaluated = evaluateSpheres(index, spheres, eo);
+    if (!evaluated)
+      return fail(Error{evaluated.error().code, spheres_path + ": " + evaluated.error().message});
+    const EvalResult& r = *evaluated;
     if (a.json) {
       nlohmann::json j = evalJson(r, spheres.size(), eo.original != nullptr);
       if (is_tree) j["level"] = l;
@@ -172,7 +176,6 @@ int runEval(EvalArgs a) {
 
 Command registerEval(CLI::App& app) {
   auto a = std::make_shared<EvalArgs>();
-  EvalOptions& eo = a->eo;
   CLI::App* cmd = app.add_subcommand("eval", "Measure how tightly a sphere set bounds a mesh");
   addMeshArgs(cmd, &a->mesh);
   cmd->add_option("spheres", a->spheres_path, "Sphere set (.txt, .json, .sph, .yaml)")->required();
@@ -182,24 +185,7 @@ Command registerEval(CLI::App& app) {
   cmd->add_option("--package-path", a->package_paths,
                   "With a URDF as MESH: folder searched for package://NAME/ paths (repeatable)");
   cmd->add_flag("--json", a->json, "Print one JSON object");
-  cmd->add_option("--seed", eo.seed, "Seed for all sampling")->capture_default_str();
-  cmd->add_option("--samples", eo.union_samples, "Monte Carlo samples for the union's E_r")
-      ->capture_default_str()
-      ->check(CLI::Range(int64_t{0}, int64_t{1} << 34));
-  cmd->add_option("--segments", eo.proximity_segments, "Segments for the proximity error")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 10000000));
-  cmd->add_option("--up", a->up, "Up axis for the ground plane of the shadow comparison")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"x", "y", "z"}));
-  cmd->add_option("--shadow-resolution", eo.shadow_resolution,
-                  "Ground-plane pixels per side for the shadow errors (0 skips them)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 4096));
-  cmd->add_option("--shadow-lights", eo.shadow_lights,
-                  "Directional lights over the upper hemisphere for the shadow errors")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
+  addTableOptions(cmd, &a->eval, evalOptionTable());
   return {cmd, [a] { return runEval(*a); }};
 }
 

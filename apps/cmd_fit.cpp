@@ -111,8 +111,9 @@ int runFit(const FitCommandArgs& c) {
   meta.source_mesh = a.mesh.path;
   Status st = writeSpheres(a.out_path, r->spheres, meta);
   if (!st) return fail(st.error());
-  const EvalResult ev =
-      evaluateSpheres(index, r->spheres, fitCheckEvalOptions(fo.seed, m->original()));
+  auto checked = evaluateSpheres(index, r->spheres, fitCheckEvalOptions(fo.seed, m->original()));
+  if (!checked) return fail(checked.error());
+  const EvalResult& ev = *checked;
   if (c.json) std::cout << fitJson(a, fo, *r, ev, m->repair).dump() << '\n';
   if (!a.quiet) printFitSummary(a, *r, ev, *m);
   // The summary's evaluation is eval's coverage check (same certificate depths).

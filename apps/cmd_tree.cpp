@@ -102,7 +102,9 @@ int runTree(TreeArgs a) {
   eo.proximity_segments = 0;
   eo.shadow_resolution = 0;
   eo.original = m->original();
-  const EvalResult ev = evaluateSpheres(index, r->tree.tree.leaves(), eo);
+  auto checked = evaluateSpheres(index, r->tree.tree.leaves(), eo);
+  if (!checked) return fail(checked.error());
+  const EvalResult& ev = *checked;
   if (a.json) {
     nlohmann::json j = treeJson(a, fo, *r, vol, ev);
     j["repair"] = repairJson(m->repair);

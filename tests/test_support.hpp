@@ -59,7 +59,7 @@ inline EvalResult coverageOnly(const SolidIndex& idx, const std::vector<Sphere>&
   eo.union_samples = 0;
   eo.proximity_segments = 0;
   eo.shadow_resolution = 0;
-  return evaluateSpheres(idx, spheres, eo);
+  return *evaluateSpheres(idx, spheres, eo);
 }
 
 inline void expectCovers(const SolidIndex& idx, const std::vector<Sphere>& spheres) {

@@ -2,10 +2,14 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
+#include <string>
 #include <vector>
 
+#include "sphereset/options.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere.hpp"
+#include "sphereset/status.hpp"
 
 namespace sphereset {
 
@@ -81,9 +85,23 @@ inline EvalOptions fitCheckEvalOptions(uint64_t seed, const Mesh* original = nul
   return eo;
 }
 
-// Needs a closed solid (callers check with diagnoseMesh first) and at least one sphere.
-EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& spheres,
-                           const EvalOptions& options = {});
+// The evaluation's options as one table (options.hpp), from which `sphereset eval`'s flags and
+// the keywords of Python's evaluate are made: seed, samples, segments, up ("x", "y", "z"),
+// shadow_resolution, shadow_lights, surface_max_depth, interior_max_depth, with the limits of
+// limits.hpp.
+std::span<const OptionSpec> evalOptionTable();
+// Sets the option `name` of `options` from a user's text; kInvalidArgument for an unknown name
+// or a bad value (the message of parseOption).
+Status setEvalOption(EvalOptions* options, const std::string& name, const std::string& text);
+// Every field of `options` within the table's limits (for options built in code), with the
+// message setEvalOption gives for the same value.
+Status checkEvalOptions(const EvalOptions& options);
+
+// Needs a closed solid (callers check with diagnoseMesh first). Errors (kInvalidArgument):
+// options out of the table's limits, no spheres, a sphere with a NaN, infinite or negative
+// value.
+Expected<EvalResult> evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& spheres,
+                                     const EvalOptions& options = {});
 
 // Shadows of the mesh and of the spheres on a ground plane just under the mesh's lowest point
 // (a square 3 times the object's largest extent, resolution² pixels), lit by `lights`

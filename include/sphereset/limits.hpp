@@ -34,6 +34,8 @@ inline constexpr int64_t kMaxUnionSamples = 100000000;      // Monte Carlo sampl
 inline constexpr int64_t kMaxProximitySegments = 10000000;  // proximity segments
 inline constexpr int kMaxShadowResolution = 4096;           // pixels per side
 inline constexpr int kMaxShadowLights = 4096;               // lights
+inline constexpr int kMaxSurfaceDepth = 16;   // splits in four of a triangle by the certificate
+inline constexpr int kMaxInteriorDepth = 12;  // octree levels below the 8³ grid
 
 // Sphere trees: SphereTree::kMaxSlots (sphere_tree.hpp) slots over all levels.
 

@@ -61,7 +61,7 @@ __all__ = [
     "Error", "InvalidArgumentError", "InvalidDataError", "NotSolidError", "UnreadableError",
     "WriteError", "Mesh", "Solid", "SphereTree", "Robot", "FitResult", "EvalResult",
     "CheckResult", "TreeResult", "PointQueryResult", "PairQueryResult", "load_mesh", "solid",
-    "check", "diagnose", "fit", "evaluate", "tree", "build_tree", "query_tree", "point_distance",
+    "check", "diagnose", "fit", "evaluate", "eval_option_table", "tree", "build_tree", "query_tree", "point_distance",
     "contains", "segment_outside_length", "separation", "overlaps", "read_spheres",
     "write_spheres", "format_spheres", "sphere_format", "read_link_spheres", "write_link_spheres",
     "read_sphere_tree", "write_sphere_tree", "format_sphere_tree", "write_sphere_mesh",
@@ -272,25 +272,36 @@ class EvalResult:
                 for k, v in dataclasses.asdict(self).items()}
 
 
-def evaluate(mesh: MeshLike, spheres: Any, *, seed: int = 1, samples: int = 200000,
-             segments: int = 3000, up: str = "y", shadow_resolution: int = 48,
-             shadow_lights: int = 64, surface_max_depth: int = 10, interior_max_depth: int = 5,
-             repair: Union[str, bool] = "auto", weld_tolerance: Optional[float] = None,
-             fill_cavities: bool = True, wrap_alpha: float = 0.0,
-             wrap_offset: float = 0.0) -> EvalResult:
-    """Measures (N, 4) ``spheres`` against the solid with the defaults of ``sphereset eval``.
+def evaluate(mesh: MeshLike, spheres: Any, *, seed: Optional[int] = None,
+             samples: Optional[int] = None, segments: Optional[int] = None,
+             up: Optional[str] = None, shadow_resolution: Optional[int] = None,
+             shadow_lights: Optional[int] = None, surface_max_depth: Optional[int] = None,
+             interior_max_depth: Optional[int] = None, repair: Union[str, bool] = "auto",
+             weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
+             wrap_alpha: float = 0.0, wrap_offset: float = 0.0) -> EvalResult:
+    """Measures (N, 4) ``spheres`` against the solid with the options and defaults of
+    ``sphereset eval`` (the library's evaluation table; None keeps a default, see
+    :func:`eval_option_table`).
 
     ``samples`` Monte Carlo samples for the union's E_r, ``segments`` random segments for the
     proximity error, ``shadow_resolution`` (0 skips the shadows) and ``shadow_lights`` for the
     shadow errors on a ground plane under the object along ``up``. The coverage check
     ``sphereset fit`` runs is ``samples=100000, segments=0, shadow_resolution=0``.
     """
+    # Checked by the library's table (the command line's messages) before any repair.
+    options = dict(seed=seed, samples=samples, segments=segments, up=up,
+                   shadow_resolution=shadow_resolution, shadow_lights=shadow_lights,
+                   surface_max_depth=surface_max_depth, interior_max_depth=interior_max_depth)
+    _core._check_eval_options(options)
     s = solid(mesh, repair=repair, weld_tolerance=weld_tolerance, fill_cavities=fill_cavities,
               wrap_alpha=wrap_alpha, wrap_offset=wrap_offset)
-    d = _core._evaluate(s, spheres, int(seed), int(samples), int(segments), up,
-                        int(shadow_resolution), int(shadow_lights), int(surface_max_depth),
-                        int(interior_max_depth))
-    return EvalResult(**d)
+    return EvalResult(**_core._evaluate(s, spheres, options))
+
+
+def eval_option_table() -> List[Dict[str, Any]]:
+    """The evaluation's options (name, flag, type, min, max, choices, default, help): the
+    keywords of :func:`evaluate` and the flags of ``sphereset eval``."""
+    return _core._eval_option_table()
 
 
 @dataclass

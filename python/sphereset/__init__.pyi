@@ -9,7 +9,7 @@ import numpy as np
 from . import _sphereset as _core
 from ._sphereset import Error, InvalidArgumentError, InvalidDataError, Mesh, NotSolidError, Robot, Solid, SphereTree, UnreadableError, WriteError, curve_volume, format_sphere_tree, format_sphere_urdf, format_spheres, load_robot, read_link_spheres, read_sphere_tree, read_spheres, sphere_format, split_budget, write_link_spheres, write_robot_spheres, write_sphere_mesh, write_sphere_tree, write_sphere_urdf, write_spheres
 __version__ = '0.1.0'
-__all__ = ['Error', 'InvalidArgumentError', 'InvalidDataError', 'NotSolidError', 'UnreadableError', 'WriteError', 'Mesh', 'Solid', 'SphereTree', 'Robot', 'FitResult', 'EvalResult', 'CheckResult', 'TreeResult', 'PointQueryResult', 'PairQueryResult', 'load_mesh', 'solid', 'check', 'diagnose', 'fit', 'evaluate', 'tree', 'build_tree', 'query_tree', 'point_distance', 'contains', 'segment_outside_length', 'separation', 'overlaps', 'read_spheres', 'write_spheres', 'format_spheres', 'sphere_format', 'read_link_spheres', 'write_link_spheres', 'read_sphere_tree', 'write_sphere_tree', 'format_sphere_tree', 'write_sphere_mesh', 'load_robot', 'write_robot_spheres', 'write_sphere_urdf', 'format_sphere_urdf', 'split_budget', 'curve_volume', 'Animation', 'AnimateResult', 'mean_value_coordinates', 'mean_value_weights', 'point_bone_weights', 'skin_points', 'load_animation', 'animate', 'RobotLinkFit', 'RobotFitResult', 'fit_robot']
+__all__ = ['Error', 'InvalidArgumentError', 'InvalidDataError', 'NotSolidError', 'UnreadableError', 'WriteError', 'Mesh', 'Solid', 'SphereTree', 'Robot', 'FitResult', 'EvalResult', 'CheckResult', 'TreeResult', 'PointQueryResult', 'PairQueryResult', 'load_mesh', 'solid', 'check', 'diagnose', 'fit', 'evaluate', 'eval_option_table', 'tree', 'build_tree', 'query_tree', 'point_distance', 'contains', 'segment_outside_length', 'separation', 'overlaps', 'read_spheres', 'write_spheres', 'format_spheres', 'sphere_format', 'read_link_spheres', 'write_link_spheres', 'read_sphere_tree', 'write_sphere_tree', 'format_sphere_tree', 'write_sphere_mesh', 'load_robot', 'write_robot_spheres', 'write_sphere_urdf', 'format_sphere_urdf', 'split_budget', 'curve_volume', 'Animation', 'AnimateResult', 'mean_value_coordinates', 'mean_value_weights', 'point_bone_weights', 'skin_points', 'load_animation', 'animate', 'RobotLinkFit', 'RobotFitResult', 'fit_robot']
 PathLike = Union[str, 'os.PathLike[str]']
 MeshLike = Union[Mesh, Solid, PathLike]
 ProgressCallback = Callable[[Dict[str, Any]], None]
@@ -99,7 +99,9 @@ class EvalResult:
 
     def to_dict(self) -> Dict[str, Any]:
         ...
-def evaluate(mesh: MeshLike, spheres: Any, *, seed: int=1, samples: int=200000, segments: int=3000, up: str='y', shadow_resolution: int=48, shadow_lights: int=64, surface_max_depth: int=10, interior_max_depth: int=5, repair: Union[str, bool]='auto', weld_tolerance: Optional[float]=None, fill_cavities: bool=True, wrap_alpha: float=0.0, wrap_offset: float=0.0) -> EvalResult:
+def evaluate(mesh: MeshLike, spheres: Any, *, seed: Optional[int]=None, samples: Optional[int]=None, segments: Optional[int]=None, up: Optional[str]=None, shadow_resolution: Optional[int]=None, shadow_lights: Optional[int]=None, surface_max_depth: Optional[int]=None, interior_max_depth: Optional[int]=None, repair: Union[str, bool]='auto', weld_tolerance: Optional[float]=None, fill_cavities: bool=True, wrap_alpha: float=0.0, wrap_offset: float=0.0) -> EvalResult:
+    ...
+def eval_option_table() -> List[Dict[str, Any]]:
     ...
 @dataclass
 class TreeResult:

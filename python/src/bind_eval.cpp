@@ -9,33 +9,20 @@ namespace sphereset::python {
 void bindEval(py::module_& m) {
   m.def(
       "_evaluate",
-      [](const std::shared_ptr<PySolid>& solid, const py::object& spheres, uint64_t seed,
-         int64_t samples, int segments, const std::string& up, int shadow_resolution,
-         int shadow_lights, int surface_max_depth, int interior_max_depth) {
-        const std::vector<Sphere> sp = spheresFromArray(spheres, "spheres");
-        if (sp.empty()) raise(ErrorCode::kInvalidData, "spheres: no spheres");
-        if (up != "x" && up != "y" && up != "z")
-          raise(ErrorCode::kInvalidArgument, "up must be 'x', 'y' or 'z'");
-        if (samples < 0 || segments < 0 || shadow_resolution < 0 || shadow_lights < 1 ||
-            surface_max_depth < 0 || interior_max_depth < 0)
-          raise(ErrorCode::kInvalidArgument,
-                "samples, segments, shadow_resolution and the depths must be >= 0, "
-                "shadow_lights >= 1");
+      [](const std::shared_ptr<PySolid>& solid, const py::object& spheres,
+         const py::dict& options) {
         EvalOptions eo;
-        eo.seed = seed;
-        eo.union_samples = samples;
-        eo.proximity_segments = segments;
-        eo.up_axis = up[0] - 'x';
-        eo.shadow_resolution = shadow_resolution;
-        eo.shadow_lights = shadow_lights;
-        eo.surface_max_depth = surface_max_depth;
-        eo.interior_max_depth = interior_max_depth;
         eo.original = solid->original();
-        EvalResult r;
+        setOptions(options, [&](const std::string& name, const std::string& text) {
+          return setEvalOption(&eo, name, text);
+        });
+        const std::vector<Sphere> sp = spheresFromArray(spheres, "spheres");
+        Expected<EvalResult> evaluated = Error{ErrorCode::kInvalidArgument, ""};
         {
           py::gil_scoped_release release;
-          r = evaluateSpheres(*solid->index, sp, eo);
+          evaluated = evaluateSpheres(*solid->index, sp, eo);
         }
+        const EvalResult r = unwrap(std::move(evaluated));
         py::dict d;
         d["spheres"] = sp.size();
         d["mesh_volume"] = r.mesh_volume;
@@ -62,9 +49,14 @@ void bindEval(py::module_& m) {
         d["repair"] = repairDict(solid->repair);
         return d;
       },
-      py::arg("solid"), py::arg("spheres"), py::arg("seed"), py::arg("samples"),
-      py::arg("segments"), py::arg("up"), py::arg("shadow_resolution"), py::arg("shadow_lights"),
-      py::arg("surface_max_depth"), py::arg("interior_max_depth"));
+      py::arg("solid"), py::arg("spheres"), py::arg("options"));
+  m.def("_eval_option_table", [] { return optionTable(evalOptionTable()); });
+  m.def("_check_eval_options", [](const py::dict& options) {
+    EvalOptions eo;
+    setOptions(options, [&](const std::string& name, const std::string& text) {
+      return setEvalOption(&eo, name, text);
+    });
+  });
 }
 
 }  // namespace sphereset::python

@@ -20,7 +20,6 @@ FitRequest fitRequest(const py::dict& options) {
 
 FitOptions fitOptions(const py::dict& options) { return fitOptionsFor(fitRequest(options)); }
 
-// The fit table as Python sees it: one dict per row.
 py::list optionTable(std::span<const OptionSpec> table) {
   py::list rows;
   for (const OptionSpec& o : table) {

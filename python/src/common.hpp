@@ -8,12 +8,14 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <filesystem>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "sphereset/mesh.hpp"
+#include "sphereset/options.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/status.hpp"
@@ -72,5 +74,21 @@ void bindRobot(py::module_& m);
 void bindBatch(py::module_& m);
 void bindAnimate(py::module_& m);
 void bindRobotFit(py::module_& m);
+
+// Keyword options by the names of a library option table: each value that is not None is handed
+// to `set(name, text)` as its text (str()), so that the library parses and checks it exactly as
+// it does the command line's; its error is raised.
+template <class Set>
+void setOptions(const py::dict& options, Set&& set) {
+  for (const auto& [key, value] : options) {
+    if (value.is_none()) continue;
+    const Status st = set(std::string(py::str(key)), std::string(py::str(value)));
+    if (!st) raise(st.error());
+  }
+}
+
+// An option table as Python sees it: one dict per row (name, flag, type, min, max, choices,
+// default, help).
+py::list optionTable(std::span<const OptionSpec> table);
 
 }  // namespace sphereset::python

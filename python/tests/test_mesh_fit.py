@@ -208,3 +208,19 @@ def test_progress_and_cancel():
     assert [e.name for e in info.traceback][-2:] == ["fit", "alarm"]
     # The module is usable afterwards and gives the same result.
     assert np.array_equal(ss.fit(m, n=4, quality="fast").spheres, r.spheres)
+
+
+def test_evaluate_options_are_checked_by_the_library_table():
+    # Python had lower bounds only: shadow_resolution=100000 ended in MemoryError.
+    box = ss.Mesh(*cube_arrays())
+    one = np.array([[0.5, 0.5, 0.5, 1.0]])
+    with pytest.raises(ss.InvalidArgumentError,
+                       match="shadow_resolution '100000': expected an integer from 0 to 4096"):
+        ss.evaluate(box, one, shadow_resolution=100000)
+    with pytest.raises(ss.InvalidArgumentError, match="up 'w': expected x, y or z"):
+        ss.evaluate(box, one, up="w")
+    names = [row["name"] for row in ss.eval_option_table()]
+    assert names[:3] == ["seed", "samples", "segments"]
+    r = ss.evaluate(box, one, samples=0, segments=0, shadow_resolution=0)
+    assert r.surface_covered and r.interior_covered
+

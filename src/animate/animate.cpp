@@ -45,10 +45,12 @@ struct Certificate {
   double gap = 0.0;
 };
 
-Certificate certify(const SolidIndex& index, const std::vector<Sphere>& sp, const EvalOptions& o) {
-  const EvalResult e = evaluateSpheres(index, sp, o);
-  return {e.er_sum, e.surface_covered, e.interior_covered,
-          std::max(e.max_surface_gap, e.max_interior_gap)};
+Expected<Certificate> certify(const SolidIndex& index, const std::vector<Sphere>& sp,
+                              const EvalOptions& o) {
+  auto e = evaluateSpheres(index, sp, o);
+  if (!e) return e.error();
+  return Certificate{e->er_sum, e->surface_covered, e->interior_covered,
+                     std::max(e->max_surface_gap, e->max_interior_gap)};
 }
 
 // Whether `rest` is the skin's bind pose: the same triangles, every vertex within
@@ -76,6 +78,7 @@ Status checkAnimateInputs(const Mesh& rest, const std::vector<Sphere>& spheres,
                           const std::vector<AnimationFrame>& frames, const AnimateOptions& o,
                           const SkinWeights* skin) {
   if (spheres.empty()) return Error{ErrorCode::kInvalidData, "no spheres to animate"};
+  if (Status st = checkEvalOptions(o.eval); !st) return st;
   for (size_t i = 0; i < spheres.size(); ++i)
     if (!spheres[i].center.allFinite() || !(spheres[i].radius >= 0.0) ||
         !std::isfinite(spheres[i].radius))
@@ -85,8 +88,8 @@ Status checkAnimateInputs(const Mesh& rest, const std::vector<Sphere>& spheres,
     return Error{ErrorCode::kInvalidArgument, "bone_neighbours must be at least 1 (got " +
                                                   std::to_string(o.bone_neighbours) + ")"};
   if (o.max_crossings < 0)
-    return Error{ErrorCode::kInvalidArgument, "max_crossings must be at least 0 (got " +
-                                                  std::to_string(o.max_crossings) + ")"};
+    return Error{ErrorCode::kInvalidArgument,
+                 "max_crossings must be at least 0 (got " + std::to_string(o.max_crossings) + ")"};
   if (!(signedVolume(rest) > 0.0))
     return Error{ErrorCode::kNotSolid, "the rest mesh has no positive volume"};
   const bool bones = o.weighting == CentreWeighting::kBones;
@@ -102,9 +105,8 @@ Status checkAnimateInputs(const Mesh& rest, const std::vector<Sphere>& spheres,
         "frame " + std::to_string(f) + (frames[f].name.empty() ? "" : " (" + frames[f].name + ")");
     if (frames[f].vertices.size() != rest.vertices.size())
       return Error{ErrorCode::kInvalidData,
-                   frame + " has " +
-                       std::to_string(frames[f].vertices.size()) + " vertices, the rest mesh " +
-                       std::to_string(rest.vertices.size()) +
+                   frame + " has " + std::to_string(frames[f].vertices.size()) +
+                       " vertices, the rest mesh " + std::to_string(rest.vertices.size()) +
                        " (frames need the rest mesh's vertices in its order)"};
     if (!frames[f].triangles.empty() && frames[f].triangles != rest.triangles)
       return Error{ErrorCode::kInvalidData,
@@ -170,11 +172,11 @@ Expected<std::vector<Vec3>> skinPoints(const std::vector<Vec3>& points,
                                        const std::vector<Eigen::Affine3d>& bones) {
   if (weights.rows() != static_cast<Eigen::Index>(points.size()) ||
       weights.cols() != static_cast<Eigen::Index>(bones.size()))
-    return Error{ErrorCode::kInvalidArgument,
-                 "weights of " + std::to_string(weights.rows()) + " points over " +
-                     std::to_string(weights.cols()) + " bones, for " +
-                     std::to_string(points.size()) + " points and " +
-                     std::to_string(bones.size()) + " bone transforms"};
+    return Error{ErrorCode::kInvalidArgument, "weights of " + std::to_string(weights.rows()) +
+                                                  " points over " + std::to_string(weights.cols()) +
+                                                  " bones, for " + std::to_string(points.size()) +
+                                                  " points and " + std::to_string(bones.size()) +
+                                                  " bone transforms"};
   std::vector<Vec3> out(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
     Eigen::Matrix<double, 3, 4> m = Eigen::Matrix<double, 3, 4>::Zero();
@@ -195,8 +197,7 @@ Expected<AnimateResult> animateSpheres(const Mesh& rest, const std::vector<Spher
                                        const std::vector<AnimationFrame>& frames,
                                        const AnimateOptions& options, const SkinWeights* skin) {
   const auto t0 = Clock::now();
-  if (Status st = checkAnimateInputs(rest, spheres, frames, options, skin); !st)
-    return st.error();
+  if (Status st = checkAnimateInputs(rest, spheres, frames, options, skin); !st) return st.error();
   const bool bones = options.weighting == CentreWeighting::kBones;
   std::vector<Vec3> centres(spheres.size());
   for (size_t i = 0; i < spheres.size(); ++i) centres[i] = spheres[i].center;
@@ -223,9 +224,8 @@ Expected<AnimateResult> animateSpheres(const Mesh& rest, const std::vector<Spher
     const auto tu = Clock::now();
     std::vector<Sphere> moved = spheres;
     // The inputs were checked above: these cannot fail.
-    const std::vector<Vec3> moved_centres = bones
-                                                ? skinPoints(centres, bone_w, frame.bones).value()
-                                                : meanValuePoints(mvc, frame.vertices).value();
+    const std::vector<Vec3> moved_centres = bones ? skinPoints(centres, bone_w, frame.bones).value()
+                                                  : meanValuePoints(mvc, frame.vertices).value();
     for (size_t i = 0; i < moved.size(); ++i) moved[i].center = moved_centres[i];
     fr.update_seconds = since(tu);
 
@@ -241,7 +241,11 @@ Expected<AnimateResult> animateSpheres(const Mesh& rest, const std::vector<Spher
       if (fr.crossings > 0) ++res.frames_crossing;
     }
     const SolidIndex index(deformed);
-    const Certificate c = certify(index, moved, options.eval);
+    const auto certified = certify(index, moved, options.eval);
+    if (!certified)
+      return Error{certified.error().code,
+                   "frame " + std::to_string(f) + ": " + certified.error().message};
+    const Certificate& c = *certified;
     fr.er = c.er;
     fr.surface_covered = c.surface;
     fr.interior_covered = c.interior;
@@ -271,7 +275,11 @@ Expected<AnimateResult> animateSpheres(const Mesh& rest, const std::vector<Spher
         }
       }
       fr.radius_growth = sum_r > 0.0 ? sum_dr / sum_r : 0.0;
-      const Certificate g = certify(index, grown, options.eval);
+      const auto regrown = certify(index, grown, options.eval);
+      if (!regrown)
+        return Error{regrown.error().code,
+                     "frame " + std::to_string(f) + ": " + regrown.error().message};
+      const Certificate& g = *regrown;
       fr.er_rebound = g.er;
       fr.rebound_covered = g.surface && g.interior;
       moved = std::move(grown);

@@ -149,8 +149,10 @@ Status fitItem(const BatchItem& item, const std::string& out_dir, const BatchOpt
   if (!d) return Error{ErrorCode::kWriteFailed, out + ": cannot read back the file written"};
   files->output_digest = *d;
 
-  const EvalResult ev =
+  auto checked =
       evaluateSpheres(index, fit->spheres, fitCheckEvalOptions(fo.seed, solid->original()));
+  if (!checked) return Error{checked.error().code, item.mesh + ": " + checked.error().message};
+  const EvalResult& ev = *checked;
   rep->spheres = static_cast<int>(fit->spheres.size());
   rep->er_sum = fit->energy / ev.mesh_volume;
   rep->er_union = ev.er_union;

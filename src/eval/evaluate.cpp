@@ -26,6 +26,7 @@
 #include <numbers>
 
 #include "cover/cover_cells.hpp"
+#include "sphereset/limits.hpp"
 #include "sphereset/query.hpp"
 #include "tree/query_oracles.hpp"
 #include "util/sampling.hpp"
@@ -182,9 +183,21 @@ double proximityError(const SolidIndex& index, const std::vector<Sphere>& sphere
 
 }  // namespace
 
-EvalResult evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& spheres,
-                           const EvalOptions& options) {
+Expected<EvalResult> evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& spheres,
+                                     const EvalOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (Status st = checkEvalOptions(options); !st) return st.error();
+  if (spheres.empty()) return Error{ErrorCode::kInvalidArgument, "no spheres to evaluate"};
+  if (Status st = limits::checkRange("spheres", static_cast<double>(spheres.size()), 1,
+                                     limits::kMaxSpheres);
+      !st)
+    return st.error();
+  for (size_t i = 0; i < spheres.size(); ++i) {
+    const Sphere& s = spheres[i];
+    if (!s.center.allFinite() || !(s.radius >= 0.0) || !std::isfinite(s.radius))
+      return Error{ErrorCode::kInvalidArgument,
+                   "sphere " + std::to_string(i) + " has a NaN, infinite or negative value"};
+  }
   EvalResult res;
   const Mesh& mesh = index.mesh();
   res.mesh_volume = signedVolume(mesh);

@@ -7,8 +7,8 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <utility>
@@ -190,7 +190,12 @@ LinkFit fitLinkAt(const RobotFitOptions& o, const Job& j, int count) {
     eo.proximity_segments = 0;
     eo.shadow_resolution = 0;
     eo.original = j.repair.kind == RepairKind::kNone ? nullptr : &j.repair.original;
-    out.eval = evaluateSpheres(*j.index, f->spheres, eo);
+    auto e = evaluateSpheres(*j.index, f->spheres, eo);
+    if (!e) {
+      out.error = e.error().message;
+      return out;
+    }
+    out.eval = std::move(e).value();
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
@@ -256,8 +261,8 @@ Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) 
   };
   if (Status st = limits::checkRange(o.name + ": budget", o.budget, 0, limits::kMaxSpheres); !st)
     return st.error();
-  if (Status st = limits::checkRange(o.name + ": default_link_spheres", o.default_link_spheres,
-                                     1, limits::kMaxSpheres);
+  if (Status st = limits::checkRange(o.name + ": default_link_spheres", o.default_link_spheres, 1,
+                                     limits::kMaxSpheres);
       !st)
     return st.error();
   if (!(o.padding >= 0.0) || !std::isfinite(o.padding))
@@ -276,8 +281,8 @@ Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) 
       return Error{ErrorCode::kInvalidArgument,
                    o.name + ": link_padding names '" + link + "', not a link of " + robot.name};
     if (!(padding >= 0.0) || !std::isfinite(padding))
-      return Error{ErrorCode::kInvalidArgument, o.name + ": link_padding of '" + link +
-                                                    "' must be a finite distance >= 0"};
+      return Error{ErrorCode::kInvalidArgument,
+                   o.name + ": link_padding of '" + link + "' must be a finite distance >= 0"};
   }
   auto jobs = prepareLinks(o, robot);
   if (!jobs) return jobs.error();

@@ -249,7 +249,7 @@ TEST_F(BatchTest, ItemGivesTheSpheresOfTheFit) {
             formatSpheres(SphereFormat::kJson, fit->spheres, meta));
   EXPECT_EQ(r.spheres, 3);
   EXPECT_EQ(r.num_spheres, 3);
-  const EvalResult ev = evaluateSpheres(index, fit->spheres, fitCheckEvalOptions(5));
+  const EvalResult ev = *evaluateSpheres(index, fit->spheres, fitCheckEvalOptions(5));
   EXPECT_DOUBLE_EQ(r.er_sum, fit->energy / ev.mesh_volume);
   EXPECT_DOUBLE_EQ(r.er_union, ev.er_union);
   EXPECT_EQ(r.covered, ev.surface_covered && ev.interior_covered);

@@ -53,7 +53,10 @@ cli_test(eval_open 5 ARGS eval ${work}/open.off ${work}/bound.txt --repair off
 cli_test(eval_bad_spheres 4 ARGS eval ${link} ${work}/bad.txt STDERR "bad.txt:1: expected four numbers")
 cli_test(eval_json 0 ARGS eval ${link} ${work}/bound.txt --json --samples 20000 --segments 100
          STDOUT "\"er_sum\":.*\"surface_covered\":true")
-cli_test(bad_option 2 ARGS eval ${link} ${work}/bound.txt --samples -5)
+cli_test(bad_option 2 ARGS eval ${link} ${work}/bound.txt --samples -5
+         STDERR "samples '-5': expected an integer from 0 to 100000000")
+cli_test(eval_huge_shadow 2 ARGS eval ${link} ${work}/bound.txt --shadow-resolution 100000
+         STDERR "shadow_resolution '100000': expected an integer from 0 to 4096")
 cli_test(no_command 2 ARGS)
 cli_test(fit_txt 0 ARGS fit ${link} -n 5 -o ${work}/link5.txt --quality fast -q
          FILE ${work}/link5.txt SPHERES 5)

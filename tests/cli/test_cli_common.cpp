@@ -75,14 +75,14 @@ TEST(CliCoverage, TooSmallSphereOnAMesh) {
   const std::vector<Sphere> small = {Sphere{Vec3(0.0, -0.037, -0.068), 0.05}};
   std::ostringstream err;
   EXPECT_EQ(coverageExit("link.stl", "the tree's leaves", "t.sph",
-                         evaluateSpheres(index, small, eo), err),
+                         *evaluateSpheres(index, small, eo), err),
             kUncovered);
   EXPECT_NE(err.str().find("link.stl: the tree's leaves failed the coverage check: surface not "
                            "covered"),
             std::string::npos);
   const std::vector<Sphere> bound = {Sphere{Vec3(0.0, -0.037, -0.068), 0.17}};
   EXPECT_EQ(coverageExit("link.stl", "the fitted spheres", "out.txt",
-                         evaluateSpheres(index, bound, eo), err),
+                         *evaluateSpheres(index, bound, eo), err),
             kOk);
 }
 

@@ -8,6 +8,7 @@
 #include "sphereset/evaluate.hpp"
 #include "sphereset/query.hpp"
 #include "test_meshes.hpp"
+#include "test_support.hpp"
 #include "tree/query_oracles.hpp"
 
 namespace sphereset {
@@ -22,7 +23,7 @@ TEST(Evaluate, CircumscribedSphereOfCube) {
   EvalOptions o;
   o.union_samples = 100000;
   o.proximity_segments = 200;
-  const EvalResult e = evaluateSpheres(idx, one, o);
+  const EvalResult e = *evaluateSpheres(idx, one, o);
   const double exact = 4.0 / 3.0 * kPi * r * r * r - 1.0;
   EXPECT_NEAR(e.er_sum, exact, 1e-12);
   EXPECT_NEAR(e.er_union, exact, 4 * e.er_union_stderr);
@@ -41,7 +42,7 @@ TEST(Evaluate, UnionCountsOverlapOnce) {
   const std::vector<Sphere> twice = {{Vec3::Constant(0.5), r}, {Vec3::Constant(0.5), r}};
   EvalOptions o;
   o.proximity_segments = 0;
-  const EvalResult e = evaluateSpheres(idx, twice, o);
+  const EvalResult e = *evaluateSpheres(idx, twice, o);
   const double exact = 4.0 / 3.0 * kPi * r * r * r - 1.0;
   EXPECT_NEAR(e.er_sum, 2 * exact, 1e-12);
   EXPECT_NEAR(e.er_union, exact, 4 * e.er_union_stderr + 1e-12);
@@ -54,7 +55,7 @@ TEST(Evaluate, MissingCornerIsFoundWithItsGap) {
   EvalOptions o;
   o.union_samples = 1000;
   o.proximity_segments = 0;
-  const EvalResult e = evaluateSpheres(idx, s, o);
+  const EvalResult e = *evaluateSpheres(idx, s, o);
   EXPECT_FALSE(e.surface_covered);
   EXPECT_FALSE(e.interior_covered);
   EXPECT_NEAR(e.max_surface_gap, (std::sqrt(3.0) / 2.0 - 0.8) / std::sqrt(3.0), 2e-12);
@@ -81,7 +82,7 @@ TEST(Evaluate, HollowShellOfSpheresLeavesTheInteriorUncovered) {
   EvalOptions o;
   o.union_samples = 1000;
   o.proximity_segments = 0;
-  const EvalResult e = evaluateSpheres(idx, shell, o);
+  const EvalResult e = *evaluateSpheres(idx, shell, o);
   EXPECT_TRUE(e.surface_covered);
   EXPECT_FALSE(e.interior_covered);
   EXPECT_GT(e.max_interior_gap, 0.15);
@@ -94,11 +95,11 @@ TEST(Evaluate, ResultsDoNotDependOnThreads) {
   EvalOptions o;
   o.union_samples = 50000;
   o.proximity_segments = 300;
-  const EvalResult a = evaluateSpheres(idx, s, o);
+  const EvalResult a = *evaluateSpheres(idx, s, o);
   EvalResult b;
   {
     tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-    b = evaluateSpheres(idx, s, o);
+    b = *evaluateSpheres(idx, s, o);
   }
   EXPECT_EQ(a.er_sum, b.er_sum);
   EXPECT_EQ(a.max_surface_gap, b.max_surface_gap);
@@ -151,6 +152,35 @@ TEST(Evaluate, HemisphereDirectionsAreUnitUpwardAndBalanced) {
   }
   // Uniform over the hemisphere: the mean direction is up/2.
   EXPECT_NEAR((mean - 0.5 * up).norm(), 0.0, 0.01);
+}
+
+// The evaluation checks its own options and spheres: a shadow raster of 100000² pixels used to
+// reach MemoryError through Python, which had no upper limits.
+TEST(Evaluate, OptionsAndSpheresAreCheckedByTheLibrary) {
+  const SolidIndex idx(test::makeBox(Vec3::Zero(), Vec3::Ones()));
+  const std::vector<Sphere> one = {{Vec3::Constant(0.5), 1.0}};
+  EvalOptions o;
+  o.shadow_resolution = 100000;
+  test::expectError(evaluateSpheres(idx, one, o), ErrorCode::kInvalidArgument,
+                    "shadow_resolution '100000'", "an integer from 0 to 4096");
+  EXPECT_TRUE(setEvalOption(&o, "shadow_resolution", "1e5").error().message.find("1e5") !=
+              std::string::npos);
+  const Status unknown = setEvalOption(&o, "resolution", "3");
+  ASSERT_FALSE(unknown);
+  EXPECT_NE(unknown.error().message.find("expected seed, samples, segments, up"),
+            std::string::npos);
+  EXPECT_TRUE(setEvalOption(&o, "up", "z"));
+  EXPECT_EQ(o.up_axis, 2);
+  EvalOptions fine;
+  fine.union_samples = 0;
+  fine.shadow_resolution = 0;
+  fine.proximity_segments = 0;
+  test::expectError(evaluateSpheres(idx, {}, fine), ErrorCode::kInvalidArgument, "no spheres",
+                    "evaluate");
+  const std::vector<Sphere> nan = {{Vec3(std::nan(""), 0, 0), 1.0}};
+  test::expectError(evaluateSpheres(idx, nan, fine), ErrorCode::kInvalidArgument, "sphere 0",
+                    "NaN");
+  EXPECT_TRUE(evaluateSpheres(idx, one, fine).ok());
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ TEST(Fit, WritesExactlyNSpheresThatCoverTheSurfaceAndInterior) {
   EvalOptions eo;
   eo.union_samples = 20000;
   eo.proximity_segments = 0;
-  const EvalResult e = evaluateSpheres(idx, r->spheres, eo);
+  const EvalResult e = *evaluateSpheres(idx, r->spheres, eo);
   EXPECT_TRUE(e.surface_covered);
   EXPECT_TRUE(e.interior_covered);
   EXPECT_NEAR(e.er_sum * e.mesh_volume, r->energy, 1e-9 * r->energy);
@@ -128,7 +128,7 @@ TEST(Fit, BaselinesGiveNCoveringSpheresAndTheVariationalFitIsTighter) {
     auto r = fitSpheres(idx, o);
     ASSERT_TRUE(r.ok()) << r.error().message;
     ASSERT_EQ(r->spheres.size(), 12u) << "method " << m;
-    const EvalResult e = evaluateSpheres(idx, r->spheres, eo);
+    const EvalResult e = *evaluateSpheres(idx, r->spheres, eo);
     EXPECT_TRUE(e.surface_covered) << "method " << m;
     EXPECT_TRUE(e.interior_covered) << "method " << m;
     energy[m] = r->energy;

@@ -39,7 +39,7 @@ void expectFitCoversOriginal(const RepairResult& r, int n = 8) {
   eo.proximity_segments = 0;
   eo.shadow_resolution = 0;
   eo.original = &r.original;
-  const EvalResult e = evaluateSpheres(index, f->spheres, eo);
+  const EvalResult e = *evaluateSpheres(index, f->spheres, eo);
   EXPECT_TRUE(e.surface_covered);
   EXPECT_TRUE(e.interior_covered);
   EXPECT_TRUE(e.original_covered);
