@@ -71,9 +71,12 @@ struct FitOptions {
   // them too, exactly, after everything else (a last pass of the surface bound over them).
   // Not owned; may be null.
   const Mesh* original = nullptr;
-  // Called from the calling thread at each phase and round. It may throw to cancel the fit
-  // (how the Python module honours Ctrl-C): the exception leaves fitSpheres, nothing is returned.
+  // Called from the calling thread at each phase and round, and again inside long phases (with
+  // the same phase and round) once `progress_interval` seconds have passed since the last call.
+  // It may throw to cancel the fit (how the Python module honours Ctrl-C): the exception leaves
+  // fitSpheres, nothing is returned.
   std::function<void(const FitProgress&)> progress;
+  double progress_interval = 0.25;
 };
 
 // teleport: choosing the moves and the decimation's removals (their rounds count as

@@ -11,6 +11,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "fit/fit_common.hpp"
+
 namespace sphereset::detail {
 namespace {
 
@@ -108,8 +110,10 @@ void prepareBatch(const std::vector<Cluster>& cl, const CentreGrid* grid, const 
     tbb::parallel_for(
         tbb::blocked_range<size_t>(0, batch.size()), [&](const tbb::blocked_range<size_t>& r) {
           Scratch local;
-          for (size_t k = r.begin(); k < r.end(); ++k)
+          for (size_t k = r.begin(); k < r.end(); ++k) {
+            pollProgress();
             prepare(cl, grid, max_radius, ps, labels, batch[k], &local, &(*prepared)[k]);
+          }
         });
   }
 }

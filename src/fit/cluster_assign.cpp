@@ -39,6 +39,7 @@
 
 #include "fit/assign_prepare.hpp"
 #include "fit/centre_grid.hpp"
+#include "fit/fit_common.hpp"
 
 namespace sphereset::detail {
 namespace {
@@ -300,6 +301,7 @@ void Fill::run() {
   dist_.resize(nc_);
   bound_.resize(nc_);
   while (nextBatch()) {
+    pollProgress();
     prepareBatch(cl_, grid_.get(), ps_, labels_, batch_, &prepared_, &serial_);
     for (size_t k = 0; k < batch_.size(); ++k) decide(batch_[k], prepared_[k]);
     for (const int32_t j : changed_list_) changed_[j] = 0;

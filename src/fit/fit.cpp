@@ -42,20 +42,21 @@ namespace {
 
 Status checkOptions(const SolidIndex& index, const FitOptions& o) {
   using limits::checkRange;
-  for (Status st : {checkRange("num_spheres", o.num_spheres, 1, limits::kMaxSpheres),
-                    checkRange("target_points", static_cast<double>(o.target_points), 0,
-                               static_cast<double>(limits::kMaxPoints)),
-                    checkRange("interior_share", o.interior_share, 0.0, 1.0),
-                    checkRange("max_iterations", o.max_iterations, 0, limits::kMaxIterations),
-                    checkRange("tolerance", o.tolerance, 0.0, 1.0),
-                    checkRange("max_failed_teleports", o.max_failed_teleports, 0,
-                               limits::kMaxIterations),
-                    checkRange("optimizer_evaluations", o.optimizer_evaluations, 0,
-                               limits::kMaxOptimizerEvaluations),
-                    checkRange("padding", o.padding, 0.0, std::numeric_limits<double>::max()),
-                    checkRange("shrink_passes", o.shrink_passes, 0, limits::kMaxIterations),
-                    checkRange("decimation", o.decimation, 0.0, limits::kMaxDecimation),
-                    checkRange("restarts", o.restarts, 1, limits::kMaxRestarts)})
+  for (Status st :
+       {checkRange("num_spheres", o.num_spheres, 1, limits::kMaxSpheres),
+        checkRange("target_points", static_cast<double>(o.target_points), 0,
+                   static_cast<double>(limits::kMaxPoints)),
+        checkRange("interior_share", o.interior_share, 0.0, 1.0),
+        checkRange("max_iterations", o.max_iterations, 0, limits::kMaxIterations),
+        checkRange("tolerance", o.tolerance, 0.0, 1.0),
+        checkRange("max_failed_teleports", o.max_failed_teleports, 0, limits::kMaxIterations),
+        checkRange("optimizer_evaluations", o.optimizer_evaluations, 0,
+                   limits::kMaxOptimizerEvaluations),
+        checkRange("padding", o.padding, 0.0, std::numeric_limits<double>::max()),
+        checkRange("shrink_passes", o.shrink_passes, 0, limits::kMaxIterations),
+        checkRange("decimation", o.decimation, 0.0, limits::kMaxDecimation),
+        checkRange("restarts", o.restarts, 1, limits::kMaxRestarts),
+        checkRange("progress_interval", o.progress_interval, 0.0, 3600.0)})
     if (!st) return st;
   if (!(signedVolume(index.mesh()) > 0.0))
     return Error{ErrorCode::kNotSolid, "the mesh encloses no volume"};
@@ -90,9 +91,8 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
   const auto t0 = detail::FitClock::now();
   FitResult res;
   const int n = o.num_spheres;
-  auto report = [&](const std::string& phase, int it, double e) {
-    if (o.progress) o.progress({phase, it, e, n, detail::secondsSince(t0)});
-  };
+  detail::ProgressScope scope(o, t0);
+  auto report = [&](const std::string& phase, int it, double e) { scope.report(phase, it, e); };
 
   // Preprocessing (paper Sec. 5): the points to cluster.
   report("sampling", 0, 0.0);

@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <map>
+#include <string>
+
 #include "fit/restarts.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
@@ -79,6 +82,43 @@ TEST(Fit, ManySpheresSameForAnyThreadCount) {
   o.target_points = 6000;
   o.max_iterations = 6;
   expectSameFitForAnyThreadCount(SolidIndex(test::makeTorus(1.0, 0.35, 48, 24)), o);
+}
+
+// Long phases report again from inside their loops, so that a callback can cancel them at any
+// time: the bound used to run to its end (15 s at 3000 spheres) without a call.
+TEST(Fit, ProgressIsPolledInsideLongPhasesAndCanCancelThem) {
+  const SolidIndex index(test::robotLink());
+  FitOptions o;
+  o.num_spheres = 12;
+  o.target_points = 2000;
+  o.progress_interval = 0.0;  // every poll reports
+  std::map<std::string, int> calls;
+  o.progress = [&](const FitProgress& p) { ++calls[p.phase]; };
+  auto plain = fitSpheres(index, o);
+  ASSERT_TRUE(plain.ok());
+  // One explicit report per phase start, many polls inside.
+  EXPECT_GT(calls["sampling"], 10);
+  EXPECT_GT(calls["bounding"], 10);
+  EXPECT_EQ(calls["done"], 1);
+  // The polls change nothing.
+  FitOptions quiet = o;
+  quiet.progress = nullptr;
+  auto same = fitSpheres(index, quiet);
+  ASSERT_TRUE(same.ok());
+  ASSERT_EQ(same->spheres.size(), plain->spheres.size());
+  for (size_t i = 0; i < same->spheres.size(); ++i)
+    EXPECT_EQ(same->spheres[i].radius, plain->spheres[i].radius);
+  // A throw from a poll inside the bound leaves fitSpheres.
+  struct Stop {};
+  int bounding = 0;
+  o.progress = [&](const FitProgress& p) {
+    if (p.phase == "bounding" && ++bounding == 5) throw Stop{};
+  };
+  EXPECT_THROW((void)fitSpheres(index, o), Stop);
+  EXPECT_EQ(bounding, 5);
+  FitOptions bad = o;
+  bad.progress_interval = -1.0;
+  EXPECT_FALSE(fitSpheres(index, bad).ok());
 }
 
 TEST(Fit, PaddingIsAddedToEveryRadius) {
