@@ -258,4 +258,8 @@ int coverageExit(const std::string& mesh, const std::string& what, const std::st
   return kUncovered;
 }
 
+std::string jsonText(const nlohmann::json& j, int indent) {
+  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 }  // namespace sphereset::cli

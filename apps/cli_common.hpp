@@ -144,4 +144,9 @@ std::string coverageGaps(const EvalResult& r);
 int coverageExit(const std::string& mesh, const std::string& what, const std::string& out,
                  const EvalResult& r, std::ostream& err = std::cerr);
 
+// JSON text for stdout and the command's files: invalid UTF-8 in strings (file names are bytes)
+// replaced by U+FFFD instead of nlohmann's exception (a fit of "l\xff.stl" used to end in an
+// internal error after the work was done).
+std::string jsonText(const nlohmann::json& j, int indent = -1);
+
 }  // namespace sphereset::cli

@@ -155,7 +155,7 @@ int runAnimate(const AnimateArgs& a) {
                             {"frames", js}};
   if (!a.animation.empty()) summary["clip"] = frames->clip;
   Status st = writeTextFile((std::filesystem::path(a.out) / "summary.json").string(),
-                            summary.dump(2) + "\n");
+                            jsonText(summary, 2) + "\n");
   if (!st) return fail(st.error());
   if (!a.quiet)
     std::cerr << "animate: " << n << " frames, " << res->frames_covered

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
-#include <utility>
-#include <vector>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
@@ -47,8 +47,8 @@ ShellCounts countShells(const ShellAnalysis& sa) {
   c.triangle_pairs = static_cast<int64_t>(sa.intersections.pairs.size());
   c.truncated = sa.intersections.truncated;
   const auto& p = sa.intersections.pairs;
-  c.first_pairs.assign(p.begin(), p.begin() + static_cast<std::ptrdiff_t>(
-                                                   std::min(kListedPairs, p.size())));
+  c.first_pairs.assign(p.begin(),
+                       p.begin() + static_cast<std::ptrdiff_t>(std::min(kListedPairs, p.size())));
   return c;
 }
 
@@ -125,14 +125,15 @@ std::vector<std::pair<std::string, std::string>> problemActions(const MeshDiagno
                          n(d.nonmanifold_vertices, "non-manifold vertex", "non-manifold vertices"),
                      last("gone once the vertices are welded"));
   if (c.intersecting_pairs > 0)
-    out.emplace_back(n(c.intersecting_pairs, "pair of crossing shells", "pairs of crossing shells"),
-                     last(r && r->kind == RepairKind::kUnion ? "united (corefinement)"
-                                                              : "gone once the vertices are welded"));
+    out.emplace_back(
+        n(c.intersecting_pairs, "pair of crossing shells", "pairs of crossing shells"),
+        last(r && r->kind == RepairKind::kUnion ? "united (corefinement)"
+                                                : "gone once the vertices are welded"));
   if (c.triangle_pairs > 0)
     out.emplace_back(
         n(c.triangle_pairs, "crossing triangle pair", "crossing triangle pairs"),
         last(r && r->kind == RepairKind::kUnion ? "united (corefinement)"
-                                                 : "gone once the vertices are welded"));
+                                                : "gone once the vertices are welded"));
   if (c.nested > 0)
     out.emplace_back(n(c.nested, "nested shell", "nested shells"),
                      !r ? "fit refuses the mesh (below)"
@@ -219,7 +220,7 @@ int runCheck(const CheckArgs& a) {
     j["problems"] = pj;
     if (r) j["repair"] = repairJson(*r);
     j["fit"] = plan;
-    std::cout << j.dump() << '\n';
+    std::cout << jsonText(j) << '\n';
   } else {
     printCheck(*m, d);
     printShells(sc);

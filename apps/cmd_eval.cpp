@@ -167,7 +167,7 @@ int runEval(EvalArgs a) {
     j["repair"] = repairJson(m->repair);
     j["spheres_file"] = spheres_path;
     j["seed"] = eo.seed;
-    std::cout << j.dump() << '\n';
+    std::cout << jsonText(j) << '\n';
   }
   return kOk;
 }

@@ -114,7 +114,7 @@ int runFit(const FitCommandArgs& c) {
   auto checked = evaluateSpheres(index, r->spheres, fitCheckEvalOptions(fo.seed, m->original()));
   if (!checked) return fail(checked.error());
   const EvalResult& ev = *checked;
-  if (c.json) std::cout << fitJson(a, fo, *r, ev, m->repair).dump() << '\n';
+  if (c.json) std::cout << jsonText(fitJson(a, fo, *r, ev, m->repair)) << '\n';
   if (!a.quiet) printFitSummary(a, *r, ev, *m);
   // The summary's evaluation is eval's coverage check (same certificate depths).
   return coverageExit(a.mesh.path, "the fitted spheres", a.out_path, ev);

@@ -112,7 +112,7 @@ int runQuery(const QueryArgs& a) {
     const int rc = otherQuery(a, qa, &out);
     if (rc != kOk) return rc;
   }
-  if (a.json) std::cout << out.dump() << '\n';
+  if (a.json) std::cout << jsonText(out) << '\n';
   return kOk;
 }
 

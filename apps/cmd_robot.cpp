@@ -166,7 +166,7 @@ int runRobot(const RobotArgs& a) {
     if (!j.skipped) out.push_back({j.link, j.spheres});
   Status st;
   if (ext == ".json") {
-    st = writeTextFile(a.out_path, robotJson(a, *robot, *fit, fo.seed).dump(1) + "\n");
+    st = writeTextFile(a.out_path, jsonText(robotJson(a, *robot, *fit, fo.seed), 1) + "\n");
   } else if (ext == ".urdf") {
     st = writeSphereUrdf(a.urdf, a.out_path, out);
   } else {
@@ -181,7 +181,7 @@ int runRobot(const RobotArgs& a) {
   if (!st) return fail(st.error());
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (a.json) std::cout << robotJson(a, *robot, *fit, fo.seed).dump() << '\n';
+  if (a.json) std::cout << jsonText(robotJson(a, *robot, *fit, fo.seed)) << '\n';
   if (!a.quiet) printSummary(*fit, seconds);
   for (const RobotLinkFit& j : fit->links)
     if (!j.covered) {

@@ -109,7 +109,7 @@ int runTree(TreeArgs a) {
     nlohmann::json j = treeJson(a, fo, *r, vol, ev);
     j["repair"] = repairJson(m->repair);
     j["original_covered"] = ev.original_covered;
-    std::cout << j.dump() << '\n';
+    std::cout << jsonText(j) << '\n';
   }
   if (!a.fit.quiet) {
     const std::string rl = repairLine(m->repair);

@@ -190,9 +190,9 @@ Raises InvalidDataError for NaN/infinite coordinates, indices out of range or no
           "area", [](const PyMesh& pm) { return surfaceArea(pm.loaded.mesh); }, "Surface area.")
       .def("__len__", [](const PyMesh& pm) { return pm.loaded.mesh.triangles.size(); })
       .def("__repr__", [](const PyMesh& pm) {
-        return "<sphereset.Mesh '" + pm.loaded.report.path +
-               "': " + std::to_string(pm.loaded.mesh.vertices.size()) + " vertices, " +
-               std::to_string(pm.loaded.mesh.triangles.size()) + " triangles>";
+        return text("<sphereset.Mesh '" + pm.loaded.report.path +
+                    "': " + std::to_string(pm.loaded.mesh.vertices.size()) + " vertices, " +
+                    std::to_string(pm.loaded.mesh.triangles.size()) + " triangles>");
       });
 
   m.def(
@@ -338,8 +338,8 @@ and evaluate the same mesh several times. Raises NotSolidError when no solid can
           },
           py::arg("spheres"), "Exact volume of each sphere of an (N, 4) array outside the solid.")
       .def("__repr__", [](const PySolid& s) {
-        return "<sphereset.Solid '" + s.name + "': repair " + repairName(s.repair.kind) + ", " +
-               std::to_string(s.repair.solid.triangles.size()) + " triangles>";
+        return text("<sphereset.Solid '" + s.name + "': repair " + repairName(s.repair.kind) +
+                    ", " + std::to_string(s.repair.solid.triangles.size()) + " triangles>");
       });
 }
 

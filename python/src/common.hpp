@@ -91,4 +91,13 @@ void setOptions(const py::dict& options, Set&& set) {
 // default, help).
 py::list optionTable(std::span<const OptionSpec> table);
 
+// A Python str from library text that may hold file names in bytes that are not UTF-8: decoded
+// as os.fsdecode does (undecodable bytes become surrogates), never a UnicodeDecodeError.
+inline py::str text(const std::string& bytes) {
+  PyObject* o =
+      PyUnicode_DecodeFSDefaultAndSize(bytes.data(), static_cast<Py_ssize_t>(bytes.size()));
+  if (!o) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(o);
+}
+
 }  // namespace sphereset::python

@@ -168,7 +168,8 @@ PYBIND11_MODULE(_sphereset, m) {
           cls = write_failed;
           break;
       }
-      PyErr_SetString(cls, e.error().message.c_str());
+      // The message may name files in bytes that are not UTF-8: decoded as os.fsdecode does.
+      PyErr_SetObject(cls, text(e.error().message).ptr());
     }
   });
 

@@ -224,3 +224,22 @@ def test_evaluate_options_are_checked_by_the_library_table():
     r = ss.evaluate(box, one, samples=0, segments=0, shadow_resolution=0)
     assert r.surface_covered and r.interior_covered
 
+
+
+def test_file_names_that_are_not_utf8(tmp_path, cli):
+    # File names are bytes: "l\xff.stl" used to end in "internal error: [json.exception...]"
+    # after the fit, write invalid UTF-8 into YAML, and make repr(Mesh) raise.
+    name = os.fsdecode(b"l\xff.stl")
+    mesh = tmp_path / name
+    mesh.write_bytes(LINK.read_bytes())
+    assert "l\udcff.stl" in repr(ss.load_mesh(mesh))
+    with pytest.raises(ss.UnreadableError, match="n\udcffo.stl: no such file"):
+        ss.load_mesh(tmp_path / os.fsdecode(b"n\xffo.stl"))
+    out = tmp_path / os.fsdecode(b"o\xff.yaml")
+    r = cli("fit", mesh, "-n", "3", "--quality", "fast", "-o", out, "-q", "--json")
+    assert json.loads(r.stdout)["spheres"] == 3
+    out.read_bytes().decode("utf-8")  # valid UTF-8
+    assert ss.read_spheres(out).shape == (3, 4)
+    tree = tmp_path / "t.json"
+    cli("tree", mesh, "--branch", "2", "--depth", "1", "--quality", "fast", "-o", tree, "-q")
+    assert "\ufffd" in tree.read_text(encoding="utf-8")

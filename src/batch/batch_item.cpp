@@ -24,6 +24,7 @@
 #include "sphereset/repair.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"
+#include "util/json_text.hpp"
 #include "util/read_file.hpp"
 
 namespace sphereset {
@@ -104,7 +105,7 @@ Status writeRecord(const std::string& out_dir, const BatchItem& item, const Batc
   nlohmann::ordered_json companions = nlohmann::ordered_json::object();
   for (const auto& [path, digest] : files.companions) companions[path] = digest;
   j["companions"] = companions;
-  return writeTextFile(path, j.dump() + "\n");
+  return writeTextFile(path, detail::jsonText(j) + "\n");
 }
 
 // The fitting itself; fills `rep` (status ok) or returns the error.

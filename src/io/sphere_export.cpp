@@ -15,6 +15,7 @@
 #include "sphereset/render.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_io.hpp"
+#include "util/json_text.hpp"
 
 namespace sphereset {
 namespace {
@@ -217,9 +218,9 @@ std::string gltfBytes(const SphereSetMesh& m, bool binary) {
          {"type", "SCALAR"}}}}};
   if (!binary) {
     j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(bin);
-    out = j.dump(1) + "\n";
+    out = detail::jsonText(j, 1) + "\n";
   } else {
-    std::string js = j.dump();
+    std::string js = detail::jsonText(j);
     while (js.size() % 4) js += ' ';
     while (bin.size() % 4) bin += '\0';
     const uint32_t total =

@@ -20,6 +20,7 @@
 #include "io/sphere_formats.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_tree.hpp"
+#include "util/json_text.hpp"
 #include "util/read_file.hpp"
 
 namespace sphereset {
@@ -122,7 +123,7 @@ std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& sphere
       for (const Sphere& s : spheres)
         j["spheres"].push_back(
             {{"center", {s.center.x(), s.center.y(), s.center.z()}}, {"radius", s.radius}});
-      os << j.dump(2) << '\n';
+      os << detail::jsonText(j, 2) << '\n';
       break;
     }
     case SphereFormat::kSph: {

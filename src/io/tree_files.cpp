@@ -12,6 +12,7 @@
 #include "io/sphere_formats.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/sphere_tree.hpp"
+#include "util/json_text.hpp"
 #include "util/read_file.hpp"
 
 namespace sphereset {
@@ -74,7 +75,7 @@ std::string formatSphereTree(SphereFormat format, const SphereTree& tree,
     }
   }
   j["nodes"] = nodes;
-  os << j.dump(1) << '\n';
+  os << detail::jsonText(j, 1) << '\n';
   return os.str();
 }
 

@@ -16,6 +16,7 @@
 
 #include "io/sphere_formats.hpp"
 #include "sphereset/robot.hpp"
+#include "util/utf8.hpp"
 
 namespace sphereset::detail {
 namespace {
@@ -175,7 +176,9 @@ Expected<std::vector<LinkSpheres>> parseYamlLinks(const std::string& text,
   }
 }
 
-std::string yamlKey(const std::string& name) {
+std::string yamlKey(const std::string& raw) {
+  // A YAML file is UTF-8: names made of other bytes (file names are bytes) are repaired.
+  const std::string name = validUtf8(raw);
   // Plain when it is made of letters, digits and _-./, starts with neither '-' nor '.', and
   // reads as neither a number nor a YAML 1.1 boolean or null.
   bool plain = !name.empty() && name[0] != '-' && name[0] != '.';

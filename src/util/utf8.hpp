@@ -1,0 +1,46 @@
+// Private: text that must be UTF-8 (JSON, YAML, Python strings) made from bytes that may not be
+// (file names are bytes on Linux).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace sphereset::detail {
+
+// `bytes` with every byte that does not belong to a well-formed UTF-8 sequence replaced by
+// U+FFFD (the replacement character), as nlohmann::json's "replace" error handler does; valid
+// text is returned unchanged.
+inline std::string validUtf8(std::string_view bytes) {
+  std::string out;
+  out.reserve(bytes.size());
+  const auto* s = reinterpret_cast<const unsigned char*>(bytes.data());
+  const size_t n = bytes.size();
+  size_t i = 0;
+  while (i < n) {
+    const unsigned char c = s[i];
+    size_t len = c < 0x80           ? 1
+                 : (c >> 5) == 0x6  ? 2
+                 : (c >> 4) == 0xe  ? 3
+                 : (c >> 3) == 0x1e ? 4
+                                    : 0;
+    bool ok = len > 0 && i + len <= n;
+    for (size_t k = 1; ok && k < len; ++k) ok = (s[i + k] & 0xc0) == 0x80;
+    if (ok && len > 1) {
+      // No overlong forms, no surrogates, nothing above U+10FFFF.
+      const unsigned char d = s[i + 1];
+      if (len == 2) ok = c >= 0xc2;
+      if (len == 3) ok = !(c == 0xe0 && d < 0xa0) && !(c == 0xed && d >= 0xa0);
+      if (len == 4) ok = !(c == 0xf0 && d < 0x90) && !(c == 0xf4 && d >= 0x90) && c <= 0xf4;
+    }
+    if (ok) {
+      out.append(bytes.substr(i, len));
+      i += len;
+    } else {
+      out += "\xef\xbf\xbd";
+      ++i;
+    }
+  }
+  return out;
+}
+
+}  // namespace sphereset::detail
