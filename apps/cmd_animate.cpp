@@ -34,10 +34,9 @@ struct Frames {
   std::string clip;
 };
 
-Expected<Frames> readFrames(const AnimateArgs& a) {
+// `rest` as loaded: the frames of --frames are read through its clean-up (loadFrameMesh).
+Expected<Frames> readFrames(const AnimateArgs& a, const LoadedMesh& rest) {
   Frames out;
-  LoadOptions lo;
-  lo.weld_tolerance = a.weld;
   if (!a.animation.empty()) {
     SkinnedLoadOptions so;
     so.clip = a.clip;
@@ -53,14 +52,10 @@ Expected<Frames> readFrames(const AnimateArgs& a) {
     return out;
   }
   for (const std::string& path : a.frames) {
-    auto m = loadMesh(path, lo);
-    if (!m) return m.error();
-    AnimationFrame f;
-    f.time = static_cast<double>(out.frames.size());
-    f.vertices = std::move(m->mesh.vertices);
-    f.triangles = std::move(m->mesh.triangles);  // the library checks them against the rest's
-    f.name = path;
-    out.frames.push_back(std::move(f));
+    auto f = loadFrameMesh(path, rest);
+    if (!f) return f.error();
+    f->time = static_cast<double>(out.frames.size());
+    out.frames.push_back(std::move(f).value());
   }
   return out;
 }
@@ -87,10 +82,8 @@ int runAnimate(const AnimateArgs& a) {
   if (!spheres) return fail(spheres.error());
   if (spheres->empty())
     return fail(Error{ErrorCode::kInvalidData, a.spheres + ": the file holds no spheres"});
-  auto frames = readFrames(a);
+  auto frames = readFrames(a, *rest);
   if (!frames) return fail(frames.error());
-  if (std::filesystem::exists(a.out) && !std::filesystem::is_directory(a.out))
-    return fail(Error{ErrorCode::kWriteFailed, a.out + ": exists and is not a folder"});
 
   AnimateOptions o;
   o.rebound = a.rebound;

@@ -162,12 +162,13 @@ Expected<AnimateResult> animateSpheres(const Mesh& rest, const std::vector<Spher
 // Errors: kInvalidArgument (skin rows other than the rest mesh's vertices, neighbours < 1),
 // kInvalidData (points × bones beyond limits::kMaxArrayBytes).
 Expected<Eigen::MatrixXd> pointBoneWeights(const Mesh& rest, const SkinWeights& skin,
-                                 const std::vector<Vec3>& points, int neighbours);
+                                           const std::vector<Vec3>& points, int neighbours);
 
 // Linear blend skinning of points: p' = Σ_b w_b T_b p (points with no weight stay put). Errors:
 // kInvalidArgument (weight rows other than the points, columns other than the bones).
-Expected<std::vector<Vec3>> skinPoints(const std::vector<Vec3>& points, const Eigen::MatrixXd& weights,
-                             const std::vector<Eigen::Affine3d>& bones);
+Expected<std::vector<Vec3>> skinPoints(const std::vector<Vec3>& points,
+                                       const Eigen::MatrixXd& weights,
+                                       const std::vector<Eigen::Affine3d>& bones);
 
 // A skinned, animated asset read through assimp (FBX, glTF 2.0, COLLADA, DirectX .x, SMD...).
 struct SkinnedAsset {
@@ -197,5 +198,14 @@ struct LoadedAnimation {
 // clips).
 Expected<LoadedAnimation> loadAnimation(const std::string& path,
                                         const SkinnedLoadOptions& options = {});
+
+// One frame of a deforming mesh from a file that lists the same vertices and faces as the rest
+// mesh's file, in the same order (`sphereset animate --frames`): its vertices are read as they
+// are and taken through the rest's clean-up (LoadReport::vertex_of_file, source_face), so that
+// vertices which the deformation makes coincide stay distinct (welding the frame on its own
+// merged them); its faces come the same way, for animateSpheres to compare with the rest's.
+// `rest` is the rest mesh as loadMesh read it. Errors: those of loadMesh; kInvalidData when the
+// file's vertex or face count differs from the rest file's (both named).
+Expected<AnimationFrame> loadFrameMesh(const std::string& path, const LoadedMesh& rest);
 
 }  // namespace sphereset

@@ -47,6 +47,9 @@ struct LoadOptions {
   double weld_tolerance = 0.0;
   // Flip every triangle when the signed volume is negative (the mesh is inside out).
   bool orient_outward = true;
+  // false: the file's vertices and triangles as they are (no welding, nothing dropped or
+  // flipped), e.g. to read a deformed copy of a mesh vertex by vertex (loadFrameMesh).
+  bool clean = true;
 };
 
 // What the loader did to the file's data to make an indexed triangle mesh.
@@ -61,6 +64,10 @@ struct LoadReport {
   int64_t degenerate_dropped = 0;  // triangles with repeated vertices or zero area, dropped
   int64_t duplicate_dropped = 0;   // triangles repeating another's vertex set, dropped
   bool flipped = false;            // orientation was reversed to make the volume positive
+  // How the clean-up maps the file's data (as the reader lists it) to the mesh: the mesh vertex
+  // of each file vertex (-1: unused), and the file face of each mesh triangle.
+  std::vector<int32_t> vertex_of_file;
+  std::vector<int64_t> source_face;
   // Every file read, the mesh first, then the companions its format references as the reader
   // opened them (a glTF's .bin buffers, an OBJ's .mtl): what the mesh depends on.
   std::vector<std::string> files;

@@ -103,7 +103,7 @@ Status writeRecord(const std::string& out_dir, const BatchItem& item, const Batc
   nlohmann::ordered_json j = nlohmann::ordered_json::parse(reportLine(report));
   j["output_digest"] = files.output_digest;
   nlohmann::ordered_json companions = nlohmann::ordered_json::object();
-  for (const auto& [path, digest] : files.companions) companions[path] = digest;
+  for (const auto& [file, digest] : files.companions) companions[file] = digest;
   j["companions"] = companions;
   return writeTextFile(path, detail::jsonText(j) + "\n");
 }

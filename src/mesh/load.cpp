@@ -123,6 +123,15 @@ Expected<LoadedMesh> cleanMesh(std::vector<Vec3> vertices, std::vector<Triangle>
     return Error{ErrorCode::kInvalidData,
                  name + ": the file contains no triangles (points or lines only, or nothing)"};
 
+  if (!options.clean) {
+    rep.vertex_of_file.resize(vertices.size());
+    std::iota(rep.vertex_of_file.begin(), rep.vertex_of_file.end(), 0);
+    rep.source_face.resize(triangles.size());
+    std::iota(rep.source_face.begin(), rep.source_face.end(), 0);
+    out.mesh.vertices = std::move(vertices);
+    out.mesh.triangles = std::move(triangles);
+    return out;
+  }
   std::vector<Vec3> welded;
   const std::vector<int32_t> remap = weldVertices(vertices, options.weld_tolerance, &welded);
   rep.welded_vertices = static_cast<int64_t>(vertices.size() - welded.size());
@@ -132,7 +141,8 @@ Expected<LoadedMesh> cleanMesh(std::vector<Vec3> vertices, std::vector<Triangle>
   std::vector<Triangle> kept;
   kept.reserve(triangles.size());
   std::unordered_map<detail::CellKey, int, detail::CellKeyHash> seen;
-  for (const Triangle& t0 : triangles) {
+  for (size_t face = 0; face < triangles.size(); ++face) {
+    const Triangle& t0 = triangles[face];
     const Triangle t = {remap[t0[0]], remap[t0[1]], remap[t0[2]]};
     const Vec3 nrm = (welded[t[1]] - welded[t[0]]).cross(welded[t[2]] - welded[t[0]]);
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || !(nrm.squaredNorm() > 0.0)) {
@@ -146,6 +156,7 @@ Expected<LoadedMesh> cleanMesh(std::vector<Vec3> vertices, std::vector<Triangle>
       continue;
     }
     kept.push_back(t);
+    rep.source_face.push_back(static_cast<int64_t>(face));
   }
   if (kept.empty())
     return Error{ErrorCode::kInvalidData,
@@ -164,6 +175,8 @@ Expected<LoadedMesh> cleanMesh(std::vector<Vec3> vertices, std::vector<Triangle>
   rep.unused_vertices = static_cast<int64_t>(welded.size()) - next;
   for (Triangle& t : kept)
     for (int32_t& k : t) k = used[k];
+  rep.vertex_of_file.resize(vertices.size());
+  for (size_t i = 0; i < vertices.size(); ++i) rep.vertex_of_file[i] = used[remap[i]];
   out.mesh.triangles = std::move(kept);
 
   if (options.orient_outward && signedVolume(out.mesh) < 0.0) {

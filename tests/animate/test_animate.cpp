@@ -136,10 +136,9 @@ TEST(Animate, FramesThatPassThroughThemselvesAreFlagged) {
   // Bent by 2.5 radians about the bar's axis (not its inner edge): the inner side folds.
   AnimationFrame fold;
   const Vec3 joint(2.0, 0.0, 0.0);
-  fold.bones = {Eigen::Affine3d::Identity(),
-                Eigen::Affine3d(Eigen::Translation3d(joint) *
-                                Eigen::AngleAxisd(2.5, Vec3::UnitZ()) *
-                                Eigen::Translation3d(-joint))};
+  fold.bones = {Eigen::Affine3d::Identity(), Eigen::Affine3d(Eigen::Translation3d(joint) *
+                                                             Eigen::AngleAxisd(2.5, Vec3::UnitZ()) *
+                                                             Eigen::Translation3d(-joint))};
   fold.vertices = skinPoints(bar.rest.vertices, bar.skin.vertex_weights, fold.bones).value();
   auto r = animateSpheres(bar.rest, barSpheres(), {bendFrame(bar, 1.4), fold});
   ASSERT_TRUE(r.ok()) << r.error().message;
@@ -203,9 +202,10 @@ TEST(Animate, RefusesAFrameWithOtherTriangles) {
   auto r = animateSpheres(bar.rest, barSpheres(), {f});
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().code, ErrorCode::kInvalidData);
-  EXPECT_EQ(r.error().message,
-            "frame 0 (bent.off): its triangles differ from the rest mesh's (frames need the rest mesh's "
-            "vertices in its order)");
+  EXPECT_EQ(
+      r.error().message,
+      "frame 0 (bent.off): its triangles differ from the rest mesh's (frames need the rest mesh's "
+      "vertices in its order)");
 }
 
 // The public kernels check their parallel arrays instead of reading past them.
@@ -322,6 +322,33 @@ TEST(SkinnedAsset, AnAssetWithoutAnimationIsAnError) {
   EXPECT_EQ(a.error().code, ErrorCode::kInvalidData);
   EXPECT_NE(a.error().message.find("no animation"), std::string::npos);
   std::filesystem::remove(path);
+}
+
+// A frame whose deformation makes two vertices coincide: welding the frame on its own merged
+// them ("3 vertices, rest has 4" for a file with 4); loadFrameMesh keeps the rest's vertices.
+class FrameMesh : public test::TempDirTest {};
+
+TEST_F(FrameMesh, CoincidentVerticesOfAFrameStayDistinct) {
+  const std::string cube =
+      "OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
+      "3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n"
+      "3 0 6 2\n3 1 3 7\n3 1 7 5\n";
+  auto rest = loadMesh(write("rest.off", cube));
+  ASSERT_TRUE(rest.ok()) << rest.error().message;
+  std::string moved = cube;
+  moved.replace(moved.find("1 0 0\n"), 6, "0 0 0\n");  // vertex 1 onto vertex 0
+  const std::string frame_path = write("frame.off", moved);
+  ASSERT_EQ(loadMesh(frame_path)->mesh.vertices.size(), 7u);  // what welding it alone gives
+  auto frame = loadFrameMesh(frame_path, *rest);
+  ASSERT_TRUE(frame.ok()) << frame.error().message;
+  ASSERT_EQ(frame->vertices.size(), 8u);
+  EXPECT_EQ(frame->vertices[1], Vec3::Zero());
+  EXPECT_EQ(frame->triangles, rest->mesh.triangles);
+  // A file of another mesh is refused, naming both counts.
+  const std::string tet = write(
+      "tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  test::expectError(loadFrameMesh(tet, *rest), ErrorCode::kInvalidData, tet,
+                    "4 vertices and 4 faces, the rest mesh's file");
 }
 
 }  // namespace
