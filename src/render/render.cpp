@@ -28,6 +28,10 @@ constexpr double kAmbient = 0.3;
 constexpr double kRayOffsetRel = 1e-6;
 // The visible ground is a square this many times the scene radius, centred under it.
 constexpr double kGroundScale = 2.5;
+// The scene's radius at least this: only an empty scene (a point) gets it. Everything else is
+// relative to the scene's size, so that a mesh of size 1e-30 renders like one of size 1 (an
+// absolute floor of 1e-12 used to frame such a mesh as a speck: a blank picture).
+constexpr double kMinSceneRadius = std::numeric_limits<double>::min();
 
 struct Scene {
   const SolidIndex* mesh;
@@ -136,7 +140,7 @@ std::vector<Camera> renderCameras(const SolidIndex* mesh, const std::vector<Sphe
                                   const RenderOptions& o) {
   const Aabb b = o.bounds ? *o.bounds : sceneBounds(mesh, spheres);
   const Vec3 centre = b.center();
-  const double radius = std::max(0.5 * b.diagonal(), 1e-12);
+  const double radius = std::max(0.5 * b.diagonal(), kMinSceneRadius);
   const Vec3 up = Vec3::Unit(o.up_axis);
   const Vec3 a = Vec3::Unit((o.up_axis + 1) % 3), c = Vec3::Unit((o.up_axis + 2) % 3);
   const int nv = static_cast<int>(o.views.size());
@@ -195,7 +199,7 @@ Expected<Image> renderScene(const SolidIndex* mesh, const std::vector<Sphere>& s
   const Vec3 a = Vec3::Unit((o.up_axis + 1) % 3), c = Vec3::Unit((o.up_axis + 2) % 3);
   sc.light = (sc.up + 0.45 * a + 0.3 * c).normalized();
   sc.centre = b.center();
-  sc.radius = std::max(0.5 * b.diagonal(), 1e-12);
+  sc.radius = std::max(0.5 * b.diagonal(), kMinSceneRadius);
   // The ground touches the object's lowest point (the mesh's, when there is one).
   sc.ground = (mesh && !o.bounds ? mesh->bounds().min : b.min).dot(sc.up);
   sc.ground_half = kGroundScale * sc.radius;

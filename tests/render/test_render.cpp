@@ -56,6 +56,25 @@ TEST(Render, SpherePresentAbsentAndShadow) {
   EXPECT_LT(brightness(*top, sx, sy) + 100, brightness(*top, lx, ly));
 }
 
+// The picture does not depend on the scene's scale: a mesh 1e-30 across used to render blank
+// (the scene's radius had an absolute floor of 1e-12).
+TEST(Render, TinyScenesLookLikeUnitOnes) {
+  const double tiny = 1e-30;
+  const SolidIndex unit(test::makeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1)));
+  const SolidIndex small(test::makeBox(Vec3(-tiny, -tiny, -tiny), Vec3(tiny, tiny, tiny)));
+  RenderOptions o;
+  o.width = 120;
+  o.height = 120;
+  o.views = {View::kThreeQuarter};
+  auto a = renderScene(&unit, {{Vec3::Zero(), 1.5}}, o);
+  auto b = renderScene(&small, {{Vec3::Zero(), 1.5 * tiny}}, o);
+  ASSERT_TRUE(a.ok() && b.ok());
+  int differ = 0;
+  for (size_t i = 0; i < a->rgb.size(); ++i)
+    differ += std::abs(int(a->rgb[i]) - int(b->rgb[i])) > 2;
+  EXPECT_LT(differ, static_cast<int>(a->rgb.size() / 100)) << differ;
+}
+
 TEST(Render, PngIsWrittenAndBadOptionsAreRefused) {
   const std::vector<Sphere> ball = {{Vec3::Zero(), 1.0}};
   RenderOptions o;
