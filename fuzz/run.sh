@@ -4,15 +4,14 @@
 # after replaying the inputs that once crashed (fuzz/regressions/<target>/). Fails when any
 # target crashes, leaks, times out or breaks an invariant; the input is kept in
 # <build>/crashes/. Environment: FUZZ_SECONDS (per target, default 6), FUZZ_BUILD_DIR
-# (default build-fuzz), FUZZ_TARGETS (default all but animation, which is built and runs when
-# named: FUZZ_TARGETS=animation; assimp's SMD reader can take over 10 s on a malformed file).
+# (default build-fuzz), FUZZ_TARGETS (default all).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 root=$PWD
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 seconds=${FUZZ_SECONDS:-6}
-targets=${FUZZ_TARGETS:-"off ply stl obj spheres_txt spheres_json spheres_sph spheres_yaml tree repair urdf"}
+targets=${FUZZ_TARGETS:-"off ply stl obj spheres_txt spheres_json spheres_sph spheres_yaml tree repair urdf animation"}
 
 launcher=()
 if command -v ccache > /dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi

@@ -169,6 +169,7 @@ Expected<LoadedAnimation> loadAnimation(const std::string& path,
   if (!(options.fps >= 0.0) || !std::isfinite(options.fps))
     return Error{ErrorCode::kInvalidArgument,
                  "fps must be a positive number, or 0 for the clip's keyframe times"};
+  if (Status st = detail::checkTextOnly(path); !st) return st.error();
   Assimp::Importer importer;
   importer.SetIOHandler(new detail::CompanionIOSystem(path));  // owned by the importer
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
