@@ -71,17 +71,11 @@ int runTree(TreeArgs a) {
   if (Status st = checkOutputPath(a.fit.out_path, {a.fit.mesh.path}); !st) return fail(st.error());
   auto request = fitRequest(a.fit);
   if (!request) return fail(request.error());
-  if (a.leaves == 0) {
-    // B^D leaves, when that is a sensible count (otherwise the library says why not).
-    int64_t leaves = 1;
-    for (int l = 0; l < a.to.depth && leaves <= (int64_t{1} << 16); ++l) leaves *= a.to.branching;
-    if (leaves <= (int64_t{1} << 16)) a.leaves = static_cast<int>(leaves);
-  }
-  // The leaves replace the table's n; the preset's points follow them.
+  // The leaves replace the table's n (0: branching^depth); the preset's points follow them.
   request->num_spheres = a.leaves;
-  if (a.leaves > 0)
-    if (Status st = checkFitRequest(*request); !st) return fail(st.error());
-  FitOptions fo = fitOptions(*request, a.fit.quiet);
+  auto leaves = treeFitRequest(*request, a.to);
+  if (!leaves) return fail(leaves.error());
+  FitOptions fo = fitOptions(*leaves, a.fit.quiet);
   auto m = loadSolid(a.fit.mesh);
   if (!m) return fail(m.error());
   fo.original = m->original();

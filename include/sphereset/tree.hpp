@@ -58,4 +58,13 @@ struct TreeFitResult {
 Expected<TreeFitResult> fitSphereTree(const SolidIndex& index, FitOptions fit,
                                       const TreeOptions& options);
 
+// Leaves of a fitted tree when no count is given: branching^depth, at most this many.
+inline constexpr int64_t kMaxDefaultTreeLeaves = int64_t{1} << 16;
+
+// The fit request of a tree's leaves, as `sphereset tree` and Python's tree make it: `request`
+// with num_spheres = branching^depth when it is 0 (the preset's points then follow the leaves),
+// checked (checkFitRequest). kInvalidArgument for tree options out of range, or a default
+// count above kMaxDefaultTreeLeaves ("give the number of spheres").
+Expected<FitRequest> treeFitRequest(FitRequest request, const TreeOptions& options);
+
 }  // namespace sphereset

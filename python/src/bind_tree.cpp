@@ -165,23 +165,14 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
       "_fit_tree",
       [](const std::shared_ptr<PySolid>& solid, int branching, int depth,
          const std::string& parents, const py::dict& fit_options, const py::object& progress) {
-        if (branching < 2 || depth < 1)
-          raise(ErrorCode::kInvalidArgument, "branching must be >= 2 and depth >= 1");
         FitRequest rq = fitRequest(fit_options);
-        if (!fit_options.contains("n") || fit_options["n"].is_none()) {
-          // B^D leaves, as `sphereset tree` does without -n.
-          int64_t leaves = 1;
-          for (int l = 0; l < depth && leaves <= (int64_t{1} << 16); ++l) leaves *= branching;
-          if (leaves > (int64_t{1} << 16))
-            raise(ErrorCode::kInvalidArgument, "branching^depth leaves is too many; give n");
-          rq.num_spheres = static_cast<int>(leaves);
-        }
-        FitOptions fo = fitOptionsFor(rq);
-        fo.original = solid->original();
-        installProgress(&fo, progress);
+        if (!fit_options.contains("n") || fit_options["n"].is_none()) rq.num_spheres = 0;
         TreeOptions to;
         to.branching = branching;
         to.depth = depth;
+        FitOptions fo = fitOptionsFor(unwrap(treeFitRequest(rq, to)));
+        fo.original = solid->original();
+        installProgress(&fo, progress);
         to.parents = parentsFromName(parents);
         to.seed = fo.seed;
         Expected<TreeFitResult> r = Error{ErrorCode::kInvalidArgument, "not run"};
@@ -206,7 +197,8 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
       "_point_distance",
       [](const py::object& set, const py::object& points) {
         const Target t = target(set, "spheres");
-        const std::vector<Vec3> p = pointsFromArray(points, "points");
+        // Finite and in range: the library's check (its message, as the command line's).
+        const std::vector<Vec3> p = pointsFromArray(points, "points", false);
         const auto np = static_cast<py::ssize_t>(p.size());
         py::array_t<double> dist(np);
         py::array_t<int64_t> ids(np);
@@ -220,8 +212,7 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
           for (py::ssize_t i = 0; i < np && failed; ++i) {
             const auto q = pointDistance(t.tree, p[static_cast<size_t>(i)]);
             if (!q) {
-              failed =
-                  Error{q.error().code, "points[" + std::to_string(i) + "]: " + q.error().message};
+              failed = q.error();
               break;
             }
             dv(i) = q->distance;
@@ -238,8 +229,8 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
       "_segment_outside_length",
       [](const py::object& set, const py::object& a, const py::object& b) {
         const Target t = target(set, "spheres");
-        const std::vector<Vec3> pa = pointsFromArray(a, "a");
-        const std::vector<Vec3> pb = pointsFromArray(b, "b");
+        const std::vector<Vec3> pa = pointsFromArray(a, "a", false);
+        const std::vector<Vec3> pb = pointsFromArray(b, "b", false);
         if (pa.size() != pb.size())
           raise(ErrorCode::kInvalidArgument, "a and b must hold as many points");
         py::array_t<double> out(static_cast<py::ssize_t>(pa.size()));
@@ -250,8 +241,7 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
           for (size_t i = 0; i < pa.size(); ++i) {
             const auto len = segmentOutsideLength(t.tree, pa[i], pb[i]);
             if (!len) {
-              failed = Error{len.error().code,
-                             "segment " + std::to_string(i) + ": " + len.error().message};
+              failed = len.error();
               break;
             }
             v(static_cast<py::ssize_t>(i)) = *len;

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -301,12 +302,21 @@ Expected<std::vector<Sphere>> parseSpheres(SphereFormat format, const std::strin
     if (hash != std::string::npos) line.erase(hash);
     std::replace(line.begin(), line.end(), ',', ' ');
     std::istringstream is(line);
-    Sphere s;
-    if (!(is >> s.center.x())) continue;  // blank line
-    std::string extra;
-    if (!(is >> s.center.y() >> s.center.z() >> s.radius) || (is >> extra))
+    std::vector<std::string> words;
+    for (std::string w; is >> w;) words.push_back(w);
+    if (words.empty()) continue;  // blank line (a line of other words is an error, not a skip)
+    // Numbers as strtod reads them ("nan" and "inf" included, for checkSphere to name).
+    double v[4];
+    bool numbers = words.size() == 4;
+    for (size_t k = 0; numbers && k < 4; ++k) {
+      char* end = nullptr;
+      v[k] = std::strtod(words[k].c_str(), &end);
+      numbers = end == words[k].c_str() + words[k].size();
+    }
+    if (!numbers)
       return Error{ErrorCode::kInvalidData,
                    path + ":" + std::to_string(lineno) + ": expected four numbers x y z r"};
+    const Sphere s{Vec3(v[0], v[1], v[2]), v[3]};
     Status st = checkSphere(path + ":" + std::to_string(lineno), s);
     if (!st) return st.error();
     out.push_back(s);

@@ -160,19 +160,33 @@ Sphere parentOf(const std::vector<Sphere>& kids, const TreeOptions& o, const Sol
 
 }  // namespace
 
-Expected<TreeResult> buildSphereTree(std::span<const Sphere> leaves, const TreeOptions& o,
-                                     const SolidIndex* index) {
-  const auto t0 = std::chrono::steady_clock::now();
-  if (o.branching < 2) return Error{ErrorCode::kInvalidArgument, "branching must be at least 2"};
-  if (o.depth < 1) return Error{ErrorCode::kInvalidArgument, "depth must be at least 1"};
+namespace {
+
+// The shape and effort of a tree: one wording for buildSphereTree and fitSphereTree.
+Status checkTreeOptions(const TreeOptions& o) {
+  if (o.branching < 2)
+    return Error{ErrorCode::kInvalidArgument,
+                 "branching " + std::to_string(o.branching) + ": must be at least 2"};
+  if (o.depth < 1)
+    return Error{ErrorCode::kInvalidArgument,
+                 "depth " + std::to_string(o.depth) + ": must be at least 1"};
   if (o.max_iterations < 1 || o.optimizer_evaluations < 0)
-    return Error{ErrorCode::kInvalidArgument, "tree options out of range"};
-  const int64_t slots = SphereTree::slotCount(o.branching, o.depth);
-  if (slots < 0)
+    return Error{ErrorCode::kInvalidArgument,
+                 "tree max_iterations must be at least 1 and optimizer_evaluations at least 0"};
+  if (SphereTree::slotCount(o.branching, o.depth) < 0)
     return Error{ErrorCode::kInvalidArgument, "branching " + std::to_string(o.branching) +
                                                   " and depth " + std::to_string(o.depth) +
                                                   " make a tree of more than " +
                                                   std::to_string(SphereTree::kMaxSlots) + " nodes"};
+  return {};
+}
+
+}  // namespace
+
+Expected<TreeResult> buildSphereTree(std::span<const Sphere> leaves, const TreeOptions& o,
+                                     const SolidIndex* index) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (Status st = checkTreeOptions(o); !st) return st.error();
   SphereTree tree;
   tree.branching = o.branching;
   tree.depth = o.depth;
@@ -218,7 +232,7 @@ Expected<TreeResult> buildSphereTree(std::span<const Sphere> leaves, const TreeO
   }
 
   // Top-down layout: child j of the node in slot s goes to slot s·B + 1 + j.
-  tree.nodes.assign(slots, Sphere{Vec3::Zero(), -1.0});
+  tree.nodes.assign(SphereTree::slotCount(o.branching, o.depth), Sphere{Vec3::Zero(), -1.0});
   std::vector<int64_t> slot_of{0};  // slots of the current level's spheres
   tree.nodes[0] = lvl[0][0];
   for (int l = 0; l < d; ++l) {
@@ -246,19 +260,32 @@ Expected<TreeResult> buildSphereTree(std::span<const Sphere> leaves, const TreeO
   return res;
 }
 
+Expected<FitRequest> treeFitRequest(FitRequest request, const TreeOptions& options) {
+  if (Status st = checkTreeOptions(options); !st) return st.error();
+  if (request.num_spheres == 0) {
+    const int64_t leaves =
+        SphereTree{options.branching, options.depth, {}}.levelSize(options.depth);
+    if (leaves > kMaxDefaultTreeLeaves)
+      return Error{ErrorCode::kInvalidArgument,
+                   "branching^depth = " + std::to_string(leaves) + " leaves (more than " +
+                       std::to_string(kMaxDefaultTreeLeaves) +
+                       ") is too many to fit; give the number of spheres"};
+    request.num_spheres = static_cast<int>(leaves);
+  }
+  if (Status st = checkFitRequest(request); !st) return st.error();
+  return request;
+}
+
 Expected<TreeFitResult> fitSphereTree(const SolidIndex& index, FitOptions fit,
                                       const TreeOptions& options) {
-  if (options.branching < 2 || options.depth < 1 ||
-      SphereTree::slotCount(options.branching, options.depth) < 0)
-    return Error{ErrorCode::kInvalidArgument,
-                 "branching must be at least 2, depth at least 1, "
-                 "and the tree of a sensible size"};
+  if (Status st = checkTreeOptions(options); !st) return st.error();
   const int64_t max_leaves =
       SphereTree{options.branching, options.depth, {}}.levelSize(options.depth);
   if (fit.num_spheres == 0) {
     if (max_leaves > (int64_t{1} << 16))
       return Error{ErrorCode::kInvalidArgument,
-                   "B^D = " + std::to_string(max_leaves) + " leaves is too many to fit; give -n"};
+                   "branching^depth = " + std::to_string(max_leaves) +
+                       " leaves is too many to fit; give the number of spheres"};
     fit.num_spheres = static_cast<int>(max_leaves);
   }
   auto f = fitSpheres(index, fit);

@@ -1,0 +1,93 @@
+"""The hostile-input table (tests/hostile/cases.json) through the command line and the Python
+module: the same status (exit code, exception class) and the same message from both, matching
+the table, and nothing written. tests/hostile/test_hostile.cpp runs it through the C++ API."""
+
+import json
+import re
+import subprocess
+
+import pytest
+
+import sphereset as ss
+from conftest import SOURCE_DIR, cli_path
+
+HOSTILE = SOURCE_DIR / "tests" / "hostile"
+CASES = json.loads((HOSTILE / "cases.json").read_text())
+
+# Status -> (exit code of the command line, exception class of the Python module).
+STATUS = {"invalid_argument": (2, ss.InvalidArgumentError), "unreadable": (3, ss.UnreadableError),
+          "invalid_data": (4, ss.InvalidDataError), "not_solid": (5, ss.NotSolidError),
+          "write_failed": (6, ss.WriteError)}
+# Options outside the library's fit and evaluation tables: the repair's and the tree's.
+EXTRA_FLAGS = {"wrap_alpha": "--wrap-alpha", "wrap_offset": "--wrap-offset",
+               "branching": "--branch", "depth": "--depth"}
+
+
+def flag(name):
+    for row in ss._core._fit_option_table() + ss.eval_option_table():
+        if row["name"] == name:
+            return row["flag"].split(",")[-1]
+    return EXTRA_FLAGS[name]
+
+
+def command(case, files, out):
+    op, opts = case["op"], case.get("options", {})
+    flags = [x for name, value in opts.items() for x in (flag(name), value)]
+    if op == "fit":
+        return ["fit", files[0], "-o", out / "x.json", "-q", *flags]
+    if op == "tree":
+        return ["tree", files[0], "-o", out / "t.sph", "-q", *flags]
+    if op == "eval":
+        return ["eval", files[0], files[1], *flags]
+    if op == "query":
+        return ["query", files[0], "--point", ",".join(str(v) for v in case["point"])]
+    if op == "robot":
+        return ["robot", files[0], "-o", out / "r.yml", "-q"]
+    if op == "animate":
+        return ["animate", files[0], files[1], "--animation", files[0], "-o", out / "anim", "-q"]
+    raise AssertionError(op)
+
+
+def python_call(case, files):
+    opts = {name: float(v) if name.startswith("wrap") else int(v)
+            for name, v in case.get("options", {}).items()}
+    op = case["op"]
+    if op == "fit":
+        return lambda: ss.fit(files[0], **opts)
+    if op == "tree":
+        return lambda: ss.tree(files[0], **opts)
+    if op == "eval":
+        return lambda: ss.evaluate(files[0], ss.read_spheres(files[1]), **opts)
+    if op == "query":
+        point = [[float(v) for v in case["point"]]]
+        return lambda: ss.point_distance(ss.read_sphere_tree(files[0]), point)
+    if op == "robot":
+        return lambda: ss.fit_robot(files[0])
+    if op == "animate":
+        return lambda: ss.load_animation(files[0])
+    raise AssertionError(op)
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c["name"] for c in CASES])
+def test_every_door_gives_the_same_status_and_message(case, tmp_path):
+    exe = cli_path()
+    if exe is None:
+        pytest.skip("the sphereset command-line tool is not available (set SPHERESET_CLI)")
+    files = [str((HOSTILE / f).resolve()) for f in case["inputs"]]
+    code, error_class = STATUS[case["code"]]
+    out = tmp_path / "out"
+    out.mkdir()
+    r = subprocess.run([exe, *map(str, command(case, files, out))], capture_output=True,
+                       timeout=60)
+    stderr = r.stderr.decode()
+    if r.returncode == 5 and case.get("repair"):
+        pytest.skip("built without the repair library")
+    assert r.returncode == code, stderr
+    assert stderr.startswith("sphereset: ") and stderr.count("\n") == 1, stderr
+    message = stderr[len("sphereset: "):].rstrip("\n")
+    assert re.search(case["message"], message), message
+    with pytest.raises(ss.Error) as e:
+        python_call(case, files)()
+    assert type(e.value) is error_class
+    assert str(e.value) == message
+    assert not any(out.iterdir())  # nothing written

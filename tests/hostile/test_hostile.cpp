@@ -1,0 +1,135 @@
+// The hostile-input table (tests/hostile/cases.json) through the C++ API: every case ends in the
+// status and message the table gives, never a crash, a hang or an allocation beyond the limits.
+// python/tests/test_hostile.py runs the same table through the command line and Python.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "sphereset/animate.hpp"
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/query.hpp"
+#include "sphereset/repair.hpp"
+#include "sphereset/robot.hpp"
+#include "sphereset/sphere_io.hpp"
+#include "sphereset/tree.hpp"
+#ifdef SPHERESET_TEST_REPAIR
+#include "sphereset/repair_cgal.hpp"
+#endif
+
+namespace sphereset {
+namespace {
+
+const std::string kDir = std::string(SPHERESET_TEST_DATA_DIR) + "/../hostile/";
+
+ErrorCode codeNamed(const std::string& name) {
+  static const std::map<std::string, ErrorCode> codes = {
+      {"invalid_argument", ErrorCode::kInvalidArgument},
+      {"unreadable", ErrorCode::kUnreadable},
+      {"invalid_data", ErrorCode::kInvalidData},
+      {"not_solid", ErrorCode::kNotSolid},
+      {"write_failed", ErrorCode::kWriteFailed}};
+  return codes.at(name);
+}
+
+template <class T>
+Status statusOf(const Expected<T>& e) {
+  return e ? Status{} : Status{e.error()};
+}
+
+// The fit's and the repair's options of a case, as the front doors hand them to the library.
+Status fitCase(const std::vector<std::string>& in, const nlohmann::json& opts) {
+  FitRequest request;
+  RepairOptions repair;
+#ifdef SPHERESET_TEST_REPAIR
+  repair.operations = cgalSolidOperations();
+#endif
+  for (const auto& [name, value] : opts.items()) {
+    const std::string text = value.get<std::string>();
+    if (name == "wrap_alpha")
+      repair.wrap_alpha = std::stod(text);
+    else if (name == "wrap_offset")
+      repair.wrap_offset = std::stod(text);
+    else if (Status st = setFitRequestOption(&request, name, text); !st)
+      return st;
+  }
+  auto solid = loadSolid(in[0], repair);
+  if (!solid) return solid.error();
+  FitOptions fo = fitOptionsFor(request);
+  fo.original = solid->original();
+  return statusOf(fitSpheres(SolidIndex(solid->repair.solid), fo));
+}
+
+Status treeCase(const std::vector<std::string>& in, const nlohmann::json& opts) {
+  TreeOptions to;
+  to.branching = std::stoi(opts.at("branching").get<std::string>());
+  to.depth = std::stoi(opts.at("depth").get<std::string>());
+  auto solid = loadSolid(in[0], RepairOptions{});
+  if (!solid) return solid.error();
+  FitOptions fo;
+  fo.num_spheres = 0;
+  return statusOf(fitSphereTree(SolidIndex(solid->repair.solid), fo, to));
+}
+
+Status evalCase(const std::vector<std::string>& in, const nlohmann::json& opts) {
+  EvalOptions eo;
+  for (const auto& [name, value] : opts.items())
+    if (Status st = setEvalOption(&eo, name, value.get<std::string>()); !st) return st;
+  auto solid = loadSolid(in[0], RepairOptions{});
+  if (!solid) return solid.error();
+  auto spheres = readSpheres(in[1]);
+  if (!spheres) return spheres.error();
+  return statusOf(evaluateSpheres(SolidIndex(solid->repair.solid), *spheres, eo));
+}
+
+Status queryCase(const std::vector<std::string>& in, const nlohmann::json& point) {
+  auto tree = readSphereTree(in[0]);
+  if (!tree) return tree.error();
+  Vec3 p;
+  for (int k = 0; k < 3; ++k)
+    p[k] = point[k].is_string() ? std::stod(point[k].get<std::string>()) : point[k].get<double>();
+  return statusOf(pointDistance(*tree, p));
+}
+
+Status runCase(const nlohmann::json& c) {
+  std::vector<std::string> in;
+  for (const auto& f : c.at("inputs")) in.push_back(kDir + f.get<std::string>());
+  const nlohmann::json opts = c.value("options", nlohmann::json::object());
+  const std::string op = c.at("op");
+  if (op == "fit") return fitCase(in, opts);
+  if (op == "tree") return treeCase(in, opts);
+  if (op == "eval") return evalCase(in, opts);
+  if (op == "query") return queryCase(in, c.at("point"));
+  if (op == "robot") return statusOf(loadRobot(in[0]));
+  if (op == "animate") return statusOf(loadAnimation(in[0]));
+  ADD_FAILURE() << "unknown op " << op;
+  return {};
+}
+
+TEST(Hostile, EveryCaseEndsInItsStatusAndMessage) {
+  std::ifstream file(kDir + "cases.json");
+  ASSERT_TRUE(file) << kDir;
+  const nlohmann::json cases = nlohmann::json::parse(file);
+  ASSERT_GE(cases.size(), 16u);
+  for (const nlohmann::json& c : cases) {
+    SCOPED_TRACE(c.at("name").get<std::string>());
+#ifndef SPHERESET_TEST_REPAIR
+    if (c.value("repair", false)) continue;
+#endif
+    const Status st = runCase(c);
+    ASSERT_FALSE(st.ok());
+    EXPECT_EQ(st.error().code, codeNamed(c.at("code")));
+    EXPECT_TRUE(
+        std::regex_search(st.error().message, std::regex(c.at("message").get<std::string>())))
+        << st.error().message;
+    EXPECT_EQ(st.error().message.find('\n'), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace sphereset
