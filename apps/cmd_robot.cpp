@@ -1,11 +1,13 @@
 // sphereset robot: collision spheres for every link of a robot described by a URDF, in the link
 // frames (fitRobot, robot_fit.hpp, does the fitting). Outputs: cuRobo's YAML with the
 // self-collision ignore list, the URDF with sphere collisions, or a JSON report.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -39,29 +41,29 @@ struct RobotArgs {
 template <class T>
 Expected<std::map<std::string, T>> namedValues(const std::vector<std::string>& items,
                                                const Robot& robot, const char* option) {
+  // The syntax only: the library checks the link names and the values' ranges (fitRobot), with
+  // the messages Python gets too.
+  (void)robot;
   std::map<std::string, T> out;
   for (const std::string& item : items) {
     const size_t eq = item.find('=');
-    const std::string name = item.substr(0, eq);
-    bool known = false;
-    for (const RobotLink& l : robot.links) known = known || l.name == name;
-    if (eq == std::string::npos || !known)
-      return Error{
-          ErrorCode::kInvalidArgument,
-          std::string(option) + " " + item + ": expected LINK=VALUE with a link of " + robot.name};
-    try {
-      size_t used = 0;
-      const std::string v = item.substr(eq + 1);
-      const double x = std::stod(v, &used);
-      if (used != v.size() || !(x >= 0.0) || !std::isfinite(x)) throw std::invalid_argument(v);
-      if (std::is_integral_v<T> && (x != std::floor(x) || x > 1e6)) throw std::invalid_argument(v);
-      out[name] = static_cast<T>(x);
-    } catch (const std::exception&) {
+    double x = 0.0;
+    bool number = false;
+    if (eq != std::string::npos) try {
+        size_t used = 0;
+        const std::string v = item.substr(eq + 1);
+        x = std::stod(v, &used);
+        number = used == v.size() && (!std::is_integral_v<T> || x == std::floor(x));
+      } catch (const std::exception&) {
+      }
+    if (!number)
       return Error{ErrorCode::kInvalidArgument,
-                   std::string(option) + " " + item +
-                       (std::is_integral_v<T> ? ": the value must be a whole number >= 0"
-                                              : ": the value must be a number >= 0")};
-    }
+                   std::string(option) + " " + item + ": expected LINK=VALUE" +
+                       (std::is_integral_v<T> ? " (a whole number)" : " (a number)")};
+    if constexpr (std::is_integral_v<T>)
+      x = std::clamp(x, static_cast<double>(std::numeric_limits<T>::min()),
+                     static_cast<double>(std::numeric_limits<T>::max()));
+    out[item.substr(0, eq)] = static_cast<T>(x);
   }
   return out;
 }

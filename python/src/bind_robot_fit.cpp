@@ -71,13 +71,7 @@ void bindRobotFit(py::module_& m) {
          const std::string& quality, const std::string& repair, const py::object& weld, bool fill,
          double alpha, double offset) {
         const std::string urdf = urdf_arg.string();
-        if (budget < 0) raise(ErrorCode::kInvalidArgument, "budget must be >= 0");
-        if (!(padding >= 0.0)) raise(ErrorCode::kInvalidArgument, "padding must be >= 0");
-        for (const auto& [l, k] : link_spheres)
-          if (k < 0) raise(ErrorCode::kInvalidArgument, "link_spheres " + l + ": must be >= 0");
-        for (const auto& [l, p] : link_padding)
-          if (!(p >= 0.0) || !std::isfinite(p))
-            raise(ErrorCode::kInvalidArgument, "link_padding " + l + ": must be a number >= 0");
+        // Budget, padding and the per-link values are checked by fitRobot (its messages).
         RobotFitOptions fo;
         fo.budget = budget;
         fo.link_spheres = link_spheres;

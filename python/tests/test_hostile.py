@@ -3,6 +3,7 @@ module: the same status (exit code, exception class) and the same message from b
 the table, and nothing written. tests/hostile/test_hostile.cpp runs it through the C++ API."""
 
 import json
+import pathlib
 import re
 import subprocess
 
@@ -20,7 +21,8 @@ STATUS = {"invalid_argument": (2, ss.InvalidArgumentError), "unreadable": (3, ss
           "write_failed": (6, ss.WriteError)}
 # Options outside the library's fit and evaluation tables: the repair's and the tree's.
 EXTRA_FLAGS = {"wrap_alpha": "--wrap-alpha", "wrap_offset": "--wrap-offset",
-               "branching": "--branch", "depth": "--depth"}
+               "branching": "--branch", "depth": "--depth", "fps": "--fps",
+               "link_spheres": "--link-spheres"}
 
 
 def flag(name):
@@ -42,15 +44,23 @@ def command(case, files, out):
     if op == "query":
         return ["query", files[0], "--point", ",".join(str(v) for v in case["point"])]
     if op == "robot":
-        return ["robot", files[0], "-o", out / "r.yml", "-q"]
+        package = str(pathlib.Path(files[0]).parent)
+        return ["robot", files[0], "--package-path", package, "-o", out / "r.yml", "-q", *flags]
     if op == "animate":
-        return ["animate", files[0], files[1], "--animation", files[0], "-o", out / "anim", "-q"]
+        return ["animate", files[0], files[1], "--animation", files[0], "-o", out / "anim", "-q",
+                *flags]
     raise AssertionError(op)
 
 
+def python_value(name, text):
+    if name == "link_spheres":
+        link, count = text.split("=")
+        return {link: int(count)}
+    return float(text) if name in ("wrap_alpha", "wrap_offset", "fps") else int(text)
+
+
 def python_call(case, files):
-    opts = {name: float(v) if name.startswith("wrap") else int(v)
-            for name, v in case.get("options", {}).items()}
+    opts = {name: python_value(name, v) for name, v in case.get("options", {}).items()}
     op = case["op"]
     if op == "fit":
         return lambda: ss.fit(files[0], **opts)
@@ -62,9 +72,10 @@ def python_call(case, files):
         point = [[float(v) for v in case["point"]]]
         return lambda: ss.point_distance(ss.read_sphere_tree(files[0]), point)
     if op == "robot":
-        return lambda: ss.fit_robot(files[0])
+        package = str(pathlib.Path(files[0]).parent)
+        return lambda: ss.fit_robot(files[0], package_paths=[package], quality="fast", **opts)
     if op == "animate":
-        return lambda: ss.load_animation(files[0])
+        return lambda: ss.load_animation(files[0], **opts)
     raise AssertionError(op)
 
 

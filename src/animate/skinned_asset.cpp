@@ -17,6 +17,7 @@
 #include "mesh/weld.hpp"
 #include "sphereset/animate.hpp"
 #include "sphereset/limits.hpp"
+#include "util/number_text.hpp"
 
 namespace sphereset {
 namespace {
@@ -169,7 +170,7 @@ Expected<LoadedAnimation> loadAnimation(const std::string& path,
   if (!(options.fps >= 0.0) || !std::isfinite(options.fps))
     return Error{ErrorCode::kInvalidArgument,
                  "fps must be a positive number, or 0 for the clip's keyframe times"};
-  if (Status st = detail::checkTextOnly(path); !st) return st.error();
+  if (Status st = detail::checkBeforeAssimp(path); !st) return st.error();
   Assimp::Importer importer;
   importer.SetIOHandler(new detail::CompanionIOSystem(path));  // owned by the importer
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
@@ -289,8 +290,8 @@ Expected<LoadedAnimation> loadAnimation(const std::string& path,
     const double count = std::floor((duration + kSameKeyTicks) / step) + 1.0;
     if (!(count <= static_cast<double>(limits::kMaxFrames)))
       return Error{ErrorCode::kInvalidArgument,
-                   path + ": " + std::to_string(out.duration) + " s at fps " +
-                       std::to_string(options.fps) + " would make more than " +
+                   path + ": " + detail::numberText(out.duration) + " s at fps " +
+                       detail::numberText(options.fps) + " would make more than " +
                        std::to_string(limits::kMaxFrames) + " frames (the limit)"};
     for (int64_t k = 0; static_cast<double>(k) * step <= duration + kSameKeyTicks; ++k)
       ticks.push_back(static_cast<double>(k) * step);

@@ -217,7 +217,7 @@ Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& option
     out.report.files = {path};
     return out;
   }
-  if (Status st = detail::checkTextOnly(path); !st) return st.error();
+  if (Status st = detail::checkBeforeAssimp(path); !st) return st.error();
   Assimp::Importer importer;
   auto* io = new detail::CompanionIOSystem(path);  // owned by the importer
   importer.SetIOHandler(io);

@@ -359,6 +359,10 @@ TEST_F(FrameMesh, BinaryBytesInATextFormatAreRefusedBeforeAssimp) {
   test::expectError(loadAnimation(smd), ErrorCode::kUnreadable, smd,
                     "binary data (a NUL byte at offset 21) in a text format");
   test::expectError(loadMesh(smd), ErrorCode::kUnreadable, smd, "a NUL byte");
+  // Also found by fuzzing: a section left open at the end of the file never returns.
+  const std::string open = write("open.smd", "version 1\nnodes\n0 \"root\" -1\n1 \"tip\" 0\n");
+  test::expectError(loadAnimation(open), ErrorCode::kUnreadable, open,
+                    "the 'nodes' section is not closed by a line 'end'");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // python/tests/test_hostile.py runs the same table through the command line and Python.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -16,6 +17,7 @@
 #include "sphereset/query.hpp"
 #include "sphereset/repair.hpp"
 #include "sphereset/robot.hpp"
+#include "sphereset/robot_fit.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/tree.hpp"
 #ifdef SPHERESET_TEST_REPAIR
@@ -96,6 +98,23 @@ Status queryCase(const std::vector<std::string>& in, const nlohmann::json& point
   return statusOf(pointDistance(*tree, p));
 }
 
+// A URDF loaded with its package folder beside it, then fitted with LINK=COUNT options.
+Status robotCase(const std::vector<std::string>& in, const nlohmann::json& opts) {
+  RobotLoadOptions lo;
+  lo.package_paths = {std::filesystem::path(in[0]).parent_path().string()};
+  auto robot = loadRobot(in[0], lo);
+  if (!robot) return robot.error();
+  RobotFitOptions fo;
+  fo.name = in[0];
+  fo.quality = FitQuality::kFast;
+  if (opts.contains("link_spheres")) {
+    const std::string item = opts.at("link_spheres");
+    const size_t eq = item.find('=');
+    fo.link_spheres[item.substr(0, eq)] = std::stoi(item.substr(eq + 1));
+  }
+  return statusOf(fitRobot(*robot, fo));
+}
+
 Status runCase(const nlohmann::json& c) {
   std::vector<std::string> in;
   for (const auto& f : c.at("inputs")) in.push_back(kDir + f.get<std::string>());
@@ -105,8 +124,12 @@ Status runCase(const nlohmann::json& c) {
   if (op == "tree") return treeCase(in, opts);
   if (op == "eval") return evalCase(in, opts);
   if (op == "query") return queryCase(in, c.at("point"));
-  if (op == "robot") return statusOf(loadRobot(in[0]));
-  if (op == "animate") return statusOf(loadAnimation(in[0]));
+  if (op == "robot") return robotCase(in, opts);
+  if (op == "animate") {
+    SkinnedLoadOptions so;
+    if (opts.contains("fps")) so.fps = std::stod(opts.at("fps").get<std::string>());
+    return statusOf(loadAnimation(in[0], so));
+  }
   ADD_FAILURE() << "unknown op " << op;
   return {};
 }
