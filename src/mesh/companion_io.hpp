@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <istream>
@@ -62,9 +63,11 @@ class CompanionIOSystem : public Assimp::DefaultIOSystem {
   std::vector<std::string> files_;
 };
 
-// Formats assimp reads as text only. Its text readers can loop for minutes on binary bytes
-// (a NUL in an SMD node name: found by fuzzing, over 2 minutes), so such a file is refused
-// before assimp sees it.
+// Formats assimp reads as text only. Its text readers can loop for minutes on binary bytes (a
+// NUL in an SMD node name: over 2 minutes) or read past their buffer on control characters
+// (an SMD file with bytes 0x16 and 0x03: ASan, heap-buffer-overflow in strncmp), both found by
+// fuzzing, so a control character other than whitespace in such a file is refused before
+// assimp sees it.
 inline constexpr const char* kTextOnlyExtensions[] = {
     ".smd", ".vta", ".obj", ".dae", ".gltf", ".ase", ".md5mesh", ".md5anim", ".nff", ".ac", ".x3d"};
 
@@ -89,8 +92,14 @@ inline std::string unclosedSmdSection(std::istream& in) {
   return open;
 }
 
-// What must hold before assimp reads `path` (kUnreadable naming the file otherwise): no NUL
-// byte in a format of kTextOnlyExtensions ("binary data (a NUL byte at offset N) in a text
+// Whether a byte of a text file is binary data: a control character other than tab, line
+// feed, vertical tab, form feed, carriage return and the old end-of-file mark 0x1a.
+inline bool binaryByte(unsigned char c) {
+  return c < 0x20 && c != '\t' && c != '\n' && c != '\v' && c != '\f' && c != '\r' && c != 0x1a;
+}
+
+// What must hold before assimp reads `path` (kUnreadable naming the file otherwise): no binary
+// byte in a format of kTextOnlyExtensions ("binary data (byte 0x00 at offset N) in a text
 // format"), and every section of an SMD/VTA file closed. A file that cannot be read passes:
 // the reader says why.
 inline Status checkBeforeAssimp(const std::string& path) {
@@ -107,9 +116,12 @@ inline Status checkBeforeAssimp(const std::string& path) {
     in.read(buf, sizeof buf);
     const std::streamsize got = in.gcount();
     for (std::streamsize i = 0; i < got; ++i)
-      if (buf[i] == '\0')
-        return Error{ErrorCode::kUnreadable, path + ": binary data (a NUL byte at offset " +
+      if (binaryByte(static_cast<unsigned char>(buf[i]))) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02x", static_cast<unsigned char>(buf[i]));
+        return Error{ErrorCode::kUnreadable, path + ": binary data (byte " + hex + " at offset " +
                                                  std::to_string(offset + i) + ") in a text format"};
+      }
     offset += got;
   }
   if (ext == ".smd" || ext == ".vta") {
