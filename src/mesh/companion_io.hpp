@@ -79,9 +79,10 @@ inline std::string unclosedSmdSection(std::istream& in) {
   static constexpr const char* kSections[] = {"nodes", "skeleton", "triangles", "vertexanimation"};
   std::string open, line;
   while (std::getline(in, line)) {
+    // The line's first word: assimp takes "nodes 0 0 1" for the start of a section too.
     const size_t b = line.find_first_not_of(" \t\r");
-    const size_t e = line.find_last_not_of(" \t\r");
-    const std::string word = b == std::string::npos ? "" : line.substr(b, e - b + 1);
+    const size_t e = b == std::string::npos ? b : line.find_first_of(" \t\r", b);
+    const std::string word = b == std::string::npos ? "" : line.substr(b, e - b);
     if (!open.empty()) {
       if (word == "end") open.clear();
       continue;

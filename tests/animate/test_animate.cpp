@@ -364,6 +364,8 @@ TEST_F(FrameMesh, BinaryBytesInATextFormatAreRefusedBeforeAssimp) {
   const std::string open = write("open.smd", "version 1\nnodes\n0 \"root\" -1\n1 \"tip\" 0\n");
   test::expectError(loadAnimation(open), ErrorCode::kUnreadable, open,
                     "the 'nodes' section is not closed by a line 'end'");
+  const std::string words = write("words.smd", "version 1\nnodes 0 0 1\n");
+  test::expectError(loadAnimation(words), ErrorCode::kUnreadable, words, "'nodes' section");
 }
 
 }  // namespace
