@@ -5,12 +5,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <istream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -72,25 +75,41 @@ inline constexpr const char* kTextOnlyExtensions[] = {
     ".smd", ".vta", ".obj", ".dae", ".gltf", ".ase", ".md5mesh", ".md5anim", ".nff", ".ac", ".x3d"};
 
 // Valve SMD (and VTA) files are made of sections ("nodes", "skeleton", "triangles",
-// "vertexanimation") each closed by a line "end". assimp 5.2's reader never returns on a
-// section left open at the end of the file (found by fuzzing: a file of three lines hangs it),
-// so that is checked first. Returns the open section's name, or "" when every section closes.
-inline std::string unclosedSmdSection(std::istream& in) {
+// "vertexanimation") each closed by a line "end"; inside them, lines start with a node, bone or
+// vertex index, or are "time N". assimp 5.2's reader never returns on a section left open at
+// the end of the file, and sizes its arrays by the indices it reads (a node index of 88 digits
+// asked for 412 GB); both found by fuzzing. So: every section closed, and every index and time
+// within kMaxSmdIndex. Returns what is wrong ("" when nothing is), naming the line.
+inline constexpr long long kMaxSmdIndex = 1000000;
+
+inline std::string smdProblem(std::istream& in) {
   static constexpr const char* kSections[] = {"nodes", "skeleton", "triangles", "vertexanimation"};
   std::string open, line;
-  while (std::getline(in, line)) {
-    // The line's first word: assimp takes "nodes 0 0 1" for the start of a section too.
-    const size_t b = line.find_first_not_of(" \t\r");
-    const size_t e = b == std::string::npos ? b : line.find_first_of(" \t\r", b);
-    const std::string word = b == std::string::npos ? "" : line.substr(b, e - b);
-    if (!open.empty()) {
-      if (word == "end") open.clear();
+  for (int64_t lineno = 1; std::getline(in, line); ++lineno) {
+    std::istringstream words(line);
+    std::string word, next;
+    words >> word;  // assimp takes "nodes 0 0 1" for the start of a section too
+    if (open.empty()) {
+      for (const char* s : kSections)
+        if (word == s) open = s;
       continue;
     }
-    for (const char* s : kSections)
-      if (word == s) open = s;
+    if (word == "end") {
+      open.clear();
+      continue;
+    }
+    const bool time = word == "time";
+    if (time) words >> word;
+    char* stop = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(word.c_str(), &stop, 10);
+    const bool integer = !word.empty() && stop != word.c_str();
+    if ((integer || time) && (errno == ERANGE || !integer || v < -1 || v > kMaxSmdIndex))
+      return "line " + std::to_string(lineno) + ": " + (time ? "time " : "index ") +
+             word.substr(0, 24) + " is out of range (0 to " + std::to_string(kMaxSmdIndex) + ")";
   }
-  return open;
+  if (!open.empty()) return "the '" + open + "' section is not closed by a line 'end'";
+  return "";
 }
 
 // Whether a byte of a text file is binary data: a control character other than tab, line
@@ -101,7 +120,7 @@ inline bool binaryByte(unsigned char c) {
 
 // What must hold before assimp reads `path` (kUnreadable naming the file otherwise): no binary
 // byte in a format of kTextOnlyExtensions ("binary data (byte 0x00 at offset N) in a text
-// format"), and every section of an SMD/VTA file closed. A file that cannot be read passes:
+// format"), and an SMD/VTA file without smdProblem. A file that cannot be read passes:
 // the reader says why.
 inline Status checkBeforeAssimp(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -127,10 +146,8 @@ inline Status checkBeforeAssimp(const std::string& path) {
   }
   if (ext == ".smd" || ext == ".vta") {
     std::ifstream again(path, std::ios::binary);
-    const std::string open = unclosedSmdSection(again);
-    if (!open.empty())
-      return Error{ErrorCode::kUnreadable,
-                   path + ": the '" + open + "' section is not closed by a line 'end'"};
+    const std::string problem = smdProblem(again);
+    if (!problem.empty()) return Error{ErrorCode::kUnreadable, path + ": " + problem};
   }
   return {};
 }
