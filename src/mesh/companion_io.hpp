@@ -106,7 +106,7 @@ inline std::string smdProblem(std::istream& in) {
     const bool integer = !word.empty() && stop != word.c_str();
     if ((integer || time) && (errno == ERANGE || !integer || v < -1 || v > kMaxSmdIndex))
       return "line " + std::to_string(lineno) + ": " + (time ? "time " : "index ") +
-             word.substr(0, 24) + " is out of range (0 to " + std::to_string(kMaxSmdIndex) + ")";
+             word.substr(0, 32) + " is out of range (0 to " + std::to_string(kMaxSmdIndex) + ")";
   }
   if (!open.empty()) return "the '" + open + "' section is not closed by a line 'end'";
   return "";
