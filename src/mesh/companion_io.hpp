@@ -18,6 +18,7 @@
 #include <system_error>
 #include <vector>
 
+#include "mesh/smd_grammar.hpp"
 #include "sphereset/status.hpp"
 
 namespace sphereset::detail {
@@ -74,44 +75,6 @@ class CompanionIOSystem : public Assimp::DefaultIOSystem {
 inline constexpr const char* kTextOnlyExtensions[] = {
     ".smd", ".vta", ".obj", ".dae", ".gltf", ".ase", ".md5mesh", ".md5anim", ".nff", ".ac", ".x3d"};
 
-// Valve SMD (and VTA) files are made of sections ("nodes", "skeleton", "triangles",
-// "vertexanimation") each closed by a line "end"; inside them, lines start with a node, bone or
-// vertex index, or are "time N". assimp 5.2's reader never returns on a section left open at
-// the end of the file, and sizes its arrays by the indices it reads (a node index of 88 digits
-// asked for 412 GB); both found by fuzzing. So: every section closed, and every index and time
-// within kMaxSmdIndex. Returns what is wrong ("" when nothing is), naming the line.
-inline constexpr long long kMaxSmdIndex = 1000000;
-
-inline std::string smdProblem(std::istream& in) {
-  static constexpr const char* kSections[] = {"nodes", "skeleton", "triangles", "vertexanimation"};
-  std::string open, line;
-  for (int64_t lineno = 1; std::getline(in, line); ++lineno) {
-    std::istringstream words(line);
-    std::string word, next;
-    words >> word;  // assimp takes "nodes 0 0 1" for the start of a section too
-    if (open.empty()) {
-      for (const char* s : kSections)
-        if (word == s) open = s;
-      continue;
-    }
-    if (word == "end") {
-      open.clear();
-      continue;
-    }
-    const bool time = word == "time";
-    if (time) words >> word;
-    char* stop = nullptr;
-    errno = 0;
-    const long long v = std::strtoll(word.c_str(), &stop, 10);
-    const bool integer = !word.empty() && stop != word.c_str();
-    if ((integer || time) && (errno == ERANGE || !integer || v < -1 || v > kMaxSmdIndex))
-      return "line " + std::to_string(lineno) + ": " + (time ? "time " : "index ") +
-             word.substr(0, 32) + " is out of range (0 to " + std::to_string(kMaxSmdIndex) + ")";
-  }
-  if (!open.empty()) return "the '" + open + "' section is not closed by a line 'end'";
-  return "";
-}
-
 // Whether a byte of a text file is binary data: a control character other than tab, line
 // feed, vertical tab, form feed, carriage return and the old end-of-file mark 0x1a.
 inline bool binaryByte(unsigned char c) {
@@ -120,8 +83,8 @@ inline bool binaryByte(unsigned char c) {
 
 // What must hold before assimp reads `path` (kUnreadable naming the file otherwise): no binary
 // byte in a format of kTextOnlyExtensions ("binary data (byte 0x00 at offset N) in a text
-// format"), and an SMD/VTA file without smdProblem. A file that cannot be read passes:
-// the reader says why.
+// format"), and an SMD/VTA file that follows its grammar (smd_grammar.hpp). A file that cannot be
+// read passes: the reader says why.
 inline Status checkBeforeAssimp(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),

@@ -365,12 +365,13 @@ TEST_F(FrameMesh, BinaryBytesInATextFormatAreRefusedBeforeAssimp) {
   test::expectError(loadAnimation(open), ErrorCode::kUnreadable, open,
                     "the 'nodes' section is not closed by a line 'end'");
   const std::string words = write("words.smd", "version 1\nnodes 0 0 1\n");
-  test::expectError(loadAnimation(words), ErrorCode::kUnreadable, words, "'nodes' section");
+  test::expectError(loadAnimation(words), ErrorCode::kUnreadable, words,
+                    "line 2: expected a section");
   // And a node index of 25 digits made assimp ask for 412 GB.
   const std::string huge = write(
       "huge.smd", "version 1\nnodes\n0 \"root\" -1\n6666666666666666666666661 \"tip\" 0\nend\n");
   test::expectError(loadAnimation(huge), ErrorCode::kUnreadable, huge,
-                    "line 4: index 6666666666666666666666661 is out of range (0 to 1000000)");
+                    "line 4: not a line of the 'nodes' section");
 }
 
 }  // namespace

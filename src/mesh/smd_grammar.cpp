@@ -1,0 +1,106 @@
+// The SMD/VTA grammar check (smd_grammar.hpp). Reference: Valve Developer Community, "Studiomdl
+// Data" (the SMD format); the fields of each line as assimp 5.2's SMDLoader reads them.
+#include "mesh/smd_grammar.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sphereset::detail {
+namespace {
+
+bool isInteger(const std::string& w) {
+  if (w.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(w.c_str(), &end, 10);
+  return end == w.c_str() + w.size() && errno != ERANGE && v >= -1 && v <= kMaxSmdIndex;
+}
+
+bool isNumber(const std::string& w) {
+  if (w.empty()) return false;
+  char* end = nullptr;
+  const double v = std::strtod(w.c_str(), &end);
+  return end == w.c_str() + w.size() && std::isfinite(v);
+}
+
+// "ID "NAME" PARENT": the name quoted, without quotes inside.
+bool nodeLine(const std::string& line) {
+  const size_t q0 = line.find('"'), q1 = q0 == std::string::npos ? q0 : line.find('"', q0 + 1);
+  if (q1 == std::string::npos) return false;
+  std::istringstream head(line.substr(0, q0)), tail(line.substr(q1 + 1));
+  std::string id, parent, extra;
+  return (head >> id) && !(head >> extra) && isInteger(id) && (tail >> parent) &&
+         !(tail >> extra) && isInteger(parent);
+}
+
+// Integer then `floats` numbers, and (vertex lines) an optional list of bone links.
+bool fieldsLine(const std::vector<std::string>& w, size_t floats, bool links) {
+  if (w.size() < 1 + floats || !isInteger(w[0])) return false;
+  for (size_t k = 1; k <= floats; ++k)
+    if (!isNumber(w[k])) return false;
+  if (w.size() == 1 + floats) return true;
+  if (!links || !isInteger(w[1 + floats])) return false;
+  const long long n = std::strtoll(w[1 + floats].c_str(), nullptr, 10);
+  if (n < 0 || w.size() != 2 + floats + 2 * static_cast<size_t>(n)) return false;
+  for (size_t k = 2 + floats; k < w.size(); k += 2)
+    if (!isInteger(w[k]) || !isNumber(w[k + 1])) return false;
+  return true;
+}
+
+}  // namespace
+
+std::string smdProblem(std::istream& in) {
+  std::string section, line;
+  int triangle_line = 0;  // 0: a material comes next; 1..3: the triangle's vertex lines
+  bool version = false;
+  for (int64_t lineno = 1; std::getline(in, line); ++lineno) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream split(line);
+    std::vector<std::string> w;
+    for (std::string s; split >> s;) w.push_back(s);
+    if (w.empty() || w[0].rfind("//", 0) == 0) continue;
+    const std::string where = "line " + std::to_string(lineno) + ": ";
+    if (section.empty()) {
+      if (!version) {
+        if (w.size() != 2 || w[0] != "version" || !isInteger(w[1]))
+          return where + "expected \"version 1\"";
+        version = true;
+      } else if (w.size() == 1 && (w[0] == "nodes" || w[0] == "skeleton" || w[0] == "triangles" ||
+                                   w[0] == "vertexanimation")) {
+        section = w[0];
+        triangle_line = 0;
+      } else {
+        return where + "expected a section (nodes, skeleton, triangles, vertexanimation)";
+      }
+      continue;
+    }
+    if (w.size() == 1 && w[0] == "end" && triangle_line == 0) {
+      section.clear();
+      continue;
+    }
+    bool ok = false;
+    if (section == "nodes") {
+      ok = nodeLine(line);
+    } else if (w[0] == "time" && (section == "skeleton" || section == "vertexanimation")) {
+      ok = w.size() == 2 && isInteger(w[1]);
+    } else if (section == "skeleton" || section == "vertexanimation") {
+      ok = fieldsLine(w, 6, false);
+    } else if (triangle_line == 0) {
+      ok = true;  // the material's name
+      triangle_line = 1;
+    } else {
+      ok = fieldsLine(w, 8, true);
+      triangle_line = triangle_line == 3 ? 0 : triangle_line + 1;
+    }
+    if (!ok) return where + "not a line of the '" + section + "' section";
+  }
+  if (!section.empty()) return "the '" + section + "' section is not closed by a line 'end'";
+  if (!version) return "expected \"version 1\"";
+  return "";
+}
+
+}  // namespace sphereset::detail

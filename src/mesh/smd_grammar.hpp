@@ -1,0 +1,27 @@
+// Private: the grammar of Valve's SMD and VTA files (developer.valvesoftware.com/wiki/SMD),
+// checked before assimp reads one. assimp 5.2's SMD reader trusts its input: fuzzing found it
+// looping forever on a section left open, asking for 412 GB for a node index of 88 digits and
+// 7.6 GB for a malformed skeleton line, and reading past its buffer on control characters.
+// assimp only ever sees files that follow the grammar, with indices and times in range.
+#pragma once
+
+#include <cstdint>
+#include <istream>
+#include <string>
+
+namespace sphereset::detail {
+
+// Largest node, bone or vertex index, frame time and bone-link count accepted.
+inline constexpr int64_t kMaxSmdIndex = 1000000;
+
+// What is wrong with the SMD/VTA text in `in`, naming the line ("" when it follows the grammar):
+//   version 1
+//   nodes            then lines: ID "NAME" PARENT                       then end
+//   skeleton         then lines: time T | BONE X Y Z RX RY RZ           then end
+//   triangles        then groups: MATERIAL, and three lines
+//                    PARENT X Y Z NX NY NZ U V [LINKS (BONE WEIGHT)*LINKS] then end
+//   vertexanimation  then lines: time T | VERTEX X Y Z NX NY NZ         then end
+// Blank lines and lines starting with "//" are skipped; integers are in [-1, kMaxSmdIndex].
+std::string smdProblem(std::istream& in);
+
+}  // namespace sphereset::detail
