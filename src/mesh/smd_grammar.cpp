@@ -20,6 +20,13 @@ bool isInteger(const std::string& w) {
   return end == w.c_str() + w.size() && errno != ERANGE && v >= -1 && v <= kMaxSmdIndex;
 }
 
+long long integer(const std::string& w) { return std::strtoll(w.c_str(), nullptr, 10); }
+
+// A node, bone or link index of a node listed so far.
+bool isNode(const std::string& w, long long nodes) {
+  return isInteger(w) && integer(w) >= 0 && integer(w) < nodes;
+}
+
 bool isNumber(const std::string& w) {
   if (w.empty()) return false;
   char* end = nullptr;
@@ -27,19 +34,27 @@ bool isNumber(const std::string& w) {
   return end == w.c_str() + w.size() && std::isfinite(v);
 }
 
-// "ID "NAME" PARENT": the name quoted, without quotes inside.
-bool nodeLine(const std::string& line) {
+// "ID "NAME" PARENT": the name quoted, without quotes inside; nodes numbered 0, 1, ... in
+// order, each parent listed before its child (or -1): no cycle, no gap (assimp indexes its
+// arrays by these numbers and follows the parents: a node that is its own parent made it ask
+// for 26 GB).
+bool nodeLine(const std::string& line, long long* nodes) {
   const size_t q0 = line.find('"'), q1 = q0 == std::string::npos ? q0 : line.find('"', q0 + 1);
   if (q1 == std::string::npos) return false;
   std::istringstream head(line.substr(0, q0)), tail(line.substr(q1 + 1));
   std::string id, parent, extra;
-  return (head >> id) && !(head >> extra) && isInteger(id) && (tail >> parent) &&
-         !(tail >> extra) && isInteger(parent);
+  if (!(head >> id) || (head >> extra) || !isInteger(id) || integer(id) != *nodes ||
+      !(tail >> parent) || (tail >> extra) || !isInteger(parent) || integer(parent) >= *nodes)
+    return false;
+  ++*nodes;
+  return true;
 }
 
-// Integer then `floats` numbers, and (vertex lines) an optional list of bone links.
-bool fieldsLine(const std::vector<std::string>& w, size_t floats, bool links) {
+// An index (a node's when `nodes` >= 0) then `floats` numbers, and (vertex lines) an optional
+// list of links to nodes.
+bool fieldsLine(const std::vector<std::string>& w, size_t floats, bool links, long long nodes) {
   if (w.size() < 1 + floats || !isInteger(w[0])) return false;
+  if (nodes >= 0 ? !isNode(w[0], nodes) : integer(w[0]) < 0) return false;
   for (size_t k = 1; k <= floats; ++k)
     if (!isNumber(w[k])) return false;
   if (w.size() == 1 + floats) return true;
@@ -47,7 +62,7 @@ bool fieldsLine(const std::vector<std::string>& w, size_t floats, bool links) {
   const long long n = std::strtoll(w[1 + floats].c_str(), nullptr, 10);
   if (n < 0 || w.size() != 2 + floats + 2 * static_cast<size_t>(n)) return false;
   for (size_t k = 2 + floats; k < w.size(); k += 2)
-    if (!isInteger(w[k]) || !isNumber(w[k + 1])) return false;
+    if (!isNode(w[k], nodes) || !isNumber(w[k + 1])) return false;
   return true;
 }
 
@@ -57,6 +72,7 @@ std::string smdProblem(std::istream& in) {
   std::string section, line;
   int triangle_line = 0;  // 0: a material comes next; 1..3: the triangle's vertex lines
   bool version = false;
+  long long nodes = 0;  // listed so far
   for (int64_t lineno = 1; std::getline(in, line); ++lineno) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     std::istringstream split(line);
@@ -84,16 +100,16 @@ std::string smdProblem(std::istream& in) {
     }
     bool ok = false;
     if (section == "nodes") {
-      ok = nodeLine(line);
+      ok = nodeLine(line, &nodes);
     } else if (w[0] == "time" && (section == "skeleton" || section == "vertexanimation")) {
       ok = w.size() == 2 && isInteger(w[1]);
     } else if (section == "skeleton" || section == "vertexanimation") {
-      ok = fieldsLine(w, 6, false);
+      ok = fieldsLine(w, 6, false, section == "skeleton" ? nodes : -1);
     } else if (triangle_line == 0) {
       ok = true;  // the material's name
       triangle_line = 1;
     } else {
-      ok = fieldsLine(w, 8, true);
+      ok = fieldsLine(w, 8, true, nodes);
       triangle_line = triangle_line == 3 ? 0 : triangle_line + 1;
     }
     if (!ok) return where + "not a line of the '" + section + "' section";

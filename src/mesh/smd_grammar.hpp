@@ -1,7 +1,8 @@
 // Private: the grammar of Valve's SMD and VTA files (developer.valvesoftware.com/wiki/SMD),
 // checked before assimp reads one. assimp 5.2's SMD reader trusts its input: fuzzing found it
-// looping forever on a section left open, asking for 412 GB for a node index of 88 digits and
-// 7.6 GB for a malformed skeleton line, and reading past its buffer on control characters.
+// looping forever on a section left open, asking for 412 GB for a node index of 88 digits,
+// 7.6 GB for a malformed skeleton line and 26 GB for a node that is its own parent, and
+// reading past its buffer on control characters.
 // assimp only ever sees files that follow the grammar, with indices and times in range.
 #pragma once
 
@@ -21,7 +22,9 @@ inline constexpr int64_t kMaxSmdIndex = 1000000;
 //   triangles        then groups: MATERIAL, and three lines
 //                    PARENT X Y Z NX NY NZ U V [LINKS (BONE WEIGHT)*LINKS] then end
 //   vertexanimation  then lines: time T | VERTEX X Y Z NX NY NZ         then end
-// Blank lines and lines starting with "//" are skipped; integers are in [-1, kMaxSmdIndex].
+// Blank lines and lines starting with "//" are skipped; integers are in [-1, kMaxSmdIndex];
+// nodes are numbered 0, 1, ... in order, each parent before its child; bones and links name
+// nodes listed before.
 std::string smdProblem(std::istream& in);
 
 }  // namespace sphereset::detail

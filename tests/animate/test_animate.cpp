@@ -372,6 +372,11 @@ TEST_F(FrameMesh, BinaryBytesInATextFormatAreRefusedBeforeAssimp) {
       "huge.smd", "version 1\nnodes\n0 \"root\" -1\n6666666666666666666666661 \"tip\" 0\nend\n");
   test::expectError(loadAnimation(huge), ErrorCode::kUnreadable, huge,
                     "line 4: not a line of the 'nodes' section");
+  // A node that is its own parent made it ask for 26 GB.
+  const std::string cycle =
+      write("cycle.smd", "version 1\nnodes\n0 \"root\" -1\n1 \"tip\" 1\nend\n");
+  test::expectError(loadAnimation(cycle), ErrorCode::kUnreadable, cycle,
+                    "line 4: not a line of the 'nodes' section");
 }
 
 }  // namespace
