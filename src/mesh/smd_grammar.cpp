@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "sphereset/limits.hpp"
+
 namespace sphereset::detail {
 namespace {
 
@@ -28,10 +30,10 @@ bool isNode(const std::string& w, long long nodes) {
 }
 
 bool isNumber(const std::string& w) {
-  if (w.empty()) return false;
+  if (w.empty() || w.size() > kMaxSmdNumberChars) return false;
   char* end = nullptr;
   const double v = std::strtod(w.c_str(), &end);
-  return end == w.c_str() + w.size() && std::isfinite(v);
+  return end == w.c_str() + w.size() && std::fabs(v) <= limits::kMaxCoordinate;  // false: NaN
 }
 
 // "ID "NAME" PARENT": the name quoted, without quotes inside; nodes numbered 0, 1, ... in

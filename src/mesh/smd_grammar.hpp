@@ -6,6 +6,7 @@
 // assimp only ever sees files that follow the grammar, with indices and times in range.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <istream>
 #include <string>
@@ -14,6 +15,9 @@ namespace sphereset::detail {
 
 // Largest node, bone or vertex index, frame time and bone-link count accepted.
 inline constexpr int64_t kMaxSmdIndex = 1000000;
+// Longest number accepted (characters), and its magnitude at most limits::kMaxCoordinate: a
+// coordinate of 31 digits made assimp ask for 19 GB (found by fuzzing).
+inline constexpr size_t kMaxSmdNumberChars = 24;
 
 // What is wrong with the SMD/VTA text in `in`, naming the line ("" when it follows the grammar):
 //   version 1
