@@ -1,8 +1,12 @@
 // Fuzz target for one sphere-set format, chosen at compile time (SPHERESET_FUZZ_FORMAT):
 // the reader on bytes in memory and, for the formats that keep every value (text, JSON,
 // YAML), a write-then-read round trip that must give back the same spheres.
+#include <set>
+#include <string>
+
 #include "fuzz_input.hpp"
 #include "io/sphere_formats.hpp"
+#include "util/utf8.hpp"
 
 namespace {
 
@@ -31,11 +35,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   if (kFormat == SphereFormat::kYaml) {
     auto links = d::parseLinkSpheres(kFormat, text, "fuzz");
-    if (links) {
+    // Names that are not UTF-8 are written repaired (U+FFFD for the bad bytes); two of them may
+    // then coincide, and such a set is not expected to round-trip.
+    std::set<std::string> repaired;
+    if (links)
+      for (const auto& l : *links) repaired.insert(d::validUtf8(l.link));
+    if (links && repaired.size() == links->size()) {
       auto back = d::parseLinkSpheres(kFormat, sphereset::formatLinkSpheres(*links), "again");
       check(back.ok() && back->size() == links->size(), "links written and read back differ");
       for (size_t l = 0; l < links->size(); ++l)
-        check((*back)[l].link == (*links)[l].link && same((*back)[l].spheres, (*links)[l].spheres),
+        check((*back)[l].link == d::validUtf8((*links)[l].link) &&
+                  same((*back)[l].spheres, (*links)[l].spheres),
               "a link written and read back differs");
     }
   }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -38,6 +39,11 @@ struct EvalOptions {
   // The triangles of the input a repaired solid was made from (repair.hpp), certified as
   // covered too; not owned, may be null.
   const Mesh* original = nullptr;
+  // Called from the calling thread every `poll_interval` seconds or so inside the long loops
+  // (samples, segments, coverage, shadows). It may throw to cancel the evaluation (how the
+  // Python module honours Ctrl-C): the exception leaves evaluateSpheres.
+  std::function<void()> poll;
+  double poll_interval = 0.25;
 };
 
 struct EvalResult {

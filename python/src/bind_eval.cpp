@@ -16,6 +16,12 @@ void bindEval(py::module_& m) {
         setOptions(options, [&](const std::string& name, const std::string& text) {
           return setEvalOption(&eo, name, text);
         });
+        // Ctrl-C: the signal handlers run here, from the calling thread, about every quarter
+        // second; KeyboardInterrupt leaves evaluateSpheres as an exception.
+        eo.poll = [] {
+          py::gil_scoped_acquire gil;
+          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        };
         const std::vector<Sphere> sp = spheresFromArray(spheres, "spheres");
         Expected<EvalResult> evaluated = Error{ErrorCode::kInvalidArgument, ""};
         {

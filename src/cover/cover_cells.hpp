@@ -7,6 +7,7 @@
 
 #include "cover/sphere_grid.hpp"
 #include "sphereset/solid_index.hpp"
+#include "util/poll.hpp"
 
 namespace sphereset::detail {
 
@@ -18,6 +19,7 @@ namespace sphereset::detail {
 template <class OnGap, class OnUndecided>
 void walkSolidCells(const SolidIndex& index, const SphereGrid& spheres, const Vec3& mn, double size,
                     int depth, int max_depth, OnGap&& on_gap, OnUndecided&& on_undecided) {
+  pollCancel();
   Vec3 corners[8];
   for (int k = 0; k < 8; ++k)
     corners[k] = mn + size * Vec3((k & 1) ? 1 : 0, (k & 2) ? 1 : 0, (k & 4) ? 1 : 0);

@@ -102,6 +102,7 @@ Status checkEvalOptions(const EvalOptions& o) {
   for (const auto& [name, value] : values)
     if (auto v = parseOption(*findOption(kEvalOptions, name), std::to_string(value)); !v)
       return v.error();
+  if (Status st = limits::checkRange("poll_interval", o.poll_interval, 0.0, 3600.0); !st) return st;
   if (o.up_axis < 0 || o.up_axis > 2)
     return Error{ErrorCode::kInvalidArgument,
                  "up axis " + std::to_string(o.up_axis) + ": expected 0 (x), 1 (y) or 2 (z)"};

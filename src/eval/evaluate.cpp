@@ -29,6 +29,7 @@
 #include "sphereset/limits.hpp"
 #include "sphereset/query.hpp"
 #include "tree/query_oracles.hpp"
+#include "util/poll.hpp"
 #include "util/sampling.hpp"
 
 namespace sphereset {
@@ -77,6 +78,7 @@ void unionOutsideVolume(const SolidIndex& index, const std::vector<Sphere>& sphe
   const int64_t blocks = (options.union_samples + kBlock - 1) / kBlock;
   std::vector<std::pair<double, double>> part(blocks);  // (Σ x, Σ x²)
   tbb::parallel_for(int64_t{0}, blocks, [&](int64_t blk) {
+    detail::pollCancel();
     std::mt19937_64 rng(mixSeed(options.seed, 1000 + blk));
     const int64_t count = std::min(kBlock, options.union_samples - blk * kBlock);
     double sx = 0.0, sxx = 0.0;
@@ -125,6 +127,7 @@ SurfaceCover surfaceCoverage(const Mesh& mesh, const detail::SphereGrid& grown_g
   const size_t nt = mesh.triangles.size();
   std::vector<CoverStats> st(nt);
   tbb::parallel_for(size_t{0}, nt, [&](size_t t) {
+    detail::pollCancel();
     const auto& tri = mesh.triangles[t];
     coverTriangle(grown_grid, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]],
                   0, options.surface_max_depth, &st[t]);
@@ -172,6 +175,7 @@ double proximityError(const SolidIndex& index, const std::vector<Sphere>& sphere
   const int segs = options.proximity_segments;
   std::vector<double> err(segs);
   tbb::parallel_for(0, segs, [&](int k) {
+    detail::pollCancel();
     std::mt19937_64 rng(mixSeed(options.seed, 5000000 + k));
     const Vec3 a = sampler.sample(rng), bb = sampler.sample(rng);
     err[k] = std::abs(index.outsideLength(a, bb) - segmentOutsideLengthBruteForce(spheres, a, bb));
@@ -187,6 +191,8 @@ Expected<EvalResult> evaluateSpheres(const SolidIndex& index, const std::vector<
                                      const EvalOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   if (Status st = checkEvalOptions(options); !st) return st.error();
+  // Cancellation from inside the long loops (util/poll.hpp).
+  const detail::PollScope poll(options.poll, options.poll_interval);
   if (spheres.empty()) return Error{ErrorCode::kInvalidArgument, "no spheres to evaluate"};
   if (Status st = limits::checkRange("spheres", static_cast<double>(spheres.size()), 1,
                                      limits::kMaxSpheres);
@@ -209,6 +215,7 @@ Expected<EvalResult> evaluateSpheres(const SolidIndex& index, const std::vector<
   // Exact summed outside volume.
   res.outside_volume.assign(n, 0.0);
   tbb::parallel_for(size_t{0}, n, [&](size_t i) {
+    detail::pollCancel();
     res.outside_volume[i] = index.outsideVolume(spheres[i]).volume;
   });
   double total = 0.0;

@@ -16,6 +16,7 @@
 #include <numbers>
 
 #include "sphereset/evaluate.hpp"
+#include "util/poll.hpp"
 #include "util/ray_sphere.hpp"
 
 namespace sphereset {
@@ -70,6 +71,7 @@ ShadowResult compareShadows(const SolidIndex& index, const std::vector<Sphere>& 
   const int np = resolution * resolution;
   std::vector<double> sky_err(np), light_err(np);
   tbb::parallel_for(0, np, [&](int p) {
+    detail::pollCancel();
     Vec3 x = Vec3::Zero();
     x[up_axis] = ground;
     x[ax1] = centre[ax1] + side * ((p % resolution + 0.5) / resolution - 0.5);

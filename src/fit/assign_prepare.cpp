@@ -111,7 +111,7 @@ void prepareBatch(const std::vector<Cluster>& cl, const CentreGrid* grid, const 
         tbb::blocked_range<size_t>(0, batch.size()), [&](const tbb::blocked_range<size_t>& r) {
           Scratch local;
           for (size_t k = r.begin(); k < r.end(); ++k) {
-            pollProgress();
+            pollCancel();
             prepare(cl, grid, max_radius, ps, labels, batch[k], &local, &(*prepared)[k]);
           }
         });

@@ -63,7 +63,7 @@ std::vector<double> radiusRates(const SolidIndex& index, const std::vector<Spher
                                 BoundStats* st) {
   std::vector<double> sov_dr(sp.size());
   tbb::parallel_for(size_t{0}, sp.size(), [&](size_t i) {
-    pollProgress();
+    pollCancel();
     sov_dr[i] = index.outsideVolume(sp[i]).d_radius;
   });
   st->queries += static_cast<int64_t>(sp.size());
@@ -91,7 +91,7 @@ void splitPieces(const Vec3& a, const Vec3& b, const Vec3& c, double min_edge, S
   };
   std::vector<Piece> todo{{{a, b, c}, 0}};
   while (!todo.empty()) {
-    pollProgress();
+    pollCancel();
     const Piece pc = todo.back();
     todo.pop_back();
     if (settled(pc.v)) continue;
@@ -157,13 +157,13 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
   // per root cube, applied as maxima afterwards.
   std::vector<std::vector<std::pair<int32_t, double>>> req(kRootCells);
   tbb::parallel_for(0, kRootCells, [&](int k) {
-    pollProgress();
+    pollCancel();
     double size = 0.0;
     const Vec3 mn = rootCell(index.bounds(), k, &size);
     walkSolidCells(
         index, grid, mn, size, 0, max_depth,
         [&](const Vec3& lo, double s, int depth, double) {
-          pollProgress();
+          pollCancel();
           int32_t i = -1;
           double r = 0.0;
           if (depth < max_depth) {

@@ -301,7 +301,7 @@ void Fill::run() {
   dist_.resize(nc_);
   bound_.resize(nc_);
   while (nextBatch()) {
-    pollProgress();
+    pollCancel();
     prepareBatch(cl_, grid_.get(), ps_, labels_, batch_, &prepared_, &serial_);
     for (size_t k = 0; k < batch_.size(); ++k) decide(batch_[k], prepared_[k]);
     for (const int32_t j : changed_list_) changed_[j] = 0;

@@ -5,44 +5,31 @@
 
 namespace sphereset::detail {
 
-namespace {
-thread_local ProgressScope* current_scope = nullptr;
-}  // namespace
-
 ProgressScope::ProgressScope(const FitOptions& options, FitClock::time_point start)
-    : options_(options), start_(start), last_(start), outer_(current_scope) {
+    : options_(options),
+      start_(start),
+      poll_(options.progress ? std::function<void()>([this] { call(); }) : nullptr,
+            options.progress_interval) {
   current_.spheres = options.num_spheres;
-  current_scope = this;
 }
 
-ProgressScope::~ProgressScope() { current_scope = outer_; }
+void ProgressScope::call() {
+  current_.seconds = secondsSince(start_);
+  options_.progress(current_);
+}
 
 void ProgressScope::report(const std::string& phase, int iteration, double energy) {
   current_.phase = phase;
   current_.iteration = iteration;
   current_.energy = energy;
-  current_.seconds = secondsSince(start_);
-  last_ = FitClock::now();
-  if (options_.progress) options_.progress(current_);
-}
-
-void ProgressScope::poll() {
-  if (!options_.progress) return;
-  const auto now = FitClock::now();
-  if (std::chrono::duration<double>(now - last_).count() < options_.progress_interval) return;
-  last_ = now;
-  current_.seconds = secondsSince(start_);
-  options_.progress(current_);
-}
-
-void pollProgress() {
-  if (current_scope) current_scope->poll();
+  poll_.restart();
+  if (options_.progress) call();
 }
 
 std::vector<double> outsideVolumes(const SolidIndex& index, const std::vector<Sphere>& sp) {
   std::vector<double> v(sp.size());
   tbb::parallel_for(size_t{0}, sp.size(), [&](size_t i) {
-    pollProgress();
+    pollCancel();
     v[i] = index.outsideVolume(sp[i]).volume;
   });
   return v;

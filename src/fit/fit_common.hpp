@@ -10,6 +10,7 @@
 
 #include "sphereset/fit.hpp"
 #include "sphereset/solid_index.hpp"
+#include "util/poll.hpp"
 
 namespace sphereset::detail {
 
@@ -20,31 +21,23 @@ inline double secondsSince(FitClock::time_point t) {
 
 // Progress, and with it cancellation, from inside long steps. fitSpheres holds one
 // ProgressScope on its calling thread; report() calls FitOptions::progress at each phase and
-// round, and pollProgress(), called in the fit's long loops (sampling, seeding, assignment,
-// updates, the bound), reports the current phase again once FitOptions::progress_interval
-// seconds have passed since the last report. On any other thread, or with no fit on this thread,
-// pollProgress returns at once. So a callback that throws (Python's Ctrl-C) stops a fit within
-// about that time whatever n is (it used to wait for the end of a round or of the bound: 96 s at n
-// = 10^6). The exception leaves the parallel loop it was raised in (TBB cancels the loop and
-// rethrows it on the calling thread) and then fitSpheres.
-
+// round, and the fit's long loops (sampling, seeding, assignment, updates, the bound) call
+// pollCancel() (util/poll.hpp), which reports the current phase again once
+// FitOptions::progress_interval seconds have passed since the last report. So a callback that
+// throws (Python's Ctrl-C) stops a fit within about that time whatever n is (it used to wait for
+// the end of a round or of the bound: 96 s at n = 10^6).
 class ProgressScope {
  public:
   ProgressScope(const FitOptions& options, FitClock::time_point start);
-  ~ProgressScope();
-  ProgressScope(const ProgressScope&) = delete;
-  ProgressScope& operator=(const ProgressScope&) = delete;
   void report(const std::string& phase, int iteration, double energy);
-  void poll();
 
  private:
+  void call();
   const FitOptions& options_;
-  FitClock::time_point start_, last_;
+  FitClock::time_point start_;
   FitProgress current_;
-  ProgressScope* outer_;  // the scope this one hides (a fit run from inside a fit's callback)
+  PollScope poll_;
 };
-
-void pollProgress();
 
 // Outside volume of each sphere (in parallel).
 std::vector<double> outsideVolumes(const SolidIndex& index, const std::vector<Sphere>& sp);

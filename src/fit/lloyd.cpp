@@ -105,7 +105,7 @@ Round LloydClustering::lloydRound() {
   prev_labels_ = labels_;
   const auto tu = FitClock::now();
   tbb::parallel_for(0, n, [&](int i) {
-    pollProgress();
+    pollCancel();
     if (same[i] && upd_[i].sphere.center == clusters_[i].center && !rd.members[i].empty()) {
       upd_[i].queries = 0;
       return;

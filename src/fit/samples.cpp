@@ -51,7 +51,7 @@ std::vector<Vec3> interiorGrid(const SolidIndex& index, double h) {
   const Vec3 origin = b.center() - 0.5 * h * Vec3(nx - 1, ny - 1, nz - 1);
   std::vector<std::vector<Vec3>> slabs(nz);
   tbb::parallel_for(int64_t{0}, nz, [&](int64_t k) {
-    pollProgress();
+    pollCancel();
     for (int64_t j = 0; j < ny; ++j)
       for (int64_t i = 0; i < nx; ++i) {
         const Vec3 p = origin + h * Vec3(i, j, k);
@@ -129,7 +129,7 @@ void buildAdjacency(PointSet* ps, double cell) {
     grid[cellKey(ps->points[i], cell)].push_back(static_cast<int32_t>(i));
   std::vector<std::vector<int32_t>> nb(n);
   tbb::parallel_for(int64_t{0}, n, [&](int64_t i) {
-    pollProgress();
+    pollCancel();
     // Neighbours are closer than 1.8 cells: in the 5 x 5 x 5 cells about the point's.
     anyCellAround(cellKey(ps->points[i], cell), 2, [&](const CellKey& c) {
       const auto it = grid.find(c);

@@ -33,7 +33,7 @@ std::vector<Vec3> initialCentres(const PointSet& ps, int n, FitInit init, uint64
   std::vector<double> d2(pool, std::numeric_limits<double>::infinity());
   int64_t next = static_cast<int64_t>(uniform01(rng) * pool) % pool;
   for (int k = 0; k < n; ++k) {
-    pollProgress();
+    pollCancel();
     out.push_back(ps.points[next]);
     int64_t far = 0;
     for (int64_t i = 0; i < pool; ++i) {

@@ -55,7 +55,7 @@ std::vector<double> removalCosts(const SolidIndex& index, const std::vector<Sphe
   if (receivers) receivers->assign(n, {});
   const SphereGrid grid(sp);
   tbb::parallel_for(0, n, [&](int i) {
-    pollProgress();
+    pollCancel();
     std::vector<double> grown(n, 0.0);
     for (const Vec3& p : members[i]) {
       std::pair<double, int32_t> least[2];
@@ -100,7 +100,7 @@ std::optional<TeleportMove> bestTeleport(const SolidIndex& index, const std::vec
     }
     const int last = std::min(n, first + kSplitBatch);
     tbb::parallel_for(first, last, [&](int k) {
-      pollProgress();
+      pollCancel();
       const int i = by_sov[k];
       SplitCache& sc = (*cache)[i];
       if (sc.members != members[i]) {
