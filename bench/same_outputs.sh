@@ -69,8 +69,12 @@ echo "same_outputs: running $old" >&2
 echo "same_outputs: running $new" >&2
 (run_all "$new" "$out/new")
 
-# Times are the one thing allowed to differ in what is printed.
-strip_times() { sed -E 's/"(seconds|time|total|sampling|assignment|update|teleport|bounding)":[-0-9.e]+//g' "$1"; }
+# Times are the one thing allowed to differ in what is printed: JSON time fields and the
+# "(1.86 s)" that repair notes end with.
+strip_times() {
+  sed -E -e 's/"(seconds|time|total|sampling|assignment|update|teleport|bounding)":[-0-9.e]+//g' \
+    -e 's/\([0-9.]+ s\)//g' "$1"
+}
 same=0 differ=0
 for f in "$out"/old/*; do
   b=$(basename "$f")
