@@ -11,6 +11,7 @@
 #include <map>
 
 #ifdef SPHERESET_WITH_REPAIR
+#include "sphereset/load.hpp"
 #include "sphereset/repair_cgal.hpp"
 #endif
 

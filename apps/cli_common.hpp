@@ -18,6 +18,7 @@
 
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/options.hpp"
 #include "sphereset/repair.hpp"

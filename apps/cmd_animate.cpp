@@ -12,6 +12,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "sphereset/animate.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/sphere_io.hpp"
 
 namespace sphereset::cli {

@@ -12,6 +12,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/mesh_defects.hpp"
 #include "sphereset/repair.hpp"

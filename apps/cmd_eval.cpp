@@ -12,6 +12,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "sphereset/evaluate.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/robot.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"

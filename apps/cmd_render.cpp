@@ -10,6 +10,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "sphereset/animate.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/render.hpp"
 #include "sphereset/robot.hpp"

@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/tree.hpp"

@@ -17,6 +17,7 @@
 
 #include "sphereset/animate.hpp"
 #include "sphereset/fit.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"
 

@@ -18,6 +18,7 @@
 #include <random>
 
 #include "index/oracles.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/solid_index.hpp"
 
 namespace {

@@ -13,6 +13,7 @@
 #include <random>
 #include <string>
 
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/sphere_io.hpp"
 

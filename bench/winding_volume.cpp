@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "index/oracles.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/solid_index.hpp"
 

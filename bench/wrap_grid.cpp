@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "repair_cgal/cgal_ops.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 
 int main(int argc, char** argv) {

@@ -1,6 +1,7 @@
 # `cmake --install`: the library (and the GPL sphereset_repair when built), the public headers,
-# the sphereset command, a CMake package (find_package(sphereset), targets sphereset::sphereset
-# and sphereset::repair) and sphereset.pc for pkg-config.
+# the sphereset command, a CMake package (find_package(sphereset), the umbrella target
+# sphereset::sphereset, one target per component: core, io, render, robot, animate, batch, and
+# sphereset::repair) and sphereset.pc for pkg-config.
 #
 # The library is static by default (BUILD_SHARED_LIBS=ON builds it shared) and compiled as
 # position-independent code, so that it can also go into shared objects such as the Python
@@ -11,10 +12,15 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(SPHERESET_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/sphereset)
-set(spheresetInstallTargets sphereset)
-set_target_properties(sphereset PROPERTIES POSITION_INDEPENDENT_CODE ON
-                                           VERSION ${PROJECT_VERSION} SOVERSION 0)
-target_include_directories(sphereset PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+# The stage libraries (src/CMakeLists.txt) and the umbrella target sphereset::sphereset.
+set(SPHERESET_COMPONENT_TARGETS sphereset_core sphereset_io sphereset_render sphereset_robot
+  sphereset_animate sphereset_batch)
+set(spheresetInstallTargets sphereset ${SPHERESET_COMPONENT_TARGETS})
+foreach(t IN LISTS SPHERESET_COMPONENT_TARGETS)
+  set_target_properties(${t} PROPERTIES POSITION_INDEPENDENT_CODE ON
+    VERSION ${PROJECT_VERSION} SOVERSION 0)
+endforeach()
+target_include_directories(sphereset_core PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
 if(SPHERESET_WITH_REPAIR)
   set_target_properties(sphereset_repair PROPERTIES EXPORT_NAME repair
     POSITION_INDEPENDENT_CODE ON VERSION ${PROJECT_VERSION} SOVERSION 0)
@@ -44,14 +50,21 @@ if(BUILD_SHARED_LIBS)
   set(SPHERESET_STATIC_DEPENDENCIES "")
   set(SPHERESET_STATIC_REPAIR_DEPENDENCIES "")
 else()
+  # Per component: what its static library needs at the consumer's link (the core: TBB, NLopt).
   set(SPHERESET_STATIC_DEPENDENCIES [[
 find_dependency(TBB)
-find_dependency(assimp)
-find_dependency(nlohmann_json 3.10)
 find_dependency(NLopt)
-find_dependency(PNG)
-find_dependency(yaml-cpp)
-find_dependency(urdfdom)]])
+if(NOT sphereset_FIND_COMPONENTS OR "io" IN_LIST _sphereset_wanted)
+  find_dependency(assimp)
+  find_dependency(nlohmann_json 3.10)
+  find_dependency(yaml-cpp)
+endif()
+if(NOT sphereset_FIND_COMPONENTS OR "render" IN_LIST _sphereset_wanted)
+  find_dependency(PNG)
+endif()
+if(NOT sphereset_FIND_COMPONENTS OR "robot" IN_LIST _sphereset_wanted)
+  find_dependency(urdfdom)
+endif()]])
   set(SPHERESET_STATIC_REPAIR_DEPENDENCIES "find_dependency(CGAL 5.5)")
 endif()
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/spheresetConfig.cmake.in
@@ -64,14 +77,17 @@ install(FILES ${PROJECT_BINARY_DIR}/spheresetConfig.cmake
 # pkg-config: a static library's dependencies are part of `pkg-config --libs sphereset`; a shared
 # one's are private.
 set(SPHERESET_PC_DEPENDENCIES "tbb assimp nlopt libpng yaml-cpp urdfdom tinyxml")
+# Later stages first, as a static link needs them.
+set(SPHERESET_PC_LIBRARIES
+  "-lsphereset_batch -lsphereset_animate -lsphereset_robot -lsphereset_render -lsphereset_io -lsphereset_core")
 if(BUILD_SHARED_LIBS)
   set(SPHERESET_PC_REQUIRES "eigen3")
   set(SPHERESET_PC_REQUIRES_PRIVATE "${SPHERESET_PC_DEPENDENCIES}")
-  set(SPHERESET_PC_LIBS "-lsphereset")
+  set(SPHERESET_PC_LIBS "${SPHERESET_PC_LIBRARIES}")
 else()
   set(SPHERESET_PC_REQUIRES "eigen3 ${SPHERESET_PC_DEPENDENCIES}")
   set(SPHERESET_PC_REQUIRES_PRIVATE "")
-  set(SPHERESET_PC_LIBS "-lsphereset")
+  set(SPHERESET_PC_LIBS "${SPHERESET_PC_LIBRARIES}")
 endif()
 # Relocatable: the prefix is found from the .pc file's own folder.
 file(RELATIVE_PATH SPHERESET_PC_TO_PREFIX

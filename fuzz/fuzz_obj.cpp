@@ -1,5 +1,6 @@
 // Fuzz target: loadMesh on a .obj file, read by assimp, then cleaned up and diagnosed.
 #include "fuzz_input.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,7 +1,7 @@
 // Fuzz target: the PLY reader (ascii and binary) on bytes in memory, then the clean-up
 // loadMesh applies.
 #include "fuzz_input.hpp"
-#include "mesh/off_ply.hpp"
+#include "io/off_ply.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   auto raw = sphereset::detail::parsePly(sphereset::fuzz::asString(data, size), "fuzz.ply");

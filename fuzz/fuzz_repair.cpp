@@ -2,7 +2,7 @@
 // orientation, nested shells, hole capping) on an OFF mesh in memory. The union and the
 // wrapping are CGAL's and not part of this build; meshes that need them are refused.
 #include "fuzz_input.hpp"
-#include "mesh/off_ply.hpp"
+#include "io/off_ply.hpp"
 #include "sphereset/repair.hpp"
 
 namespace {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "sphereset/export.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/sphere.hpp"
 

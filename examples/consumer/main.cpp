@@ -1,50 +1,78 @@
-// Fits N spheres to a mesh with an installed sphereset, as `sphereset fit MESH -n N --quality
-// fast -o OUT` does, and writes them:  consumer MESH N OUT
+// Fits N spheres to a closed triangle mesh in an OFF file with an installed sphereset, using
+// only its core (sphereset::core: Eigen, TBB and NLopt; no file formats, no assimp), as
+// `sphereset fit MESH -n N --quality fast` does, and writes them as "x y z r" lines:
+//   consumer MESH.off N OUT
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
+#include <fstream>
 #include <sphereset/fit.hpp>
-#include <sphereset/repair.hpp>
+#include <sphereset/mesh.hpp>
 #include <sphereset/solid_index.hpp>
-#include <sphereset/sphere_io.hpp>
 #include <string>
-#ifdef SPHERESET_WITH_REPAIR
-#include <sphereset/repair_cgal.hpp>
-#endif
+#include <vector>
+
+namespace {
+
+// A triangle-only OFF file: "OFF", the counts, the vertices, then "3 a b c" per face.
+bool readOff(const std::string& path, std::vector<sphereset::Vec3>* vertices,
+             std::vector<sphereset::Triangle>* triangles) {
+  std::ifstream in(path);
+  std::string magic;
+  long nv = 0, nf = 0, ne = 0;
+  if (!(in >> magic >> nv >> nf >> ne) || magic != "OFF" || nv < 3 || nf < 1) return false;
+  vertices->resize(nv);
+  for (auto& v : *vertices)
+    if (!(in >> v.x() >> v.y() >> v.z())) return false;
+  triangles->resize(nf);
+  for (auto& t : *triangles) {
+    int corners = 0;
+    if (!(in >> corners >> t[0] >> t[1] >> t[2]) || corners != 3) return false;
+  }
+  return true;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   if (argc != 4) {
-    std::fprintf(stderr, "usage: consumer MESH N OUT\n");
+    std::fprintf(stderr, "usage: consumer MESH.off N OUT\n");
     return 2;
   }
-  const std::string mesh = argv[1], out = argv[3];
-  sphereset::RepairOptions repair;
-#ifdef SPHERESET_WITH_REPAIR
-  repair.operations = sphereset::cgalSolidOperations();
-#endif
-  auto solid = sphereset::loadSolid(mesh, repair);
-  if (!solid) {
-    std::fprintf(stderr, "consumer: %s\n", solid.error().message.c_str());
+  const std::string path = argv[1], out = argv[3];
+  std::vector<sphereset::Vec3> vertices;
+  std::vector<sphereset::Triangle> triangles;
+  if (!readOff(path, &vertices, &triangles)) {
+    std::fprintf(stderr, "consumer: %s: not a triangle OFF file\n", path.c_str());
     return 3;
+  }
+  auto mesh = sphereset::cleanMesh(std::move(vertices), std::move(triangles), {}, path);
+  if (!mesh) {
+    std::fprintf(stderr, "consumer: %s\n", mesh.error().message.c_str());
+    return 4;
+  }
+  const sphereset::MeshDiagnosis d = sphereset::diagnoseMesh(mesh->mesh);
+  if (!d.isSolid()) {
+    std::fprintf(stderr, "consumer: %s\n", sphereset::notSolidError(path, d).message.c_str());
+    return 4;
   }
   sphereset::FitRequest request;
   request.num_spheres = std::atoi(argv[2]);
   request.quality = sphereset::FitQuality::kFast;
-  sphereset::FitOptions options = sphereset::fitOptionsFor(request);
-  options.original = solid->original();
-  const sphereset::SolidIndex index(solid->repair.solid);
-  auto fit = sphereset::fitSpheres(index, options);
+  const sphereset::SolidIndex index(mesh->mesh);
+  auto fit = sphereset::fitSpheres(index, sphereset::fitOptionsFor(request));
   if (!fit) {
     std::fprintf(stderr, "consumer: %s\n", fit.error().message.c_str());
     return 4;
   }
-  sphereset::SphereFileMeta meta;
-  meta.name = std::filesystem::path(mesh).stem().string();
-  meta.source_mesh = mesh;
-  if (auto st = sphereset::writeSpheres(out, fit->spheres, meta); !st) {
-    std::fprintf(stderr, "consumer: %s\n", st.error().message.c_str());
+  std::FILE* f = std::fopen(out.c_str(), "w");
+  if (!f) {
+    std::fprintf(stderr, "consumer: %s: cannot be written\n", out.c_str());
     return 6;
   }
+  for (const sphereset::Sphere& s : fit->spheres)
+    std::fprintf(f, "%.17g %.17g %.17g %.17g\n", s.center.x(), s.center.y(), s.center.z(),
+                 s.radius);
+  std::fclose(f);
   std::printf("%zu spheres, outside volume %.6g -> %s\n", fit->spheres.size(), fit->energy,
               out.c_str());
   return 0;

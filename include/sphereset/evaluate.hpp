@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sphereset/cover.hpp"
 #include "sphereset/options.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere.hpp"
@@ -14,22 +15,12 @@
 
 namespace sphereset {
 
-// Triangles are split in four at most this many times, by the fit's guaranteed bound and by
-// the evaluation's surface certificate alike: a set the bound made to cover is certified.
-inline constexpr int kSurfaceSplitDepth = 10;
-
-// The coverage certificates accept points within this fraction of the bounding-box diagonal
-// outside a sphere, so that a set built to touch the surface exactly (a circumscribed sphere)
-// is not refuted by the last bit of rounding. (The fit's bound needs none of it: it grows radii
-// by a slack of the same size beyond what each piece needs.)
-inline constexpr double kCoverageToleranceRel = 1e-12;
-
 struct EvalOptions {
   uint64_t seed = 1;               // all sampling is seeded; results do not depend on threads
   int64_t union_samples = 200000;  // Monte Carlo samples for the union's outside volume
   int proximity_segments = 3000;   // random surface-to-surface segments (paper Sec. 7)
-  int surface_max_depth = kSurfaceSplitDepth;  // 4^depth sub-triangles at most per triangle
-  int interior_max_depth = 5;                  // octree refinement below an 8³ grid of the bounds
+  int surface_max_depth = kSurfaceSplitDepth;    // 4^depth sub-triangles at most per triangle
+  int interior_max_depth = kInteriorSplitDepth;  // octree refinement below an 8³ grid of the bounds
   // Shadow comparison on a ground plane under the object (paper Sec. 7): the up axis
   // (0 x, 1 y, 2 z), pixels per side of the plane and directional lights over the upper
   // hemisphere. A resolution of 0 skips it.

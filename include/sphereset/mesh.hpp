@@ -78,15 +78,6 @@ struct LoadedMesh {
   LoadReport report;
 };
 
-// Reads OBJ, PLY (ASCII/binary, strips), STL (ASCII/binary), OFF, DAE (scene-graph transforms
-// applied), glTF/GLB and any other format assimp knows. Besides the file itself, only the
-// companions a format references are opened: .bin buffers, .mtl libraries and files of the same
-// stem; any other file a mesh names (e.g. "mtllib /etc/passwd") is treated as missing. Welds,
-// triangulates, drops degenerate triangles and reports what was done. Errors: kUnreadable (missing,
-// unknown format, parse failure), kInvalidData (no triangles, NaN/Inf coordinates, out-of-range
-// indices).
-Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& options = {});
-
 // Builds a mesh from raw arrays with the same clean-up as loadMesh (used for in-memory data).
 Expected<LoadedMesh> cleanMesh(std::vector<Vec3> vertices, std::vector<Triangle> triangles,
                                const LoadOptions& options = {}, std::string name = "mesh");

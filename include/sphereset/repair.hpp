@@ -95,19 +95,4 @@ struct RepairResult {
 Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& options,
                                   const std::string& name);
 
-// A mesh file made a solid as the commands that fit do it: loadMesh (exact welding only) and
-// then repairMesh with `options`.
-struct SolidInput {
-  LoadedMesh loaded;
-  RepairResult repair;
-  // The input's triangles when the solid differs from them (the fit and the evaluation must
-  // bound them too: FitOptions::original, EvalOptions::original), else null. Points into
-  // `repair`: valid while this object lives and is not moved.
-  const Mesh* original() const;
-};
-
-// Loads `path` and makes a solid of it. Errors: those of loadMesh and repairMesh, with messages
-// that name the file.
-Expected<SolidInput> loadSolid(const std::string& path, const RepairOptions& options);
-
 }  // namespace sphereset

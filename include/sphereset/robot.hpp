@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/repair.hpp"
 #include "sphereset/sphere.hpp"
@@ -113,15 +114,6 @@ Expected<JointState> jointState(const Robot& robot,
 // planar) stay at their origin.
 Expected<std::map<std::string, Eigen::Isometry3d>> linkPoses(
     const Robot& robot, const std::map<std::string, double>& joint_values = {});
-
-// Pairs of links to leave out of self-collision checking, as cuRobo lists them: links joined
-// by a joint (adjacent), and links whose sphere sets overlap at one pose (overlapping). Each pair
-// {a, b} has a before b in the robot's link order; the lists are sorted by that order and hold
-// no duplicates. A pair both adjacent and overlapping is in both lists.
-struct SelfCollisionPairs {
-  std::vector<std::array<std::string, 2>> adjacent;
-  std::vector<std::array<std::string, 2>> overlapping;
-};
 
 // The pairs for `robot` with the spheres of its links (in each link's frame) placed by
 // linkPoses(robot, joint_values). Two links overlap when some sphere of one and some sphere of

@@ -2,6 +2,7 @@
 // Reading a file needs nothing of the fit.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -10,8 +11,6 @@
 #include "sphereset/status.hpp"
 
 namespace sphereset {
-
-struct SelfCollisionPairs;  // robot.hpp
 
 enum class SphereFormat {
   kText,  // "x y z r" per line, '#' starts a comment
@@ -82,6 +81,15 @@ Status checkOutputPath(const std::string& output, const std::vector<std::string>
 // The same for an output folder that a command fills (created when missing, with its parents):
 // not an input, not a file, and writable where it exists or would be created.
 Status checkOutputFolder(const std::string& folder, const std::vector<std::string>& inputs);
+
+// Pairs of links to leave out of self-collision checking, as cuRobo lists them: links joined
+// by a joint (adjacent), and links whose sphere sets overlap at one pose (overlapping). Each pair
+// {a, b} has a before b in the robot's link order; the lists are sorted by that order and hold
+// no duplicates. A pair both adjacent and overlapping is in both lists.
+struct SelfCollisionPairs {
+  std::vector<std::array<std::string, 2>> adjacent;
+  std::vector<std::array<std::string, 2>> overlapping;
+};
 
 // A robot's spheres for cuRobo: the collision_spheres mapping of writeLinkSpheres, followed,
 // when `pairs` is given, by the self_collision_ignore mapping (each link -> the list of links to

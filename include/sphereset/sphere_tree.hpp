@@ -12,12 +12,6 @@
 
 namespace sphereset {
 
-// The smallest ball that contains every given ball entirely (exact up to rounding: a
-// combinatorial pivoting method on support sets of at most four balls, no generic optimiser).
-// Radius grows by a few ulps so that containment holds in floating point. Empty input gives
-// a zero ball at the origin.
-Sphere minimalEnclosingBall(std::span<const Sphere> balls);
-
 // A complete B-ary tree stored flat in Bradshaw's layout: level l holds B^l slots starting at
 // (B^l - 1) / (B - 1); the children of node N are N·B + 1 + i, i < B. Unused slots have a
 // negative radius. `depth` counts levels below the root: depth + 1 levels, at most B^depth

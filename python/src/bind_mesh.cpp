@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "solid.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/mesh_defects.hpp"
 #include "sphereset/repair.hpp"

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sphereset/animate.hpp"
+#include "sphereset/load.hpp"
 
 namespace sphereset {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/companion_io.hpp"
+#include "io/companion_io.hpp"
 #include "mesh/weld.hpp"
 #include "sphereset/animate.hpp"
 #include "sphereset/limits.hpp"

@@ -18,13 +18,14 @@
 #include <vector>
 
 #include "batch/batch_internal.hpp"
+#include "io/json_text.hpp"
 #include "sphereset/batch.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/repair.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"
-#include "util/json_text.hpp"
 #include "util/read_file.hpp"
 
 namespace sphereset {

@@ -26,9 +26,8 @@
 #include <numbers>
 
 #include "cover/cover_cells.hpp"
+#include "cover/segment_cover.hpp"
 #include "sphereset/limits.hpp"
-#include "sphereset/query.hpp"
-#include "tree/query_oracles.hpp"
 #include "util/poll.hpp"
 #include "util/sampling.hpp"
 
@@ -178,7 +177,7 @@ double proximityError(const SolidIndex& index, const std::vector<Sphere>& sphere
     detail::pollCancel();
     std::mt19937_64 rng(mixSeed(options.seed, 5000000 + k));
     const Vec3 a = sampler.sample(rng), bb = sampler.sample(rng);
-    err[k] = std::abs(index.outsideLength(a, bb) - segmentOutsideLengthBruteForce(spheres, a, bb));
+    err[k] = std::abs(index.outsideLength(a, bb) - detail::segmentOutsideSpheres(spheres, a, bb));
   });
   double s = 0.0;
   for (double e : err) s += e;

@@ -15,8 +15,7 @@
 #include <array>
 #include <limits>
 
-#include "sphereset/sphere_tree.hpp"
-#include "sphereset/tree.hpp"
+#include "sphereset/sphere.hpp"
 
 namespace sphereset::detail {
 namespace {

@@ -16,7 +16,7 @@
 
 #include "cover/cover_cells.hpp"
 #include "fit/fit_common.hpp"
-#include "sphereset/evaluate.hpp"
+#include "sphereset/cover.hpp"
 
 namespace sphereset::detail {
 namespace {

@@ -11,7 +11,7 @@
 #include <tbb/parallel_for.h>
 
 #include "fit/sphere_update.hpp"
-#include "sphereset/evaluate.hpp"
+#include "sphereset/cover.hpp"
 
 namespace sphereset::detail {
 namespace {
@@ -50,7 +50,7 @@ void boundInteriorPasses(const SolidIndex& index, std::vector<Sphere>* sp, FitRe
   // Between grid points the clusters' spheres can leave gaps (most of all for the baselines).
   // Radii only grow, so the surface stays covered.
   for (int pass = 0; pass < kInteriorPasses; ++pass) {
-    const BoundStats is = boundInterior(index, sp, EvalOptions{}.interior_max_depth);
+    const BoundStats is = boundInterior(index, sp, kInteriorSplitDepth);
     res->bounding_queries += is.queries;
     res->bounding_interior_cells += is.pieces;
     if (is.enlarged == 0) break;

@@ -13,9 +13,9 @@
 #include <numbers>
 
 #include "index/bvh.hpp"
-#include "index/oracles.hpp"
 #include "index/ray_triangle.hpp"
 #include "index/solid_index_impl.hpp"
+#include "index/winding.hpp"
 
 namespace sphereset {
 namespace {

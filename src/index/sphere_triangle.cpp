@@ -28,7 +28,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "index/oracles.hpp"
+#include "index/winding.hpp"
 
 namespace sphereset {
 namespace {

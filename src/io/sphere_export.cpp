@@ -11,11 +11,10 @@
 #include <sstream>
 
 #include "io/atomic_write.hpp"
+#include "io/json_text.hpp"
 #include "sphereset/export.hpp"
-#include "sphereset/render.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_io.hpp"
-#include "util/json_text.hpp"
 
 namespace sphereset {
 namespace {

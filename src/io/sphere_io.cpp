@@ -18,10 +18,10 @@
 #include <sstream>
 
 #include "io/atomic_write.hpp"
+#include "io/json_text.hpp"
 #include "io/sphere_formats.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_tree.hpp"
-#include "util/json_text.hpp"
 #include "util/read_file.hpp"
 
 namespace sphereset {

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "io/atomic_write.hpp"
+#include "io/json_text.hpp"
 #include "io/sphere_formats.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/sphere_tree.hpp"
-#include "util/json_text.hpp"
 #include "util/read_file.hpp"
 
 namespace sphereset {

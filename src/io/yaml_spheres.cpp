@@ -15,7 +15,6 @@
 #include <vector>
 
 #include "io/sphere_formats.hpp"
-#include "sphereset/robot.hpp"
 #include "util/utf8.hpp"
 
 namespace sphereset::detail {

@@ -11,7 +11,7 @@
 #include <numbers>
 #include <numeric>
 
-#include "index/oracles.hpp"
+#include "index/winding.hpp"
 #include "sphereset/mesh_defects.hpp"
 #include "sphereset/solid_index.hpp"
 #include "util/union_find.hpp"

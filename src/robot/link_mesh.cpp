@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "sphereset/load.hpp"
 #include "sphereset/robot.hpp"
 
 namespace sphereset {

@@ -13,6 +13,7 @@
 #include <span>
 #include <string>
 
+#include "cover/segment_cover.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/query.hpp"
 #include "sphereset/sphere_tree.hpp"
@@ -26,30 +27,6 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double signedGap(const Sphere& s, const Vec3& p) { return (p - s.center).norm() - s.radius; }
-
-// Parameter interval [t0, t1] ⊂ [0, 1] of a + t d inside the sphere, if not empty.
-bool segmentInterval(const Sphere& s, const Vec3& a, const Vec3& d, double* t0, double* t1) {
-  if (!detail::lineSphere(s, a, d, t0, t1)) return false;
-  *t0 = std::max(0.0, *t0);
-  *t1 = std::min(1.0, *t1);
-  return *t1 > *t0;
-}
-
-double uncoveredLength(std::vector<std::pair<double, double>>* in, double len) {
-  std::sort(in->begin(), in->end());
-  double covered = 0.0, cur0 = -1.0, cur1 = -1.0;
-  for (const auto& [t0, t1] : *in) {
-    if (t0 > cur1) {
-      if (cur1 > cur0) covered += cur1 - cur0;
-      cur0 = t0;
-      cur1 = t1;
-    } else {
-      cur1 = std::max(cur1, t1);
-    }
-  }
-  if (cur1 > cur0) covered += cur1 - cur0;
-  return std::max(0.0, (1.0 - covered) * len);
-}
 
 bool isLeafSlot(const SphereTree& t, int64_t node) { return node >= t.levelBegin(t.depth); }
 
@@ -132,14 +109,7 @@ Expected<bool> containsPoint(const SphereTree& t, const Vec3& p) {
 
 double segmentOutsideLengthBruteForce(const std::vector<Sphere>& spheres, const Vec3& a,
                                       const Vec3& b) {
-  const Vec3 d = b - a;
-  const double dd = d.squaredNorm();
-  if (!(dd > 0.0)) return 0.0;
-  std::vector<std::pair<double, double>> in;
-  double t0, t1;
-  for (const Sphere& s : spheres)
-    if (segmentInterval(s, a, d, &t0, &t1)) in.emplace_back(t0, t1);
-  return uncoveredLength(&in, std::sqrt(dd));
+  return detail::segmentOutsideSpheres(spheres, a, b);
 }
 
 Expected<double> segmentOutsideLength(const SphereTree& t, const Vec3& a, const Vec3& b) {
@@ -155,7 +125,7 @@ Expected<double> segmentOutsideLength(const SphereTree& t, const Vec3& a, const 
     const int64_t node = stack.back();
     stack.pop_back();
     // A node the segment does not enter holds no leaf the segment enters.
-    if (!segmentInterval(t.nodes[node], a, d, &t0, &t1)) continue;
+    if (!detail::segmentInterval(t.nodes[node], a, d, &t0, &t1)) continue;
     if (isLeafSlot(t, node)) {
       in.emplace_back(t0, t1);
       continue;
@@ -165,7 +135,7 @@ Expected<double> segmentOutsideLength(const SphereTree& t, const Vec3& a, const 
       if (t.used(c)) stack.push_back(c);
     }
   }
-  return uncoveredLength(&in, std::sqrt(dd));
+  return detail::uncoveredLength(&in, std::sqrt(dd));
 }
 
 PairQuery separationBruteForce(const std::vector<Sphere>& a, const Pose& pose_a,

@@ -6,7 +6,7 @@
 //   - the dense grids over a box, whose coordinates are clamped to the box: the assignment's
 //     centre grid (fit/centre_grid.hpp) and the sphere grid (cover/sphere_grid.hpp); they
 //     share the checked conversion only (their cells are array indices, not hashed keys).
-// CellKeyHash also hashes the sorted vertex triples of triangles (mesh/load.cpp: duplicates).
+// CellKeyHash also hashes the sorted vertex triples of triangles (mesh/clean.cpp: duplicates).
 #pragma once
 
 #include <algorithm>

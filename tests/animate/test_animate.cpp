@@ -10,6 +10,7 @@
 
 #include "animate/bent_bar.hpp"
 #include "sphereset/animate.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/solid_index.hpp"
 #include "test_support.hpp"
 

@@ -13,6 +13,7 @@
 #include "sphereset/batch.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/repair.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/sphere_tree.hpp"

@@ -8,6 +8,7 @@
 
 #include "cli_common.hpp"
 #include "sphereset/evaluate.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/solid_index.hpp"
 

@@ -9,6 +9,7 @@
 #include "index/oracles.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
+#include "sphereset/load.hpp"
 #include "test_meshes.hpp"
 
 namespace sphereset {

@@ -14,6 +14,7 @@
 #include "sphereset/animate.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/query.hpp"
 #include "sphereset/repair.hpp"
 #include "sphereset/robot.hpp"

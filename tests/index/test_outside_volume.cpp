@@ -7,6 +7,7 @@
 #include <random>
 
 #include "index/oracles.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/solid_index.hpp"
 #include "test_meshes.hpp"
 

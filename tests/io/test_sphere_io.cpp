@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "sphereset/export.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "test_support.hpp"

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 #include "test_meshes.hpp"
 #include "test_support.hpp"

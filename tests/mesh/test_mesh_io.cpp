@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
 #include "test_meshes.hpp"
 #include "test_support.hpp"

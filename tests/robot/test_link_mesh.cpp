@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "robot/robot_data.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/robot.hpp"
 #include "test_support.hpp"
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <tuple>
 
+#include "sphereset/load.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/sphere_tree.hpp"
 #include "sphereset/tree.hpp"

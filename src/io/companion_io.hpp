@@ -18,7 +18,7 @@
 #include <system_error>
 #include <vector>
 
-#include "mesh/smd_grammar.hpp"
+#include "io/smd_grammar.hpp"
 #include "sphereset/status.hpp"
 
 namespace sphereset::detail {

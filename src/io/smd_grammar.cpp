@@ -1,6 +1,6 @@
 // The SMD/VTA grammar check (smd_grammar.hpp). Reference: Valve Developer Community, "Studiomdl
 // Data" (the SMD format); the fields of each line as assimp 5.2's SMDLoader reads them.
-#include "mesh/smd_grammar.hpp"
+#include "io/smd_grammar.hpp"
 
 #include <cerrno>
 #include <cmath>

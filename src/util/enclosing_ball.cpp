@@ -20,7 +20,7 @@
 #include <limits>
 #include <optional>
 
-#include "sphereset/sphere_tree.hpp"
+#include "sphereset/sphere.hpp"
 
 namespace sphereset {
 namespace {

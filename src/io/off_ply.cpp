@@ -2,7 +2,7 @@
 // Stanford polygon format: ascii and binary, with elements and typed properties declared in the
 // header). They produce raw vertex and triangle arrays; welding, degenerate removal and
 // orientation happen in cleanMesh like for every other format.
-#include "mesh/off_ply.hpp"
+#include "io/off_ply.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -3,6 +3,7 @@
 #include <string>
 #include <utility>
 
+#include "sphereset/load.hpp"
 #include "sphereset/repair.hpp"
 
 namespace sphereset {
