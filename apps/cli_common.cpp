@@ -43,47 +43,42 @@ nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 void addMeshArgs(CLI::App* cmd, MeshArgs* a, bool repair) {
   cmd->add_option("mesh", a->path, "Mesh file (OBJ, PLY, STL, OFF, DAE, glTF/GLB, ...)")
       ->required();
-  cmd->add_option("--weld-tolerance", a->weld,
-                  "Merge vertices closer than this distance (default: exact duplicates, then up "
-                  "to 1e-6 of the diagonal if that closes the mesh)")
-      ->check(CLI::NonNegativeNumber);
-  if (repair) addRepairArgs(cmd, a);
+  if (repair)
+    addRepairArgs(cmd, a);
+  else
+    addTableOptions(cmd, &a->repair, repairOptionTable(), {"repair", "wrap_alpha", "wrap_offset"});
 }
 
 void addRepairArgs(CLI::App* cmd, MeshArgs* a) {
-  cmd->add_option("--repair", a->repair,
-                  "auto: make a solid of a broken mesh (weld, cap holes, unite overlapping "
-                  "shells, or wrap) and bound its original triangles too; off: refuse any mesh "
-                  "that is not a closed oriented manifold")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"auto", "off"}));
+  addTableOptions(cmd, &a->repair, repairOptionTable());
   cmd->add_flag("--fill-cavities,!--keep-cavities", a->fill_cavities,
                 "Fill inner cavities and holes (default; a hollow casing is solid for "
                 "collision), or keep cavities as empty space");
-  cmd->add_option("--wrap-alpha", a->wrap_alpha,
-                  "Wrapping: openings narrower than about this are not entered (default 0: "
-                  "1/50 of the diagonal)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--wrap-offset", a->wrap_offset,
-                  "Wrapping: distance of the wrap outside the triangles (default 0: alpha/20)")
-      ->check(CLI::NonNegativeNumber);
 }
 
-RepairOptions repairOptions(const MeshArgs& a) {
+Expected<RepairOptions> repairOptions(const MeshArgs& a) {
   RepairOptions ro;
-  ro.enabled = a.repair != "off";
-  ro.weld_tolerance = a.weld;
+  for (const auto& [name, text] : a.repair.given())
+    if (Status st = setRepairOption(&ro, name, text); !st) return st.error();
   ro.fill_cavities = a.fill_cavities;
-  ro.wrap_alpha = a.wrap_alpha;
-  ro.wrap_offset = a.wrap_offset;
 #ifdef SPHERESET_WITH_REPAIR
   ro.operations = cgalSolidOperations();
 #endif
   return ro;
 }
 
+Expected<LoadOptions> loadOptions(const MeshArgs& a) {
+  auto ro = repairOptions(a);
+  if (!ro) return ro.error();
+  LoadOptions lo;
+  lo.weld_tolerance = std::max(0.0, ro->weld_tolerance);  // negative: automatic, exact here
+  return lo;
+}
+
 Expected<SolidInput> loadSolid(const MeshArgs& a) {
-  return sphereset::loadSolid(a.path, repairOptions(a));
+  auto ro = repairOptions(a);
+  if (!ro) return ro.error();
+  return sphereset::loadSolid(a.path, *ro);
 }
 
 // --joint-positions j1=v1,j2=v2 (radians or metres), for joints of the robot.

@@ -57,24 +57,38 @@ int fail(const Error& e);
 nlohmann::json vec(const Vec3& v);
 
 // The mesh argument and how a mesh that is not a clean solid is made one (repair.hpp).
+struct TableArgs {
+  std::map<std::string, std::string> text;      // row name -> the text given
+  std::map<std::string, CLI::Option*> options;  // row name -> its flag
+  // The rows given on the command line, in the table's order.
+  std::vector<std::pair<std::string, std::string>> given() const;
+};
+
+// One flag per row of `table` (help with the row's default), except the rows named in `skip`.
+void addTableOptions(CLI::App* cmd, TableArgs* a, std::span<const OptionSpec> table,
+                     std::initializer_list<std::string_view> skip = {});
+
 struct MeshArgs {
   std::string path;
-  double weld = -1.0;  // negative: automatic
-  std::string repair = "auto";
+  TableArgs repair;  // the rows of repairOptionTable() given (weld tolerance, repair, wrap)
   bool fill_cavities = true;
-  double wrap_alpha = 0.0, wrap_offset = 0.0;
 };
 
 // `repair`: whether the repair options are added (commands that fit or measure) or only the
 // weld tolerance (commands that draw).
 void addMeshArgs(CLI::App* cmd, MeshArgs* a, bool repair = true);
 
-// The repair options alone (--repair, --fill-cavities/--keep-cavities, --wrap-alpha,
-// --wrap-offset), for commands whose meshes come from elsewhere (robot).
+// The repair options alone (the rows of repairOptionTable() and --fill-cavities/
+// --keep-cavities), for commands whose meshes come from elsewhere (robot, batch).
 void addRepairArgs(CLI::App* cmd, MeshArgs* a);
 
-// The repair options the arguments ask for, with the union and the wrapping of this build.
-RepairOptions repairOptions(const MeshArgs& a);
+// The repair options the arguments ask for, with the union and the wrapping of this build;
+// kInvalidArgument from the library's table for a value outside its row.
+Expected<RepairOptions> repairOptions(const MeshArgs& a);
+
+// Loading as the diagnosis and the pictures see a mesh: exactly welded, or welded with the
+// tolerance given.
+Expected<LoadOptions> loadOptions(const MeshArgs& a);
 
 // A loaded mesh and the solid made of it (repair.hpp).
 using SolidInput = sphereset::SolidInput;
@@ -97,17 +111,6 @@ std::string repairLine(const RepairResult& r);
 
 // The options of a library option table (options.hpp) as the user typed them: one flag per row,
 // the text handed to the library's setter unchanged.
-struct TableArgs {
-  std::map<std::string, std::string> text;      // row name -> the text given
-  std::map<std::string, CLI::Option*> options;  // row name -> its flag
-  // The rows given on the command line, in the table's order.
-  std::vector<std::pair<std::string, std::string>> given() const;
-};
-
-// One flag per row of `table` (help with the row's default), except the rows named in `skip`.
-void addTableOptions(CLI::App* cmd, TableArgs* a, std::span<const OptionSpec> table,
-                     std::initializer_list<std::string_view> skip = {});
-
 // Fit options shared by `fit` and `tree`.
 struct FitArgs {
   MeshArgs mesh;

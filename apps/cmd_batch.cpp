@@ -103,7 +103,9 @@ int runBatch(const BatchArgs& c) {
   auto request = fitRequest(a);
   if (!request) return fail(request.error());
   options.fit = std::move(request).value();
-  options.repair = repairOptions(a.mesh);
+  auto repair = repairOptions(a.mesh);
+  if (!repair) return fail(repair.error());
+  options.repair = std::move(repair).value();
   options.format = c.format;
   options.resume = !c.force;
   auto items = listBatchItems(a.mesh.path, options);
@@ -198,10 +200,6 @@ Command registerBatch(CLI::App& app) {
   cmd->add_option("--format", c->format, "Sphere files written: json, txt, sph or yaml")
       ->capture_default_str()
       ->check(CLI::IsMember({"json", "txt", "sph", "yaml"}));
-  cmd->add_option("--weld-tolerance", a.mesh.weld,
-                  "Merge vertices closer than this distance (default: exact duplicates, then up "
-                  "to 1e-6 of the diagonal if that closes the mesh)")
-      ->check(CLI::NonNegativeNumber);
   addRepairArgs(cmd, &a.mesh);
   // The fit's options (n included) are the defaults of items whose manifest line gives none.
   addFitTuningArgs(cmd, &a, true);

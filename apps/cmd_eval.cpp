@@ -104,7 +104,9 @@ int runEval(EvalArgs a) {
     if (!link)
       return fail(Error{ErrorCode::kInvalidArgument,
                         a.mesh.path + ": no link '" + a.link + "' in " + robot->name});
-    m = linkSolid(*link, repairOptions(a.mesh), a.mesh.path + ": link '" + a.link + "'");
+    auto repair = repairOptions(a.mesh);
+    if (!repair) return fail(repair.error());
+    m = linkSolid(*link, *repair, a.mesh.path + ": link '" + a.link + "'");
   } else {
     m = loadSolid(a.mesh);
   }

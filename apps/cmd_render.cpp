@@ -122,9 +122,9 @@ std::string framePng(const std::string& out, size_t i) {
 // `animate` wrote for that frame (--spheres-dir), all seen by the same cameras. Everything is
 // read before anything is written, and a failure removes what was written.
 int renderFrames(const RenderArgs& a, const RenderOptions& ro) {
-  LoadOptions lo;
-  lo.weld_tolerance = std::max(0.0, a.mesh.weld);
-  auto rest = loadMesh(a.mesh.path, lo);
+  auto lo = loadOptions(a.mesh);
+  if (!lo) return fail(lo.error());
+  auto rest = loadMesh(a.mesh.path, *lo);
   if (!rest) return fail(rest.error());
   std::vector<std::vector<Vec3>> frames;
   if (!a.animation.empty()) {
@@ -136,7 +136,7 @@ int renderFrames(const RenderArgs& a, const RenderOptions& ro) {
     for (AnimationFrame& f : anim->frames) frames.push_back(std::move(f.vertices));
   } else {
     for (const std::string& path : a.frames) {
-      auto m = loadMesh(path, lo);
+      auto m = loadMesh(path, *lo);
       if (!m) return fail(m.error());
       frames.push_back(std::move(m->mesh.vertices));
     }
@@ -201,9 +201,9 @@ int runRender(const RenderArgs& a) {
     return fail(Error{ErrorCode::kInvalidArgument, "--spheres-dir needs --frames or --animation"});
   if (std::filesystem::path(a.mesh.path).extension() == ".urdf") return renderRobot(a, ro);
   // The mesh is drawn even when it is not a closed solid.
-  LoadOptions lo;
-  lo.weld_tolerance = std::max(0.0, a.mesh.weld);  // negative: the default, exact
-  auto m = loadMesh(a.mesh.path, lo);
+  auto lo = loadOptions(a.mesh);
+  if (!lo) return fail(lo.error());
+  auto m = loadMesh(a.mesh.path, *lo);
   if (!m) return fail(m.error());
   std::vector<Sphere> spheres;
   if (!a.spheres.empty()) {
@@ -232,8 +232,8 @@ Command registerRender(CLI::App& app) {
                   "Robot: folder searched for package://NAME/ paths (repeatable)");
   cmd->add_option("--joint-positions", a->joint_positions,
                   "Robot: JOINT=VALUE,... (default: all joints at 0)");
-  cmd->add_option("--weld-tolerance", a->mesh.weld,
-                  "Merge vertices closer than this (absolute units)");
+  addTableOptions(cmd, &a->mesh.repair, repairOptionTable(),
+                  {"repair", "wrap_alpha", "wrap_offset"});
   cmd->add_option("spheres", a->spheres, "Sphere set or tree (its leaves are drawn)");
   cmd->add_option("-o,--output", a->out, "PNG file")->required();
   cmd->add_option("--size", a->size, "Image size WxH")->capture_default_str();

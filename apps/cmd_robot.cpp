@@ -159,7 +159,9 @@ int runRobot(const RobotArgs& a) {
     if (Status st = setFitRequestOption(&request, name, text); !st) return fail(st.error());
   fo.quality = request.quality;
   fo.seed = request.seed;
-  fo.repair = repairOptions(a.repair);
+  auto repair = repairOptions(a.repair);
+  if (!repair) return fail(repair.error());
+  fo.repair = std::move(repair).value();
   fo.name = a.urdf;
   auto fit = fitRobot(*robot, fo);
   if (!fit) return fail(fit.error());
@@ -226,9 +228,6 @@ Command registerRobot(CLI::App& app) {
   cmd->add_flag("-q,--quiet", a->quiet, "No summary on stderr");
   cmd->add_flag("--json", a->json, "Print the per-link summary as one JSON object on stdout");
   addRepairArgs(cmd, &a->repair);
-  cmd->add_option("--weld-tolerance", a->repair.weld,
-                  "Merge vertices closer than this distance (default: automatic)")
-      ->check(CLI::NonNegativeNumber);
   return {cmd, [a] { return runRobot(*a); }};
 }
 

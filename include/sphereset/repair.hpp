@@ -29,6 +29,7 @@
 
 #include "sphereset/mesh.hpp"
 #include "sphereset/mesh_defects.hpp"
+#include "sphereset/options.hpp"
 #include "sphereset/status.hpp"
 
 namespace sphereset {
@@ -65,6 +66,20 @@ struct RepairOptions {
   // The union and the wrapping; when empty, meshes that need them are refused.
   SolidOperations operations;
 };
+
+// The repair's options as one table (options.hpp): repair (auto or off: `enabled`),
+// weld_tolerance (absolute; automatic when not given), wrap_alpha and wrap_offset (absolute; 0
+// chooses them from the mesh). The command line's flags, the batch manifest's columns and the
+// Python keywords are made from it. (fill_cavities is a switch of its own: --fill-cavities and
+// --keep-cavities.)
+std::span<const OptionSpec> repairOptionTable();
+// Sets the option `name` from `text` as a user typed it. kInvalidArgument names the option and
+// the accepted values ("wrap_alpha 'nan': expected a number from 0 to 1e+30").
+Status setRepairOption(RepairOptions* o, const std::string& name, const std::string& text);
+// kInvalidArgument, with setRepairOption's message, when a value is outside its row (NaN,
+// infinite, negative alpha or offset, beyond 1e30); a negative weld tolerance is the automatic
+// one. repairMesh checks its options with it.
+Status checkRepairOptions(const RepairOptions& o);
 
 struct RepairResult {
   // Closed, 2-manifold, oriented outward, free of crossings (a union rounded to doubles may

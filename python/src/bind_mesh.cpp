@@ -17,14 +17,14 @@ namespace sphereset::python {
 
 RepairOptions repairOptions(const std::string& repair, double weld_tolerance, bool fill_cavities,
                             double wrap_alpha, double wrap_offset) {
-  if (repair != "auto" && repair != "off")
-    raise(ErrorCode::kInvalidArgument, "repair must be 'auto' or 'off', not '" + repair + "'");
+  // The library's table checks every value, with the messages of every door.
   RepairOptions ro;
-  ro.enabled = repair == "auto";
+  check(setRepairOption(&ro, "repair", repair));
   ro.weld_tolerance = weld_tolerance;
   ro.fill_cavities = fill_cavities;
   ro.wrap_alpha = wrap_alpha;
   ro.wrap_offset = wrap_offset;
+  check(checkRepairOptions(ro));
 #ifdef SPHERESET_WITH_REPAIR
   ro.operations = cgalSolidOperations();
 #endif
@@ -195,6 +195,8 @@ Raises InvalidDataError for NaN/infinite coordinates, indices out of range or no
                     "': " + std::to_string(pm.loaded.mesh.vertices.size()) + " vertices, " +
                     std::to_string(pm.loaded.mesh.triangles.size()) + " triangles>");
       });
+
+  m.def("_repair_option_table", [] { return optionTable(repairOptionTable()); });
 
   m.def(
       "_load_mesh",

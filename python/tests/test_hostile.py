@@ -19,14 +19,17 @@ CASES = json.loads((HOSTILE / "cases.json").read_text())
 STATUS = {"invalid_argument": (2, ss.InvalidArgumentError), "unreadable": (3, ss.UnreadableError),
           "invalid_data": (4, ss.InvalidDataError), "not_solid": (5, ss.NotSolidError),
           "write_failed": (6, ss.WriteError)}
-# Options outside the library's fit and evaluation tables: the repair's and the tree's.
-EXTRA_FLAGS = {"wrap_alpha": "--wrap-alpha", "wrap_offset": "--wrap-offset",
-               "branching": "--branch", "depth": "--depth", "fps": "--fps",
+# Options outside the library's fit, evaluation and repair tables: the tree's, the animation's
+# and the robot's.
+EXTRA_FLAGS = {"branching": "--branch", "depth": "--depth", "fps": "--fps",
                "link_spheres": "--link-spheres"}
+REAL_OPTIONS = ("weld_tolerance", "wrap_alpha", "wrap_offset", "fps")
 
 
 def flag(name):
-    for row in ss._core._fit_option_table() + ss.eval_option_table():
+    tables = (ss._core._fit_option_table() + ss.eval_option_table()
+              + ss._core._repair_option_table())
+    for row in tables:
         if row["name"] == name:
             return row["flag"].split(",")[-1]
     return EXTRA_FLAGS[name]
@@ -37,6 +40,8 @@ def command(case, files, out):
     flags = [x for name, value in opts.items() for x in (flag(name), value)]
     if op == "fit":
         return ["fit", files[0], "-o", out / "x.json", "-q", *flags]
+    if op == "repair":
+        return ["check", files[0], *flags]
     if op == "tree":
         return ["tree", files[0], "-o", out / "t.sph", "-q", *flags]
     if op == "eval":
@@ -56,7 +61,9 @@ def python_value(name, text):
     if name == "link_spheres":
         link, count = text.split("=")
         return {link: int(count)}
-    return float(text) if name in ("wrap_alpha", "wrap_offset", "fps") else int(text)
+    if name == "repair":
+        return text
+    return float(text) if name in REAL_OPTIONS else int(text)
 
 
 def python_call(case, files):
@@ -64,6 +71,8 @@ def python_call(case, files):
     op = case["op"]
     if op == "fit":
         return lambda: ss.fit(files[0], **opts)
+    if op == "repair":
+        return lambda: ss.solid(files[0], **opts)
     if op == "tree":
         return lambda: ss.tree(files[0], **opts)
     if op == "eval":

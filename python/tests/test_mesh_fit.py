@@ -152,8 +152,12 @@ def test_errors_are_exceptions(tmp_path):
     with pytest.raises(ss.InvalidArgumentError, match="decimation 'nan'"):
         ss.fit(ss.Mesh(v, f), n=2, decimation=float("nan"))
     # The wrap's limits: this used to kill the interpreter with a signal inside GMP.
-    with pytest.raises(ss.InvalidArgumentError, match="wrap_alpha 1e.200 is more than 100 times"):
+    with pytest.raises(ss.InvalidArgumentError, match="wrap_alpha '1e.200': expected a number"):
         ss.fit(DATA / "bow_tie.off", 4, wrap_alpha=1e200)
+    with pytest.raises(ss.InvalidArgumentError, match="wrap_alpha 1e.03 is more than 100 times"):
+        ss.fit(DATA / "bow_tie.off", 4, wrap_alpha=1e3)
+    with pytest.raises(ss.InvalidArgumentError, match="^weld_tolerance 'nan': expected a number"):
+        ss.solid(DATA / "bow_tie.off", weld_tolerance=float("nan"))
     with pytest.raises(ss.InvalidArgumentError, match="quality"):
         ss.fit(ss.Mesh(v, f), n=2, quality="perfect")
     with pytest.raises(ss.NotSolidError, match="not a closed solid"):

@@ -275,11 +275,9 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
   res.original = mesh;
   res.diagnosis = diagnoseMesh(mesh);
   res.volume_ratio = std::numeric_limits<double>::quiet_NaN();
+  if (Status st = checkRepairOptions(o); !st) return st.error();
   if (mesh.triangles.empty())
     return Error{ErrorCode::kInvalidData, name + ": the mesh has no triangles"};
-  if (!(o.wrap_alpha >= 0.0) || !(o.wrap_offset >= 0.0) || !std::isfinite(o.wrap_alpha) ||
-      !std::isfinite(o.wrap_offset))
-    return Error{ErrorCode::kInvalidArgument, name + ": wrap alpha and offset must be >= 0"};
   auto done = [&](Mesh solid, RepairKind kind) -> Expected<RepairResult> {
     res.solid = std::move(solid);
     res.kind = kind;

@@ -397,9 +397,12 @@ if(SPHERESET_WITH_REPAIR)
   file(WRITE ${work}/huge_tri.off "OFF\n3 1 0\n1e80 0 0\n2e80 0 0\n1e80 1e80 0\n3 0 1 2\n")
   cli_test(wrap_alpha_huge 2 ARGS fit ${CMAKE_CURRENT_SOURCE_DIR}/data/bow_tie.off -n 4
            -o ${work}/never80.json --wrap-alpha 1e200
-           STDERR "wrap_alpha 1e.200 is more than 100 times the mesh's diagonal" FORBID ${work}/never80.json)
+           STDERR "sphereset: wrap_alpha '1e200': expected a number from 0 to 1e.30" FORBID ${work}/never80.json)
+  cli_test(wrap_alpha_beyond_the_mesh 2 ARGS fit ${CMAKE_CURRENT_SOURCE_DIR}/data/bow_tie.off -n 4
+           -o ${work}/never38.json --wrap-alpha 1e6
+           STDERR "wrap_alpha 1e.06 is more than 100 times the mesh's diagonal" FORBID ${work}/never38.json)
   cli_test(wrap_offset_huge 2 ARGS eval ${CMAKE_CURRENT_SOURCE_DIR}/data/bow_tie.off ${work}/bound.txt
-           --wrap-offset 1e308 STDERR "wrap_offset 1e.308 is more than 100 times")
+           --wrap-offset 1e308 STDERR "wrap_offset '1e308': expected a number from 0 to 1e.30")
   cli_test(wrap_huge_coordinates 4 ARGS fit ${work}/huge_tri.off -n 4 -o ${work}/never81.json
            STDERR "coordinates up to 2e.80 cannot be wrapped" FORBID ${work}/never81.json)
   cli_test(wrap_offset_too_many_triangles 2 ARGS check ${work}/open.off --wrap-offset 10

@@ -45,22 +45,34 @@ Status statusOf(const Expected<T>& e) {
   return e ? Status{} : Status{e.error()};
 }
 
-// The fit's and the repair's options of a case, as the front doors hand them to the library.
-Status fitCase(const std::vector<std::string>& in, const nlohmann::json& opts) {
-  FitRequest request;
-  RepairOptions repair;
+// The fit's and the repair's options of a case, as the front doors hand them to the library:
+// the repair's rows to setRepairOption, the others to setFitRequestOption.
+Status setOptions(const nlohmann::json& opts, RepairOptions* repair, FitRequest* request) {
 #ifdef SPHERESET_TEST_REPAIR
-  repair.operations = cgalSolidOperations();
+  repair->operations = cgalSolidOperations();
 #endif
   for (const auto& [name, value] : opts.items()) {
     const std::string text = value.get<std::string>();
-    if (name == "wrap_alpha")
-      repair.wrap_alpha = std::stod(text);
-    else if (name == "wrap_offset")
-      repair.wrap_offset = std::stod(text);
-    else if (Status st = setFitRequestOption(&request, name, text); !st)
-      return st;
+    const Status st = findOption(repairOptionTable(), name)
+                          ? setRepairOption(repair, name, text)
+                          : setFitRequestOption(request, name, text);
+    if (!st) return st;
   }
+  return {};
+}
+
+// The solid the fit would run on (loadSolid), as `sphereset check` and `ss.solid` make it.
+Status repairCase(const std::vector<std::string>& in, const nlohmann::json& opts) {
+  FitRequest unused;
+  RepairOptions repair;
+  if (Status st = setOptions(opts, &repair, &unused); !st) return st;
+  return statusOf(loadSolid(in[0], repair));
+}
+
+Status fitCase(const std::vector<std::string>& in, const nlohmann::json& opts) {
+  FitRequest request;
+  RepairOptions repair;
+  if (Status st = setOptions(opts, &repair, &request); !st) return st;
   auto solid = loadSolid(in[0], repair);
   if (!solid) return solid.error();
   FitOptions fo = fitOptionsFor(request);
@@ -122,6 +134,7 @@ Status runCase(const nlohmann::json& c) {
   const nlohmann::json opts = c.value("options", nlohmann::json::object());
   const std::string op = c.at("op");
   if (op == "fit") return fitCase(in, opts);
+  if (op == "repair") return repairCase(in, opts);
   if (op == "tree") return treeCase(in, opts);
   if (op == "eval") return evalCase(in, opts);
   if (op == "query") return queryCase(in, c.at("point"));

@@ -2,7 +2,6 @@
 // capped and nested meshes become solids exactly; meshes that need more are refused with a
 // message that says why and what would help.
 #include <gtest/gtest.h>
-
 #include <tbb/global_control.h>
 
 #include <cmath>
@@ -219,8 +218,8 @@ TEST(Repair, FitsOnExactRepairsCoverTheOriginal) {
 TEST(Repair, SameResultForAnyThreadCount) {
   auto run = [](int threads) {
     tbb::global_control gc(tbb::global_control::max_allowed_parallelism, threads);
-    const Mesh m = joined(openBox(), transformed(openBox(), Eigen::Matrix3d::Identity(),
-                                                  Vec3(3, 0, 0), 1.0));
+    const Mesh m =
+        joined(openBox(), transformed(openBox(), Eigen::Matrix3d::Identity(), Vec3(3, 0, 0), 1.0));
     auto r = repairCore(m);
     EXPECT_TRUE(r.ok());
     const SolidIndex index(r->solid);
@@ -263,7 +262,16 @@ TEST(Repair, OffRefusesAnythingButASolid) {
 TEST(Repair, BadWrapParametersAreRefused) {
   RepairOptions o;
   o.wrap_alpha = std::nan("");
-  expectError(repairMesh(openSheet(), o, "s.off"), ErrorCode::kInvalidArgument, "s.off", "alpha");
+  auto r = repairMesh(openSheet(), o, "s.off");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_EQ(r.error().message, "wrap_alpha 'nan': expected a number from 0 to 1e+30");
+  // A weld tolerance that is not a number used to weld exactly, silently.
+  o.wrap_alpha = 0.0;
+  o.weld_tolerance = std::nan("");
+  r = repairMesh(openSheet(), o, "s.off");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message, "weld_tolerance 'nan': expected a number from 0 to 1e+30");
 }
 
 }  // namespace

@@ -4,6 +4,9 @@
 // force.
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <utility>
+
 #include "broken_meshes.hpp"
 #include "repair/canonical_order.hpp"
 #include "sphereset/fit.hpp"
@@ -198,8 +201,8 @@ TEST(RepairLadder, WrapLimitsAreCheckedBeforeWrapping) {
     const char* words;
   };
   const Case cases[] = {
-      {1e200, 0.0, 1.0, ErrorCode::kInvalidArgument, "wrap_alpha 1e+200 is more than 100 times"},
-      {0.0, 1e308, 1.0, ErrorCode::kInvalidArgument, "wrap_offset 1e+308 is more than 100 times"},
+      {1e6, 0.0, 1.0, ErrorCode::kInvalidArgument, "wrap_alpha 1e+06 is more than 100 times"},
+      {0.0, 1e6, 1.0, ErrorCode::kInvalidArgument, "wrap_offset 1e+06 is more than 100 times"},
       {0.0, 10.0, 1.0, ErrorCode::kInvalidArgument, "would make about"},
       {0.0, 0.0, 1e80, ErrorCode::kInvalidData, "coordinates up to 1e+80 cannot be wrapped"},
   };
@@ -210,6 +213,20 @@ TEST(RepairLadder, WrapLimitsAreCheckedBeforeWrapping) {
     o.wrap_alpha = c.alpha;
     o.wrap_offset = c.offset;
     test::expectError(repairMesh(m, o, "tri.off"), c.code, "tri.off: ", c.words);
+  }
+  // Beyond the option table's limits (repairOptionTable), whatever the mesh: refused as options.
+  const std::pair<double, const char*> beyond[] = {
+      {1e200, "wrap_alpha '1e+200': expected a number from 0 to 1e+30"},
+      {std::numeric_limits<double>::quiet_NaN(),
+       "wrap_alpha 'nan': expected a number from 0 to 1e+30"},
+      {-1.0, "wrap_alpha '-1': expected a number from 0 to 1e+30"}};
+  for (const auto& [alpha, message] : beyond) {
+    o.wrap_alpha = alpha;
+    o.wrap_offset = 0.0;
+    const auto r = repairMesh(tri, o, "tri.off");
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, ErrorCode::kInvalidArgument);
+    EXPECT_EQ(r.error().message, message);
   }
   // Within the limits the wrap runs.
   o.wrap_alpha = 0.0;
