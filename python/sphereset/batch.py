@@ -151,12 +151,13 @@ def _parser() -> argparse.ArgumentParser:
         p.add_argument(*row["flag"].split(","), dest=row["name"], default=None,
                        metavar=row["type"].upper(),
                        help=f'{row["help"]} (default {row["default"]})')
-    p.add_argument("--repair", default="auto", choices=["auto", "off"])
-    p.add_argument("--weld-tolerance", type=float, default=None)
+    # The repair's options: one per row of the library's repair table, parsed by the library.
+    for row in _core._repair_option_table():
+        p.add_argument(*row["flag"].split(","), dest=row["name"], default=None,
+                       metavar=row["type"].upper(),
+                       help=f'{row["help"]} (default {row["default"]})')
     p.add_argument("--fill-cavities", dest="fill_cavities", action="store_true", default=True)
     p.add_argument("--keep-cavities", dest="fill_cavities", action="store_false")
-    p.add_argument("--wrap-alpha", type=float, default=0.0)
-    p.add_argument("--wrap-offset", type=float, default=0.0)
     p.add_argument("--format", default="json", choices=["json", "txt", "sph", "yaml"],
                    help="sphere file format (default json)")
     p.add_argument("--force", action="store_true",
@@ -167,6 +168,13 @@ def _parser() -> argparse.ArgumentParser:
 
 def main(argv: Optional[List[str]] = None) -> int:
     a = _parser().parse_args(argv)
+    try:
+        repair = _core._repair_option_values(
+            {row["name"]: getattr(a, row["name"]) for row in _core._repair_option_table()
+             if getattr(a, row["name"]) is not None})
+    except _core.Error as e:
+        print(f"sphereset: {e}", file=sys.stderr)
+        return _exit_code(e)
     from distributed import Client, LocalCluster
 
     cluster = None
@@ -185,9 +193,8 @@ def main(argv: Optional[List[str]] = None) -> int:
     try:
         fit = {row["name"]: getattr(a, row["name"]) for row in _core._fit_option_table()}
         opts = batch_options(
-            **{k: v for k, v in fit.items() if v is not None}, repair=a.repair,
-            weld_tolerance=a.weld_tolerance, fill_cavities=a.fill_cavities,
-            wrap_alpha=a.wrap_alpha, wrap_offset=a.wrap_offset, format=a.format,
+            **{k: v for k, v in fit.items() if v is not None}, **repair,
+            fill_cavities=a.fill_cavities, format=a.format,
             resume=not a.force, threads=threads)
         try:
             lines = run_batch(a.input, a.output, opts, client, quiet=a.quiet)

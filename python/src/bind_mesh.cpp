@@ -197,6 +197,22 @@ Raises InvalidDataError for NaN/infinite coordinates, indices out of range or no
       });
 
   m.def("_repair_option_table", [] { return optionTable(repairOptionTable()); });
+  m.def(
+      "_repair_option_values",
+      [](const py::dict& texts) {
+        RepairOptions ro;
+        for (const auto& [name, text] : texts)
+          check(setRepairOption(&ro, py::str(name), py::str(text)));
+        py::dict d;
+        d["repair"] = ro.enabled ? "auto" : "off";
+        d["weld_tolerance"] = ro.weld_tolerance;
+        d["wrap_alpha"] = ro.wrap_alpha;
+        d["wrap_offset"] = ro.wrap_offset;
+        return d;
+      },
+      py::arg("texts"),
+      "The repair options {name: text} as users type them, parsed and checked by the library's "
+      "table; the values of every row (defaults for those not given).");
 
   m.def(
       "_load_mesh",

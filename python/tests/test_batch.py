@@ -120,3 +120,21 @@ def test_fit_options_are_checked_by_the_library_table(tmp_path):
         with pytest.raises(ss.InvalidArgumentError, match=words):
             batch.list_items(str(tmp_path), batch.batch_options(**kw))
     assert batch._exit_code(ss.InvalidArgumentError("x")) == 2
+
+
+def test_repair_options_are_checked_by_the_library_table(tmp_path, capsys):
+    # The command's repair flags come from the library's repair table, and their text is parsed
+    # by it before any cluster starts: the messages of `sphereset batch`, exit 2.
+    shutil.copy(DATA / "open_box.off", tmp_path / "a.off")
+    out = tmp_path / "out"
+    for flags, words in ((["--weld-tolerance", "nan"], "weld_tolerance 'nan': expected a number"),
+                         (["--wrap-alpha", "-1"], "wrap_alpha '-1': expected a number"),
+                         (["--repair", "maybe"], "repair 'maybe': expected auto or off")):
+        assert batch.main([str(tmp_path), "-o", str(out), "--local-workers", "1", *flags]) == 2
+        assert words in capsys.readouterr().err
+    assert not out.exists()
+    flags = {row["flag"] for row in ss._core._repair_option_table()}
+    assert flags == {"--repair", "--weld-tolerance", "--wrap-alpha", "--wrap-offset"}
+    # The library's values, defaults for the rows not given.
+    assert ss._core._repair_option_values({"wrap_alpha": "0.5"}) == {
+        "repair": "auto", "weld_tolerance": -1.0, "wrap_alpha": 0.5, "wrap_offset": 0.0}
