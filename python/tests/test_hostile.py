@@ -10,6 +10,7 @@ import subprocess
 import pytest
 
 import sphereset as ss
+from sphereset import batch
 from conftest import SOURCE_DIR, cli_path
 
 HOSTILE = SOURCE_DIR / "tests" / "hostile"
@@ -42,6 +43,8 @@ def command(case, files, out):
         return ["fit", files[0], "-o", out / "x.json", "-q", *flags]
     if op == "repair":
         return ["check", files[0], *flags]
+    if op == "batch":
+        return ["batch", files[0], "-o", out / "b", "-q", *flags]
     if op == "tree":
         return ["tree", files[0], "-o", out / "t.sph", "-q", *flags]
     if op == "eval":
@@ -73,6 +76,8 @@ def python_call(case, files):
         return lambda: ss.fit(files[0], **opts)
     if op == "repair":
         return lambda: ss.solid(files[0], **opts)
+    if op == "batch":
+        return lambda: batch.list_items(files[0], batch.batch_options(**opts))
     if op == "tree":
         return lambda: ss.tree(files[0], **opts)
     if op == "eval":

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sphereset/animate.hpp"
+#include "sphereset/batch.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/load.hpp"
@@ -135,6 +136,10 @@ Status runCase(const nlohmann::json& c) {
   const std::string op = c.at("op");
   if (op == "fit") return fitCase(in, opts);
   if (op == "repair") return repairCase(in, opts);
+  if (op == "batch") {
+    const BatchOptions defaults;
+    return statusOf(listBatchItems(in[0], defaults));
+  }
   if (op == "tree") return treeCase(in, opts);
   if (op == "eval") return evalCase(in, opts);
   if (op == "query") return queryCase(in, c.at("point"));
