@@ -22,7 +22,7 @@ struct AnimateArgs {
   std::string rest, spheres, out, animation, clip, format = "json", weighting = "auto";
   std::vector<std::string> frames;
   double fps = 0.0;
-  double weld = 0.0;
+  MeshArgs weld;  // only the repair table's weld_tolerance row
   bool rebound = false, fresh_fit = false, quiet = false;
 };
 
@@ -73,9 +73,9 @@ int runAnimate(const AnimateArgs& a) {
   std::vector<std::string> inputs = a.frames;
   inputs.insert(inputs.end(), {a.rest, a.spheres, a.animation});
   if (Status st = checkOutputFolder(a.out, inputs); !st) return fail(st.error());
-  LoadOptions lo;
-  lo.weld_tolerance = a.weld;
-  auto rest = loadMesh(a.rest, lo);
+  auto lo = loadOptions(a.weld);
+  if (!lo) return fail(lo.error());
+  auto rest = loadMesh(a.rest, *lo);
   if (!rest) return fail(rest.error());
   const MeshDiagnosis d = diagnoseMesh(rest->mesh);
   if (!d.isSolid()) return fail(notSolidError(a.rest, d));
@@ -193,9 +193,9 @@ Command registerAnimate(CLI::App& app) {
                   "surface near them (bones); auto: bones for skinned assets")
       ->capture_default_str()
       ->transform(CLI::IsMember({"auto", "mvc", "bones"}));
-  cmd->add_option("--weld-tolerance", a->weld,
-                  "Merge vertices closer than this (absolute units; rest and frames alike)")
-      ->capture_default_str();
+  // The repair table's weld row (rest and frames alike; not given: exact welding).
+  addTableOptions(cmd, &a->weld.repair, repairOptionTable(),
+                  {"repair", "wrap_alpha", "wrap_offset"});
   cmd->add_flag("-q,--quiet", a->quiet, "No progress on stderr");
   return {cmd, [a] { return runAnimate(*a); }};
 }

@@ -142,9 +142,17 @@ def check(mesh: Union[Mesh, PathLike], *, repair: Union[str, bool] = "auto",
           wrap_alpha: float = 0.0, wrap_offset: float = 0.0) -> CheckResult:
     """Diagnoses a mesh as a solid and says what the fit does about its problems, like
     ``sphereset check`` (same options as :func:`solid`). Never raises for a mesh the fit
-    refuses: ``result.error`` holds the reason; a file that cannot be read raises."""
+    refuses: ``result.error`` holds the reason; a file that cannot be read and options outside
+    the library's repair table raise."""
+    if repair is True:
+        repair = "auto"
+    elif repair is False:
+        repair = "off"
+    weld = -1.0 if weld_tolerance is None else float(weld_tolerance)
+    _core._check_repair_options(repair, weld, bool(fill_cavities), float(wrap_alpha),
+                                float(wrap_offset))
     if not isinstance(mesh, Mesh):
-        mesh = load_mesh(mesh, weld_tolerance=max(0.0, weld_tolerance or 0.0))
+        mesh = load_mesh(mesh, weld_tolerance=max(0.0, weld))
     rep: Optional[Dict[str, Any]] = None
     err: Optional[str] = None
     try:

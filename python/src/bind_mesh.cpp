@@ -198,6 +198,15 @@ Raises InvalidDataError for NaN/infinite coordinates, indices out of range or no
 
   m.def("_repair_option_table", [] { return optionTable(repairOptionTable()); });
   m.def(
+      "_check_repair_options",
+      [](const std::string& repair, double weld_tolerance, bool fill_cavities, double wrap_alpha,
+         double wrap_offset) {
+        repairOptions(repair, weld_tolerance, fill_cavities, wrap_alpha, wrap_offset);
+      },
+      py::arg("repair"), py::arg("weld_tolerance"), py::arg("fill_cavities"), py::arg("wrap_alpha"),
+      py::arg("wrap_offset"),
+      "Raises the library's InvalidArgumentError when a repair option is outside its table row.");
+  m.def(
       "_repair_option_values",
       [](const py::dict& texts) {
         RepairOptions ro;

@@ -3,6 +3,7 @@ same seed, array shapes and dtypes, meshes given as arrays, errors as exceptions
 
 import json
 import os
+import re
 import signal
 
 import numpy as np
@@ -247,3 +248,15 @@ def test_file_names_that_are_not_utf8(tmp_path, cli):
     tree = tmp_path / "t.json"
     cli("tree", mesh, "--branch", "2", "--depth", "1", "--quality", "fast", "-o", tree, "-q")
     assert "\ufffd" in tree.read_text(encoding="utf-8")
+
+
+def test_check_refuses_repair_options_outside_the_table():
+    # check() reports a mesh the fit refuses, but options outside the library's repair table
+    # raise, as `sphereset check` exits 2, before anything is loaded.
+    for kw, words in ((dict(weld_tolerance=float("inf")), "weld_tolerance 'inf'"),
+                      (dict(weld_tolerance=1e31), "weld_tolerance '1e+31'"),
+                      (dict(wrap_alpha=1.0000004e30), "wrap_alpha '1.0000004e+30'"),
+                      (dict(repair="maybe"), "repair 'maybe': expected auto or off")):
+        with pytest.raises(ss.InvalidArgumentError, match=re.escape(words)):
+            ss.check(DATA / "bow_tie.off", **kw)
+    assert ss.check(DATA / "bow_tie.off", weld_tolerance=-1.0).diagnosis["triangles"] == 12

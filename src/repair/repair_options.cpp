@@ -1,18 +1,26 @@
-// The repair's options as one table (repair.hpp): the command line's flags, the batch manifest's
-// columns and the Python keywords are made from it, and the library parses and checks what users
+// The repair's options as one table (repair.hpp): the command line's flags, the Dask batch's
+// flags and the Python keywords are made from it, and the library parses and checks what users
 // type through it.
+#include <charconv>
 #include <limits>
 #include <string>
 #include <string_view>
 
 #include "sphereset/limits.hpp"
 #include "sphereset/repair.hpp"
-#include "util/number_text.hpp"
 
 namespace sphereset {
 namespace {
 
 constexpr const char* kRepairModes[] = {"auto", "off"};
+
+// The shortest text that reads back as `v` ("1e+200", "0.5", "nan"): the value a user would
+// have typed, checked against the row as typed text is.
+std::string shortestText(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
 
 constexpr OptionSpec kRepairOptions[] = {
     {"repair", "--repair", OptionType::kChoice, 0, 0, kRepairModes, "auto",
@@ -26,8 +34,8 @@ constexpr OptionSpec kRepairOptions[] = {
      limits::kMaxCoordinate,
      {},
      "automatic",
-     "Merge vertices closer than this distance (automatic: exact duplicates, then up to 1e-6 of "
-     "the diagonal if that closes the mesh)"},
+     "Merge vertices closer than this distance (automatic: exact duplicates; the repair then "
+     "tries up to 1e-6 of the diagonal if that closes the mesh)"},
     {"wrap_alpha",
      "--wrap-alpha",
      OptionType::kReal,
@@ -73,7 +81,7 @@ Status checkRepairOptions(const RepairOptions& o) {
       {"wrap_alpha", o.wrap_alpha},
       {"wrap_offset", o.wrap_offset}};
   for (const auto& [name, value] : values)
-    if (auto v = parseOption(*findOption(kRepairOptions, name), detail::numberText(value)); !v)
+    if (auto v = parseOption(*findOption(kRepairOptions, name), shortestText(value)); !v)
       return v.error();
   return {};
 }
