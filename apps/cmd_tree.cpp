@@ -20,15 +20,14 @@ namespace {
 
 struct TreeArgs {
   FitArgs fit;
-  TreeOptions to;
-  std::string parents = "minimal";
+  TableArgs tree;  // the rows of treeOptionTable() given
   bool json = false;
   int leaves = 0;  // -n: leaves to fit (0: B^D)
 };
 
 // The summary printed by --json.
-nlohmann::json treeJson(const TreeArgs& a, const FitOptions& fo, const TreeFitResult& r,
-                        double volume, const EvalResult& ev) {
+nlohmann::json treeJson(const TreeArgs& a, const TreeOptions& to, const FitOptions& fo,
+                        const TreeFitResult& r, double volume, const EvalResult& ev) {
   nlohmann::json lv = nlohmann::json::array();
   for (const TreeLevelStats& l : r.tree.levels)
     lv.push_back({{"level", l.level},
@@ -38,9 +37,9 @@ nlohmann::json treeJson(const TreeArgs& a, const FitOptions& fo, const TreeFitRe
                   {"converged", l.converged}});
   return {{"mesh", a.fit.mesh.path},
           {"output", a.fit.out_path},
-          {"branching", a.to.branching},
-          {"depth", a.to.depth},
-          {"parents", a.parents},
+          {"branching", to.branching},
+          {"depth", to.depth},
+          {"parents", treeParentsName(to.parents)},
           {"leaves", r.fit.spheres.size()},
           {"levels", lv},
           {"surface_covered", ev.surface_covered},
@@ -50,10 +49,10 @@ nlohmann::json treeJson(const TreeArgs& a, const FitOptions& fo, const TreeFitRe
 }
 
 // The summary on stderr unless --quiet.
-void printTreeSummary(const TreeArgs& a, const TreeFitResult& r, double volume,
-                      const EvalResult& ev) {
+void printTreeSummary(const TreeArgs& a, const TreeOptions& to, const TreeFitResult& r,
+                      double volume, const EvalResult& ev) {
   std::fprintf(stderr, "%s: tree of branching %d, depth %d (%s parents) -> %s\n",
-               a.fit.mesh.path.c_str(), a.to.branching, a.to.depth, a.parents.c_str(),
+               a.fit.mesh.path.c_str(), to.branching, to.depth, treeParentsName(to.parents),
                a.fit.out_path.c_str());
   for (const TreeLevelStats& l : r.tree.levels)
     std::fprintf(stderr, "  level %d: %4lld spheres, E_r summed %.4f\n", l.level,
@@ -70,20 +69,22 @@ int runTree(TreeArgs a) {
     return fail(Error{ErrorCode::kInvalidArgument,
                       a.fit.out_path + ": a sphere tree is written as .sph or .json"});
   if (Status st = checkOutputPath(a.fit.out_path, {a.fit.mesh.path}); !st) return fail(st.error());
+  TreeOptions to;
+  for (const auto& [name, text] : a.tree.given())
+    if (Status st = setTreeOption(&to, name, text); !st) return fail(st.error());
   auto request = fitRequest(a.fit);
   if (!request) return fail(request.error());
   // The leaves replace the table's n (0: branching^depth); the preset's points follow them.
   request->num_spheres = a.leaves;
-  auto leaves = treeFitRequest(*request, a.to);
+  auto leaves = treeFitRequest(*request, to);
   if (!leaves) return fail(leaves.error());
   FitOptions fo = fitOptions(*leaves, a.fit.quiet);
   auto m = loadSolid(a.fit.mesh);
   if (!m) return fail(m.error());
   fo.original = m->original();
-  a.to.parents = a.parents == "outside" ? TreeParents::kOutsideVolume : TreeParents::kMinimal;
-  a.to.seed = fo.seed;
+  to.seed = fo.seed;
   const SolidIndex index(m->repair.solid);
-  auto r = fitSphereTree(index, fo, a.to);
+  auto r = fitSphereTree(index, fo, to);
   if (!r) return fail(Error{r.error().code, a.fit.mesh.path + ": " + r.error().message});
   SphereFileMeta meta;
   meta.source_mesh = a.fit.mesh.path;
@@ -101,7 +102,7 @@ int runTree(TreeArgs a) {
   if (!checked) return fail(checked.error());
   const EvalResult& ev = *checked;
   if (a.json) {
-    nlohmann::json j = treeJson(a, fo, *r, vol, ev);
+    nlohmann::json j = treeJson(a, to, fo, *r, vol, ev);
     j["repair"] = repairJson(m->repair);
     j["original_covered"] = ev.original_covered;
     std::cout << jsonText(j) << '\n';
@@ -109,7 +110,7 @@ int runTree(TreeArgs a) {
   if (!a.fit.quiet) {
     const std::string rl = repairLine(m->repair);
     if (!rl.empty()) std::fprintf(stderr, "%s: %s\n", a.fit.mesh.path.c_str(), rl.c_str());
-    printTreeSummary(a, *r, vol, ev);
+    printTreeSummary(a, to, *r, vol, ev);
   }
   return coverageExit(a.fit.mesh.path, "the tree's leaves", a.fit.out_path, ev);
 }
@@ -121,20 +122,10 @@ Command registerTree(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "tree", "Fit a sphere set and build a sphere-tree over it (Bradshaw .sph or JSON)");
   addFitArgs(cmd, &a->fit, false);
-  cmd->add_option("--branch", a->to.branching, "Children per node at most (B)")
-      ->capture_default_str()
-      ->check(CLI::Range(2, 1024));
-  cmd->add_option("--depth", a->to.depth,
-                  "Levels below the root (D): D + 1 levels, at most B^D leaves")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 26));
+  addTableOptions(cmd, &a->tree, treeOptionTable(), {"parents"});
   cmd->add_option("-n,--spheres", a->leaves, "Leaves to fit (default 0: B^D)")
       ->check(CLI::Range(0, 1000000));
-  cmd->add_option("--parents", a->parents,
-                  "minimal (smallest ball enclosing the children) or outside (least outside "
-                  "volume while enclosing them)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"minimal", "outside"}));
+  addTableOptions(cmd, &a->tree, treeOptionTable(), {"branching", "depth"});
   cmd->add_flag("--json", a->json, "Print the summary as one JSON object on stdout");
   return {cmd, [a] { return runTree(*a); }};
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sphereset/fit.hpp"
+#include "sphereset/options.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_tree.hpp"
@@ -28,6 +29,18 @@ struct TreeOptions {
   // kOutsideVolume only: optimiser evaluations per parent.
   int optimizer_evaluations = 80;
 };
+
+// The layout options as one table (options.hpp): branching (2 to 1024), depth (1 to 26) and
+// parents (minimal or outside). The command line's flags and the Python keywords are made from
+// it. setTreeOption sets a row from the text a user typed; checkTreeOptions checks a struct
+// against the rows and the tree's slot limit (SphereTree::kMaxSlots), with the same messages
+// ("branching '1': expected an integer from 2 to 1024"). Every function below checks its
+// options with it.
+std::span<const OptionSpec> treeOptionTable();
+Status setTreeOption(TreeOptions* o, const std::string& name, const std::string& text);
+Status checkTreeOptions(const TreeOptions& o);
+// "minimal" or "outside", the table's names.
+const char* treeParentsName(TreeParents p);
 
 struct TreeLevelStats {
   int level = 0;

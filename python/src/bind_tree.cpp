@@ -56,10 +56,14 @@ Pose pose(const py::object& o, const std::string& what) {
   return p;
 }
 
-TreeParents parentsFromName(const std::string& s) {
-  if (s == "minimal") return TreeParents::kMinimal;
-  if (s == "outside") return TreeParents::kOutsideVolume;
-  raise(ErrorCode::kInvalidArgument, "parents must be 'minimal' or 'outside', not '" + s + "'");
+// The layout from Python's keywords, set and checked through the library's tree table.
+TreeOptions layoutFrom(int branching, int depth, const std::string& parents) {
+  TreeOptions to;
+  check(setTreeOption(&to, "parents", parents));
+  to.branching = branching;
+  to.depth = depth;
+  check(checkTreeOptions(to));
+  return to;
 }
 
 py::list levelsList(const TreeResult& r, double volume) {
@@ -133,15 +137,13 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
                std::to_string(t.depth) + ", " + std::to_string(t.leaves().size()) + " leaves>";
       });
 
+  m.def("_tree_option_table", [] { return optionTable(treeOptionTable()); });
   m.def(
       "_build_tree",
       [](const py::object& leaves, int branching, int depth, const std::string& parents,
          int iterations, uint64_t seed, const std::shared_ptr<PySolid>& solid) {
         const std::vector<Sphere> s = spheresFromArray(leaves, "leaves");
-        TreeOptions to;
-        to.branching = branching;
-        to.depth = depth;
-        to.parents = parentsFromName(parents);
+        TreeOptions to = layoutFrom(branching, depth, parents);
         to.max_iterations = iterations;
         to.seed = seed;
         if (to.parents == TreeParents::kOutsideVolume && !solid)
@@ -167,13 +169,10 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
          const std::string& parents, const py::dict& fit_options, const py::object& progress) {
         FitRequest rq = fitRequest(fit_options);
         if (!fit_options.contains("n") || fit_options["n"].is_none()) rq.num_spheres = 0;
-        TreeOptions to;
-        to.branching = branching;
-        to.depth = depth;
+        TreeOptions to = layoutFrom(branching, depth, parents);
         FitOptions fo = fitOptionsFor(unwrap(treeFitRequest(rq, to)));
         fo.original = solid->original();
         installProgress(&fo, progress);
-        to.parents = parentsFromName(parents);
         to.seed = fo.seed;
         Expected<TreeFitResult> r = Error{ErrorCode::kInvalidArgument, "not run"};
         {

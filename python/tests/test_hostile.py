@@ -20,16 +20,15 @@ CASES = json.loads((HOSTILE / "cases.json").read_text())
 STATUS = {"invalid_argument": (2, ss.InvalidArgumentError), "unreadable": (3, ss.UnreadableError),
           "invalid_data": (4, ss.InvalidDataError), "not_solid": (5, ss.NotSolidError),
           "write_failed": (6, ss.WriteError)}
-# Options outside the library's fit, evaluation and repair tables: the tree's, the animation's
-# and the robot's.
-EXTRA_FLAGS = {"branching": "--branch", "depth": "--depth", "fps": "--fps",
-               "link_spheres": "--link-spheres"}
+# Options outside the library's fit, evaluation, repair and tree tables: the animation's and the
+# robot's.
+EXTRA_FLAGS = {"fps": "--fps", "link_spheres": "--link-spheres"}
 REAL_OPTIONS = ("weld_tolerance", "wrap_alpha", "wrap_offset", "fps")
 
 
 def flag(name):
     tables = (ss._core._fit_option_table() + ss.eval_option_table()
-              + ss._core._repair_option_table())
+              + ss._core._repair_option_table() + ss._core._tree_option_table())
     for row in tables:
         if row["name"] == name:
             return row["flag"].split(",")[-1]
@@ -64,7 +63,7 @@ def python_value(name, text):
     if name == "link_spheres":
         link, count = text.split("=")
         return {link: int(count)}
-    if name == "repair":
+    if name in ("repair", "parents"):
         return text
     return float(text) if name in REAL_OPTIONS else int(text)
 

@@ -160,29 +160,6 @@ Sphere parentOf(const std::vector<Sphere>& kids, const TreeOptions& o, const Sol
 
 }  // namespace
 
-namespace {
-
-// The shape and effort of a tree: one wording for buildSphereTree and fitSphereTree.
-Status checkTreeOptions(const TreeOptions& o) {
-  if (o.branching < 2)
-    return Error{ErrorCode::kInvalidArgument,
-                 "branching " + std::to_string(o.branching) + ": must be at least 2"};
-  if (o.depth < 1)
-    return Error{ErrorCode::kInvalidArgument,
-                 "depth " + std::to_string(o.depth) + ": must be at least 1"};
-  if (o.max_iterations < 1 || o.optimizer_evaluations < 0)
-    return Error{ErrorCode::kInvalidArgument,
-                 "tree max_iterations must be at least 1 and optimizer_evaluations at least 0"};
-  if (SphereTree::slotCount(o.branching, o.depth) < 0)
-    return Error{ErrorCode::kInvalidArgument, "branching " + std::to_string(o.branching) +
-                                                  " and depth " + std::to_string(o.depth) +
-                                                  " make a tree of more than " +
-                                                  std::to_string(SphereTree::kMaxSlots) + " nodes"};
-  return {};
-}
-
-}  // namespace
-
 Expected<TreeResult> buildSphereTree(std::span<const Sphere> leaves, const TreeOptions& o,
                                      const SolidIndex* index) {
   const auto t0 = std::chrono::steady_clock::now();

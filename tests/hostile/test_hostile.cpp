@@ -83,8 +83,8 @@ Status fitCase(const std::vector<std::string>& in, const nlohmann::json& opts) {
 
 Status treeCase(const std::vector<std::string>& in, const nlohmann::json& opts) {
   TreeOptions to;
-  to.branching = std::stoi(opts.at("branching").get<std::string>());
-  to.depth = std::stoi(opts.at("depth").get<std::string>());
+  for (const auto& [name, value] : opts.items())
+    if (Status st = setTreeOption(&to, name, value.get<std::string>()); !st) return st;
   auto solid = loadSolid(in[0], RepairOptions{});
   if (!solid) return solid.error();
   FitOptions fo;
