@@ -46,8 +46,10 @@ double cappedSpacing(const Aabb& b, double h) {
 constexpr int64_t kLeafBlockCells = 8;
 // Edge, in cells, of the blocks the grid is cut into for the parallel loop.
 constexpr int64_t kTopBlockEdge = 32;
-// Margin, as a fraction of the box diagonal, by which a block's cells must clear the surface
-// (beyond the index's boundary tolerance) for one classification to stand for all of them.
+// Margin by which a block's cells must clear the surface (beyond the index's boundary
+// tolerance) for one classification to stand for all of them, as a fraction of the box's
+// diagonal plus its largest coordinate: rounding in the cells' coordinates grows with both (a
+// small part far from the origin).
 constexpr double kBlockClearance = 1e-9;
 
 // The interior grid: cell (i, j, k) is the point origin + h (i, j, k).
@@ -78,8 +80,8 @@ void classifyBlock(const SolidIndex& index, const Grid& g, double clearance,
     });
     return;
   }
-  const Vec3 centre = g.origin + g.h * 0.5 * (Vec3(lo[0] + hi[0] - 1, lo[1] + hi[1] - 1,
-                                                   lo[2] + hi[2] - 1));
+  const Vec3 centre =
+      g.origin + g.h * 0.5 * (Vec3(lo[0] + hi[0] - 1, lo[1] + hi[1] - 1, lo[2] + hi[2] - 1));
   const double radius = 0.5 * g.h * (size - Vec3::Ones()).norm();
   if (index.distance(centre) > radius + clearance) {
     const bool inside = index.classify(centre) == Containment::kInside;
@@ -103,9 +105,11 @@ std::vector<Vec3> interiorGrid(const SolidIndex& index, double h) {
          std::max<int64_t>(1, ceilCells(ext.z() / h))};
   // Centre the grid in the box.
   g.origin = b.center() - 0.5 * h * Vec3(g.n[0] - 1, g.n[1] - 1, g.n[2] - 1);
-  const double clearance = index.boundaryTolerance() + kBlockClearance * b.diagonal();
+  const double magnitude = std::max(b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff());
+  const double clearance = index.boundaryTolerance() + kBlockClearance * (b.diagonal() + magnitude);
   std::array<int64_t, 3> blocks{};
-  for (int axis = 0; axis < 3; ++axis) blocks[axis] = (g.n[axis] + kTopBlockEdge - 1) / kTopBlockEdge;
+  for (int axis = 0; axis < 3; ++axis)
+    blocks[axis] = (g.n[axis] + kTopBlockEdge - 1) / kTopBlockEdge;
   std::vector<char> in(static_cast<size_t>(g.n[0] * g.n[1] * g.n[2]), 0);
   tbb::parallel_for(int64_t{0}, blocks[0] * blocks[1] * blocks[2], [&](int64_t t) {
     pollCancel();
