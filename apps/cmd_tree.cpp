@@ -123,8 +123,8 @@ Command registerTree(CLI::App& app) {
       "tree", "Fit a sphere set and build a sphere-tree over it (Bradshaw .sph or JSON)");
   addFitArgs(cmd, &a->fit, false);
   addTableOptions(cmd, &a->tree, treeOptionTable(), {"parents"});
-  cmd->add_option("-n,--spheres", a->leaves, "Leaves to fit (default 0: B^D)")
-      ->check(CLI::Range(0, 1000000));
+  // Checked by the library's fit table once 0 became B^D (treeFitRequest).
+  cmd->add_option("-n,--spheres", a->leaves, "Leaves to fit (default 0: B^D)");
   addTableOptions(cmd, &a->tree, treeOptionTable(), {"branching", "depth"});
   cmd->add_flag("--json", a->json, "Print the summary as one JSON object on stdout");
   return {cmd, [a] { return runTree(*a); }};

@@ -24,18 +24,18 @@ struct OptionSpec {
   const char* name;  // the library's name: the Python keyword and the manifest column
   const char* flag;  // the command line's flags, CLI11 style ("-n,--spheres")
   OptionType type;
-  double min = 0.0, max = 0.0;         // kInteger, kReal: inclusive bounds
+  double min = 0.0, max = 0.0;           // kInteger, kReal: inclusive bounds
   std::span<const char* const> choices;  // kChoice
-  const char* default_text;            // the default as help shows it
+  const char* default_text;              // the default as help shows it
   const char* help;
 };
 
 // Parsed values of one option, as the table's setters receive them.
 struct OptionValue {
-  int64_t integer = 0;  // kInteger
+  int64_t integer = 0;            // kInteger
   uint64_t unsigned_integer = 0;  // kUnsigned
-  double real = 0.0;    // kReal
-  std::string choice;   // kChoice
+  double real = 0.0;              // kReal
+  std::string choice;             // kChoice
 };
 
 // `text` parsed and checked as `spec` says. kInvalidArgument "NAME 'TEXT': expected an integer
@@ -49,5 +49,15 @@ std::string optionNames(std::span<const OptionSpec> table);
 
 // The row named `name`, or null.
 const OptionSpec* findOption(std::span<const OptionSpec> table, const std::string& name);
+
+// A row of `table` and `text` parsed by it, as every table's setter and checker receives them.
+struct TableValue {
+  const OptionSpec* spec = nullptr;
+  OptionValue value;
+};
+// kInvalidArgument "unknown WHAT option 'NAME' (expected n, quality, ...)" when `table` has no
+// row `name`; else parseOption's result for that row.
+Expected<TableValue> parseTableOption(std::span<const OptionSpec> table, const char* what,
+                                      const std::string& name, const std::string& text);
 
 }  // namespace sphereset

@@ -72,13 +72,10 @@ constexpr OptionSpec kEvalOptions[] = {
 std::span<const OptionSpec> evalOptionTable() { return kEvalOptions; }
 
 Status setEvalOption(EvalOptions* o, const std::string& name, const std::string& text) {
-  const OptionSpec* spec = findOption(kEvalOptions, name);
-  if (!spec)
-    return Error{ErrorCode::kInvalidArgument, "unknown evaluation option '" + name +
-                                                  "' (expected " + optionNames(kEvalOptions) + ")"};
-  auto v = parseOption(*spec, text);
-  if (!v) return v.error();
-  const std::string_view n = spec->name;
+  auto parsed = parseTableOption(kEvalOptions, "evaluation", name, text);
+  if (!parsed) return parsed.error();
+  const OptionValue* v = &parsed->value;
+  const std::string_view n = parsed->spec->name;
   const auto integer = static_cast<int>(v->integer);  // within the row's int bounds
   if (n == "seed") o->seed = v->unsigned_integer;
   if (n == "samples") o->union_samples = v->integer;
@@ -100,7 +97,7 @@ Status checkEvalOptions(const EvalOptions& o) {
                                                     {"surface_max_depth", o.surface_max_depth},
                                                     {"interior_max_depth", o.interior_max_depth}};
   for (const auto& [name, value] : values)
-    if (auto v = parseOption(*findOption(kEvalOptions, name), std::to_string(value)); !v)
+    if (auto v = parseTableOption(kEvalOptions, "evaluation", name, std::to_string(value)); !v)
       return v.error();
   if (Status st = limits::checkRange("poll_interval", o.poll_interval, 0.0, 3600.0); !st) return st;
   if (o.up_axis < 0 || o.up_axis > 2)

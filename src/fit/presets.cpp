@@ -64,23 +64,64 @@ constexpr FitMethod kMethods[] = {FitMethod::kVariational, FitMethod::kKMeans, F
 // The options of a fit request (fit.hpp), the one table every front door is made from.
 constexpr double kRealMax = std::numeric_limits<double>::max();
 constexpr OptionSpec kFitRequestOptions[] = {
-    {"n", "-n,--spheres", OptionType::kInteger, 1, limits::kMaxSpheres, {}, "32",
+    {"n",
+     "-n,--spheres",
+     OptionType::kInteger,
+     1,
+     limits::kMaxSpheres,
+     {},
+     "32",
      "Number of spheres"},
     {"quality", "--quality", OptionType::kChoice, 0, 0, kQualityNames, "default",
      "Preset of points, rounds, optimiser effort, restarts and decimation: fast, default or "
      "best"},
-    {"seed", "--seed", OptionType::kUnsigned, 0, 0, {}, "1",
+    {"seed",
+     "--seed",
+     OptionType::kUnsigned,
+     0,
+     0,
+     {},
+     "1",
      "Seed for sampling and initialisation"},
-    {"points", "--points", OptionType::kInteger, 0, static_cast<double>(limits::kMaxPoints), {},
-     "0", "Points to cluster (0: max(5000, 100 n), scaled by the quality)"},
-    {"iterations", "--iterations", OptionType::kInteger, 0, limits::kMaxIterations, {},
-     "100; quality fast: 30", "Cap on assignment/update rounds"},
-    {"restarts", "--restarts", OptionType::kInteger, 1, limits::kMaxRestarts, {},
-     "1; quality best: 4", "Independent fits from derived seeds, the best kept"},
-    {"decimation", "--decimation", OptionType::kReal, 0.0, limits::kMaxDecimation, {},
+    {"points",
+     "--points",
+     OptionType::kInteger,
+     0,
+     static_cast<double>(limits::kMaxPoints),
+     {},
+     "0",
+     "Points to cluster (0: max(5000, 100 n), scaled by the quality)"},
+    {"iterations",
+     "--iterations",
+     OptionType::kInteger,
+     0,
+     limits::kMaxIterations,
+     {},
+     "100; quality fast: 30",
+     "Cap on assignment/update rounds"},
+    {"restarts",
+     "--restarts",
+     OptionType::kInteger,
+     1,
+     limits::kMaxRestarts,
+     {},
+     "1; quality best: 4",
+     "Independent fits from derived seeds, the best kept"},
+    {"decimation",
+     "--decimation",
+     OptionType::kReal,
+     0.0,
+     limits::kMaxDecimation,
+     {},
      "0; quality best: 0.5",
      "Extra spheres to start with, as a fraction of n, removed cheapest first"},
-    {"padding", "--padding", OptionType::kReal, 0.0, kRealMax, {}, "0",
+    {"padding",
+     "--padding",
+     OptionType::kReal,
+     0.0,
+     kRealMax,
+     {},
+     "0",
      "Distance added to every radius (absolute units)"},
     {"optimizer", "--optimizer", OptionType::kChoice, 0, 0, kOptimizerNames, "powell",
      "Sphere update: powell (derivative-free BOBYQA) or gradient (MMA with exact derivatives)"},
@@ -96,13 +137,10 @@ constexpr OptionSpec kFitRequestOptions[] = {
 std::span<const OptionSpec> fitRequestOptions() { return kFitRequestOptions; }
 
 Status setFitRequestOption(FitRequest* r, const std::string& name, const std::string& text) {
-  const OptionSpec* spec = findOption(kFitRequestOptions, name);
-  if (!spec)
-    return Error{ErrorCode::kInvalidArgument, "unknown fit option '" + name + "' (expected " +
-                                                  optionNames(kFitRequestOptions) + ")"};
-  auto v = parseOption(*spec, text);
-  if (!v) return v.error();
-  const std::string_view n = spec->name;
+  auto parsed = parseTableOption(kFitRequestOptions, "fit", name, text);
+  if (!parsed) return parsed.error();
+  const OptionValue* v = &parsed->value;
+  const std::string_view n = parsed->spec->name;
   const auto integer = static_cast<int>(v->integer);  // within the row's int bounds
   if (n == "n") r->num_spheres = integer;
   if (n == "quality") r->quality = fitQualityFromName(v->choice).value();
@@ -121,7 +159,7 @@ Status setFitRequestOption(FitRequest* r, const std::string& name, const std::st
 Status checkFitRequest(const FitRequest& r) {
   // Each number as its text, through the same parser as every front door's.
   auto check = [](const char* name, const std::string& text) -> Status {
-    auto v = parseOption(*findOption(kFitRequestOptions, name), text);
+    auto v = parseTableOption(kFitRequestOptions, "fit", name, text);
     if (!v) return v.error();
     return {};
   };

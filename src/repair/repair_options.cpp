@@ -59,13 +59,10 @@ constexpr OptionSpec kRepairOptions[] = {
 std::span<const OptionSpec> repairOptionTable() { return kRepairOptions; }
 
 Status setRepairOption(RepairOptions* o, const std::string& name, const std::string& text) {
-  const OptionSpec* spec = findOption(kRepairOptions, name);
-  if (!spec)
-    return Error{ErrorCode::kInvalidArgument, "unknown repair option '" + name + "' (expected " +
-                                                  optionNames(kRepairOptions) + ")"};
-  auto v = parseOption(*spec, text);
-  if (!v) return v.error();
-  const std::string_view n = spec->name;
+  auto parsed = parseTableOption(kRepairOptions, "repair", name, text);
+  if (!parsed) return parsed.error();
+  const OptionValue* v = &parsed->value;
+  const std::string_view n = parsed->spec->name;
   if (n == "repair") o->enabled = v->choice == "auto";
   if (n == "weld_tolerance") o->weld_tolerance = v->real;
   if (n == "wrap_alpha") o->wrap_alpha = v->real;
@@ -81,7 +78,7 @@ Status checkRepairOptions(const RepairOptions& o) {
       {"wrap_alpha", o.wrap_alpha},
       {"wrap_offset", o.wrap_offset}};
   for (const auto& [name, value] : values)
-    if (auto v = parseOption(*findOption(kRepairOptions, name), shortestText(value)); !v)
+    if (auto v = parseTableOption(kRepairOptions, "repair", name, shortestText(value)); !v)
       return v.error();
   return {};
 }

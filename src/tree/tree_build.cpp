@@ -237,17 +237,27 @@ Expected<TreeResult> buildSphereTree(std::span<const Sphere> leaves, const TreeO
   return res;
 }
 
+namespace {
+
+// The leaves fitted when no count is given: branching^depth, at most kMaxDefaultTreeLeaves.
+Expected<int> defaultLeaves(const TreeOptions& options) {
+  const int64_t leaves = SphereTree{options.branching, options.depth, {}}.levelSize(options.depth);
+  if (leaves > kMaxDefaultTreeLeaves)
+    return Error{ErrorCode::kInvalidArgument,
+                 "branching^depth = " + std::to_string(leaves) + " leaves (more than " +
+                     std::to_string(kMaxDefaultTreeLeaves) +
+                     ") is too many to fit; give the number of spheres"};
+  return static_cast<int>(leaves);
+}
+
+}  // namespace
+
 Expected<FitRequest> treeFitRequest(FitRequest request, const TreeOptions& options) {
   if (Status st = checkTreeOptions(options); !st) return st.error();
   if (request.num_spheres == 0) {
-    const int64_t leaves =
-        SphereTree{options.branching, options.depth, {}}.levelSize(options.depth);
-    if (leaves > kMaxDefaultTreeLeaves)
-      return Error{ErrorCode::kInvalidArgument,
-                   "branching^depth = " + std::to_string(leaves) + " leaves (more than " +
-                       std::to_string(kMaxDefaultTreeLeaves) +
-                       ") is too many to fit; give the number of spheres"};
-    request.num_spheres = static_cast<int>(leaves);
+    auto leaves = defaultLeaves(options);
+    if (!leaves) return leaves.error();
+    request.num_spheres = *leaves;
   }
   if (Status st = checkFitRequest(request); !st) return st.error();
   return request;
@@ -256,14 +266,10 @@ Expected<FitRequest> treeFitRequest(FitRequest request, const TreeOptions& optio
 Expected<TreeFitResult> fitSphereTree(const SolidIndex& index, FitOptions fit,
                                       const TreeOptions& options) {
   if (Status st = checkTreeOptions(options); !st) return st.error();
-  const int64_t max_leaves =
-      SphereTree{options.branching, options.depth, {}}.levelSize(options.depth);
   if (fit.num_spheres == 0) {
-    if (max_leaves > (int64_t{1} << 16))
-      return Error{ErrorCode::kInvalidArgument,
-                   "branching^depth = " + std::to_string(max_leaves) +
-                       " leaves is too many to fit; give the number of spheres"};
-    fit.num_spheres = static_cast<int>(max_leaves);
+    auto leaves = defaultLeaves(options);
+    if (!leaves) return leaves.error();
+    fit.num_spheres = *leaves;
   }
   auto f = fitSpheres(index, fit);
   if (!f) return f.error();

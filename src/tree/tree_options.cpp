@@ -43,13 +43,10 @@ constexpr OptionSpec kTreeOptions[] = {
 std::span<const OptionSpec> treeOptionTable() { return kTreeOptions; }
 
 Status setTreeOption(TreeOptions* o, const std::string& name, const std::string& text) {
-  const OptionSpec* spec = findOption(kTreeOptions, name);
-  if (!spec)
-    return Error{ErrorCode::kInvalidArgument,
-                 "unknown tree option '" + name + "' (expected " + optionNames(kTreeOptions) + ")"};
-  auto v = parseOption(*spec, text);
-  if (!v) return v.error();
-  const std::string_view n = spec->name;
+  auto parsed = parseTableOption(kTreeOptions, "tree", name, text);
+  if (!parsed) return parsed.error();
+  const OptionValue* v = &parsed->value;
+  const std::string_view n = parsed->spec->name;
   if (n == "branching") o->branching = static_cast<int>(v->integer);
   if (n == "depth") o->depth = static_cast<int>(v->integer);
   if (n == "parents")
@@ -65,7 +62,7 @@ Status checkTreeOptions(const TreeOptions& o) {
   // Each number as its text, through the same parser as every front door's.
   for (const auto& [name, value] : {std::pair<const char*, int>{"branching", o.branching},
                                     std::pair<const char*, int>{"depth", o.depth}})
-    if (auto v = parseOption(*findOption(kTreeOptions, name), std::to_string(value)); !v)
+    if (auto v = parseTableOption(kTreeOptions, "tree", name, std::to_string(value)); !v)
       return v.error();
   if (o.max_iterations < 1 || o.optimizer_evaluations < 0)
     return Error{ErrorCode::kInvalidArgument,

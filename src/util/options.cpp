@@ -90,4 +90,15 @@ const OptionSpec* findOption(std::span<const OptionSpec> table, const std::strin
   return nullptr;
 }
 
+Expected<TableValue> parseTableOption(std::span<const OptionSpec> table, const char* what,
+                                      const std::string& name, const std::string& text) {
+  const OptionSpec* spec = findOption(table, name);
+  if (!spec)
+    return Error{ErrorCode::kInvalidArgument, std::string("unknown ") + what + " option '" + name +
+                                                  "' (expected " + optionNames(table) + ")"};
+  auto v = parseOption(*spec, text);
+  if (!v) return v.error();
+  return TableValue{spec, std::move(v).value()};
+}
+
 }  // namespace sphereset
