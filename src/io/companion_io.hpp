@@ -20,6 +20,7 @@
 
 #include "io/smd_grammar.hpp"
 #include "sphereset/status.hpp"
+#include "util/read_file.hpp"
 
 namespace sphereset::detail {
 
@@ -56,9 +57,7 @@ class CompanionIOSystem : public Assimp::DefaultIOSystem {
     const std::filesystem::path p(file);
     std::error_code ec;
     if (std::filesystem::equivalent(p, mesh_, ec)) return true;
-    std::string ext = p.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
+    const std::string ext = extensionOf(file);
     for (const char* e : kCompanionExtensions)
       if (ext == e) return true;
     return p.stem() == mesh_.stem();
@@ -86,13 +85,15 @@ inline bool binaryByte(unsigned char c) {
 // format"), and an SMD/VTA file that follows its grammar (smd_grammar.hpp). A file that cannot be
 // read passes: the reader says why.
 inline Status checkBeforeAssimp(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = extensionOf(path);
   if (std::find_if(std::begin(kTextOnlyExtensions), std::end(kTextOnlyExtensions),
                    [&](const char* e) { return ext == e; }) == std::end(kTextOnlyExtensions))
     return {};
   std::ifstream in(path, std::ios::binary);
+  // SMD and VTA files are kept to check their grammar too, so that they are read once; the
+  // others (an OBJ may be large) are only streamed.
+  const bool smd = ext == ".smd" || ext == ".vta";
+  std::string text;
   char buf[65536];
   int64_t offset = 0;
   while (in) {
@@ -105,10 +106,11 @@ inline Status checkBeforeAssimp(const std::string& path) {
         return Error{ErrorCode::kUnreadable, path + ": binary data (byte " + hex + " at offset " +
                                                  std::to_string(offset + i) + ") in a text format"};
       }
+    if (smd) text.append(buf, static_cast<size_t>(got));
     offset += got;
   }
-  if (ext == ".smd" || ext == ".vta") {
-    std::ifstream again(path, std::ios::binary);
+  if (smd) {
+    std::istringstream again(text);
     const std::string problem = smdProblem(again);
     if (!problem.empty()) return Error{ErrorCode::kUnreadable, path + ": " + problem};
   }

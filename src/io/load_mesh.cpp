@@ -12,17 +12,16 @@
 #include "io/companion_io.hpp"
 #include "io/off_ply.hpp"
 #include "sphereset/load.hpp"
+#include "util/read_file.hpp"
 
 namespace sphereset {
 
 namespace {
 
+// "obj" for "a/b.OBJ": the format's name as the load report gives it.
 std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  if (!ext.empty() && ext[0] == '.') ext.erase(0, 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return ext;
+  const std::string ext = detail::extensionOf(path);
+  return ext.empty() ? ext : ext.substr(1);
 }
 
 void collectNode(const aiScene* scene, const aiNode* node, const aiMatrix4x4& parent,

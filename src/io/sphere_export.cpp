@@ -15,6 +15,7 @@
 #include "sphereset/export.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_io.hpp"
+#include "util/read_file.hpp"
 
 namespace sphereset {
 namespace {
@@ -241,9 +242,7 @@ std::string gltfBytes(const SphereSetMesh& m, bool binary) {
 
 Status writeSphereSetMesh(const std::string& path, const std::vector<Sphere>& spheres,
                           int subdivisions) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = detail::extensionOf(path);
   if (ext != ".ply" && ext != ".obj" && ext != ".gltf" && ext != ".glb")
     return Error{ErrorCode::kInvalidArgument,
                  path + ": unknown mesh extension (use .ply, .obj, .gltf or .glb)"};

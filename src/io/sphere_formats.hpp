@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sphereset/sphere_io.hpp"
+#include "util/read_file.hpp"
 
 namespace sphereset::detail {
 
@@ -42,8 +43,6 @@ std::string yamlQuoted(const std::string& name);
 // `indent`) when the key is too long for an implicit one.
 std::string yamlMappingKey(const std::string& name, int indent);
 
-// The lower-case extension of a path, with its dot.
-std::string extensionOf(const std::string& path);
 // kInvalidData, naming `where`, for a sphere with a NaN or infinite value or a negative radius.
 Status checkSphere(const std::string& where, const Sphere& s);
 // The JSON document read from `in` (the file `path`); kUnreadable when it is not JSON.

@@ -39,13 +39,6 @@ std::string num(double x) { return detail::formatNumber(x); }
 
 namespace detail {
 
-std::string extensionOf(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
 Status checkSphere(const std::string& where, const Sphere& s) {
   if (!s.center.allFinite() || !std::isfinite(s.radius))
     return Error{ErrorCode::kInvalidData, where + ": NaN or infinite value"};

@@ -1,6 +1,8 @@
 // A whole file read into memory.
 #include "util/read_file.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +25,13 @@ Expected<std::string> readFileText(const std::string& path) {
   } catch (const std::exception& e) {
     return Error{ErrorCode::kUnreadable, path + ": read error (" + e.what() + ")"};
   }
+}
+
+std::string extensionOf(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
 }
 
 }  // namespace sphereset::detail
