@@ -151,8 +151,13 @@ std::string repairLine(const RepairResult& r) {
 
 std::vector<std::pair<std::string, std::string>> TableArgs::given() const {
   std::vector<std::pair<std::string, std::string>> out;
-  for (const auto& [name, opt] : options)
-    if (opt->count() > 0) out.emplace_back(name, text.at(name));
+  for (const auto& [name, opt] : options) {
+    if (opt->count() == 0) continue;
+    if (auto it = items.find(name); it != items.end())
+      for (const std::string& item : it->second) out.emplace_back(name, item);
+    else
+      out.emplace_back(name, text.at(name));
+  }
   return out;
 }
 
@@ -164,10 +169,14 @@ void addTableOptions(CLI::App* cmd, TableArgs* a, std::span<const OptionSpec> ta
                        : o.type == OptionType::kReal ? "FLOAT"
                                                      : "INT";
     // No CLI11 checks: the library parses and checks the text (one message for every door).
-    a->options[o.name] = cmd->add_option(o.flag, a->text[o.name],
-                                         std::string(o.help) + " (default " + o.default_text + ")")
-                             ->type_name(type)
-                             ->allow_extra_args(false);
+    const std::string help = std::string(o.help) + " (default " + o.default_text + ")";
+    if (o.key)  // KEY=VALUE, repeatable
+      a->options[o.name] = cmd->add_option(o.flag, a->items[o.name], help)
+                               ->type_name(std::string(o.key) + "=" + type)
+                               ->allow_extra_args(false);
+    else
+      a->options[o.name] =
+          cmd->add_option(o.flag, a->text[o.name], help)->type_name(type)->allow_extra_args(false);
   }
 }
 

@@ -58,9 +58,10 @@ nlohmann::json vec(const Vec3& v);
 
 // The mesh argument and how a mesh that is not a clean solid is made one (repair.hpp).
 struct TableArgs {
-  std::map<std::string, std::string> text;      // row name -> the text given
-  std::map<std::string, CLI::Option*> options;  // row name -> its flag
-  // The rows given on the command line, in the table's order.
+  std::map<std::string, std::string> text;                // row name -> the text given
+  std::map<std::string, std::vector<std::string>> items;  // keyed rows: every KEY=VALUE given
+  std::map<std::string, CLI::Option*> options;            // row name -> its flag
+  // The rows given on the command line, in the table's order (a keyed row once per item).
   std::vector<std::pair<std::string, std::string>> given() const;
 };
 

@@ -19,10 +19,11 @@ namespace sphereset::cli {
 namespace {
 
 struct AnimateArgs {
-  std::string rest, spheres, out, animation, clip, format = "json", weighting = "auto";
+  std::string rest, spheres, out, animation, clip, format = "json";
   std::vector<std::string> frames;
-  double fps = 0.0;
-  MeshArgs weld;  // only the repair table's weld_tolerance row
+  TableArgs animate;  // the rows of animateOptionTable()
+  TableArgs load;     // the rows of skinnedLoadOptionTable() (--fps)
+  MeshArgs weld;      // only the repair table's weld_tolerance row
   bool rebound = false, fresh_fit = false, quiet = false;
 };
 
@@ -36,12 +37,10 @@ struct Frames {
 };
 
 // `rest` as loaded: the frames of --frames are read through its clean-up (loadFrameMesh).
-Expected<Frames> readFrames(const AnimateArgs& a, const LoadedMesh& rest) {
+Expected<Frames> readFrames(const AnimateArgs& a, const LoadedMesh& rest,
+                            const SkinnedLoadOptions& so) {
   Frames out;
   if (!a.animation.empty()) {
-    SkinnedLoadOptions so;
-    so.clip = a.clip;
-    so.fps = a.fps;
     auto anim = loadAnimation(a.animation, so);
     if (!anim) return anim.error();
     // The frames and the skin follow the asset's own vertex order and triangles: the library
@@ -75,6 +74,14 @@ int runAnimate(const AnimateArgs& a) {
   if (Status st = checkOutputFolder(a.out, inputs); !st) return fail(st.error());
   auto lo = loadOptions(a.weld);
   if (!lo) return fail(lo.error());
+  // The options before anything is read: the library's tables parse and check them.
+  AnimateOptions o;
+  for (const auto& [name, text] : a.animate.given())
+    if (Status st = setAnimateOption(&o, name, text); !st) return fail(st.error());
+  SkinnedLoadOptions so;
+  so.clip = a.clip;
+  for (const auto& [name, text] : a.load.given())
+    if (Status st = setSkinnedLoadOption(&so, name, text); !st) return fail(st.error());
   auto rest = loadMesh(a.rest, *lo);
   if (!rest) return fail(rest.error());
   const MeshDiagnosis d = diagnoseMesh(rest->mesh);
@@ -83,25 +90,18 @@ int runAnimate(const AnimateArgs& a) {
   if (!spheres) return fail(spheres.error());
   if (spheres->empty())
     return fail(Error{ErrorCode::kInvalidData, a.spheres + ": the file holds no spheres"});
-  auto frames = readFrames(a, *rest);
+  auto frames = readFrames(a, *rest, so);
   if (!frames) return fail(frames.error());
 
-  AnimateOptions o;
   o.rebound = a.rebound;
   o.fresh_fit = a.fresh_fit;
   o.fit.restarts = 1;
-  // Skinned assets use the bone weights by default (they kept sets tighter, see
-  // docs/benchmarks.md); deformed meshes without a skeleton use mean value coordinates.
-  const bool bones = a.weighting == "bones" || (a.weighting == "auto" && frames->skinned);
-  if (bones && !frames->skinned)
-    return fail(Error{ErrorCode::kInvalidArgument,
-                      "--weighting bones needs --animation (a skinned asset)"});
-  o.weighting = bones ? CentreWeighting::kBones : CentreWeighting::kMeanValue;
   if (!a.quiet)
     o.progress = [&](int f, int n) { std::cerr << "frame " << (f + 1) << "/" << n << '\n'; };
   auto res = animateSpheres(rest->mesh, *spheres, frames->frames, o,
                             frames->skinned ? &frames->skin : nullptr);
   if (!res) return fail(Error{res.error().code, a.rest + ": " + res.error().message});
+  const bool bones = res->weighting == CentreWeighting::kBones;
 
   std::error_code ec;
   std::filesystem::create_directories(a.out, ec);
@@ -139,7 +139,7 @@ int runAnimate(const AnimateArgs& a) {
                             {"spheres", a.spheres},
                             {"sphere_count", spheres->size()},
                             {"source", a.animation.empty() ? "frames" : a.animation},
-                            {"weighting", bones ? "bones" : "mean_value"},
+                            {"weighting", centreWeightingName(res->weighting)},
                             {"rebound", a.rebound},
                             {"weights_seconds", res->weights_seconds},
                             {"frames_covered", res->frames_covered},
@@ -179,8 +179,8 @@ Command registerAnimate(CLI::App& app) {
                                "pose must be the rest mesh");
   frames->excludes(anim);
   cmd->add_option("--clip", a->clip, "Animation clip (default: the first)")->needs(anim);
-  cmd->add_option("--fps", a->fps, "Frames per second (default: the clip's keyframe times)")
-      ->needs(anim);
+  addTableOptions(cmd, &a->load, skinnedLoadOptionTable());
+  a->load.options.at("fps")->needs(anim);
   cmd->add_flag("--rebound", a->rebound,
                 "Grow radii minimally per frame so that the deformed mesh is covered exactly");
   cmd->add_flag("--fresh-fit", a->fresh_fit,
@@ -188,11 +188,7 @@ Command registerAnimate(CLI::App& app) {
   cmd->add_option("--format", a->format, "Sphere files per frame")
       ->capture_default_str()
       ->check(CLI::IsMember({"txt", "json"}));
-  cmd->add_option("--weighting", a->weighting,
-                  "Centres follow mean value coordinates (mvc) or the bone weights of the "
-                  "surface near them (bones); auto: bones for skinned assets")
-      ->capture_default_str()
-      ->transform(CLI::IsMember({"auto", "mvc", "bones"}));
+  addTableOptions(cmd, &a->animate, animateOptionTable());
   // The repair table's weld row (rest and frames alike; not given: exact welding).
   addTableOptions(cmd, &a->weld.repair, repairOptionTable(),
                   {"repair", "wrap_alpha", "wrap_offset"});

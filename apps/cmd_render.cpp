@@ -32,7 +32,7 @@ struct RenderArgs {
   // One PNG per frame of a deforming mesh (see renderFrames).
   std::vector<std::string> frames;
   std::string animation, clip, spheres_dir;
-  double fps = 0.0;
+  TableArgs load;  // the rows of skinnedLoadOptionTable() (--fps)
 };
 
 // Completes the render options from the text options; kInvalidArgument for a bad size, view
@@ -124,13 +124,14 @@ std::string framePng(const std::string& out, size_t i) {
 int renderFrames(const RenderArgs& a, const RenderOptions& ro) {
   auto lo = loadOptions(a.mesh);
   if (!lo) return fail(lo.error());
+  SkinnedLoadOptions so;
+  so.clip = a.clip;
+  for (const auto& [name, text] : a.load.given())
+    if (Status st = setSkinnedLoadOption(&so, name, text); !st) return fail(st.error());
   auto rest = loadMesh(a.mesh.path, *lo);
   if (!rest) return fail(rest.error());
   std::vector<std::vector<Vec3>> frames;
   if (!a.animation.empty()) {
-    SkinnedLoadOptions so;
-    so.clip = a.clip;
-    so.fps = a.fps;
     auto anim = loadAnimation(a.animation, so);
     if (!anim) return fail(anim.error());
     for (AnimationFrame& f : anim->frames) frames.push_back(std::move(f.vertices));
@@ -254,9 +255,8 @@ Command registerRender(CLI::App& app) {
                                "Skinned, animated asset: one PNG per frame of its clip");
   frames->excludes(anim);
   cmd->add_option("--clip", a->clip, "Animation clip (default: the first)")->needs(anim);
-  cmd->add_option("--fps", a->fps, "Frames per second (default: the clip's keyframe times)")
-      ->needs(anim)
-      ->check(CLI::PositiveNumber);
+  addTableOptions(cmd, &a->load, skinnedLoadOptionTable());
+  a->load.options.at("fps")->needs(anim);
   cmd->add_option("--spheres-dir", a->spheres_dir,
                   "Folder written by animate: frame_0000.json (or .txt)... drawn on the frames");
   return {cmd, [a] { return runRender(*a); }};

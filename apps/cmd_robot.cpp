@@ -7,12 +7,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <limits>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "cli_common.hpp"
@@ -29,47 +27,15 @@ namespace {
 
 struct RobotArgs {
   std::string urdf, out_path, joint_positions;
-  TableArgs fit;  // --quality and --seed
-  std::vector<std::string> package_paths, link_spheres, link_padding;
+  TableArgs fit;    // --quality and --seed
+  TableArgs robot;  // the rows of robotFitOptionTable()
+  std::vector<std::string> package_paths;
   MeshArgs repair;  // repair options only (no mesh path)
-  int budget = 0;
-  double padding = 0.0;
   bool quiet = false, json = false;
 };
 
-// NAME=VALUE options, for the names of links that exist.
-template <class T>
-Expected<std::map<std::string, T>> namedValues(const std::vector<std::string>& items,
-                                               const Robot& robot, const char* option) {
-  // The syntax only: the library checks the link names and the values' ranges (fitRobot), with
-  // the messages Python gets too.
-  (void)robot;
-  std::map<std::string, T> out;
-  for (const std::string& item : items) {
-    const size_t eq = item.find('=');
-    double x = 0.0;
-    bool number = false;
-    if (eq != std::string::npos) try {
-        size_t used = 0;
-        const std::string v = item.substr(eq + 1);
-        x = std::stod(v, &used);
-        number = used == v.size() && (!std::is_integral_v<T> || x == std::floor(x));
-      } catch (const std::exception&) {
-      }
-    if (!number)
-      return Error{ErrorCode::kInvalidArgument,
-                   std::string(option) + " " + item + ": expected LINK=VALUE" +
-                       (std::is_integral_v<T> ? " (a whole number)" : " (a number)")};
-    if constexpr (std::is_integral_v<T>)
-      x = std::clamp(x, static_cast<double>(std::numeric_limits<T>::min()),
-                     static_cast<double>(std::numeric_limits<T>::max()));
-    out[item.substr(0, eq)] = static_cast<T>(x);
-  }
-  return out;
-}
-
 nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const RobotFitResult& r,
-                         uint64_t seed) {
+                         const RobotFitOptions& fo) {
   nlohmann::json links = nlohmann::json::array();
   for (const RobotLinkFit& j : r.links) {
     nlohmann::json s = nlohmann::json::array();
@@ -98,9 +64,10 @@ nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const RobotFitR
     }
     links.push_back(l);
   }
-  nlohmann::json out = {{"robot", robot.name}, {"urdf", a.urdf}, {"seed", seed}, {"links", links}};
+  nlohmann::json out = {
+      {"robot", robot.name}, {"urdf", a.urdf}, {"seed", fo.seed}, {"links", links}};
   if (r.budget_split)
-    out["budget"] = {{"spheres", a.budget},
+    out["budget"] = {{"spheres", fo.budget},
                      {"outside_volume", r.outside_volume},
                      {"curve_split_outside_volume", r.split_outside_volume},
                      {"even_split_outside_volume", r.even_outside_volume}};
@@ -135,25 +102,10 @@ int runRobot(const RobotArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   auto format = sphereFormatFromPath(a.out_path);
   const std::string ext = std::filesystem::path(a.out_path).extension().string();
-  if (ext != ".json" && ext != ".urdf" && (!format || *format != SphereFormat::kYaml))
-    return fail(Error{ErrorCode::kInvalidArgument,
-                      a.out_path + ": robot output is .yml/.yaml (cuRobo), .urdf or .json"});
-  if (Status st = checkOutputPath(a.out_path, {a.urdf}); !st) return fail(st.error());
-  RobotLoadOptions lo;
-  lo.package_paths = a.package_paths;
-  auto robot = loadRobot(a.urdf, lo);
-  if (!robot) return fail(robot.error());
-  auto counts = namedValues<int>(a.link_spheres, *robot, "--link-spheres");
-  if (!counts) return fail(counts.error());
-  auto pads = namedValues<double>(a.link_padding, *robot, "--link-padding");
-  if (!pads) return fail(pads.error());
-  auto joints = parseJointPositions(a.joint_positions, *robot);
-  if (!joints) return fail(joints.error());
+  // The options first: a bad value is refused before anything is read.
   RobotFitOptions fo;
-  fo.budget = a.budget;
-  fo.link_spheres = std::move(counts).value();
-  fo.padding = a.padding;
-  fo.link_padding = std::move(pads).value();
+  for (const auto& [name, text] : a.robot.given())
+    if (Status st = setRobotFitOption(&fo, name, text); !st) return fail(st.error());
   FitRequest request;
   for (const auto& [name, text] : a.fit.given())
     if (Status st = setFitRequestOption(&request, name, text); !st) return fail(st.error());
@@ -162,6 +114,16 @@ int runRobot(const RobotArgs& a) {
   auto repair = repairOptions(a.repair);
   if (!repair) return fail(repair.error());
   fo.repair = std::move(repair).value();
+  if (ext != ".json" && ext != ".urdf" && (!format || *format != SphereFormat::kYaml))
+    return fail(Error{ErrorCode::kInvalidArgument,
+                      a.out_path + ": robot output is .yml/.yaml (cuRobo), .urdf or .json"});
+  if (Status st = checkOutputPath(a.out_path, {a.urdf}); !st) return fail(st.error());
+  RobotLoadOptions lo;
+  lo.package_paths = a.package_paths;
+  auto robot = loadRobot(a.urdf, lo);
+  if (!robot) return fail(robot.error());
+  auto joints = parseJointPositions(a.joint_positions, *robot);
+  if (!joints) return fail(joints.error());
   fo.name = a.urdf;
   auto fit = fitRobot(*robot, fo);
   if (!fit) return fail(fit.error());
@@ -170,7 +132,7 @@ int runRobot(const RobotArgs& a) {
     if (!j.skipped) out.push_back({j.link, j.spheres});
   Status st;
   if (ext == ".json") {
-    st = writeTextFile(a.out_path, jsonText(robotJson(a, *robot, *fit, fo.seed), 1) + "\n");
+    st = writeTextFile(a.out_path, jsonText(robotJson(a, *robot, *fit, fo), 1) + "\n");
   } else if (ext == ".urdf") {
     st = writeSphereUrdf(a.urdf, a.out_path, out);
   } else {
@@ -185,7 +147,7 @@ int runRobot(const RobotArgs& a) {
   if (!st) return fail(st.error());
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (a.json) std::cout << jsonText(robotJson(a, *robot, *fit, fo.seed)) << '\n';
+  if (a.json) std::cout << jsonText(robotJson(a, *robot, *fit, fo)) << '\n';
   if (!a.quiet) printSummary(*fit, seconds);
   for (const RobotLinkFit& j : fit->links)
     if (!j.covered) {
@@ -212,15 +174,7 @@ Command registerRobot(CLI::App& app) {
                   "self_collision_ignore (default: all joints at 0)");
   cmd->add_option("--package-path", a->package_paths,
                   "Folder searched for package://NAME/ paths (repeatable; then ROS_PACKAGE_PATH)");
-  cmd->add_option("--budget", a->budget,
-                  "Spheres over the whole robot, split by what lowers the total outside volume "
-                  "most (default 0: 8 per link)")
-      ->check(CLI::Range(0, 1000000));
-  cmd->add_option("--link-spheres", a->link_spheres,
-                  "LINK=N: N spheres for this link (0 skips it); repeatable");
-  cmd->add_option("--padding", a->padding, "Distance added to every radius")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--link-padding", a->link_padding, "LINK=D: padding for this link; repeatable");
+  addTableOptions(cmd, &a->robot, robotFitOptionTable());
   // --quality and --seed: the fit table's rows, parsed by the library.
   addTableOptions(cmd, &a->fit, fitRequestOptions(),
                   {"n", "points", "iterations", "restarts", "decimation", "padding", "optimizer",

@@ -14,6 +14,7 @@
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/mesh.hpp"
+#include "sphereset/options.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/status.hpp"
 
@@ -79,12 +80,13 @@ struct AnimationFrame {
 };
 
 enum class CentreWeighting {
+  kAuto,       // kBones when a skin with bones is given, else kMeanValue
   kMeanValue,  // centres = mean value coordinates of the rest mesh × deformed vertices (paper)
   kBones,      // centres skinned with the bone weights of the surface near them
 };
 
 struct AnimateOptions {
-  CentreWeighting weighting = CentreWeighting::kMeanValue;
+  CentreWeighting weighting = CentreWeighting::kAuto;
   // kBones: a centre takes the inverse-distance average of the bone weights of this many
   // nearest rest vertices.
   int bone_neighbours = 8;
@@ -134,11 +136,24 @@ struct AnimateFrameResult {
 
 struct AnimateResult {
   std::vector<AnimateFrameResult> frames;
-  double weights_seconds = 0.0;  // precomputation of the centre weights
-  int64_t frames_covered = 0;    // frames whose moved set covers surface and interior
-  int64_t frames_crossing = 0;   // frames whose deformed mesh passes through itself
+  CentreWeighting weighting = CentreWeighting::kMeanValue;  // the one used (kAuto resolved)
+  double weights_seconds = 0.0;                             // precomputation of the centre weights
+  int64_t frames_covered = 0;   // frames whose moved set covers surface and interior
+  int64_t frames_crossing = 0;  // frames whose deformed mesh passes through itself
   double seconds = 0.0;
 };
+
+// "auto", "mvc", "bones": the weighting row's choices.
+const char* centreWeightingName(CentreWeighting w);
+
+// AnimateOptions' settings as one table (options.hpp): weighting (auto, mvc or bones),
+// bone_neighbours and max_crossings. The command line's flags of `sphereset animate` and the
+// keywords of Python's animate are made from it; setAnimateOption sets a row from the text a
+// user typed, checkAnimateOptions checks a struct (with the evaluation's options) with the same
+// messages. (rebound and fresh_fit are switches of their own.)
+std::span<const OptionSpec> animateOptionTable();
+Status setAnimateOption(AnimateOptions* o, const std::string& name, const std::string& text);
+Status checkAnimateOptions(const AnimateOptions& o);
 
 // How far (relative to the bind pose's bounding-box diagonal) a rest mesh's vertex may lie
 // from the skin's bind pose: an asset's skinning matrices are single precision, and a mesh
@@ -191,10 +206,16 @@ struct LoadedAnimation {
   std::vector<AnimationFrame> frames;
 };
 
+// SkinnedLoadOptions' numbers as one table: fps (0, the default: the clip's keyframe times).
+// `sphereset animate`/`render` --fps and Python's load_animation keyword are made from it.
+std::span<const OptionSpec> skinnedLoadOptionTable();
+Status setSkinnedLoadOption(SkinnedLoadOptions* o, const std::string& name,
+                            const std::string& text);
+
 // Reads the asset's bind pose and skin and evaluates the clip. Errors: kUnreadable (not
 // readable), kInvalidData (no triangles, no animation; more than limits::kMaxBones bones, or
-// frames × vertices beyond limits::kMaxArrayBytes), kInvalidArgument (fps negative or not
-// finite, more than limits::kMaxFrames frames; no clip of that name: the message lists the
+// frames × vertices beyond limits::kMaxArrayBytes), kInvalidArgument (fps outside its row,
+// more than limits::kMaxFrames frames; no clip of that name: the message lists the
 // clips).
 Expected<LoadedAnimation> loadAnimation(const std::string& path,
                                         const SkinnedLoadOptions& options = {});

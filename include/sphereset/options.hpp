@@ -28,6 +28,9 @@ struct OptionSpec {
   std::span<const char* const> choices;  // kChoice
   const char* default_text;              // the default as help shows it
   const char* help;
+  // A keyed row ("LINK" for per-link values): the text is KEY=VALUE, VALUE parsed as `type`
+  // says, and the row may be given once per key. Null for plain rows.
+  const char* key = nullptr;
 };
 
 // Parsed values of one option, as the table's setters receive them.
@@ -36,12 +39,14 @@ struct OptionValue {
   uint64_t unsigned_integer = 0;  // kUnsigned
   double real = 0.0;              // kReal
   std::string choice;             // kChoice
+  std::string key;                // keyed rows: the text before the last '='
 };
 
 // `text` parsed and checked as `spec` says. kInvalidArgument "NAME 'TEXT': expected an integer
 // from 1 to 1000000" (or "a number from 0 to 16", "an integer from 0 to 18446744073709551615",
 // "fast, default or best") for anything else, including trailing characters, NaN, infinities,
-// numbers out of range and signs on unsigned values.
+// numbers out of range and signs on unsigned values. A keyed row's text is KEY=VALUE (split at the
+// last '='; KEY not empty): "NAME 'TEXT': expected LINK=VALUE, VALUE an integer from 0 to 10".
 Expected<OptionValue> parseOption(const OptionSpec& spec, const std::string& text);
 
 // "n, quality, seed, ..." : the names of a table, for messages listing them.
@@ -59,5 +64,12 @@ struct TableValue {
 // row `name`; else parseOption's result for that row.
 Expected<TableValue> parseTableOption(std::span<const OptionSpec> table, const char* what,
                                       const std::string& name, const std::string& text);
+
+// A value already in a struct checked against its row, as if a user had typed it: the shortest
+// text that reads back as `value` ("1e+200", "0.5", "nan") through parseTableOption, so a
+// struct set in code is refused with the message a typed value gets. `key` prefixes the text
+// as KEY= for keyed rows.
+Status checkTableValue(std::span<const OptionSpec> table, const char* what, const std::string& name,
+                       double value, const std::string& key = {});
 
 }  // namespace sphereset

@@ -10,6 +10,7 @@
 
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
+#include "sphereset/options.hpp"
 #include "sphereset/repair.hpp"
 #include "sphereset/robot.hpp"
 #include "sphereset/sphere.hpp"
@@ -84,6 +85,16 @@ struct RobotFitOptions {
   std::function<void(const std::string& link, const FitProgress& progress)> progress;
 };
 
+// RobotFitOptions' numbers as one table (options.hpp): budget, default_link_spheres,
+// link_spheres (keyed LINK=N), padding and link_padding (keyed LINK=R). The command line's flags
+// of `sphereset robot` and Python's fit_robot keywords are made from it. setRobotFitOption sets a
+// row from the text a user typed (a keyed row adds or replaces its link's entry);
+// checkRobotFitOptions checks a struct against the rows with the same messages. (quality and
+// seed are the fit table's rows, fit.hpp; the repair's are repair.hpp's.)
+std::span<const OptionSpec> robotFitOptionTable();
+Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std::string& text);
+Status checkRobotFitOptions(const RobotFitOptions& o);
+
 // One link with geometry.
 struct RobotLinkFit {
   std::string link;
@@ -112,7 +123,8 @@ struct RobotFitResult {
   double seconds = 0.0;
 };
 
-// Fits every link of `robot`. Errors (messages prefixed by options.name): link_spheres or
+// Fits every link of `robot`. Errors: options outside robotFitOptionTable's rows (as
+// checkRobotFitOptions says them); messages prefixed by options.name: link_spheres or
 // link_padding naming no link (kInvalidArgument), a budget too small for the fixed counts and
 // one sphere per other link (kInvalidArgument), a link's geometry that cannot be loaded or
 // made a solid (as linkSolid).

@@ -481,10 +481,8 @@ def load_animation(path: PathLike, clip: Optional[str] = None,
     SMD, ...) and evaluates a clip (``clip`` None: the first) at its keyframe times, or every
     1/``fps`` seconds. Raises UnreadableError (not readable), InvalidDataError (no triangles,
     no animation) or InvalidArgumentError (no clip of that name: the message lists the clips;
-    ``fps`` not positive)."""
-    if fps is not None and not fps > 0.0:
-        raise InvalidArgumentError(f"fps must be positive (got {fps})")
-    d = _core._load_animation(os.fspath(path), clip or "", float(fps or 0.0))
+    ``fps`` outside the library's row: a finite number >= 0, 0 or None the keyframe times)."""
+    d = _core._load_animation(os.fspath(path), clip or "", dict(fps=fps))
     if d["bone_weights"].shape[1] == 0:
         d["bone_weights"] = None
     return Animation(**d)
@@ -593,9 +591,11 @@ def animate(rest_mesh: Union[Mesh, PathLike, None], spheres: Any,
         raise InvalidArgumentError("rest_mesh is needed unless frames is an Animation")
     if not isinstance(rest_mesh, Mesh):
         rest_mesh = load_mesh(rest_mesh)
+    # The keywords of the library's animation table (animate.hpp), checked there.
+    options = dict(weighting=weighting, bone_neighbours=bone_neighbours,
+                   max_crossings=max_crossings)
     d = _core._animate(rest_mesh, spheres, list(frames), times, bone_weights, bone_transforms,
-                       bind_pose, weighting, int(bone_neighbours), bool(rebound),
-                       bool(fresh_fit), int(max_crossings), progress)
+                       bind_pose, options, bool(rebound), bool(fresh_fit), progress)
     fr = d.pop("frames")
     out: Dict[str, Any] = {
         "spheres": (np.stack([f["spheres"] for f in fr]) if fr
@@ -678,7 +678,8 @@ class RobotFitResult:
         return conv(dataclasses.asdict(self))
 
 
-def fit_robot(urdf: PathLike, *, budget: int = 0, link_spheres: Optional[Dict[str, int]] = None,
+def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
+              link_spheres: Optional[Dict[str, int]] = None,
               padding: float = 0.0, link_padding: Optional[Dict[str, float]] = None,
               package_paths: Sequence[PathLike] = (), use_ros_package_path: bool = True,
               seed: int = 1, quality: str = "default", repair: Union[str, bool] = "auto",
@@ -687,8 +688,8 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, link_spheres: Optional[Dict[st
     """Fits collision spheres to every link of a URDF robot, like ``sphereset robot`` (the same
     library call, options and defaults, so the same spheres for the same seed).
 
-    ``budget`` spheres over the whole robot, sphere primitives included (0: 8 per link not
-    fixed by ``link_spheres``), split over the links by what lowers the total outside volume
+    ``budget`` spheres over the whole robot, sphere primitives included (0:
+    ``default_link_spheres`` per link not fixed by ``link_spheres``), split over the links by what lowers the total outside volume
     most; ``link_spheres`` {link: count} fixes a link's count (0 skips it); ``padding`` is added
     to every radius, ``link_padding`` {link: padding} instead for those links; mesh paths
     resolve through ``package_paths`` (package://), then ROS_PACKAGE_PATH. ``quality`` is the
@@ -702,10 +703,13 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, link_spheres: Optional[Dict[st
         repair = "auto"
     elif repair is False:
         repair = "off"
-    d = _core._fit_robot(os.fspath(urdf), int(budget), dict(link_spheres or {}), float(padding),
-                         {k: float(v) for k, v in (link_padding or {}).items()},
+    # The keywords of the library's robot table (robot_fit.hpp), checked there.
+    options = dict(budget=budget, default_link_spheres=default_link_spheres,
+                   link_spheres=dict(link_spheres or {}), padding=padding,
+                   link_padding=dict(link_padding or {}))
+    d = _core._fit_robot(os.fspath(urdf), options, dict(quality=quality, seed=seed),
                          [os.fspath(p) for p in package_paths], bool(use_ros_package_path),
-                         int(seed), quality, repair, weld_tolerance, bool(fill_cavities),
-                         float(wrap_alpha), float(wrap_offset))
+                         repair, weld_tolerance, bool(fill_cavities), float(wrap_alpha),
+                         float(wrap_offset))
     d["links"] = [RobotLinkFit(**lf) for lf in d["links"]]
     return RobotFitResult(**d)

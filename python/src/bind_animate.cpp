@@ -179,10 +179,12 @@ void bindAnimate(py::module_& m) {
 
   m.def(
       "_load_animation",
-      [](const Path& path, const std::string& clip, double fps) {
+      [](const Path& path, const std::string& clip, const py::dict& options) {
         SkinnedLoadOptions so;
         so.clip = clip;
-        so.fps = fps;
+        setOptions(options, [&](const std::string& name, const std::string& text) {
+          return setSkinnedLoadOption(&so, name, text);
+        });
         LoadedAnimation a;
         {
           py::gil_scoped_release release;
@@ -214,26 +216,24 @@ void bindAnimate(py::module_& m) {
         d["duration"] = a.duration;
         return d;
       },
-      py::arg("path"), py::arg("clip"), py::arg("fps"));
+      py::arg("path"), py::arg("clip"), py::arg("options"));
 
   m.def(
       "_animate",
       [](const std::shared_ptr<PyMesh>& rest, const py::object& spheres_arg,
          const py::list& frame_vertices, const py::object& times, const py::object& bone_weights,
-         const py::object& bone_transforms, const py::object& bind_pose,
-         const std::string& weighting, int bone_neighbours,
-         bool rebound, bool fresh_fit, int64_t max_crossings, const py::object& progress) {
+         const py::object& bone_transforms, const py::object& bind_pose, const py::dict& options,
+         bool rebound, bool fresh_fit, const py::object& progress) {
         const std::string& name = rest->loaded.report.path;
+        // The rows of the library's animation table (weighting, bone_neighbours,
+        // max_crossings), parsed and checked there before anything else.
+        AnimateOptions o;
+        setOptions(options, [&](const std::string& key, const std::string& text) {
+          return setAnimateOption(&o, key, text);
+        });
         requireSolid(*rest);
         const std::vector<Sphere> spheres = spheresFromArray(spheres_arg, "spheres");
         const bool skinned = !bone_weights.is_none();
-        if (weighting != "auto" && weighting != "mvc" && weighting != "bones")
-          raise(ErrorCode::kInvalidArgument,
-                "weighting must be 'auto', 'mvc' or 'bones', not '" + weighting + "'");
-        const bool bones = weighting == "bones" || (weighting == "auto" && skinned);
-        if (bones && !skinned)
-          raise(ErrorCode::kInvalidArgument,
-                "weighting 'bones' needs an animation with bone weights (load_animation)");
 
         // A frame is a Mesh (its triangles are checked against the rest mesh's) or an array of
         // vertices; the library checks counts and triangles.
@@ -264,24 +264,21 @@ void bindAnimate(py::module_& m) {
           if (bind_pose.is_none())
             raise(ErrorCode::kInvalidArgument, "bone_weights need the bind pose they belong to");
           skin.bind_pose = bind_pose.cast<const PyMesh&>().loaded.mesh;
-          if (bones) {
-            const py::list bt = bone_transforms.is_none() ? py::list() : py::list(bone_transforms);
+          // The frames' bone transforms, when given: the library checks their count against
+          // the skin's where the weighting uses them.
+          if (!bone_transforms.is_none()) {
+            const py::list bt(bone_transforms);
             if (bt.size() != frames.size())
               raise(ErrorCode::kInvalidArgument,
                     "bone_transforms: expected one (B, 4, 4) array per frame");
-            for (size_t i = 0; i < frames.size(); ++i) {
+            for (size_t i = 0; i < frames.size(); ++i)
               frames[i].bones = bonesFromArray(bt[i], "bone_transforms " + std::to_string(i));
-            }
           }
         }
 
-        AnimateOptions o;
-        o.weighting = bones ? CentreWeighting::kBones : CentreWeighting::kMeanValue;
-        o.bone_neighbours = bone_neighbours;
         o.rebound = rebound;
         o.fresh_fit = fresh_fit;
         o.fit.restarts = 1;  // as `sphereset animate --fresh-fit`
-        o.max_crossings = max_crossings;
         // Between frames: run Python's signal handlers (Ctrl-C raises KeyboardInterrupt, which
         // abandons the animation) and report progress.
         const py::object* cb = &progress;
@@ -300,7 +297,7 @@ void bindAnimate(py::module_& m) {
         for (const AnimateFrameResult& f : r->frames) fl.append(frameDict(f));
         py::dict d;
         d["frames"] = fl;
-        d["weighting"] = bones ? "bones" : "mvc";
+        d["weighting"] = centreWeightingName(r->weighting);
         d["rebound"] = rebound;
         d["weights_seconds"] = r->weights_seconds;
         d["frames_covered"] = r->frames_covered;
@@ -309,10 +306,10 @@ void bindAnimate(py::module_& m) {
         return d;
       },
       py::arg("rest"), py::arg("spheres"), py::arg("frames"), py::arg("times"),
-      py::arg("bone_weights"), py::arg("bone_transforms"), py::arg("bind_pose"),
-      py::arg("weighting"),
-      py::arg("bone_neighbours"), py::arg("rebound"), py::arg("fresh_fit"),
-      py::arg("max_crossings"), py::arg("progress"));
+      py::arg("bone_weights"), py::arg("bone_transforms"), py::arg("bind_pose"), py::arg("options"),
+      py::arg("rebound"), py::arg("fresh_fit"), py::arg("progress"));
+  m.def("_animate_option_table", [] { return optionTable(animateOptionTable()); });
+  m.def("_skinned_load_option_table", [] { return optionTable(skinnedLoadOptionTable()); });
 }
 
 }  // namespace sphereset::python

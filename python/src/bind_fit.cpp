@@ -36,6 +36,7 @@ py::list optionTable(std::span<const OptionSpec> table) {
     d["choices"] = choices;
     d["default"] = o.default_text;
     d["help"] = o.help;
+    d["key"] = o.key ? py::object(py::str(o.key)) : py::object(py::none());
     rows.append(d);
   }
   return rows;

@@ -65,20 +65,23 @@ py::dict linkDict(const RobotLinkFit& j) {
 void bindRobotFit(py::module_& m) {
   m.def(
       "_fit_robot",
-      [](const Path& urdf_arg, int budget, const std::map<std::string, int>& link_spheres,
-         double padding, const std::map<std::string, double>& link_padding,
-         const std::vector<std::string>& package_paths, bool use_ros_package_path, uint64_t seed,
-         const std::string& quality, const std::string& repair, const py::object& weld, bool fill,
-         double alpha, double offset) {
+      [](const Path& urdf_arg, const py::dict& options, const py::dict& fit_options,
+         const std::vector<std::string>& package_paths, bool use_ros_package_path,
+         const std::string& repair, const py::object& weld, bool fill, double alpha,
+         double offset) {
         const std::string urdf = urdf_arg.string();
-        // Budget, padding and the per-link values are checked by fitRobot (its messages).
+        // The rows of the robot table and the fit table's quality and seed, parsed and checked
+        // by the library (its messages) before anything is read.
         RobotFitOptions fo;
-        fo.budget = budget;
-        fo.link_spheres = link_spheres;
-        fo.padding = padding;
-        fo.link_padding = link_padding;
-        fo.quality = unwrap(fitQualityFromName(quality));
-        fo.seed = seed;
+        setOptions(options, [&](const std::string& name, const std::string& text) {
+          return setRobotFitOption(&fo, name, text);
+        });
+        FitRequest request;
+        setOptions(fit_options, [&](const std::string& name, const std::string& text) {
+          return setFitRequestOption(&request, name, text);
+        });
+        fo.quality = request.quality;
+        fo.seed = request.seed;
         fo.repair =
             repairOptions(repair, weld.is_none() ? -1.0 : weld.cast<double>(), fill, alpha, offset);
         fo.name = urdf;
@@ -112,10 +115,10 @@ void bindRobotFit(py::module_& m) {
         d["seconds"] = r.seconds;
         return d;
       },
-      py::arg("urdf"), py::arg("budget"), py::arg("link_spheres"), py::arg("padding"),
-      py::arg("link_padding"), py::arg("package_paths"), py::arg("use_ros_package_path"),
-      py::arg("seed"), py::arg("quality"), py::arg("repair"), py::arg("weld_tolerance"),
+      py::arg("urdf"), py::arg("options"), py::arg("fit_options"), py::arg("package_paths"),
+      py::arg("use_ros_package_path"), py::arg("repair"), py::arg("weld_tolerance"),
       py::arg("fill_cavities"), py::arg("wrap_alpha"), py::arg("wrap_offset"));
+  m.def("_robot_option_table", [] { return optionTable(robotFitOptionTable()); });
 }
 
 }  // namespace sphereset::python

@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <charconv>
 #include <filesystem>
 #include <span>
 #include <stdexcept>
@@ -77,13 +78,27 @@ void bindRobotFit(py::module_& m);
 
 // Keyword options by the names of a library option table: each value that is not None is handed
 // to `set(name, text)` as its text (str()), so that the library parses and checks it exactly as
-// it does the command line's; its error is raised.
+// it does the command line's; its error is raised. A dict value is a keyed row's ({link: value}):
+// each item is handed over as KEY=VALUE.
 template <class Set>
 void setOptions(const py::dict& options, Set&& set) {
+  // A float as the shortest text that reads back as it ("-1", "0.5", "1e+200"), as the library
+  // writes a struct's value in its messages; other values as str() gives them.
+  auto text = [](const py::handle& v) -> std::string {
+    if (!py::isinstance<py::float_>(v)) return py::str(v);
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v.cast<double>());
+    return std::string(buf, r.ptr);
+  };
   for (const auto& [key, value] : options) {
     if (value.is_none()) continue;
-    const Status st = set(std::string(py::str(key)), std::string(py::str(value)));
-    if (!st) raise(st.error());
+    const std::string name = py::str(key);
+    if (py::isinstance<py::dict>(value)) {
+      for (const auto& [k, v] : py::reinterpret_borrow<py::dict>(value))
+        if (Status st = set(name, std::string(py::str(k)) + "=" + text(v)); !st) raise(st.error());
+      continue;
+    }
+    if (Status st = set(name, text(value)); !st) raise(st.error());
   }
 }
 

@@ -249,7 +249,7 @@ def test_same_spheres_as_cli(cli, tmp_path, rebound):
         *(["--rebound"] if rebound else []))
     r = ss.animate(ss.load_mesh(rest), ss.read_spheres(spheres), frames, rebound=rebound)
     summary = json.loads((out / "summary.json").read_text())
-    assert summary["weighting"] == "mean_value" and r.weighting == "mvc"
+    assert summary["weighting"] == "mvc" and r.weighting == "mvc"
     assert summary["frames_covered"] == r.frames_covered
     for i, fr in enumerate(summary["frames"]):
         np.testing.assert_array_equal(ss.read_spheres(out / fr["file"]), r.spheres[i])

@@ -20,19 +20,15 @@ CASES = json.loads((HOSTILE / "cases.json").read_text())
 STATUS = {"invalid_argument": (2, ss.InvalidArgumentError), "unreadable": (3, ss.UnreadableError),
           "invalid_data": (4, ss.InvalidDataError), "not_solid": (5, ss.NotSolidError),
           "write_failed": (6, ss.WriteError)}
-# Options outside the library's fit, evaluation, repair and tree tables: the animation's and the
-# robot's.
-EXTRA_FLAGS = {"fps": "--fps", "link_spheres": "--link-spheres"}
-REAL_OPTIONS = ("weld_tolerance", "wrap_alpha", "wrap_offset", "fps")
+TABLES = (ss._core._fit_option_table() + ss.eval_option_table()
+          + ss._core._repair_option_table() + ss._core._tree_option_table()
+          + ss._core._robot_option_table() + ss._core._animate_option_table()
+          + ss._core._skinned_load_option_table())
+ROWS = {row["name"]: row for row in TABLES}
 
 
 def flag(name):
-    tables = (ss._core._fit_option_table() + ss.eval_option_table()
-              + ss._core._repair_option_table() + ss._core._tree_option_table())
-    for row in tables:
-        if row["name"] == name:
-            return row["flag"].split(",")[-1]
-    return EXTRA_FLAGS[name]
+    return ROWS[name]["flag"].split(",")[-1]
 
 
 def command(case, files, out):
@@ -60,12 +56,15 @@ def command(case, files, out):
 
 
 def python_value(name, text):
-    if name == "link_spheres":
-        link, count = text.split("=")
-        return {link: int(count)}
-    if name in ("repair", "parents"):
+    """The keyword's value a Python user would pass for the typed text: a number of the row's
+    type, a name, or {link: value} for a keyed row."""
+    row = ROWS[name]
+    if row["key"] is not None:
+        key, value = text.rsplit("=", 1)
+        return {key: float(value) if row["type"] == "real" else int(value)}
+    if row["type"] == "choice":
         return text
-    return float(text) if name in REAL_OPTIONS else int(text)
+    return float(text) if row["type"] == "real" else int(text)
 
 
 def python_call(case, files):
@@ -88,7 +87,10 @@ def python_call(case, files):
         package = str(pathlib.Path(files[0]).parent)
         return lambda: ss.fit_robot(files[0], package_paths=[package], quality="fast", **opts)
     if op == "animate":
-        return lambda: ss.load_animation(files[0], **opts)
+        load = {k: v for k, v in opts.items() if k == "fps"}
+        move = {k: v for k, v in opts.items() if k != "fps"}
+        return lambda: ss.animate(None, ss.read_spheres(files[1]),
+                                  ss.load_animation(files[0], **load), **move)
     raise AssertionError(op)
 
 

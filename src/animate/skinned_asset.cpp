@@ -167,9 +167,8 @@ void nameNodes(const aiNode* node, std::map<std::string, const aiNode*>* out) {
 
 Expected<LoadedAnimation> loadAnimation(const std::string& path,
                                         const SkinnedLoadOptions& options) {
-  if (!(options.fps >= 0.0) || !std::isfinite(options.fps))
-    return Error{ErrorCode::kInvalidArgument,
-                 "fps must be a positive number, or 0 for the clip's keyframe times"};
+  if (Status st = checkTableValue(skinnedLoadOptionTable(), "animation", "fps", options.fps); !st)
+    return st.error();
   if (Status st = detail::checkBeforeAssimp(path); !st) return st.error();
   Assimp::Importer importer;
   importer.SetIOHandler(new detail::CompanionIOSystem(path));  // owned by the importer

@@ -97,8 +97,9 @@ Status checkEvalOptions(const EvalOptions& o) {
                                                     {"surface_max_depth", o.surface_max_depth},
                                                     {"interior_max_depth", o.interior_max_depth}};
   for (const auto& [name, value] : values)
-    if (auto v = parseTableOption(kEvalOptions, "evaluation", name, std::to_string(value)); !v)
-      return v.error();
+    if (Status st = checkTableValue(kEvalOptions, "evaluation", name, static_cast<double>(value));
+        !st)
+      return st;
   if (Status st = limits::checkRange("poll_interval", o.poll_interval, 0.0, 3600.0); !st) return st;
   if (o.up_axis < 0 || o.up_axis > 2)
     return Error{ErrorCode::kInvalidArgument,

@@ -14,14 +14,6 @@ namespace {
 
 constexpr const char* kRepairModes[] = {"auto", "off"};
 
-// The shortest text that reads back as `v` ("1e+200", "0.5", "nan"): the value a user would
-// have typed, checked against the row as typed text is.
-std::string shortestText(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
 constexpr OptionSpec kRepairOptions[] = {
     {"repair", "--repair", OptionType::kChoice, 0, 0, kRepairModes, "auto",
      "auto: make a solid of a broken mesh (weld, cap holes, unite overlapping shells, or wrap) "
@@ -78,8 +70,7 @@ Status checkRepairOptions(const RepairOptions& o) {
       {"wrap_alpha", o.wrap_alpha},
       {"wrap_offset", o.wrap_offset}};
   for (const auto& [name, value] : values)
-    if (auto v = parseTableOption(kRepairOptions, "repair", name, shortestText(value)); !v)
-      return v.error();
+    if (Status st = checkTableValue(kRepairOptions, "repair", name, value); !st) return st;
   return {};
 }
 

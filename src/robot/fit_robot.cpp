@@ -259,31 +259,15 @@ Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) 
     return std::any_of(robot.links.begin(), robot.links.end(),
                        [&](const RobotLink& l) { return l.name == name; });
   };
-  if (Status st = limits::checkRange(o.name + ": budget", o.budget, 0, limits::kMaxSpheres); !st)
-    return st.error();
-  if (Status st = limits::checkRange(o.name + ": default_link_spheres", o.default_link_spheres, 1,
-                                     limits::kMaxSpheres);
-      !st)
-    return st.error();
-  if (!(o.padding >= 0.0) || !std::isfinite(o.padding))
-    return Error{ErrorCode::kInvalidArgument, o.name + ": padding must be a finite distance >= 0"};
-  for (const auto& [link, count] : o.link_spheres) {
+  if (Status st = checkRobotFitOptions(o); !st) return st.error();
+  for (const auto& [link, count] : o.link_spheres)
     if (!isLink(link))
       return Error{ErrorCode::kInvalidArgument,
                    o.name + ": link_spheres names '" + link + "', not a link of " + robot.name};
-    if (Status st = limits::checkRange(o.name + ": link_spheres of '" + link + "'", count, 0,
-                                       limits::kMaxSpheres);
-        !st)
-      return st.error();
-  }
-  for (const auto& [link, padding] : o.link_padding) {
+  for (const auto& [link, padding] : o.link_padding)
     if (!isLink(link))
       return Error{ErrorCode::kInvalidArgument,
                    o.name + ": link_padding names '" + link + "', not a link of " + robot.name};
-    if (!(padding >= 0.0) || !std::isfinite(padding))
-      return Error{ErrorCode::kInvalidArgument,
-                   o.name + ": link_padding of '" + link + "' must be a finite distance >= 0"};
-  }
   auto jobs = prepareLinks(o, robot);
   if (!jobs) return jobs.error();
   for (Job& j : *jobs) {

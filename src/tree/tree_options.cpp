@@ -62,8 +62,7 @@ Status checkTreeOptions(const TreeOptions& o) {
   // Each number as its text, through the same parser as every front door's.
   for (const auto& [name, value] : {std::pair<const char*, int>{"branching", o.branching},
                                     std::pair<const char*, int>{"depth", o.depth}})
-    if (auto v = parseTableOption(kTreeOptions, "tree", name, std::to_string(value)); !v)
-      return v.error();
+    if (Status st = checkTableValue(kTreeOptions, "tree", name, value); !st) return st;
   if (o.max_iterations < 1 || o.optimizer_evaluations < 0)
     return Error{ErrorCode::kInvalidArgument,
                  "tree max_iterations must be at least 1 and optimizer_evaluations at least 0"};

@@ -50,8 +50,18 @@ bool wholeInteger(const std::string& text, T* out) {
 
 }  // namespace
 
-Expected<OptionValue> parseOption(const OptionSpec& spec, const std::string& text) {
+Expected<OptionValue> parseOption(const OptionSpec& spec, const std::string& full_text) {
   OptionValue v;
+  std::string text = full_text;
+  if (spec.key) {
+    const size_t eq = full_text.rfind('=');
+    if (eq == std::string::npos || eq == 0)
+      return Error{ErrorCode::kInvalidArgument, std::string(spec.name) + " '" + full_text +
+                                                    "': expected " + spec.key + "=VALUE, VALUE " +
+                                                    expectation(spec)};
+    v.key = full_text.substr(0, eq);
+    text = full_text.substr(eq + 1);
+  }
   bool ok = false;
   switch (spec.type) {
     case OptionType::kInteger:
@@ -75,7 +85,9 @@ Expected<OptionValue> parseOption(const OptionSpec& spec, const std::string& tex
   }
   if (ok) return v;
   return Error{ErrorCode::kInvalidArgument,
-               std::string(spec.name) + " '" + text + "': expected " + expectation(spec)};
+               std::string(spec.name) + " '" + full_text + "': expected " +
+                   (spec.key ? std::string(spec.key) + "=VALUE, VALUE " : std::string()) +
+                   expectation(spec)};
 }
 
 std::string optionNames(std::span<const OptionSpec> table) {
@@ -99,6 +111,21 @@ Expected<TableValue> parseTableOption(std::span<const OptionSpec> table, const c
   auto v = parseOption(*spec, text);
   if (!v) return v.error();
   return TableValue{spec, std::move(v).value()};
+}
+
+Status checkTableValue(std::span<const OptionSpec> table, const char* what, const std::string& name,
+                       double value, const std::string& key) {
+  // Whole numbers for integer rows as a user types them ("10000000", not "1e+07").
+  const OptionSpec* spec = findOption(table, name);
+  const bool whole = spec && spec->type != OptionType::kReal && std::isfinite(value) &&
+                     value == std::floor(value) && std::fabs(value) < 9e18;
+  char buf[32];
+  const auto r = whole ? std::to_chars(buf, buf + sizeof buf, static_cast<int64_t>(value))
+                       : std::to_chars(buf, buf + sizeof buf, value);
+  std::string text(buf, r.ptr);
+  if (!key.empty()) text = key + "=" + text;
+  if (auto v = parseTableOption(table, what, name, text); !v) return v.error();
+  return {};
 }
 
 }  // namespace sphereset

@@ -280,7 +280,7 @@ cli_test(robot_skip_link 0 ARGS robot ${robot}/three_link.urdf --package-path ${
          STDERR "link1 +0 - +0 +0.0000 +skipped.*tool +0 - +0 +0.0000 +skipped")
 cli_test(robot_fractional_count 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres link1=2.5 -o ${work}/never35.yml -q
-         STDERR "--link-spheres link1=2.5: expected LINK=VALUE .a whole number" FORBID ${work}/never35.yml)
+         STDERR "link_spheres .link1=2.5.: expected LINK=VALUE, VALUE an integer from 0 to 1000000" FORBID ${work}/never35.yml)
 
 # eval with the URDF as MESH measures the link's geometry as placed (link2's mesh has an origin
 # and a scale, so the raw file would not be covered).

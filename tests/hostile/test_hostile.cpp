@@ -112,7 +112,15 @@ Status queryCase(const std::vector<std::string>& in, const nlohmann::json& point
   return statusOf(pointDistance(*tree, p));
 }
 
-// A URDF loaded with its package folder beside it, then fitted with LINK=COUNT options.
+// "KEY=VALUE" as the pair.
+std::pair<std::string, std::string> keyed(const nlohmann::json& item) {
+  const std::string text = item.get<std::string>();
+  const size_t eq = text.rfind('=');
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+// A URDF loaded with its package folder beside it, then fitted with the options set in the
+// struct (not through the table's setter: fitRobot's own check is what is tested).
 Status robotCase(const std::vector<std::string>& in, const nlohmann::json& opts) {
   RobotLoadOptions lo;
   lo.package_paths = {std::filesystem::path(in[0]).parent_path().string()};
@@ -121,12 +129,33 @@ Status robotCase(const std::vector<std::string>& in, const nlohmann::json& opts)
   RobotFitOptions fo;
   fo.name = in[0];
   fo.quality = FitQuality::kFast;
+  auto number = [&](const char* name) { return std::stod(opts.at(name).get<std::string>()); };
+  if (opts.contains("budget")) fo.budget = static_cast<int>(number("budget"));
+  if (opts.contains("padding")) fo.padding = number("padding");
   if (opts.contains("link_spheres")) {
-    const std::string item = opts.at("link_spheres");
-    const size_t eq = item.find('=');
-    fo.link_spheres[item.substr(0, eq)] = std::stoi(item.substr(eq + 1));
+    const auto [link, count] = keyed(opts.at("link_spheres"));
+    fo.link_spheres[link] = std::stoi(count);
+  }
+  if (opts.contains("link_padding")) {
+    const auto [link, padding] = keyed(opts.at("link_padding"));
+    fo.link_padding[link] = std::stod(padding);
   }
   return statusOf(fitRobot(*robot, fo));
+}
+
+// The asset's clip read, then its bind pose's spheres moved through it (options set in the
+// structs, checked by loadAnimation and animateSpheres).
+Status animateCase(const std::vector<std::string>& in, const nlohmann::json& opts) {
+  SkinnedLoadOptions so;
+  if (opts.contains("fps")) so.fps = std::stod(opts.at("fps").get<std::string>());
+  auto anim = loadAnimation(in[0], so);
+  if (!anim) return anim.error();
+  auto spheres = readSpheres(in[1]);
+  if (!spheres) return spheres.error();
+  AnimateOptions o;
+  if (opts.contains("bone_neighbours"))
+    o.bone_neighbours = std::stoi(opts.at("bone_neighbours").get<std::string>());
+  return statusOf(animateSpheres(anim->asset.rest, *spheres, anim->frames, o, &anim->asset.skin));
 }
 
 Status runCase(const nlohmann::json& c) {
@@ -144,11 +173,7 @@ Status runCase(const nlohmann::json& c) {
   if (op == "eval") return evalCase(in, opts);
   if (op == "query") return queryCase(in, c.at("point"));
   if (op == "robot") return robotCase(in, opts);
-  if (op == "animate") {
-    SkinnedLoadOptions so;
-    if (opts.contains("fps")) so.fps = std::stod(opts.at("fps").get<std::string>());
-    return statusOf(loadAnimation(in[0], so));
-  }
+  if (op == "animate") return animateCase(in, opts);
   ADD_FAILURE() << "unknown op " << op;
   return {};
 }

@@ -5,9 +5,11 @@
 
 #include <string>
 
+#include "sphereset/animate.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/repair.hpp"
+#include "sphereset/robot_fit.hpp"
 #include "sphereset/tree.hpp"
 
 namespace sphereset {
@@ -50,6 +52,48 @@ TEST(OptionTables, SettersAndCheckersShareTheRowsMessages) {
   FitRequest f;
   ASSERT_TRUE(setFitRequestOption(&f, "quality", "fast").ok());
   EXPECT_EQ(f.quality, FitQuality::kFast);
+}
+
+TEST(OptionTables, KeyedRowsTakeKeyEqualsValue) {
+  RobotFitOptions o;
+  ASSERT_TRUE(setRobotFitOption(&o, "link_spheres", "link1=4").ok());
+  ASSERT_TRUE(setRobotFitOption(&o, "link_spheres", "a=b=0").ok());  // split at the last '='
+  ASSERT_TRUE(setRobotFitOption(&o, "link_padding", "link1=0.5").ok());
+  EXPECT_EQ(o.link_spheres.at("link1"), 4);
+  EXPECT_EQ(o.link_spheres.at("a=b"), 0);
+  EXPECT_EQ(o.link_padding.at("link1"), 0.5);
+  expectRefused(setRobotFitOption(&o, "link_spheres", "link1"),
+                "link_spheres 'link1': expected LINK=VALUE, VALUE an integer from 0 to 1000000");
+  expectRefused(setRobotFitOption(&o, "link_spheres", "=3"),
+                "link_spheres '=3': expected LINK=VALUE, VALUE an integer from 0 to 1000000");
+  expectRefused(
+      setRobotFitOption(&o, "link_spheres", "link1=2.5"),
+      "link_spheres 'link1=2.5': expected LINK=VALUE, VALUE an integer from 0 to 1000000");
+  EXPECT_TRUE(checkRobotFitOptions(o).ok());
+  o.link_padding["l"] = -1.0;
+  expectRefused(checkRobotFitOptions(o),
+                "link_padding 'l=-1': expected LINK=VALUE, VALUE a finite number >= 0");
+  RobotFitOptions big;
+  big.budget = 10000000;  // an integer row's value is written as a user types it
+  expectRefused(checkRobotFitOptions(big),
+                "budget '10000000': expected an integer from 0 to 1000000");
+}
+
+TEST(OptionTables, AnimationRows) {
+  AnimateOptions o;
+  EXPECT_EQ(o.weighting, CentreWeighting::kAuto);
+  ASSERT_TRUE(setAnimateOption(&o, "weighting", "bones").ok());
+  EXPECT_EQ(o.weighting, CentreWeighting::kBones);
+  EXPECT_STREQ(centreWeightingName(o.weighting), "bones");
+  expectRefused(setAnimateOption(&o, "weighting", "nearest"),
+                "weighting 'nearest': expected auto, mvc or bones");
+  o.bone_neighbours = 0;
+  expectRefused(checkAnimateOptions(o), "bone_neighbours '0': expected an integer from 1 to 4096");
+  SkinnedLoadOptions so;
+  ASSERT_TRUE(setSkinnedLoadOption(&so, "fps", "24").ok());
+  EXPECT_EQ(so.fps, 24.0);
+  expectRefused(setSkinnedLoadOption(&so, "fps", "inf"),
+                "fps 'inf': expected a finite number >= 0");
 }
 
 }  // namespace

@@ -1,0 +1,54 @@
+"""Every front door's keywords are the rows of the library's option tables: each row of a table
+is a keyword of the Python function that takes it, with the row's default (None where the row's
+default comes from elsewhere, e.g. a quality preset)."""
+
+import inspect
+
+import pytest
+
+import sphereset as ss
+from sphereset import _sphereset as core
+
+DOORS = [
+    (ss.fit, core._fit_option_table, ()),
+    (ss.tree, core._fit_option_table, ("n",)),
+    (ss.evaluate, core._eval_option_table, ()),
+    (ss.solid, core._repair_option_table, ()),
+    (ss.fit_robot, core._robot_option_table, ()),
+    (ss.fit_robot, core._fit_option_table,
+     ("n", "points", "iterations", "restarts", "decimation", "padding", "optimizer", "init",
+      "method")),
+    (ss.animate, core._animate_option_table, ()),
+    (ss.load_animation, core._skinned_load_option_table, ()),
+]
+
+
+def default_of(row):
+    """The row's default as a Python value, or None when it is not a literal."""
+    text = row["default"]
+    if row["key"] is not None:
+        return {}
+    if row["type"] == "choice":
+        return text
+    try:
+        return float(text) if row["type"] == "real" else int(text)
+    except ValueError:
+        return None
+
+
+@pytest.mark.parametrize("function,table,skip", DOORS,
+                         ids=[f"{d[0].__name__}-{d[1].__name__}" for d in DOORS])
+def test_keywords_are_the_rows(function, table, skip):
+    params = inspect.signature(function).parameters
+    for row in table():
+        if row["name"] in skip:
+            continue
+        assert row["name"] in params, f"{function.__name__} lacks the keyword {row['name']}"
+        given = params[row["name"]].default
+        want = default_of(row)
+        if given is None or want is None:
+            continue  # the library's default (None keeps it) or a default that is not a literal
+        if isinstance(want, dict):
+            assert given is None or given == {}, row["name"]
+        else:
+            assert given == want, (row["name"], given, want)

@@ -1,0 +1,95 @@
+// The whole-robot fit's options as one table (robot_fit.hpp): the command line's flags of
+// `sphereset robot` and the keywords of Python's fit_robot are made from it, and the library
+// parses and checks what users type through it. Per-link rows are keyed by the link's name.
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "sphereset/limits.hpp"
+#include "sphereset/robot_fit.hpp"
+
+namespace sphereset {
+namespace {
+
+constexpr double kNoLimit = std::numeric_limits<double>::max();
+
+constexpr OptionSpec kRobotOptions[] = {
+    {"budget",
+     "--budget",
+     OptionType::kInteger,
+     0,
+     limits::kMaxSpheres,
+     {},
+     "0",
+     "Spheres over the whole robot, sphere primitives included, split over the links by what "
+     "lowers the total outside volume most (0: default_link_spheres per link)"},
+    {"default_link_spheres",
+     "--default-link-spheres",
+     OptionType::kInteger,
+     1,
+     limits::kMaxSpheres,
+     {},
+     "8",
+     "Spheres per link when no budget is given"},
+    {"link_spheres",
+     "--link-spheres",
+     OptionType::kInteger,
+     0,
+     limits::kMaxSpheres,
+     {},
+     "none",
+     "LINK=N: the link's count, fixed (0 skips the link); repeatable",
+     "LINK"},
+    {"padding",
+     "--padding",
+     OptionType::kReal,
+     0,
+     kNoLimit,
+     {},
+     "0",
+     "Added to every radius (absolute units)"},
+    {"link_padding",
+     "--link-padding",
+     OptionType::kReal,
+     0,
+     kNoLimit,
+     {},
+     "none",
+     "LINK=R: the link's padding instead; repeatable",
+     "LINK"},
+};
+
+}  // namespace
+
+std::span<const OptionSpec> robotFitOptionTable() { return kRobotOptions; }
+
+Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std::string& text) {
+  auto parsed = parseTableOption(kRobotOptions, "robot", name, text);
+  if (!parsed) return parsed.error();
+  const OptionValue& v = parsed->value;
+  const std::string_view n = parsed->spec->name;
+  if (n == "budget") o->budget = static_cast<int>(v.integer);
+  if (n == "default_link_spheres") o->default_link_spheres = static_cast<int>(v.integer);
+  if (n == "link_spheres") o->link_spheres[v.key] = static_cast<int>(v.integer);
+  if (n == "padding") o->padding = v.real;
+  if (n == "link_padding") o->link_padding[v.key] = v.real;
+  return {};
+}
+
+Status checkRobotFitOptions(const RobotFitOptions& o) {
+  // Each number as its text, through the same parser as every front door's.
+  const std::pair<const char*, double> values[] = {{"budget", o.budget},
+                                                   {"default_link_spheres", o.default_link_spheres},
+                                                   {"padding", o.padding}};
+  for (const auto& [name, value] : values)
+    if (Status st = checkTableValue(kRobotOptions, "robot", name, value); !st) return st;
+  for (const auto& [link, count] : o.link_spheres)
+    if (Status st = checkTableValue(kRobotOptions, "robot", "link_spheres", count, link); !st)
+      return st;
+  for (const auto& [link, padding] : o.link_padding)
+    if (Status st = checkTableValue(kRobotOptions, "robot", "link_padding", padding, link); !st)
+      return st;
+  return {};
+}
+
+}  // namespace sphereset
