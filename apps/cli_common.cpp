@@ -149,6 +149,18 @@ std::string repairLine(const RepairResult& r) {
   return s + buf;
 }
 
+nlohmann::json fieldsJson(const std::vector<ResultField>& fields) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const ResultField& f : fields) {
+    const std::string name = f.name;
+    const size_t dot = name.find('.');
+    nlohmann::json& slot =
+        dot == std::string::npos ? j[name] : j[name.substr(0, dot)][name.substr(dot + 1)];
+    std::visit([&](const auto& v) { slot = v; }, f.value);
+  }
+  return j;
+}
+
 std::vector<std::pair<std::string, std::string>> TableArgs::given() const {
   std::vector<std::pair<std::string, std::string>> out;
   for (const auto& [name, opt] : options) {

@@ -22,6 +22,7 @@
 #include "sphereset/mesh.hpp"
 #include "sphereset/options.hpp"
 #include "sphereset/repair.hpp"
+#include "sphereset/result_fields.hpp"
 #include "sphereset/robot.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/status.hpp"
@@ -55,6 +56,9 @@ int exitFor(const Error& e);
 int fail(const Error& e);
 
 nlohmann::json vec(const Vec3& v);
+
+// A result's fields (result_fields.hpp) as a JSON object; "group.name" nests.
+nlohmann::json fieldsJson(const std::vector<ResultField>& fields);
 
 // The mesh argument and how a mesh that is not a clean solid is made one (repair.hpp).
 struct TableArgs {

@@ -29,28 +29,9 @@ struct EvalArgs {
   bool json = false;
 };
 
-nlohmann::json evalJson(const EvalResult& r, size_t count, bool original) {
-  nlohmann::json j = {{"spheres", count},
-                      {"mesh_volume", r.mesh_volume},
-                      {"bbox_diagonal", r.bbox_diagonal},
-                      {"er_sum", r.er_sum},
-                      {"er_union", r.er_union},
-                      {"er_union_stderr", r.er_union_stderr},
-                      {"surface_covered", r.surface_covered},
-                      {"max_surface_gap", r.max_surface_gap},
-                      {"uncovered_triangles", r.uncovered_triangles},
-                      {"surface_uncertified_area", r.surface_uncertified_area},
-                      {"interior_covered", r.interior_covered},
-                      {"max_interior_gap", r.max_interior_gap},
-                      {"proximity_error", r.proximity_error},
-                      {"shadow_error_sky", r.shadow_error_sky},
-                      {"shadow_error_lights", r.shadow_error_lights},
-                      {"seconds", r.seconds}};
-  if (original) {
-    j["original_covered"] = r.original_covered;
-    j["max_original_gap"] = r.max_original_gap;
-    j["original_uncovered_triangles"] = r.original_uncovered_triangles;
-  }
+nlohmann::json evalJson(const EvalResult& r, size_t count) {
+  nlohmann::json j = fieldsJson(evalResultFields(r));
+  j["spheres"] = count;
   return j;
 }
 
@@ -151,7 +132,7 @@ int runEval(EvalArgs a) {
       return fail(Error{evaluated.error().code, spheres_path + ": " + evaluated.error().message});
     const EvalResult& r = *evaluated;
     if (a.json) {
-      nlohmann::json j = evalJson(r, spheres.size(), eo.original != nullptr);
+      nlohmann::json j = evalJson(r, spheres.size());
       if (is_tree) j["level"] = l;
       levels.push_back(j);
     } else {

@@ -26,42 +26,18 @@ struct FitCommandArgs {
 // The summary printed by --json.
 nlohmann::json fitJson(const FitArgs& a, const FitOptions& fo, const FitResult& r,
                        const EvalResult& ev, const RepairResult& rep) {
-  return {{"mesh", a.mesh.path},
-          {"repair", repairJson(rep)},
-          {"output", a.out_path},
-          {"spheres", r.spheres.size()},
-          {"er_sum", r.energy / ev.mesh_volume},
-          {"er_sum_before_bounding", r.energy_before_bounding / ev.mesh_volume},
-          {"er_union", ev.er_union},
-          {"er_union_stderr", ev.er_union_stderr},
-          {"surface_covered", ev.surface_covered},
-          {"interior_covered", ev.interior_covered},
-          {"original_covered", ev.original_covered},
-          {"points", r.points},
-          {"interior_points", r.interior_points},
-          {"rounds", r.iterations},
-          {"converged", r.converged},
-          {"teleports", r.teleports},
-          {"teleports_kept", r.teleports_accepted},
-          {"sov_queries", r.sov_queries},
-          {"sov_queries_culled", r.sov_queries_culled},
-          {"optimizer_queries", r.optimizer_queries},
-          {"bounding_enlarged", r.bounding_enlarged},
-          {"bounding_pieces", r.bounding_pieces},
-          {"bounding_queries", r.bounding_queries},
-          {"bounding_interior_cells", r.bounding_interior_cells},
-          {"shrink_passes", r.shrink_passes},
-          {"idle_teleports", r.idle_teleports},
-          {"decimated", r.decimated},
-          {"restart", r.restart},
-          {"seconds",
-           {{"total", r.seconds.total},
-            {"sampling", r.seconds.sampling},
-            {"assignment", r.seconds.assignment},
-            {"update", r.seconds.update},
-            {"teleport", r.seconds.teleport},
-            {"bounding", r.seconds.bounding}}},
-          {"seed", fo.seed}};
+  nlohmann::json j = fieldsJson(fitResultFields(r, ev.mesh_volume));
+  j["mesh"] = a.mesh.path;
+  j["repair"] = repairJson(rep);
+  j["output"] = a.out_path;
+  j["spheres"] = r.spheres.size();
+  j["seed"] = fo.seed;
+  // The fit's own check (fitCheckEvalOptions): the union's E_r and the certificates.
+  const nlohmann::json e = fieldsJson(evalResultFields(ev));
+  for (const char* name :
+       {"er_union", "er_union_stderr", "surface_covered", "interior_covered", "original_covered"})
+    j[name] = e.at(name);
+  return j;
 }
 
 // The summary on stderr unless --quiet.

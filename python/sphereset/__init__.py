@@ -26,6 +26,7 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _sphereset as _core
+from ._results import EvalResult, FitResult
 from ._sphereset import (  # noqa: F401  (re-exported)
     Error,
     InvalidArgumentError,
@@ -165,51 +166,6 @@ def check(mesh: Union[Mesh, PathLike], *, repair: Union[str, bool] = "auto",
                        shells=_core._shells(mesh), repair=rep, error=err)
 
 
-@dataclass
-class FitResult:
-    """A fitted sphere set and the fit's diagnostics (fit.hpp's FitResult).
-
-    ``spheres`` is (n, 4) float64 rows x, y, z, r; ``outside_volume`` the exact outside volume
-    of each sphere; ``er_sum`` the paper's E_r (Σ outside volume / mesh volume, of the repaired
-    solid's volume when the mesh was repaired); ``seconds`` the timings by phase; ``options``
-    the options the fit ran with (after the quality preset); ``repair`` what the repair did.
-    """
-
-    spheres: np.ndarray
-    outside_volume: np.ndarray
-    energy_history: np.ndarray
-    energy: float
-    energy_before_bounding: float
-    mesh_volume: float
-    er_sum: float
-    er_sum_before_bounding: float
-    rounds: int
-    converged: bool
-    teleports: int
-    teleports_kept: int
-    points: int
-    interior_points: int
-    sov_queries: int
-    sov_queries_culled: int
-    optimizer_queries: int
-    bounding_enlarged: int
-    bounding_pieces: int
-    bounding_queries: int
-    bounding_interior_cells: int
-    shrink_passes: int
-    decimated: int
-    idle_teleports: int
-    restart: int
-    seconds: Dict[str, float]
-    options: Dict[str, Any]
-    repair: Dict[str, Any]
-
-    def to_dict(self) -> Dict[str, Any]:
-        """The fields as a dict (arrays as lists), e.g. for JSON."""
-        return {k: (v.tolist() if isinstance(v, np.ndarray) else v)
-                for k, v in dataclasses.asdict(self).items()}
-
-
 def fit(mesh: MeshLike, n: int = 32, *, seed: int = 1, quality: str = "default",
         padding: float = 0.0, points: int = 0, iterations: Optional[int] = None,
         restarts: Optional[int] = None, decimation: Optional[float] = None,
@@ -238,46 +194,6 @@ def fit(mesh: MeshLike, n: int = 32, *, seed: int = 1, quality: str = "default",
               wrap_alpha=wrap_alpha, wrap_offset=wrap_offset)
     d = _core._fit(s, options, progress)
     return FitResult(**d)
-
-
-@dataclass
-class EvalResult:
-    """How tightly a sphere set bounds a solid (evaluate.hpp's EvalResult, as
-    ``sphereset eval --json`` reports it): E_r summed (exact) and of the union (Monte Carlo,
-    with its standard error), certified surface/interior/original coverage with the largest gaps
-    (fractions of the bounding-box diagonal), proximity and shadow errors."""
-
-    spheres: int
-    mesh_volume: float
-    bbox_diagonal: float
-    er_sum: float
-    er_union: float
-    er_union_stderr: float
-    outside_volume: np.ndarray
-    surface_covered: bool
-    max_surface_gap: float
-    surface_uncertified_area: float
-    uncovered_triangles: int
-    original_covered: bool
-    max_original_gap: float
-    original_uncovered_triangles: int
-    interior_covered: bool
-    max_interior_gap: float
-    interior_uncertified_cells: int
-    proximity_error: float
-    shadow_error_sky: float
-    shadow_error_lights: float
-    seconds: float
-    repair: Dict[str, Any]
-
-    @property
-    def covered(self) -> bool:
-        """Surface, interior and original triangles all certified covered."""
-        return self.surface_covered and self.interior_covered and self.original_covered
-
-    def to_dict(self) -> Dict[str, Any]:
-        return {k: (v.tolist() if isinstance(v, np.ndarray) else v)
-                for k, v in dataclasses.asdict(self).items()}
 
 
 def evaluate(mesh: MeshLike, spheres: Any, *, seed: Optional[int] = None,

@@ -2,6 +2,9 @@
 // progress callback, and cancellation by Ctrl-C.
 #include <memory>
 #include <span>
+#include <string>
+#include <type_traits>
+#include <variant>
 
 #include "fit_args.hpp"
 #include "solid.hpp"
@@ -58,44 +61,58 @@ void installProgress(FitOptions* fo, const py::object& progress) {
   };
 }
 
-py::dict fitResultDict(const FitResult& r, double volume) {
+py::dict fieldsDict(const std::vector<ResultField>& fields) {
   py::dict d;
-  d["spheres"] = spheresToArray(r.spheres);
-  d["outside_volume"] = py::array_t<double>(static_cast<py::ssize_t>(r.outside_volume.size()),
-                                            r.outside_volume.data());
-  d["energy_history"] = py::array_t<double>(static_cast<py::ssize_t>(r.energy_history.size()),
-                                            r.energy_history.data());
-  d["energy"] = r.energy;
-  d["energy_before_bounding"] = r.energy_before_bounding;
-  d["mesh_volume"] = volume;
-  d["er_sum"] = r.energy / volume;
-  d["er_sum_before_bounding"] = r.energy_before_bounding / volume;
-  d["rounds"] = r.iterations;
-  d["converged"] = r.converged;
-  d["teleports"] = r.teleports;
-  d["teleports_kept"] = r.teleports_accepted;
-  d["points"] = r.points;
-  d["interior_points"] = r.interior_points;
-  d["sov_queries"] = r.sov_queries;
-  d["sov_queries_culled"] = r.sov_queries_culled;
-  d["optimizer_queries"] = r.optimizer_queries;
-  d["bounding_enlarged"] = r.bounding_enlarged;
-  d["bounding_pieces"] = r.bounding_pieces;
-  d["bounding_queries"] = r.bounding_queries;
-  d["bounding_interior_cells"] = r.bounding_interior_cells;
-  d["shrink_passes"] = r.shrink_passes;
-  d["decimated"] = r.decimated;
-  d["idle_teleports"] = r.idle_teleports;
-  d["restart"] = r.restart;
-  py::dict s;
-  s["total"] = r.seconds.total;
-  s["sampling"] = r.seconds.sampling;
-  s["assignment"] = r.seconds.assignment;
-  s["update"] = r.seconds.update;
-  s["teleport"] = r.seconds.teleport;
-  s["bounding"] = r.seconds.bounding;
-  d["seconds"] = s;
+  for (const ResultField& f : fields) {
+    py::object value = std::visit(
+        [](const auto& v) -> py::object {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, std::vector<double>>)
+            return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+          else
+            return py::cast(v);
+        },
+        f.value);
+    const std::string name = f.name;
+    const size_t dot = name.find('.');
+    if (dot == std::string::npos) {
+      d[py::str(name)] = value;
+      continue;
+    }
+    const py::str group(name.substr(0, dot));
+    if (!d.contains(group)) d[group] = py::dict();
+    py::dict members = d[group];
+    members[py::str(name.substr(dot + 1))] = value;
+  }
   return d;
+}
+
+py::dict fitResultDict(const FitResult& r, double volume) {
+  py::dict d = fieldsDict(fitResultFields(r, volume));
+  d["spheres"] = spheresToArray(r.spheres);
+  return d;
+}
+
+// The fields of a result kind without values: name, type (bool, int, float, array) and help,
+// from which scripts/update_stubs.sh writes the Python result classes.
+py::list resultSchema(const std::vector<ResultField>& fields) {
+  py::list rows;
+  for (const ResultField& f : fields) {
+    py::dict row;
+    row["name"] = f.name;
+    row["type"] = std::visit(
+        [](const auto& v) -> const char* {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, bool>) return "bool";
+          if constexpr (std::is_same_v<T, int64_t>) return "int";
+          if constexpr (std::is_same_v<T, double>) return "float";
+          return "array";
+        },
+        f.value);
+    row["help"] = f.help;
+    rows.append(row);
+  }
+  return rows;
 }
 
 namespace {
@@ -146,6 +163,14 @@ void bindFit(py::module_& m) {
       "_check_fit_options", [](const py::dict& options) { fitRequest(options); },
       py::arg("options"));
   m.def("_fit_option_table", [] { return optionTable(fitRequestOptions()); });
+  m.def(
+      "_result_schema",
+      [](const std::string& kind) {
+        if (kind == "fit") return resultSchema(fitResultFields(FitResult{}, 1.0));
+        if (kind == "eval") return resultSchema(evalResultFields(EvalResult{}));
+        raise(ErrorCode::kInvalidArgument, "no result kind '" + kind + "' (expected fit or eval)");
+      },
+      py::arg("kind"));
 }
 
 }  // namespace sphereset::python

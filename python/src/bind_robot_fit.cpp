@@ -11,24 +11,6 @@
 namespace sphereset::python {
 namespace {
 
-py::dict evalDict(const EvalResult& r) {
-  py::dict d;
-  d["er_sum"] = r.er_sum;
-  d["mesh_volume"] = r.mesh_volume;
-  d["bbox_diagonal"] = r.bbox_diagonal;
-  d["outside_volume"] = py::array_t<double>(static_cast<py::ssize_t>(r.outside_volume.size()),
-                                            r.outside_volume.data());
-  d["surface_covered"] = r.surface_covered;
-  d["max_surface_gap"] = r.max_surface_gap;
-  d["uncovered_triangles"] = r.uncovered_triangles;
-  d["original_covered"] = r.original_covered;
-  d["max_original_gap"] = r.max_original_gap;
-  d["interior_covered"] = r.interior_covered;
-  d["max_interior_gap"] = r.max_interior_gap;
-  d["seconds"] = r.seconds;
-  return d;
-}
-
 py::dict linkDict(const RobotLinkFit& j) {
   py::dict d;
   d["link"] = j.link;
@@ -40,7 +22,7 @@ py::dict linkDict(const RobotLinkFit& j) {
   d["covered"] = j.covered;
   d["files"] = j.files;
   d["repair"] = j.fitted ? py::object(repairDict(j.repair)) : py::object(py::none());
-  d["eval"] = j.fitted ? py::object(evalDict(j.eval)) : py::object(py::none());
+  d["eval"] = j.fitted ? py::object(fieldsDict(evalResultFields(j.eval))) : py::object(py::none());
   d["er_sum"] = j.fitted ? j.eval.er_sum : 0.0;
   d["outside_volume"] = j.outside_volume;
   d["padding"] = j.padding;

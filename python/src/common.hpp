@@ -17,6 +17,7 @@
 
 #include "sphereset/mesh.hpp"
 #include "sphereset/options.hpp"
+#include "sphereset/result_fields.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/status.hpp"
@@ -101,6 +102,10 @@ void setOptions(const py::dict& options, Set&& set) {
     if (Status st = set(name, text(value)); !st) raise(st.error());
   }
 }
+
+// A result's fields (result_fields.hpp) as a dict: numbers, bools, float64 arrays; "group.name"
+// nests in a dict of its own.
+py::dict fieldsDict(const std::vector<ResultField>& fields);
 
 // An option table as Python sees it: one dict per row (name, flag, type, min, max, choices,
 // default, help).

@@ -43,6 +43,17 @@ def test_same_spheres_as_cli(cli, tmp_path, args):
     assert r.rounds == summary["rounds"] and r.points == summary["points"]
     assert r.er_sum == pytest.approx(summary["er_sum"], rel=1e-12)
     assert r.teleports == summary["teleports"] and r.restart == summary["restart"]
+    # One field list (result_fields.hpp) behind both: every field, same name and value.
+    for row in ss._core._result_schema("fit"):
+        name = row["name"].split(".")[0]
+        if name == "seconds":
+            assert set(summary[name]) == set(r.seconds)
+            continue
+        mine = getattr(r, name)
+        if isinstance(mine, np.ndarray):
+            assert np.array_equal(mine, np.array(summary[name])), name
+        else:
+            assert mine == pytest.approx(summary[name], rel=1e-12), name
 
 
 def test_same_spheres_as_cli_after_repair(cli, tmp_path):

@@ -1,0 +1,31 @@
+// One definition of each result's fields: the name every front door gives a field, its value and
+// what it means. The command line's --json summaries and the Python module's result objects
+// (their classes generated from these lists, scripts/update_stubs.sh) are made from them, so a
+// field is named, typed and documented once.
+#pragma once
+
+#include <cstdint>
+#include <variant>
+#include <vector>
+
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+
+namespace sphereset {
+
+struct ResultField {
+  const char* name;  // "er_sum"; a dot nests the field in a group ("seconds.total")
+  std::variant<bool, int64_t, double, std::vector<double>> value;
+  const char* help;
+};
+
+// A fit's diagnostics (FitResult without its spheres): E_r before and after the bound against
+// `mesh_volume` (the solid's), counts of each phase, the timings ("seconds.*"). A default
+// FitResult gives the names and types alone.
+std::vector<ResultField> fitResultFields(const FitResult& r, double mesh_volume);
+
+// An evaluation's figures (EvalResult): E_r summed and of the union, the certificates with
+// their gaps, proximity and shadow errors.
+std::vector<ResultField> evalResultFields(const EvalResult& r);
+
+}  // namespace sphereset

@@ -1,0 +1,76 @@
+// The fit's and the evaluation's results as field lists (result_fields.hpp): the one place
+// where a result field gets the name, type and meaning every front door shows.
+#include "sphereset/result_fields.hpp"
+
+namespace sphereset {
+
+std::vector<ResultField> fitResultFields(const FitResult& r, double mesh_volume) {
+  const double v = mesh_volume;
+  return {
+      {"outside_volume", r.outside_volume, "exact outside volume of each sphere"},
+      {"energy_history", r.energy_history, "Σ outside volume after each clustering round"},
+      {"energy", r.energy, "Σ outside volume of the set (absolute units)"},
+      {"energy_before_bounding", r.energy_before_bounding, "the same before the bound"},
+      {"mesh_volume", v, "volume of the solid fitted (the repaired one when repaired)"},
+      {"er_sum", r.energy / v, "E_r: Σ outside volume / mesh volume"},
+      {"er_sum_before_bounding", r.energy_before_bounding / v, "E_r before the bound"},
+      {"rounds", int64_t{r.iterations}, "assignment/update rounds run"},
+      {"converged", r.converged, "stopped because neither rounds nor teleports improved"},
+      {"teleports", int64_t{r.teleports}, "teleports tried"},
+      {"teleports_kept", int64_t{r.teleports_accepted}, "teleports that lowered the energy"},
+      {"points", r.points, "points clustered"},
+      {"interior_points", r.interior_points, "of which inside the solid"},
+      {"sov_queries", r.sov_queries, "outside-volume evaluations in point assignment"},
+      {"sov_queries_culled", r.sov_queries_culled,
+       "assignment candidates settled by a lower bound instead"},
+      {"optimizer_queries", r.optimizer_queries, "outside-volume evaluations in sphere updates"},
+      {"bounding_enlarged", r.bounding_enlarged, "spheres enlarged by the last bounding pass"},
+      {"bounding_pieces", r.bounding_pieces, "triangle pieces that made a sphere grow"},
+      {"bounding_queries", r.bounding_queries, "outside-volume evaluations of the bound"},
+      {"bounding_interior_cells", r.bounding_interior_cells,
+       "interior cubes that made a sphere grow"},
+      {"shrink_passes", int64_t{r.shrink_passes}, "shrinking passes kept"},
+      {"decimated", int64_t{r.decimated}, "spheres removed by the decimation"},
+      {"idle_teleports", int64_t{r.idle_teleports},
+       "spheres that covered nothing alone, moved to split another"},
+      {"restart", int64_t{r.restart}, "which restart won (0: the one with the seed given)"},
+      {"seconds.total", r.seconds.total, "seconds in all"},
+      {"seconds.sampling", r.seconds.sampling, "seconds sampling points"},
+      {"seconds.assignment", r.seconds.assignment, "seconds assigning points to spheres"},
+      {"seconds.update", r.seconds.update, "seconds refitting spheres"},
+      {"seconds.teleport", r.seconds.teleport, "seconds teleporting"},
+      {"seconds.bounding", r.seconds.bounding, "seconds in the bound"},
+  };
+}
+
+std::vector<ResultField> evalResultFields(const EvalResult& r) {
+  return {
+      {"mesh_volume", r.mesh_volume, "volume of the solid"},
+      {"bbox_diagonal", r.bbox_diagonal, "its bounding box's diagonal (the unit of the gaps)"},
+      {"er_sum", r.er_sum, "E_r: Σ outside volume / mesh volume (exact)"},
+      {"er_union", r.er_union, "outside volume of the union / mesh volume (Monte Carlo)"},
+      {"er_union_stderr", r.er_union_stderr, "its standard error"},
+      {"outside_volume", r.outside_volume, "exact outside volume of each sphere"},
+      {"surface_covered", r.surface_covered, "the surface is certified covered"},
+      {"max_surface_gap", r.max_surface_gap, "largest surface gap found / diagonal"},
+      {"surface_uncertified_area", r.surface_uncertified_area,
+       "area neither certified nor refuted"},
+      {"uncovered_triangles", r.uncovered_triangles, "triangles not covered"},
+      {"original_covered", r.original_covered,
+       "the original triangles are certified covered (true when the mesh was not repaired)"},
+      {"max_original_gap", r.max_original_gap, "largest gap of the original triangles / diagonal"},
+      {"original_uncovered_triangles", r.original_uncovered_triangles,
+       "original triangles not covered"},
+      {"interior_covered", r.interior_covered, "the interior is certified covered"},
+      {"max_interior_gap", r.max_interior_gap, "largest interior gap found / diagonal"},
+      {"interior_uncertified_cells", r.interior_uncertified_cells,
+       "finest cells at the surface left undecided"},
+      {"proximity_error", r.proximity_error,
+       "mean outside-length difference over random segments / diagonal"},
+      {"shadow_error_sky", r.shadow_error_sky, "shadow RMS error under sky light"},
+      {"shadow_error_lights", r.shadow_error_lights, "shadow RMS error under directional lights"},
+      {"seconds", r.seconds, "seconds of the evaluation"},
+  };
+}
+
+}  // namespace sphereset
