@@ -46,7 +46,14 @@ void addMeshArgs(CLI::App* cmd, MeshArgs* a, bool repair) {
   if (repair)
     addRepairArgs(cmd, a);
   else
-    addTableOptions(cmd, &a->repair, repairOptionTable(), {"repair", "wrap_alpha", "wrap_offset"});
+    addWeldArg(cmd, a);
+}
+
+void addWeldArg(CLI::App* cmd, MeshArgs* a) {
+  addTableOptions(cmd, &a->repair, repairOptionTable(), {"repair", "wrap_alpha", "wrap_offset"});
+  // Without a repair there is no automatic tolerance to try: the row's value, or exact welding.
+  a->repair.options.at("weld_tolerance")
+      ->description("Merge vertices closer than this distance (default 0: exact duplicates only)");
 }
 
 void addRepairArgs(CLI::App* cmd, MeshArgs* a) {
@@ -67,12 +74,16 @@ Expected<RepairOptions> repairOptions(const MeshArgs& a) {
   return ro;
 }
 
+LoadOptions loadOptions(const RepairOptions& ro) {
+  LoadOptions lo;
+  lo.weld_tolerance = std::max(0.0, ro.weld_tolerance);  // negative: automatic, exact here
+  return lo;
+}
+
 Expected<LoadOptions> loadOptions(const MeshArgs& a) {
   auto ro = repairOptions(a);
   if (!ro) return ro.error();
-  LoadOptions lo;
-  lo.weld_tolerance = std::max(0.0, ro->weld_tolerance);  // negative: automatic, exact here
-  return lo;
+  return loadOptions(*ro);
 }
 
 Expected<SolidInput> loadSolid(const MeshArgs& a) {

@@ -83,6 +83,9 @@ struct MeshArgs {
 // weld tolerance (commands that draw).
 void addMeshArgs(CLI::App* cmd, MeshArgs* a, bool repair = true);
 
+// The repair table's weld row alone, for commands that load meshes without repairing them.
+void addWeldArg(CLI::App* cmd, MeshArgs* a);
+
 // The repair options alone (the rows of repairOptionTable() and --fill-cavities/
 // --keep-cavities), for commands whose meshes come from elsewhere (robot, batch).
 void addRepairArgs(CLI::App* cmd, MeshArgs* a);
@@ -92,7 +95,8 @@ void addRepairArgs(CLI::App* cmd, MeshArgs* a);
 Expected<RepairOptions> repairOptions(const MeshArgs& a);
 
 // Loading as the diagnosis and the pictures see a mesh: exactly welded, or welded with the
-// tolerance given.
+// tolerance given (the automatic tolerance welds exactly here).
+LoadOptions loadOptions(const RepairOptions& ro);
 Expected<LoadOptions> loadOptions(const MeshArgs& a);
 
 // A loaded mesh and the solid made of it (repair.hpp).

@@ -190,8 +190,7 @@ Command registerAnimate(CLI::App& app) {
       ->check(CLI::IsMember({"txt", "json"}));
   addTableOptions(cmd, &a->animate, animateOptionTable());
   // The repair table's weld row (rest and frames alike; not given: exact welding).
-  addTableOptions(cmd, &a->weld.repair, repairOptionTable(),
-                  {"repair", "wrap_alpha", "wrap_offset"});
+  addWeldArg(cmd, &a->weld);
   cmd->add_flag("-q,--quiet", a->quiet, "No progress on stderr");
   return {cmd, [a] { return runAnimate(*a); }};
 }

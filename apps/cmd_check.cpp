@@ -195,14 +195,14 @@ void printCheck(const LoadedMesh& m, const MeshDiagnosis& d) {
 int runCheck(const CheckArgs& a) {
   // The diagnosis is of the mesh as fit sees it before repairing: exactly welded, or welded
   // with the tolerance given.
-  auto lo = loadOptions(a.mesh);
-  if (!lo) return fail(lo.error());
-  auto m = loadMesh(a.mesh.path, *lo);
+  auto ro = repairOptions(a.mesh);
+  if (!ro) return fail(ro.error());
+  auto m = loadMesh(a.mesh.path, loadOptions(*ro));
   if (!m) return fail(m.error());
   const MeshDiagnosis d = diagnoseMesh(m->mesh);
   const ShellCounts sc = countShells(analyzeShells(m->mesh));
   // What fit would do with the same options.
-  auto r = repairMesh(m->mesh, repairOptions(a.mesh).value(), a.mesh.path);  // checked above
+  auto r = repairMesh(m->mesh, *ro, a.mesh.path);
   std::string plan;
   if (!r) {
     plan = "refuse it: " + r.error().message;

@@ -233,8 +233,7 @@ Command registerRender(CLI::App& app) {
                   "Robot: folder searched for package://NAME/ paths (repeatable)");
   cmd->add_option("--joint-positions", a->joint_positions,
                   "Robot: JOINT=VALUE,... (default: all joints at 0)");
-  addTableOptions(cmd, &a->mesh.repair, repairOptionTable(),
-                  {"repair", "wrap_alpha", "wrap_offset"});
+  addWeldArg(cmd, &a->mesh);
   cmd->add_option("spheres", a->spheres, "Sphere set or tree (its leaves are drawn)");
   cmd->add_option("-o,--output", a->out, "PNG file")->required();
   cmd->add_option("--size", a->size, "Image size WxH")->capture_default_str();

@@ -13,15 +13,15 @@ struct Command {
   std::function<int()> run;  // returns the exit code
 };
 
-Command registerCheck(CLI::App& app);   // cmd_check.cpp
-Command registerEval(CLI::App& app);    // cmd_eval.cpp
-Command registerFit(CLI::App& app);     // cmd_fit.cpp
-Command registerTree(CLI::App& app);    // cmd_tree.cpp
-Command registerRender(CLI::App& app);  // cmd_render.cpp
-Command registerExport(CLI::App& app);  // cmd_export.cpp
-Command registerQuery(CLI::App& app);   // cmd_query.cpp
-Command registerRobot(CLI::App& app);   // cmd_robot.cpp
-Command registerBatch(CLI::App& app);   // cmd_batch.cpp
-Command registerAnimate(CLI::App& app); // cmd_animate.cpp
+Command registerCheck(CLI::App& app);    // cmd_check.cpp
+Command registerEval(CLI::App& app);     // cmd_eval.cpp
+Command registerFit(CLI::App& app);      // cmd_fit.cpp
+Command registerTree(CLI::App& app);     // cmd_tree.cpp
+Command registerRender(CLI::App& app);   // cmd_render.cpp
+Command registerExport(CLI::App& app);   // cmd_export.cpp
+Command registerQuery(CLI::App& app);    // cmd_query.cpp
+Command registerRobot(CLI::App& app);    // cmd_robot.cpp
+Command registerBatch(CLI::App& app);    // cmd_batch.cpp
+Command registerAnimate(CLI::App& app);  // cmd_animate.cpp
 
 }  // namespace sphereset::cli

@@ -53,10 +53,12 @@ std::map<std::string, double> jointValues(const Robot& r, const py::object& o) {
   std::map<std::string, double> out;
   if (o.is_none()) return out;
   for (auto [k, v] : o.cast<py::dict>()) out[k.cast<std::string>()] = v.cast<double>();
-  const JointState state = unwrap(jointState(r, out));
+  JointState state = unwrap(jointState(r, out));
   for (const std::string& note : state.notes)
     if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0) throw py::error_already_set();
-  return out;
+  // The whole state, clamped and with the mimics resolved: the callee's own pass over it finds
+  // nothing left to change.
+  return std::move(state.values);
 }
 
 py::list pairList(const std::vector<std::array<std::string, 2>>& v) {

@@ -268,7 +268,7 @@ Expected<std::vector<BatchItem>> listFolder(const std::string& input, const Batc
       continue;
     }
     if (!it->is_regular_file(ec)) continue;
-    const std::string ext = lower(p.extension().string());
+    const std::string ext = detail::extensionOf(p.string());
     if (ext.size() < 2 || !importer.IsExtensionSupported(ext)) continue;
     rel.push_back(p.lexically_relative(root).generic_string());
   }
@@ -332,7 +332,7 @@ Expected<std::vector<BatchItem>> listBatchItems(const std::string& input,
   if (ec || !fs::exists(s))
     return Error{ErrorCode::kUnreadable, input + ": no such file or folder"};
   if (fs::is_directory(s)) return listFolder(input, options);
-  const std::string ext = lower(fs::path(input).extension().string());
+  const std::string ext = detail::extensionOf(input);
   if (ext == ".csv" || ext == ".jsonl") return listManifest(input, ext, options);
   return Error{ErrorCode::kUnreadable,
                input + ": expected a folder of meshes or a manifest (.csv or .jsonl)"};

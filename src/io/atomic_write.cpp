@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sphereset/sphere_io.hpp"
@@ -86,14 +87,25 @@ Status folderAcceptsFiles(const fs::path& dir, const std::string& what) {
   return {};
 }
 
+// What every output shares: a path is given, and it is none of the inputs. `kind` is "file" or
+// "folder".
+Status checkOutputIsNew(const std::string& output, const char* kind,
+                        const std::vector<std::string>& inputs) {
+  if (output.empty())
+    return Error{ErrorCode::kInvalidArgument,
+                 std::string("the output ") + (std::string_view(kind) == "file" ? "path" : kind) +
+                     " is empty"};
+  if (const std::string* in = sameFile(fs::path(output), inputs))
+    return Error{ErrorCode::kInvalidArgument,
+                 output + ": is the input " + *in + "; write the output to another " + kind};
+  return {};
+}
+
 }  // namespace
 
 Status checkOutputPath(const std::string& output, const std::vector<std::string>& inputs) {
-  if (output.empty()) return Error{ErrorCode::kInvalidArgument, "the output path is empty"};
+  if (Status st = checkOutputIsNew(output, "file", inputs); !st) return st;
   const fs::path out(output);
-  if (const std::string* in = sameFile(out, inputs))
-    return Error{ErrorCode::kInvalidArgument,
-                 output + ": is the input " + *in + "; write the output to another file"};
   std::error_code ec;
   if (fs::is_directory(out, ec))
     return Error{ErrorCode::kInvalidArgument, output + ": is a folder; name a file"};
@@ -106,11 +118,8 @@ Status checkOutputPath(const std::string& output, const std::vector<std::string>
 }
 
 Status checkOutputFolder(const std::string& folder, const std::vector<std::string>& inputs) {
-  if (folder.empty()) return Error{ErrorCode::kInvalidArgument, "the output folder is empty"};
+  if (Status st = checkOutputIsNew(folder, "folder", inputs); !st) return st;
   const fs::path out(folder);
-  if (const std::string* in = sameFile(out, inputs))
-    return Error{ErrorCode::kInvalidArgument,
-                 folder + ": is the input " + *in + "; write the output to another folder"};
   std::error_code ec;
   if (fs::exists(out, ec) && !fs::is_directory(out, ec))
     return Error{ErrorCode::kInvalidArgument, folder + ": is a file, not a folder"};

@@ -31,12 +31,6 @@ using detail::extensionOf;
 using detail::parseJson;
 using detail::readFileText;
 
-namespace {
-
-std::string num(double x) { return detail::formatNumber(x); }
-
-}  // namespace
-
 namespace detail {
 
 Status checkSphere(const std::string& where, const Sphere& s) {
@@ -105,8 +99,8 @@ std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& sphere
     case SphereFormat::kText:
       os << "# " << meta.generator << ": " << spheres.size() << " spheres, x y z r\n";
       for (const Sphere& s : spheres)
-        os << num(s.center.x()) << ' ' << num(s.center.y()) << ' ' << num(s.center.z()) << ' '
-           << num(s.radius) << '\n';
+        os << detail::formatNumber(s.center.x()) << ' ' << detail::formatNumber(s.center.y()) << ' '
+           << detail::formatNumber(s.center.z()) << ' ' << detail::formatNumber(s.radius) << '\n';
       break;
     case SphereFormat::kJson: {
       nlohmann::json j;
@@ -125,11 +119,12 @@ std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& sphere
       // "x y z r error"; the error column is not used and written as 0.
       const Sphere root = minimalEnclosingBall(spheres);
       os << 2 << ' ' << std::max<size_t>(spheres.size(), 1) << '\n';
-      os << num(root.center.x()) << ' ' << num(root.center.y()) << ' ' << num(root.center.z())
-         << ' ' << num(root.radius) << " 0\n";
+      os << detail::formatNumber(root.center.x()) << ' ' << detail::formatNumber(root.center.y())
+         << ' ' << detail::formatNumber(root.center.z()) << ' ' << detail::formatNumber(root.radius)
+         << " 0\n";
       for (const Sphere& s : spheres)
-        os << num(s.center.x()) << ' ' << num(s.center.y()) << ' ' << num(s.center.z()) << ' '
-           << num(s.radius) << " 0\n";
+        os << detail::formatNumber(s.center.x()) << ' ' << detail::formatNumber(s.center.y()) << ' '
+           << detail::formatNumber(s.center.z()) << ' ' << detail::formatNumber(s.radius) << " 0\n";
       break;
     }
     case SphereFormat::kYaml:

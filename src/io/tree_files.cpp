@@ -22,11 +22,7 @@ using detail::jsonInteger;
 using detail::parseJson;
 using detail::readFileText;
 
-namespace {
-
-std::string num(double x) { return detail::formatNumber(x); }
-
-}  // namespace
+namespace {}  // namespace
 
 Expected<SphereTree> readSphereTree(const std::string& path) {
   auto format = sphereFormatFromPath(path);
@@ -44,8 +40,9 @@ std::string formatSphereTree(SphereFormat format, const SphereTree& tree,
     // "x y z r error"; unused slots have radius -1. The error column is written as 0.
     os << tree.levels() << ' ' << tree.branching << '\n';
     for (const Sphere& s : tree.nodes)
-      os << num(s.center.x()) << ' ' << num(s.center.y()) << ' ' << num(s.center.z()) << ' '
-         << num(s.radius < 0.0 ? -1.0 : s.radius) << " 0\n";
+      os << detail::formatNumber(s.center.x()) << ' ' << detail::formatNumber(s.center.y()) << ' '
+         << detail::formatNumber(s.center.z()) << ' '
+         << detail::formatNumber(s.radius < 0.0 ? -1.0 : s.radius) << " 0\n";
     return os.str();
   }
   // JSON: the used nodes with their Bradshaw slot as id, level, parent and children.

@@ -20,13 +20,6 @@
 namespace sphereset::detail {
 namespace {
 
-// A message on one line, whatever the file's names hold.
-std::string oneLine(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  return s;
-}
-
 // "file:line" for a node (yaml-cpp counts lines from 0).
 std::string at(const std::string& name, const YAML::Node& node) {
   const YAML::Mark m = node.Mark();

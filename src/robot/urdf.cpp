@@ -24,9 +24,12 @@
 
 #include "sphereset/limits.hpp"
 #include "sphereset/robot.hpp"
+#include "util/utf8.hpp"
 
 namespace sphereset {
 namespace {
+
+using detail::oneLine;
 
 namespace fs = std::filesystem;
 
@@ -56,14 +59,6 @@ class CaptureErrors : public console_bridge::OutputHandler {
   std::string first_error;
   std::string link;  // the link named by urdfdom's messages, if any
 };
-
-// One line: newlines of a parser message become spaces.
-std::string oneLine(std::string s) {
-  std::replace(s.begin(), s.end(), '\n', ' ');
-  std::replace(s.begin(), s.end(), '\r', ' ');
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
-}
 
 bool isFile(const fs::path& p) {
   std::error_code ec;

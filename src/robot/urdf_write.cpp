@@ -15,9 +15,12 @@
 #include "sphereset/robot.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "util/read_file.hpp"
+#include "util/utf8.hpp"
 
 namespace sphereset {
 namespace {
+
+using detail::oneLine;
 
 // The shortest decimal text that reads back as exactly `x`.
 std::string number(double x) {
@@ -44,13 +47,6 @@ TiXmlElement sphereCollision(size_t i, const Sphere& s) {
   geometry.InsertEndChild(sphere);
   collision.InsertEndChild(geometry);
   return collision;
-}
-
-// A message on one line.
-std::string oneLine(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  return s;
 }
 
 // Replaces the collisions of one <link>.

@@ -1,5 +1,5 @@
 // Private: text that must be UTF-8 (JSON, YAML, Python strings) made from bytes that may not be
-// (file names are bytes on Linux).
+// (file names are bytes on Linux), and messages made one line.
 #pragma once
 
 #include <string>
@@ -41,6 +41,15 @@ inline std::string validUtf8(std::string_view bytes) {
     }
   }
   return out;
+}
+
+// A message on one line, whatever the names or parser messages in it hold: line breaks become
+// spaces, trailing spaces are dropped.
+inline std::string oneLine(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
 }
 
 }  // namespace sphereset::detail
