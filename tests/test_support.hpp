@@ -10,10 +10,20 @@
 #include <string>
 #include <vector>
 
+#include <numbers>
+
 #include "sphereset/evaluate.hpp"
+#include "sphereset/sphere.hpp"
 #include "sphereset/status.hpp"
 
 namespace sphereset::test {
+
+inline constexpr double kPi = std::numbers::pi;
+
+// Spheres whose coordinates test a format's number round trip: a third, 1e-9, large values.
+inline const std::vector<Sphere> kRoundTripSet = {{Vec3(0.1, -2.5, 3.0), 0.75},
+                                                  {Vec3(1.0 / 3.0, 1e-9, -7.0), 1e-3},
+                                                  {Vec3(100.0, 200.0, 300.0), 42.0}};
 
 // A fresh folder for each test, named after the suite, the test and the process (so that two
 // builds testing at once do not meet), removed afterwards.

@@ -14,7 +14,7 @@
 namespace sphereset {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
 TEST(Evaluate, CircumscribedSphereOfCube) {
   const SolidIndex idx(test::makeBox(Vec3::Zero(), Vec3::Ones()));

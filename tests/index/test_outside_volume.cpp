@@ -10,11 +10,12 @@
 #include "sphereset/load.hpp"
 #include "sphereset/solid_index.hpp"
 #include "test_meshes.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 double ballVolume(double r) { return 4.0 / 3.0 * kPi * r * r * r; }
 
 Mesh loadOrDie(const std::string& path) {

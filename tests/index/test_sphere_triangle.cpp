@@ -7,11 +7,12 @@
 
 #include "index/oracles.hpp"
 #include "sphereset/solid_index.hpp"
+#include "test_support.hpp"
 
 namespace sphereset {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
 struct Quadrature {
   double area = 0.0, omega = 0.0;

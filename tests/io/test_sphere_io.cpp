@@ -17,22 +17,20 @@ namespace fs = std::filesystem;
 
 class SphereIo : public test::TempDirTest {};
 
-const std::vector<Sphere> kSet = {{Vec3(0.1, -2.5, 3.0), 0.75},
-                                  {Vec3(1.0 / 3.0, 1e-9, -7.0), 1e-3},
-                                  {Vec3(100.0, 200.0, 300.0), 42.0}};
+using test::kRoundTripSet;
 
 TEST_F(SphereIo, RoundTripsInEveryFormat) {
   for (const std::string ext : {".txt", ".json", ".sph", ".yaml"}) {
     const std::string p = path("set" + ext);
     SphereFileMeta meta;
     meta.name = "link_3";
-    ASSERT_TRUE(writeSpheres(p, kSet, meta).ok()) << ext;
+    ASSERT_TRUE(writeSpheres(p, kRoundTripSet, meta).ok()) << ext;
     auto back = readSpheres(p);
     ASSERT_TRUE(back.ok()) << back.error().message;
-    ASSERT_EQ(back->size(), kSet.size()) << ext;
-    for (size_t i = 0; i < kSet.size(); ++i) {
-      EXPECT_EQ((*back)[i].center, kSet[i].center) << ext;  // 17 significant digits: exact
-      EXPECT_EQ((*back)[i].radius, kSet[i].radius) << ext;
+    ASSERT_EQ(back->size(), kRoundTripSet.size()) << ext;
+    for (size_t i = 0; i < kRoundTripSet.size(); ++i) {
+      EXPECT_EQ((*back)[i].center, kRoundTripSet[i].center) << ext;  // 17 significant digits: exact
+      EXPECT_EQ((*back)[i].radius, kRoundTripSet[i].radius) << ext;
     }
   }
   std::ifstream yaml(path("set.yaml"));
@@ -77,13 +75,13 @@ TEST_F(SphereIo, MalformedFilesNameTheLine) {
 
 TEST_F(SphereIo, FailedWritesLeaveNoFile) {
   const std::string target = path("no_such_dir/out.txt");
-  Status st = writeSpheres(target, kSet);
+  Status st = writeSpheres(target, kRoundTripSet);
   ASSERT_FALSE(st.ok());
   EXPECT_EQ(st.error().code, ErrorCode::kWriteFailed);
   EXPECT_FALSE(fs::exists(target));
   // A NaN sphere is refused before anything is written, and an existing file is kept.
   const std::string keep = write("keep.txt", "1 2 3 4\n");
-  std::vector<Sphere> bad = kSet;
+  std::vector<Sphere> bad = kRoundTripSet;
   bad[1].radius = std::nan("");
   ASSERT_FALSE(writeSpheres(keep, bad).ok());
   auto back = readSpheres(keep);

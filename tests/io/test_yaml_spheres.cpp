@@ -180,15 +180,13 @@ TEST_F(YamlSpheres, BadFilesGiveOneLineErrorsNamingFileLinkAndSphere) {
       << t.error().message;
 }
 
-const std::vector<Sphere> kSet = {{Vec3(0.1, -2.5, 3.0), 0.75},
-                                  {Vec3(1.0 / 3.0, 1e-9, -7.0), 1e-3},
-                                  {Vec3(100.0, 200.0, 300.0), 42.0}};
+using test::kRoundTripSet;
 
 TEST_F(YamlSpheres, SingleLinkOutputIsUnchanged) {
   // The layout existing fits are compared against, byte for byte.
   SphereFileMeta meta;
   meta.name = "link_3";
-  EXPECT_EQ(formatSpheres(SphereFormat::kYaml, kSet, meta),
+  EXPECT_EQ(formatSpheres(SphereFormat::kYaml, kRoundTripSet, meta),
             "# sphereset: 3 spheres\n"
             "collision_spheres:\n"
             "  link_3:\n"
@@ -200,7 +198,7 @@ TEST_F(YamlSpheres, SingleLinkOutputIsUnchanged) {
             "      \"radius\": 42\n");
   // A name that would not read back as itself is quoted.
   meta.name = "left arm: tip";
-  const std::string p = write("q.yaml", formatSpheres(SphereFormat::kYaml, kSet, meta));
+  const std::string p = write("q.yaml", formatSpheres(SphereFormat::kYaml, kRoundTripSet, meta));
   auto back = readLinkSpheres(p);
   ASSERT_TRUE(back.ok()) << back.error().message;
   EXPECT_EQ((*back)[0].link, "left arm: tip");
@@ -208,9 +206,9 @@ TEST_F(YamlSpheres, SingleLinkOutputIsUnchanged) {
 
 TEST_F(YamlSpheres, SeveralLinksRoundTrip) {
   const std::vector<LinkSpheres> links = {
-      {"panda_link0", kSet}, {"panda_hand", {kSet[1]}},
-      {"empty", {}},         {"true", {kSet[2]}},
-      {"1.5", {kSet[0]}},    {"a \"quoted\"\\ name\t#1", {kSet[0], kSet[2]}}};
+      {"panda_link0", kRoundTripSet}, {"panda_hand", {kRoundTripSet[1]}},
+      {"empty", {}},         {"true", {kRoundTripSet[2]}},
+      {"1.5", {kRoundTripSet[0]}},    {"a \"quoted\"\\ name\t#1", {kRoundTripSet[0], kRoundTripSet[2]}}};
   const std::string p = path("robot.yaml");
   SphereFileMeta meta;
   ASSERT_TRUE(writeLinkSpheres(p, links, meta).ok());
@@ -235,12 +233,12 @@ TEST_F(YamlSpheres, SeveralLinksRoundTrip) {
   EXPECT_NE(text.find("\n  \"true\":\n"), std::string::npos) << text;
 
   // One link written by either writer reads back the same.
-  ASSERT_TRUE(writeSpheres(path("one.yaml"), kSet).ok());
+  ASSERT_TRUE(writeSpheres(path("one.yaml"), kRoundTripSet).ok());
   auto one = readLinkSpheres(path("one.yaml"));
   ASSERT_TRUE(one.ok()) << one.error().message;
   ASSERT_EQ(one->size(), 1u);
   EXPECT_EQ((*one)[0].link, "object");
-  EXPECT_EQ((*one)[0].spheres.size(), kSet.size());
+  EXPECT_EQ((*one)[0].spheres.size(), kRoundTripSet.size());
   // An empty set written by the single-link writer is a link without spheres.
   ASSERT_TRUE(writeSpheres(path("none.yaml"), {}).ok());
   auto none = readSpheres(path("none.yaml"));
@@ -261,13 +259,13 @@ TEST_F(YamlSpheres, WritingSeveralLinksChecksThem) {
     EXPECT_NE(st.error().message.find(words), std::string::npos) << st.error().message;
     EXPECT_FALSE(fs::exists(p));
   };
-  expectRefused(path("a.txt"), {{"a", kSet}}, ErrorCode::kInvalidArgument, "written as YAML");
-  expectRefused(path("a.yaml"), {{"a", kSet}, {"a", {}}}, ErrorCode::kInvalidArgument,
+  expectRefused(path("a.txt"), {{"a", kRoundTripSet}}, ErrorCode::kInvalidArgument, "written as YAML");
+  expectRefused(path("a.yaml"), {{"a", kRoundTripSet}, {"a", {}}}, ErrorCode::kInvalidArgument,
                 "link 'a' appears twice");
-  expectRefused(path("a.yaml"), {{"", kSet}}, ErrorCode::kInvalidArgument, "link 0 has no name");
-  std::vector<Sphere> bad = kSet;
+  expectRefused(path("a.yaml"), {{"", kRoundTripSet}}, ErrorCode::kInvalidArgument, "link 0 has no name");
+  std::vector<Sphere> bad = kRoundTripSet;
   bad[2].radius = -1.0;
-  expectRefused(path("a.yaml"), {{"a", kSet}, {"b", bad}}, ErrorCode::kInvalidData,
+  expectRefused(path("a.yaml"), {{"a", kRoundTripSet}, {"b", bad}}, ErrorCode::kInvalidData,
                 "link 'b' sphere 2: negative radius");
 }
 
@@ -276,18 +274,18 @@ TEST_F(YamlSpheres, LongAndUnusualLinkNamesRoundTrip) {
   // written as one, and the file did not read back. Such keys are written in the explicit
   // "? key" form; other bytes (controls, line separators) read back as they were. A YAML file is
   // UTF-8: bytes that are not (a name from a file name) are written as U+FFFD.
-  const std::vector<LinkSpheres> links = {{std::string(2000, 'k'), {kSet[0]}},
+  const std::vector<LinkSpheres> links = {{std::string(2000, 'k'), {kRoundTripSet[0]}},
                                           {std::string(600, '\x1f'), {}},
-                                          {"\xff\xfe not UTF-8", {kSet[1]}},
+                                          {"\xff\xfe not UTF-8", {kRoundTripSet[1]}},
                                           {"a\xc2\x85"
                                            "b\xe2\x80\xa8"
                                            "c",
                                            {}},
-                                          {std::string("nul\0byte", 8), {kSet[2]}}};
+                                          {std::string("nul\0byte", 8), {kRoundTripSet[2]}}};
   for (const LinkSpheres& l : links) {
     SCOPED_TRACE(l.link.size());
     const std::string p = path("long.yaml");
-    ASSERT_TRUE(writeLinkSpheres(p, {l, {"next", {kSet[2]}}}).ok());
+    ASSERT_TRUE(writeLinkSpheres(p, {l, {"next", {kRoundTripSet[2]}}}).ok());
     auto back = readLinkSpheres(p);
     ASSERT_TRUE(back.ok()) << back.error().message;
     ASSERT_EQ(back->size(), 2u);
@@ -298,12 +296,12 @@ TEST_F(YamlSpheres, LongAndUnusualLinkNamesRoundTrip) {
     // The same through the single-link writer.
     SphereFileMeta meta;
     meta.name = l.link;
-    ASSERT_TRUE(writeSpheres(p, kSet, meta).ok());
+    ASSERT_TRUE(writeSpheres(p, kRoundTripSet, meta).ok());
     auto one = readLinkSpheres(p);
     ASSERT_TRUE(one.ok()) << one.error().message;
     ASSERT_EQ(one->size(), 1u);
     EXPECT_EQ((*one)[0].link, expected);
-    EXPECT_EQ((*one)[0].spheres.size(), kSet.size());
+    EXPECT_EQ((*one)[0].spheres.size(), kRoundTripSet.size());
   }
 }
 

@@ -14,14 +14,6 @@
 namespace sphereset::test {
 namespace {
 
-Robot threeLink() {
-  RobotLoadOptions lo;
-  lo.package_paths = {robotDir()};
-  auto r = loadRobot(threeLinkUrdf(), lo);
-  EXPECT_TRUE(r.ok()) << r.error().message;
-  return r.ok() ? *r : Robot{};
-}
-
 RobotFitOptions fastOptions() {
   RobotFitOptions o;
   o.quality = FitQuality::kFast;
@@ -36,7 +28,7 @@ const RobotLinkFit* find(const RobotFitResult& r, const std::string& link) {
 }
 
 TEST(FitRobot, BudgetIsKeptEveryLinkCoveredAndNeitherSplitBeaten) {
-  const Robot robot = threeLink();
+  const Robot robot = test::threeLinkRobot();
   RobotFitOptions o = fastOptions();
   o.budget = 12;
   auto r = fitRobot(robot, o);
@@ -61,7 +53,7 @@ TEST(FitRobot, BudgetIsKeptEveryLinkCoveredAndNeitherSplitBeaten) {
 }
 
 TEST(FitRobot, FixedSkippedAndPaddedLinks) {
-  const Robot robot = threeLink();
+  const Robot robot = test::threeLinkRobot();
   RobotFitOptions o = fastOptions();
   o.link_spheres = {{"base_link", 2}, {"link1", 0}, {"link2", 3}};
   o.link_padding = {{"link2", 0.01}};
@@ -80,7 +72,7 @@ TEST(FitRobot, FixedSkippedAndPaddedLinks) {
 }
 
 TEST(FitRobot, SameSpheresOnOneAndTwoThreads) {
-  const Robot robot = threeLink();
+  const Robot robot = test::threeLinkRobot();
   RobotFitOptions o = fastOptions();
   o.budget = 10;
   auto run = [&](int threads) {

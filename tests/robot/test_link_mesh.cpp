@@ -16,15 +16,6 @@ namespace {
 
 constexpr double kTol = 1e-12;
 
-Robot threeLink() {
-  RobotLoadOptions o;
-  o.package_paths = {test::robotDir()};
-  o.use_ros_package_path = false;
-  auto r = loadRobot(test::threeLinkUrdf(), o);
-  EXPECT_TRUE(r.ok()) << r.error().message;
-  return r.ok() ? *r : Robot{};
-}
-
 const RobotLink& link(const Robot& r, const std::string& name) {
   for (const RobotLink& l : r.links) {
     if (l.name == name) return l;
@@ -34,7 +25,7 @@ const RobotLink& link(const Robot& r, const std::string& name) {
 }
 
 TEST(LinkMesh, BoxIsAClosedSolidOfTheBoxVolume) {
-  const Robot r = threeLink();
+  const Robot r = test::threeLinkRobot();
   auto m = linkMesh(link(r, "base_link"));
   ASSERT_TRUE(m.ok()) << m.error().message;
   const MeshDiagnosis d = diagnoseMesh(*m);
@@ -46,7 +37,7 @@ TEST(LinkMesh, BoxIsAClosedSolidOfTheBoxVolume) {
 }
 
 TEST(LinkMesh, CylinderIsAPrismOverTheInscribedPolygon) {
-  const Robot r = threeLink();
+  const Robot r = test::threeLinkRobot();
   constexpr double kRadius = 0.05, kLength = 0.4;
   for (int segments : {3, 16, 48}) {
     auto m = linkMesh(link(r, "link1"), segments);
@@ -64,7 +55,7 @@ TEST(LinkMesh, CylinderIsAPrismOverTheInscribedPolygon) {
 }
 
 TEST(LinkMesh, MeshIsScaledThenPlacedByItsOrigin) {
-  const Robot r = threeLink();
+  const Robot r = test::threeLinkRobot();
   auto m = linkMesh(link(r, "link2"));
   ASSERT_TRUE(m.ok()) << m.error().message;
   auto file = loadMesh(test::threeLinkStl());
@@ -87,7 +78,7 @@ TEST(LinkMesh, MeshIsScaledThenPlacedByItsOrigin) {
 }
 
 TEST(LinkMesh, MirroringScaleKeepsTrianglesOutward) {
-  const Robot r = threeLink();
+  const Robot r = test::threeLinkRobot();
   RobotLink mirrored = link(r, "link2");
   mirrored.geometry[0].scale = Vec3(-1.0, 1.0, 1.0);
   auto m = linkMesh(mirrored);
@@ -96,7 +87,7 @@ TEST(LinkMesh, MirroringScaleKeepsTrianglesOutward) {
 }
 
 TEST(LinkMesh, SpherePrimitivesAsExactSpheresAndADrawing) {
-  const Robot r = threeLink();
+  const Robot r = test::threeLinkRobot();
   const RobotLink& tool = link(r, "tool");
   const std::vector<Sphere> spheres = linkSpheres(tool);
   ASSERT_EQ(spheres.size(), 1u);
@@ -115,7 +106,7 @@ TEST(LinkMesh, SpherePrimitivesAsExactSpheresAndADrawing) {
 }
 
 TEST(LinkMesh, ElementsAreConcatenated) {
-  const Robot r = threeLink();
+  const Robot r = test::threeLinkRobot();
   RobotLink both;
   both.name = "both";
   both.geometry = {link(r, "base_link").geometry[0], link(r, "link1").geometry[0]};
@@ -140,7 +131,7 @@ TEST(LinkMesh, MissingMeshFileNamesTheLink) {
 }
 
 TEST(LinkPoses, ChainAtZero) {
-  const Robot r = threeLink();
+  const Robot r = test::threeLinkRobot();
   const auto poses = *linkPoses(r);
   ASSERT_EQ(poses.size(), 4u);
   EXPECT_TRUE(poses.at("base_link").isApprox(Eigen::Isometry3d::Identity()));
@@ -163,7 +154,7 @@ Eigen::Matrix3d rotY(double a) {
 }
 
 TEST(LinkPoses, ChainAtJointValues) {
-  const Robot r = threeLink();
+  const Robot r = test::threeLinkRobot();
   const double q1 = 0.7, q2 = 0.4;
   const auto poses = *linkPoses(r, {{"joint1", q1}, {"joint2", q2}});
   EXPECT_LT((poses.at("link1").linear() - rotZ(q1)).norm(), kTol);
@@ -176,7 +167,7 @@ TEST(LinkPoses, ChainAtJointValues) {
 }
 
 TEST(LinkPoses, RevoluteValuesAreClampedToTheLimits) {
-  const Robot r = threeLink();
+  const Robot r = test::threeLinkRobot();
   const auto clamped = *linkPoses(r, {{"joint1", 5.0}, {"joint2", -9.0}});
   const auto at_limits = *linkPoses(r, {{"joint1", 1.5}, {"joint2", -2.0}});
   for (const char* name : {"link1", "link2", "tool"}) {

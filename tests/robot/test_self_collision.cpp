@@ -16,15 +16,6 @@ namespace {
 
 using Pairs = std::vector<std::array<std::string, 2>>;
 
-Robot threeLink() {
-  RobotLoadOptions o;
-  o.package_paths = {test::robotDir()};
-  o.use_ros_package_path = false;
-  auto r = loadRobot(test::threeLinkUrdf(), o);
-  EXPECT_TRUE(r.ok()) << r.error().message;
-  return r.ok() ? *r : Robot{};
-}
-
 // Link frames at the zero pose (root frame): base_link at 0, link1 at (0, 0, 0.1), link2 at
 // (0, 0, 0.5), tool at (0.5, 0, 0.5). joint2 turns link2 and tool about y through (0, 0, 0.5).
 //   base_link: (0.5, 0, 0.5) r 0.1           -> world (0.5, 0, 0.5)
@@ -43,20 +34,20 @@ std::vector<LinkSpheres> handSpheres() {
 }
 
 TEST(SelfCollision, AdjacentPairsFromJoints) {
-  const Robot robot = threeLink();
+  const Robot robot = test::threeLinkRobot();
   const SelfCollisionPairs p = *selfCollisionPairs(robot, handSpheres());
   EXPECT_EQ(p.adjacent, (Pairs{{"base_link", "link1"}, {"link1", "link2"}, {"link2", "tool"}}));
 }
 
 TEST(SelfCollision, OverlapAtZeroPose) {
-  const Robot robot = threeLink();
+  const Robot robot = test::threeLinkRobot();
   const SelfCollisionPairs p = *selfCollisionPairs(robot, handSpheres());
   EXPECT_EQ(p.overlapping,
             (Pairs{{"base_link", "link2"}, {"base_link", "tool"}, {"link2", "tool"}}));
 }
 
 TEST(SelfCollision, OverlapSeparatesAtAnotherJointValue) {
-  const Robot robot = threeLink();
+  const Robot robot = test::threeLinkRobot();
   const SelfCollisionPairs p = *selfCollisionPairs(robot, handSpheres(), {{"joint2", 1.0}});
   EXPECT_EQ(p.overlapping, (Pairs{{"link2", "tool"}}));
   // Adjacency does not depend on the pose.
@@ -68,7 +59,7 @@ TEST(SelfCollision, OverlapSeparatesAtAnotherJointValue) {
 }
 
 TEST(SelfCollision, TouchingIsNotOverlapping) {
-  const Robot robot = threeLink();
+  const Robot robot = test::threeLinkRobot();
   // base's sphere at 0 r 0.25 and link1's at world (0, 0, 0.1 + 0.4) r 0.25 touch (distance
   // 0.5 = 0.25 + 0.25, exact in binary); a radius a little larger overlaps.
   std::vector<LinkSpheres> s = {{"base_link", {Sphere{Vec3(0, 0, 0), 0.25}}},
@@ -79,7 +70,7 @@ TEST(SelfCollision, TouchingIsNotOverlapping) {
 }
 
 TEST(SelfCollision, InputOrderAndEmptyLinksDoNotMatter) {
-  const Robot robot = threeLink();
+  const Robot robot = test::threeLinkRobot();
   std::vector<LinkSpheres> s = handSpheres();
   std::reverse(s.begin(), s.end());
   const SelfCollisionPairs p = *selfCollisionPairs(robot, s);
