@@ -115,38 +115,21 @@ int runAnimate(const AnimateArgs& a) {
     const std::string name = frameName(i, ext);
     Status st = writeSpheres((std::filesystem::path(a.out) / name).string(), f.spheres, meta);
     if (!st) return fail(st.error());
-    nlohmann::json j = {{"frame", i},
-                        {"time", f.time},
-                        {"file", name},
-                        {"er", f.er},
-                        {"surface_covered", f.surface_covered},
-                        {"interior_covered", f.interior_covered},
-                        {"max_gap", f.max_gap},
-                        {"crossings", f.crossings},
-                        {"update_seconds", f.update_seconds}};
-    if (a.rebound) {
-      j["er_rebound"] = f.er_rebound;
-      j["rebound_covered"] = f.rebound_covered;
-      j["radius_growth"] = f.radius_growth;
-      j["max_radius_growth"] = f.max_radius_growth;
-      j["grown"] = f.grown;
-    }
-    if (a.fresh_fit) j["er_fresh_fit"] = f.er_fresh;
+    nlohmann::json j = fieldsJson(animateFrameFields(f));
+    j["frame"] = i;
+    j["time"] = f.time;
+    j["file"] = name;
     js.push_back(j);
   }
   const size_t n = res->frames.size();
-  nlohmann::json summary = {{"rest_mesh", a.rest},
-                            {"spheres", a.spheres},
-                            {"sphere_count", spheres->size()},
-                            {"source", a.animation.empty() ? "frames" : a.animation},
-                            {"weighting", centreWeightingName(res->weighting)},
-                            {"rebound", a.rebound},
-                            {"weights_seconds", res->weights_seconds},
-                            {"frames_covered", res->frames_covered},
-                            {"frames_crossing", res->frames_crossing},
-                            {"fraction_covered", n ? double(res->frames_covered) / double(n) : 0.0},
-                            {"seconds", res->seconds},
-                            {"frames", js}};
+  nlohmann::json summary = fieldsJson(animateResultFields(*res));
+  summary["rest_mesh"] = a.rest;
+  summary["spheres"] = a.spheres;
+  summary["sphere_count"] = spheres->size();
+  summary["source"] = a.animation.empty() ? "frames" : a.animation;
+  summary["rebound"] = a.rebound;
+  summary["fraction_covered"] = n ? double(res->frames_covered) / double(n) : 0.0;
+  summary["frames"] = js;
   if (!a.animation.empty()) summary["clip"] = frames->clip;
   Status st = writeTextFile((std::filesystem::path(a.out) / "summary.json").string(),
                             jsonText(summary, 2) + "\n");

@@ -38,39 +38,20 @@ nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const RobotFitR
                          const RobotFitOptions& fo) {
   nlohmann::json links = nlohmann::json::array();
   for (const RobotLinkFit& j : r.links) {
+    nlohmann::json l = fieldsJson(robotLinkFields(j));
     nlohmann::json s = nlohmann::json::array();
     for (const Sphere& sp : j.spheres)
       s.push_back({sp.center.x(), sp.center.y(), sp.center.z(), sp.radius});
-    nlohmann::json l = {{"link", j.link},
-                        {"spheres", s},
-                        {"count", j.spheres.size()},
-                        {"primitives", j.primitives},
-                        {"files", j.files},
-                        {"from_visual", j.from_visual},
-                        {"skipped", j.skipped},
-                        {"covered", j.covered},
-                        {"padding", j.padding},
-                        {"seconds", j.seconds}};
-    if (!j.curve.counts.empty())
-      l["budget_curve"] = {{"counts", j.curve.counts}, {"outside_volume", j.curve.outside_volume}};
-    if (j.split_count >= 0)
-      l["budget_fits"] = {
-          {"curve_split", {{"count", j.split_count}, {"outside_volume", j.split_volume}}},
-          {"even_split", {{"count", j.even_count}, {"outside_volume", j.even_volume}}}};
-    if (j.fitted) {
-      l["er_sum"] = j.eval.er_sum;
-      l["outside_volume"] = j.outside_volume;
-      l["repair"] = repairJson(j.repair);
-    }
+    l["spheres"] = s;
+    if (j.fitted) l["repair"] = repairJson(j.repair);
     links.push_back(l);
   }
-  nlohmann::json out = {
-      {"robot", robot.name}, {"urdf", a.urdf}, {"seed", fo.seed}, {"links", links}};
-  if (r.budget_split)
-    out["budget"] = {{"spheres", fo.budget},
-                     {"outside_volume", r.outside_volume},
-                     {"curve_split_outside_volume", r.split_outside_volume},
-                     {"even_split_outside_volume", r.even_outside_volume}};
+  nlohmann::json out = fieldsJson(robotFitFields(r));
+  out["robot"] = robot.name;
+  out["urdf"] = a.urdf;
+  out["seed"] = fo.seed;
+  out["budget"] = fo.budget;
+  out["links"] = links;
   return out;
 }
 

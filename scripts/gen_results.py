@@ -6,11 +6,27 @@ check that the file equals this script's output (python/tests/test_stubs.py).
     PYTHONPATH=build/python /usr/bin/python3 scripts/gen_results.py OUT.py
 """
 
+import glob
+import importlib.util
+import os
 import sys
 
-from sphereset import _sphereset as core
 
-TYPES = {"bool": "bool", "int": "int", "float": "float", "array": "np.ndarray"}
+def _extension():
+    """The extension module alone, without the package's __init__ (which imports the file this
+    script writes)."""
+    package = importlib.util.find_spec("sphereset").submodule_search_locations[0]
+    path = glob.glob(os.path.join(package, "_sphereset*.so"))[0]
+    spec = importlib.util.spec_from_file_location("sphereset._sphereset", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+core = _extension()
+
+TYPES = {"bool": "bool", "int": "int", "float": "float", "str": "str", "array": "np.ndarray",
+         "int_array": "np.ndarray", "str_list": "List[str]"}
 
 # Per class: its docstring, the fields the front door adds before and after the library's, and
 # methods.
@@ -41,7 +57,65 @@ CLASSES = {
         """Surface, interior and original triangles all certified covered."""
         return self.surface_covered and self.interior_covered and self.original_covered
 '''),
+    "animate": dict(
+        name="AnimateResult",
+        columns="animate_frame",
+        doc='''A sphere set moved through the frames of a deforming mesh (animate.hpp's AnimateResult,
+    with the per-frame fields of AnimateFrameResult as arrays over the F frames).
+
+    ``spheres`` (F, N, 4): the moved sets (grown, with ``rebound``); ``times`` the frames'
+    times. ``er``, ``surface_covered``, ``interior_covered``, ``max_gap`` certify the moved set
+    with the rest radii; ``crossings`` counts crossing triangle pairs of the deformed mesh (a
+    frame that passes through itself is no solid: its figures are not meaningful). The rebound
+    and fresh-fit fields are 0 unless asked for.''',
+        before=[("spheres", "np.ndarray", "(F, N, 4) the set in each frame"),
+                ("times", "np.ndarray", "(F,) the frames' times")],
+        after=[("rebound", "bool", "whether radii were grown per frame")],
+        methods='''
+    @property
+    def covered(self) -> np.ndarray:
+        """Per frame, whether the set in ``spheres`` is certified to cover the deformed surface
+        and interior: ``rebound_covered`` with rebound, else surface and interior covered."""
+        if self.rebound:
+            return self.rebound_covered.copy()
+        return self.surface_covered & self.interior_covered
+
+    def __len__(self) -> int:
+        return int(self.spheres.shape[0])
+'''),
+    "robot_link": dict(
+        name="RobotLinkFit",
+        doc='''One link of a robot fit (robot_fit.hpp's RobotLinkFit): ``spheres`` (N, 4), its sphere
+    primitives first then the fitted spheres, padded; when fitted, ``repair`` and ``eval`` (the
+    fitted spheres' evaluation before padding, as :class:`EvalResult`'s fields).''',
+        before=[("spheres", "np.ndarray", "(N, 4) rows x, y, z, r")],
+        after=[("repair", "Optional[Dict[str, Any]]", "when fitted: what the repair did"),
+               ("eval", "Optional[Dict[str, Any]]", "when fitted: the fitted spheres' evaluation")],
+        methods=""),
+    "robot": dict(
+        name="RobotFitResult",
+        doc='''A whole robot fitted (robot_fit.hpp's RobotFitResult): ``links`` in the robot's order
+    (the links with geometry); with a budget, the total outside volume as chosen and for the
+    curve split and the even split alone.''',
+        before=[("robot", "str", "the robot's name"), ("urdf", "str", "the URDF read"),
+                ("links", "List[RobotLinkFit]", "the links with geometry, in order")],
+        after=[],
+        methods='''
+    @property
+    def spheres(self) -> Dict[str, np.ndarray]:
+        """{link: (N, 4) spheres} of the links not skipped, in order: what
+        :func:`write_robot_spheres` and :func:`write_sphere_urdf` take."""
+        return {lf.link: lf.spheres for lf in self.links if not lf.skipped}
+
+    @property
+    def covered(self) -> bool:
+        """Every link's spheres certified to cover it."""
+        return all(lf.covered for lf in self.links)
+'''),
 }
+
+# The numpy type of each per-frame column.
+DTYPES = {"bool": "bool", "int": "np.int64", "float": "np.float64"}
 
 HEADER = '''"""The result classes of the fit and the evaluation, written by scripts/gen_results.py from the
 library's field lists (result_fields.hpp): do not edit; the tests check this file against the
@@ -51,13 +125,20 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
-from typing import Any, Dict
+from typing import Any, Dict, List, Optional
 
 import numpy as np
 
 
 def _plain(value: Any) -> Any:
-    return value.tolist() if isinstance(value, np.ndarray) else value
+    """Arrays as lists, through dicts and lists: what JSON takes."""
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_plain(v) for v in value]
+    return value
 '''
 
 
@@ -89,7 +170,11 @@ def render():
     parts = [HEADER]
     for kind, c in CLASSES.items():
         lines = ["", "", "@dataclass", f"class {c['name']}:", f'    """{c["doc"]}"""', ""]
-        for name, typ, help_ in c["before"] + fields(kind) + c["after"]:
+        columns = []
+        if "columns" in c:  # one array over the frames per field of the frame's list
+            columns = [(name, "np.ndarray", "per frame: " + help_)
+                       for name, _, help_ in fields(c["columns"])]
+        for name, typ, help_ in c["before"] + columns + fields(kind) + c["after"]:
             lines.append(f"    {name}: {typ}")
             lines.append(f'    """{help_}"""')
         lines.append(c["methods"].rstrip("\n") if c["methods"] else "")
@@ -97,6 +182,10 @@ def render():
                   '        """The fields as a dict (arrays as lists), e.g. for JSON."""',
                   "        return {k: _plain(v) for k, v in dataclasses.asdict(self).items()}"]
         parts.append("\n".join(lines))
+    frame = "".join(f'\n    "{r["name"]}": {DTYPES[r["type"]]},'
+                    for r in core._result_schema("animate_frame"))
+    parts.append("\n\n\n# AnimateResult's per-frame columns and their types.\n"
+                 f"FRAME_COLUMNS: Dict[str, Any] = {{{frame}\n}}")
     return "".join(parts) + "\n"
 
 

@@ -9,8 +9,9 @@ cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
+PYTHONPATH="$build/python" /usr/bin/python3 scripts/gen_results.py python/sphereset/_results.py
+cp python/sphereset/_results.py "$build/python/sphereset/_results.py"
+echo "wrote python/sphereset/_results.py"
 PYTHONPATH="$build/python" stubgen -p sphereset._sphereset -o "$out" > /dev/null
 cp "$out/sphereset/_sphereset.pyi" python/sphereset/_sphereset.pyi
 echo "wrote python/sphereset/_sphereset.pyi"
-PYTHONPATH="$build/python" /usr/bin/python3 scripts/gen_results.py python/sphereset/_results.py
-echo "wrote python/sphereset/_results.py"

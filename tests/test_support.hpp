@@ -7,10 +7,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <vector>
-
-#include <numbers>
 
 #include "sphereset/evaluate.hpp"
 #include "sphereset/sphere.hpp"

@@ -15,6 +15,7 @@
 #include "sphereset/fit.hpp"
 #include "sphereset/mesh.hpp"
 #include "sphereset/options.hpp"
+#include "sphereset/result_fields.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/status.hpp"
 
@@ -142,6 +143,12 @@ struct AnimateResult {
   int64_t frames_crossing = 0;  // frames whose deformed mesh passes through itself
   double seconds = 0.0;
 };
+
+// The results as field lists (result_fields.hpp), for `sphereset animate`'s summary.json and
+// Python's AnimateResult (which holds each frame field as an array over the frames): a frame's
+// certificate, rebound and timings (its time and spheres are the doors' own); the totals.
+std::vector<ResultField> animateFrameFields(const AnimateFrameResult& frame);
+std::vector<ResultField> animateResultFields(const AnimateResult& result);
 
 // "auto", "mvc", "bones": the weighting row's choices.
 const char* centreWeightingName(CentreWeighting w);

@@ -1,10 +1,12 @@
 // One definition of each result's fields: the name every front door gives a field, its value and
-// what it means. The command line's --json summaries and the Python module's result objects
-// (their classes generated from these lists, scripts/update_stubs.sh) are made from them, so a
-// field is named, typed and documented once.
+// what it means (the robot's and the animation's lists are in robot_fit.hpp and animate.hpp). The
+// command line's --json summaries and the Python module's result objects (their classes generated
+// from these lists, scripts/update_stubs.sh) are made from them, so a field is named, typed and
+// documented once.
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -15,7 +17,9 @@ namespace sphereset {
 
 struct ResultField {
   const char* name;  // "er_sum"; a dot nests the field in a group ("seconds.total")
-  std::variant<bool, int64_t, double, std::vector<double>> value;
+  std::variant<bool, int64_t, double, std::string, std::vector<double>, std::vector<int64_t>,
+               std::vector<std::string>>
+      value;
   const char* help;
 };
 

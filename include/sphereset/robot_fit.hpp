@@ -12,6 +12,7 @@
 #include "sphereset/fit.hpp"
 #include "sphereset/options.hpp"
 #include "sphereset/repair.hpp"
+#include "sphereset/result_fields.hpp"
 #include "sphereset/robot.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/status.hpp"
@@ -122,6 +123,12 @@ struct RobotFitResult {
   double outside_volume = 0.0, split_outside_volume = 0.0, even_outside_volume = 0.0;
   double seconds = 0.0;
 };
+
+// The results as field lists (result_fields.hpp), for `sphereset robot --json` and Python's
+// RobotLinkFit/RobotFitResult: a link's counts, flags, E_r, outside volume, padding, budget
+// curve and both splits (-1 and 0 where they do not apply); the robot's totals.
+std::vector<ResultField> robotLinkFields(const RobotLinkFit& link);
+std::vector<ResultField> robotFitFields(const RobotFitResult& result);
 
 // Fits every link of `robot`. Errors: options outside robotFitOptionTable's rows (as
 // checkRobotFitOptions says them); messages prefixed by options.name: link_spheres or

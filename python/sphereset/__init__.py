@@ -26,7 +26,8 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _sphereset as _core
-from ._results import EvalResult, FitResult
+from ._results import (FRAME_COLUMNS, AnimateResult, EvalResult, FitResult, RobotFitResult,
+                       RobotLinkFit)
 from ._sphereset import (  # noqa: F401  (re-exported)
     Error,
     InvalidArgumentError,
@@ -404,68 +405,6 @@ def load_animation(path: PathLike, clip: Optional[str] = None,
     return Animation(**d)
 
 
-@dataclass
-class AnimateResult:
-    """A sphere set moved through the frames of a deforming mesh (animate.hpp's AnimateResult,
-    with the per-frame fields of AnimateFrameResult as arrays over the F frames).
-
-    ``spheres`` (F, N, 4): the moved sets (grown, with ``rebound``). ``er``, ``surface_covered``,
-    ``interior_covered``, ``max_gap`` (largest gap / diagonal of the deformed mesh) certify the
-    moved set with the rest radii; ``crossings`` counts crossing triangle pairs of the deformed
-    mesh (a frame that passes through itself is no solid: its figures are not meaningful). With
-    ``rebound``: ``er_rebound``, ``rebound_covered``, ``radius_growth`` (Σ (r' - r) / Σ r),
-    ``max_radius_growth`` (max (r' - r) / r), ``grown`` (spheres that grew). With ``fresh_fit``:
-    ``er_fresh``, E_r of a fresh fit of each frame. Timings per frame and in total (seconds).
-    """
-
-    spheres: np.ndarray
-    times: np.ndarray
-    er: np.ndarray
-    surface_covered: np.ndarray
-    interior_covered: np.ndarray
-    max_gap: np.ndarray
-    crossings: np.ndarray
-    er_rebound: np.ndarray
-    rebound_covered: np.ndarray
-    radius_growth: np.ndarray
-    max_radius_growth: np.ndarray
-    grown: np.ndarray
-    er_fresh: np.ndarray
-    update_seconds: np.ndarray
-    eval_seconds: np.ndarray
-    rebound_seconds: np.ndarray
-    fresh_seconds: np.ndarray
-    weighting: str
-    rebound: bool
-    weights_seconds: float
-    frames_covered: int
-    frames_crossing: int
-    seconds: float
-
-    @property
-    def covered(self) -> np.ndarray:
-        """Per frame, whether the set in ``spheres`` is certified to cover the deformed surface
-        and interior: ``rebound_covered`` with rebound, else surface and interior covered."""
-        if self.rebound:
-            return self.rebound_covered.copy()
-        return self.surface_covered & self.interior_covered
-
-    def __len__(self) -> int:
-        return int(self.spheres.shape[0])
-
-    def to_dict(self) -> Dict[str, Any]:
-        """The fields as a dict (arrays as lists), e.g. for JSON."""
-        return {k: (v.tolist() if isinstance(v, np.ndarray) else v)
-                for k, v in dataclasses.asdict(self).items()}
-
-
-_FRAME_FIELDS = {
-    "er": np.float64, "surface_covered": bool, "interior_covered": bool, "max_gap": np.float64,
-    "crossings": np.int64, "er_rebound": np.float64, "rebound_covered": bool,
-    "radius_growth": np.float64, "max_radius_growth": np.float64, "grown": np.int64,
-    "er_fresh": np.float64, "update_seconds": np.float64, "eval_seconds": np.float64,
-    "rebound_seconds": np.float64, "fresh_seconds": np.float64,
-}
 
 
 def animate(rest_mesh: Union[Mesh, PathLike, None], spheres: Any,
@@ -518,80 +457,10 @@ def animate(rest_mesh: Union[Mesh, PathLike, None], spheres: Any,
                     else np.zeros((0, 0, 4), dtype=np.float64)),
         "times": np.array([f["time"] for f in fr], dtype=np.float64),
     }
-    for k, t in _FRAME_FIELDS.items():
+    for k, t in FRAME_COLUMNS.items():
         out[k] = np.array([f[k] for f in fr], dtype=t)
     out.update(d)
     return AnimateResult(**out)
-
-
-@dataclass
-class RobotLinkFit:
-    """One link of a robot fit (robot_fit.hpp's RobotLinkFit): ``spheres`` (N, 4), its sphere
-    primitives first then the fitted spheres, padded; ``skipped`` (link_spheres set it to 0),
-    ``from_visual`` (fitted to its <visual> geometry), ``fitted``, ``covered`` (the coverage
-    certificates of the fitted spheres), the mesh ``files``; when fitted, ``repair`` and
-    ``eval`` (E_r, coverage, gaps of the fitted spheres before padding) and ``er_sum``;
-    under a budget, ``budget_curve`` (the quick fits' outside volumes) and the counts and outside
-    volumes of the curve split and the even split."""
-
-    link: str
-    spheres: np.ndarray
-    primitives: int
-    skipped: bool
-    from_visual: bool
-    fitted: bool
-    covered: bool
-    files: List[str]
-    repair: Optional[Dict[str, Any]]
-    eval: Optional[Dict[str, Any]]
-    er_sum: float
-    outside_volume: float
-    padding: float
-    budget_curve: Optional[Dict[str, List[float]]]
-    split_count: int
-    even_count: int
-    split_volume: float
-    even_volume: float
-    seconds: float
-
-
-@dataclass
-class RobotFitResult:
-    """A whole robot fitted (robot_fit.hpp's RobotFitResult): ``links`` in the robot's order
-    (the links with geometry); with a budget, the total outside volume as chosen and for the
-    curve split and the even split alone."""
-
-    robot: str
-    urdf: str
-    links: List[RobotLinkFit]
-    budget_split: bool
-    outside_volume: float
-    split_outside_volume: float
-    even_outside_volume: float
-    seconds: float
-
-    @property
-    def spheres(self) -> Dict[str, np.ndarray]:
-        """{link: (N, 4) spheres} of the links not skipped, in order: what
-        :func:`write_robot_spheres` and :func:`write_sphere_urdf` take."""
-        return {lf.link: lf.spheres for lf in self.links if not lf.skipped}
-
-    @property
-    def covered(self) -> bool:
-        """Every link's spheres certified to cover it."""
-        return all(lf.covered for lf in self.links)
-
-    def to_dict(self) -> Dict[str, Any]:
-        """The fields as a dict (arrays as lists), e.g. for JSON."""
-        def conv(v: Any) -> Any:
-            if isinstance(v, np.ndarray):
-                return v.tolist()
-            if isinstance(v, dict):
-                return {k: conv(x) for k, x in v.items()}
-            if isinstance(v, list):
-                return [conv(x) for x in v]
-            return v
-        return conv(dataclasses.asdict(self))
 
 
 def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,

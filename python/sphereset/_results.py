@@ -6,13 +6,20 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
-from typing import Any, Dict
+from typing import Any, Dict, List, Optional
 
 import numpy as np
 
 
 def _plain(value: Any) -> Any:
-    return value.tolist() if isinstance(value, np.ndarray) else value
+    """Arrays as lists, through dicts and lists: what JSON takes."""
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_plain(v) for v in value]
+    return value
 
 
 @dataclass
@@ -146,3 +153,186 @@ class EvalResult:
     def to_dict(self) -> Dict[str, Any]:
         """The fields as a dict (arrays as lists), e.g. for JSON."""
         return {k: _plain(v) for k, v in dataclasses.asdict(self).items()}
+
+@dataclass
+class AnimateResult:
+    """A sphere set moved through the frames of a deforming mesh (animate.hpp's AnimateResult,
+    with the per-frame fields of AnimateFrameResult as arrays over the F frames).
+
+    ``spheres`` (F, N, 4): the moved sets (grown, with ``rebound``); ``times`` the frames'
+    times. ``er``, ``surface_covered``, ``interior_covered``, ``max_gap`` certify the moved set
+    with the rest radii; ``crossings`` counts crossing triangle pairs of the deformed mesh (a
+    frame that passes through itself is no solid: its figures are not meaningful). The rebound
+    and fresh-fit fields are 0 unless asked for."""
+
+    spheres: np.ndarray
+    """(F, N, 4) the set in each frame"""
+    times: np.ndarray
+    """(F,) the frames' times"""
+    er: np.ndarray
+    """per frame: E_r of the moved set with the rest radii"""
+    surface_covered: np.ndarray
+    """per frame: its surface certificate"""
+    interior_covered: np.ndarray
+    """per frame: its interior certificate"""
+    max_gap: np.ndarray
+    """per frame: largest surface or interior gap / diagonal of the deformed mesh"""
+    crossings: np.ndarray
+    """per frame: crossing triangle pairs of the deformed mesh (capped)"""
+    er_rebound: np.ndarray
+    """per frame: rebound: E_r of the grown set"""
+    rebound_covered: np.ndarray
+    """per frame: rebound: the grown set certified"""
+    radius_growth: np.ndarray
+    """per frame: rebound: Σ (r' - r) / Σ r"""
+    max_radius_growth: np.ndarray
+    """per frame: rebound: max (r' - r) / r"""
+    grown: np.ndarray
+    """per frame: rebound: spheres whose radius grew"""
+    er_fresh: np.ndarray
+    """per frame: fresh fit: E_r of a fresh fit of the frame"""
+    update_seconds: np.ndarray
+    """per frame: seconds moving the centres"""
+    eval_seconds: np.ndarray
+    """per frame: seconds certifying"""
+    rebound_seconds: np.ndarray
+    """per frame: seconds in the rebound"""
+    fresh_seconds: np.ndarray
+    """per frame: seconds in the fresh fit"""
+    weighting: str
+    """the centres' weighting used"""
+    weights_seconds: float
+    """seconds precomputing the centre weights"""
+    frames_covered: int
+    """frames whose moved set covers surface and interior"""
+    frames_crossing: int
+    """frames whose deformed mesh passes through itself"""
+    seconds: float
+    """seconds in all"""
+    rebound: bool
+    """whether radii were grown per frame"""
+
+    @property
+    def covered(self) -> np.ndarray:
+        """Per frame, whether the set in ``spheres`` is certified to cover the deformed surface
+        and interior: ``rebound_covered`` with rebound, else surface and interior covered."""
+        if self.rebound:
+            return self.rebound_covered.copy()
+        return self.surface_covered & self.interior_covered
+
+    def __len__(self) -> int:
+        return int(self.spheres.shape[0])
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The fields as a dict (arrays as lists), e.g. for JSON."""
+        return {k: _plain(v) for k, v in dataclasses.asdict(self).items()}
+
+@dataclass
+class RobotLinkFit:
+    """One link of a robot fit (robot_fit.hpp's RobotLinkFit): ``spheres`` (N, 4), its sphere
+    primitives first then the fitted spheres, padded; when fitted, ``repair`` and ``eval`` (the
+    fitted spheres' evaluation before padding, as :class:`EvalResult`'s fields)."""
+
+    spheres: np.ndarray
+    """(N, 4) rows x, y, z, r"""
+    link: str
+    """the link's name"""
+    count: int
+    """spheres, primitives included"""
+    primitives: int
+    """sphere primitives of its geometry, kept exact"""
+    files: List[str]
+    """the mesh files of its geometry"""
+    from_visual: bool
+    """fitted to its <visual> geometry (it has no <collision>)"""
+    skipped: bool
+    """link_spheres set it to 0: no spheres"""
+    fitted: bool
+    """some spheres were fitted"""
+    covered: bool
+    """the coverage certificates of the fitted spheres"""
+    er_sum: float
+    """E_r of the fitted spheres, before padding"""
+    outside_volume: float
+    """Σ outside volume of the fitted spheres"""
+    padding: float
+    """added to every radius"""
+    budget_curve: Dict[str, np.ndarray]
+    """counts: under a budget: the quick fits' sphere counts; outside_volume: and their outside volumes"""
+    split_count: int
+    """the curve split's count (-1: no budget)"""
+    split_volume: float
+    """its fit's outside volume"""
+    even_count: int
+    """the even split's count (-1: no budget)"""
+    even_volume: float
+    """its fit's outside volume"""
+    seconds: float
+    """seconds fitting the link (all its fits), without repair"""
+    repair: Optional[Dict[str, Any]]
+    """when fitted: what the repair did"""
+    eval: Optional[Dict[str, Any]]
+    """when fitted: the fitted spheres' evaluation"""
+
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The fields as a dict (arrays as lists), e.g. for JSON."""
+        return {k: _plain(v) for k, v in dataclasses.asdict(self).items()}
+
+@dataclass
+class RobotFitResult:
+    """A whole robot fitted (robot_fit.hpp's RobotFitResult): ``links`` in the robot's order
+    (the links with geometry); with a budget, the total outside volume as chosen and for the
+    curve split and the even split alone."""
+
+    robot: str
+    """the robot's name"""
+    urdf: str
+    """the URDF read"""
+    links: List[RobotLinkFit]
+    """the links with geometry, in order"""
+    budget_split: bool
+    """some link's count came from the budget"""
+    outside_volume: float
+    """Σ outside volume of the links the budget split"""
+    split_outside_volume: float
+    """the same for the curve split alone"""
+    even_outside_volume: float
+    """the same for the even split alone"""
+    seconds: float
+    """seconds in all"""
+
+    @property
+    def spheres(self) -> Dict[str, np.ndarray]:
+        """{link: (N, 4) spheres} of the links not skipped, in order: what
+        :func:`write_robot_spheres` and :func:`write_sphere_urdf` take."""
+        return {lf.link: lf.spheres for lf in self.links if not lf.skipped}
+
+    @property
+    def covered(self) -> bool:
+        """Every link's spheres certified to cover it."""
+        return all(lf.covered for lf in self.links)
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The fields as a dict (arrays as lists), e.g. for JSON."""
+        return {k: _plain(v) for k, v in dataclasses.asdict(self).items()}
+
+
+# AnimateResult's per-frame columns and their types.
+FRAME_COLUMNS: Dict[str, Any] = {
+    "er": np.float64,
+    "surface_covered": bool,
+    "interior_covered": bool,
+    "max_gap": np.float64,
+    "crossings": np.int64,
+    "er_rebound": np.float64,
+    "rebound_covered": bool,
+    "radius_growth": np.float64,
+    "max_radius_growth": np.float64,
+    "grown": np.int64,
+    "er_fresh": np.float64,
+    "update_seconds": np.float64,
+    "eval_seconds": np.float64,
+    "rebound_seconds": np.float64,
+    "fresh_seconds": np.float64,
+}

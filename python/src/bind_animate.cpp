@@ -91,24 +91,9 @@ void requireSolid(const PyMesh& pm) {
 }
 
 py::dict frameDict(const AnimateFrameResult& f) {
-  py::dict d;
+  py::dict d = fieldsDict(animateFrameFields(f));
   d["time"] = f.time;
   d["spheres"] = spheresToArray(f.spheres);
-  d["er"] = f.er;
-  d["surface_covered"] = f.surface_covered;
-  d["interior_covered"] = f.interior_covered;
-  d["max_gap"] = f.max_gap;
-  d["crossings"] = f.crossings;
-  d["er_rebound"] = f.er_rebound;
-  d["rebound_covered"] = f.rebound_covered;
-  d["radius_growth"] = f.radius_growth;
-  d["max_radius_growth"] = f.max_radius_growth;
-  d["grown"] = f.grown;
-  d["er_fresh"] = f.er_fresh;
-  d["update_seconds"] = f.update_seconds;
-  d["eval_seconds"] = f.eval_seconds;
-  d["rebound_seconds"] = f.rebound_seconds;
-  d["fresh_seconds"] = f.fresh_seconds;
   return d;
 }
 
@@ -295,14 +280,9 @@ void bindAnimate(py::module_& m) {
         if (!r) raise(r.error().code, name + ": " + r.error().message);
         py::list fl;
         for (const AnimateFrameResult& f : r->frames) fl.append(frameDict(f));
-        py::dict d;
+        py::dict d = fieldsDict(animateResultFields(*r));
         d["frames"] = fl;
-        d["weighting"] = centreWeightingName(r->weighting);
         d["rebound"] = rebound;
-        d["weights_seconds"] = r->weights_seconds;
-        d["frames_covered"] = r->frames_covered;
-        d["frames_crossing"] = r->frames_crossing;
-        d["seconds"] = r->seconds;
         return d;
       },
       py::arg("rest"), py::arg("spheres"), py::arg("frames"), py::arg("times"),

@@ -8,7 +8,9 @@
 
 #include "fit_args.hpp"
 #include "solid.hpp"
+#include "sphereset/animate.hpp"
 #include "sphereset/fit.hpp"
+#include "sphereset/robot_fit.hpp"
 
 namespace sphereset::python {
 
@@ -69,6 +71,10 @@ py::dict fieldsDict(const std::vector<ResultField>& fields) {
           using T = std::decay_t<decltype(v)>;
           if constexpr (std::is_same_v<T, std::vector<double>>)
             return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+          else if constexpr (std::is_same_v<T, std::vector<int64_t>>)
+            return py::array_t<int64_t>(static_cast<py::ssize_t>(v.size()), v.data());
+          else if constexpr (std::is_same_v<T, std::string>)
+            return text(v);
           else
             return py::cast(v);
         },
@@ -106,7 +112,10 @@ py::list resultSchema(const std::vector<ResultField>& fields) {
           if constexpr (std::is_same_v<T, bool>) return "bool";
           if constexpr (std::is_same_v<T, int64_t>) return "int";
           if constexpr (std::is_same_v<T, double>) return "float";
-          return "array";
+          if constexpr (std::is_same_v<T, std::string>) return "str";
+          if constexpr (std::is_same_v<T, std::vector<double>>) return "array";
+          if constexpr (std::is_same_v<T, std::vector<int64_t>>) return "int_array";
+          return "str_list";
         },
         f.value);
     row["help"] = f.help;
@@ -168,7 +177,13 @@ void bindFit(py::module_& m) {
       [](const std::string& kind) {
         if (kind == "fit") return resultSchema(fitResultFields(FitResult{}, 1.0));
         if (kind == "eval") return resultSchema(evalResultFields(EvalResult{}));
-        raise(ErrorCode::kInvalidArgument, "no result kind '" + kind + "' (expected fit or eval)");
+        if (kind == "robot") return resultSchema(robotFitFields(RobotFitResult{}));
+        if (kind == "robot_link") return resultSchema(robotLinkFields(RobotLinkFit{}));
+        if (kind == "animate") return resultSchema(animateResultFields(AnimateResult{}));
+        if (kind == "animate_frame") return resultSchema(animateFrameFields(AnimateFrameResult{}));
+        raise(ErrorCode::kInvalidArgument,
+              "no result kind '" + kind +
+                  "' (expected fit, eval, robot, robot_link, animate or animate_frame)");
       },
       py::arg("kind"));
 }

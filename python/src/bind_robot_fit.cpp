@@ -12,33 +12,10 @@ namespace sphereset::python {
 namespace {
 
 py::dict linkDict(const RobotLinkFit& j) {
-  py::dict d;
-  d["link"] = j.link;
+  py::dict d = fieldsDict(robotLinkFields(j));
   d["spheres"] = spheresToArray(j.spheres);
-  d["primitives"] = j.primitives;
-  d["skipped"] = j.skipped;
-  d["from_visual"] = j.from_visual;
-  d["fitted"] = j.fitted;
-  d["covered"] = j.covered;
-  d["files"] = j.files;
   d["repair"] = j.fitted ? py::object(repairDict(j.repair)) : py::object(py::none());
   d["eval"] = j.fitted ? py::object(fieldsDict(evalResultFields(j.eval))) : py::object(py::none());
-  d["er_sum"] = j.fitted ? j.eval.er_sum : 0.0;
-  d["outside_volume"] = j.outside_volume;
-  d["padding"] = j.padding;
-  if (j.curve.counts.empty()) {
-    d["budget_curve"] = py::none();
-  } else {
-    py::dict c;
-    c["counts"] = j.curve.counts;
-    c["outside_volume"] = j.curve.outside_volume;
-    d["budget_curve"] = c;
-  }
-  d["split_count"] = j.split_count;
-  d["even_count"] = j.even_count;
-  d["split_volume"] = j.split_volume;
-  d["even_volume"] = j.even_volume;
-  d["seconds"] = j.seconds;
   return d;
 }
 
@@ -86,15 +63,10 @@ void bindRobotFit(py::module_& m) {
         if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         py::list links;
         for (const RobotLinkFit& j : r.links) links.append(linkDict(j));
-        py::dict d;
-        d["robot"] = robot.name;
-        d["urdf"] = urdf;
+        py::dict d = fieldsDict(robotFitFields(r));
+        d["robot"] = text(robot.name);
+        d["urdf"] = text(urdf);
         d["links"] = links;
-        d["budget_split"] = r.budget_split;
-        d["outside_volume"] = r.outside_volume;
-        d["split_outside_volume"] = r.split_outside_volume;
-        d["even_outside_volume"] = r.even_outside_volume;
-        d["seconds"] = r.seconds;
         return d;
       },
       py::arg("urdf"), py::arg("options"), py::arg("fit_options"), py::arg("package_paths"),

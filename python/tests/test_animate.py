@@ -251,6 +251,12 @@ def test_same_spheres_as_cli(cli, tmp_path, rebound):
     summary = json.loads((out / "summary.json").read_text())
     assert summary["weighting"] == "mvc" and r.weighting == "mvc"
     assert summary["frames_covered"] == r.frames_covered
+    # One field list (animate.hpp) behind both: every frame field, same name and value.
+    for row in ss._core._result_schema("animate_frame"):
+        name = row["name"]
+        if name.endswith("seconds"):
+            continue
+        assert getattr(r, name).tolist() == [f[name] for f in summary["frames"]], name
     for i, fr in enumerate(summary["frames"]):
         np.testing.assert_array_equal(ss.read_spheres(out / fr["file"]), r.spheres[i])
         assert fr["er"] == pytest.approx(r.er[i], rel=1e-12)

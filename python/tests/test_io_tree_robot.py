@@ -188,7 +188,19 @@ def test_fit_robot_same_spheres_as_cli(cli, tmp_path):
         if lf.fitted:
             assert lf.er_sum == rl["er_sum"] and lf.eval["er_sum"] == rl["er_sum"]
             assert lf.repair["kind"] == rl["repair"]["kind"]
-    assert r.budget_split and r.outside_volume == ref["budget"]["outside_volume"]
+        # One field list (robot_fit.hpp) behind both: every field, same name and value.
+        for row in ss._core._result_schema("robot_link"):
+            name = row["name"].split(".")[0]
+            if name == "seconds":
+                continue
+            mine = getattr(lf, name)
+            if isinstance(mine, dict):
+                assert {k: list(v) for k, v in mine.items()} == rl[name], name
+            elif isinstance(mine, np.ndarray):
+                assert mine.tolist() == rl[name], name
+            else:
+                assert mine == rl[name], name
+    assert r.budget_split and r.outside_volume == ref["outside_volume"] and ref["budget"] == 12
     spheres = r.spheres
     assert len(spheres["base_link"]) == 2
     assert sum(len(s) for s in spheres.values()) <= 12

@@ -28,12 +28,12 @@ double sum(const std::vector<double>& w) {
 }
 
 // Points inside and outside a convex and a non-convex solid.
-struct Case {
+struct SolidPoints {
   Mesh mesh;
   std::vector<Vec3> points;
 };
 
-std::vector<Case> cases() {
+std::vector<SolidPoints> cases() {
   return {
       {makeIcosphere(1.0, 2),
        {{0.1, 0.2, -0.3},
@@ -53,7 +53,7 @@ std::vector<Case> cases() {
 }
 
 TEST(MeanValue, LinearPrecisionAndPartitionOfUnityInsideAndOutside) {
-  for (const Case& c : cases())
+  for (const SolidPoints& c : cases())
     for (const Vec3& x : c.points) {
       const std::vector<double> w = meanValueCoordinates(c.mesh, x);
       ASSERT_EQ(w.size(), c.mesh.vertices.size());
@@ -73,7 +73,7 @@ TEST(MeanValue, OutsidePointsHaveNegativeWeightsInsideNone) {
 TEST(MeanValue, AffineMapOfTheMeshMovesThePointByTheSameMap) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (const Case& c : cases()) {
+  for (const SolidPoints& c : cases()) {
     Eigen::Affine3d a = Eigen::Affine3d::Identity();
     Eigen::Matrix3d lin;
     for (int i = 0; i < 3; ++i)
@@ -87,8 +87,7 @@ TEST(MeanValue, AffineMapOfTheMeshMovesThePointByTheSameMap) {
     for (size_t i = 0; i < c.points.size(); ++i) {
       Vec3 y = Vec3::Zero();
       for (size_t j = 0; j < moved.vertices.size(); ++j)
-        y += mw(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) *
-             moved.vertices[j];
+        y += mw(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) * moved.vertices[j];
       EXPECT_LT((y - a * c.points[i]).norm(), 1e-8);
     }
   }

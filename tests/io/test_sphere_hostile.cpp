@@ -62,8 +62,8 @@ TEST_F(SphereHostile, SphTreeLargerThanTheFileIsTruncated) {
 TEST_F(SphereHostile, JsonTreeLayoutIsCappedBeforeAllocating) {
   for (const char* layout : {"67108863:1", "8191:2", "2048:2"}) {
     const std::string l = layout;
-    const std::string p = write("wide.json", jsonTree(l.substr(0, l.find(':')),
-                                                      l.substr(l.find(':') + 1), "0"));
+    const std::string p =
+        write("wide.json", jsonTree(l.substr(0, l.find(':')), l.substr(l.find(':') + 1), "0"));
     expectError(readSphereTree(p), ErrorCode::kInvalidData, p, "too large");
   }
   EXPECT_TRUE(readSphereTree(write("ok.json", jsonTree("2047", "2", "0"))).ok());

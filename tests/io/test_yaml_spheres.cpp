@@ -206,9 +206,12 @@ TEST_F(YamlSpheres, SingleLinkOutputIsUnchanged) {
 
 TEST_F(YamlSpheres, SeveralLinksRoundTrip) {
   const std::vector<LinkSpheres> links = {
-      {"panda_link0", kRoundTripSet}, {"panda_hand", {kRoundTripSet[1]}},
-      {"empty", {}},         {"true", {kRoundTripSet[2]}},
-      {"1.5", {kRoundTripSet[0]}},    {"a \"quoted\"\\ name\t#1", {kRoundTripSet[0], kRoundTripSet[2]}}};
+      {"panda_link0", kRoundTripSet},
+      {"panda_hand", {kRoundTripSet[1]}},
+      {"empty", {}},
+      {"true", {kRoundTripSet[2]}},
+      {"1.5", {kRoundTripSet[0]}},
+      {"a \"quoted\"\\ name\t#1", {kRoundTripSet[0], kRoundTripSet[2]}}};
   const std::string p = path("robot.yaml");
   SphereFileMeta meta;
   ASSERT_TRUE(writeLinkSpheres(p, links, meta).ok());
@@ -259,10 +262,12 @@ TEST_F(YamlSpheres, WritingSeveralLinksChecksThem) {
     EXPECT_NE(st.error().message.find(words), std::string::npos) << st.error().message;
     EXPECT_FALSE(fs::exists(p));
   };
-  expectRefused(path("a.txt"), {{"a", kRoundTripSet}}, ErrorCode::kInvalidArgument, "written as YAML");
+  expectRefused(path("a.txt"), {{"a", kRoundTripSet}}, ErrorCode::kInvalidArgument,
+                "written as YAML");
   expectRefused(path("a.yaml"), {{"a", kRoundTripSet}, {"a", {}}}, ErrorCode::kInvalidArgument,
                 "link 'a' appears twice");
-  expectRefused(path("a.yaml"), {{"", kRoundTripSet}}, ErrorCode::kInvalidArgument, "link 0 has no name");
+  expectRefused(path("a.yaml"), {{"", kRoundTripSet}}, ErrorCode::kInvalidArgument,
+                "link 0 has no name");
   std::vector<Sphere> bad = kRoundTripSet;
   bad[2].radius = -1.0;
   expectRefused(path("a.yaml"), {{"a", kRoundTripSet}, {"b", bad}}, ErrorCode::kInvalidData,

@@ -264,7 +264,6 @@ TEST_F(Urdf, MimicJointsAreRead) {
   EXPECT_NEAR(poses->at("r").translation().y(), -0.02, 1e-12);
 }
 
-}  // namespace
 // 50 000 nested elements used to overflow the stack inside TinyXML (a segfault); the depth is
 // checked before parsing.
 TEST_F(Urdf, DeeplyNestedElementsAreRefused) {
@@ -282,4 +281,5 @@ TEST_F(Urdf, DeeplyNestedElementsAreRefused) {
   EXPECT_TRUE(r.ok()) << r.error().message;
 }
 
+}  // namespace
 }  // namespace sphereset

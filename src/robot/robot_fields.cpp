@@ -1,0 +1,45 @@
+// The whole-robot fit's results as field lists (robot_fit.hpp, result_fields.hpp): the one
+// place where a link's and the robot's result fields get the names, types and meanings that
+// `sphereset robot --json` and Python's results show.
+#include <cstdint>
+#include <vector>
+
+#include "sphereset/robot_fit.hpp"
+
+namespace sphereset {
+
+std::vector<ResultField> robotLinkFields(const RobotLinkFit& j) {
+  std::vector<int64_t> counts(j.curve.counts.begin(), j.curve.counts.end());
+  return {
+      {"link", j.link, "the link's name"},
+      {"count", static_cast<int64_t>(j.spheres.size()), "spheres, primitives included"},
+      {"primitives", int64_t{j.primitives}, "sphere primitives of its geometry, kept exact"},
+      {"files", j.files, "the mesh files of its geometry"},
+      {"from_visual", j.from_visual, "fitted to its <visual> geometry (it has no <collision>)"},
+      {"skipped", j.skipped, "link_spheres set it to 0: no spheres"},
+      {"fitted", j.fitted, "some spheres were fitted"},
+      {"covered", j.covered, "the coverage certificates of the fitted spheres"},
+      {"er_sum", j.fitted ? j.eval.er_sum : 0.0, "E_r of the fitted spheres, before padding"},
+      {"outside_volume", j.outside_volume, "Σ outside volume of the fitted spheres"},
+      {"padding", j.padding, "added to every radius"},
+      {"budget_curve.counts", counts, "under a budget: the quick fits' sphere counts"},
+      {"budget_curve.outside_volume", j.curve.outside_volume, "and their outside volumes"},
+      {"split_count", int64_t{j.split_count}, "the curve split's count (-1: no budget)"},
+      {"split_volume", j.split_volume, "its fit's outside volume"},
+      {"even_count", int64_t{j.even_count}, "the even split's count (-1: no budget)"},
+      {"even_volume", j.even_volume, "its fit's outside volume"},
+      {"seconds", j.seconds, "seconds fitting the link (all its fits), without repair"},
+  };
+}
+
+std::vector<ResultField> robotFitFields(const RobotFitResult& r) {
+  return {
+      {"budget_split", r.budget_split, "some link's count came from the budget"},
+      {"outside_volume", r.outside_volume, "Σ outside volume of the links the budget split"},
+      {"split_outside_volume", r.split_outside_volume, "the same for the curve split alone"},
+      {"even_outside_volume", r.even_outside_volume, "the same for the even split alone"},
+      {"seconds", r.seconds, "seconds in all"},
+  };
+}
+
+}  // namespace sphereset
