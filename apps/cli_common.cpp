@@ -126,24 +126,8 @@ Expected<std::map<std::string, double>> parseJointPositions(const std::string& t
 }
 
 nlohmann::json repairJson(const RepairResult& r) {
-  nlohmann::json j = {{"kind", repairName(r.kind)},
-                      {"weld_tolerance", r.weld_tolerance},
-                      {"triangles_flipped", r.triangles_flipped},
-                      {"holes_capped", r.holes_capped},
-                      {"shells_dropped", r.shells_dropped},
-                      {"cavities_filled", r.cavities_filled},
-                      {"cavities_kept", r.cavities_kept},
-                      {"triangles", r.solid.triangles.size()},
-                      {"volume", signedVolume(r.solid)},
-                      {"seconds", r.seconds},
-                      {"notes", r.notes}};
-  // NaN is not JSON: an undefined ratio is null.
-  j["volume_ratio"] = std::isfinite(r.volume_ratio) ? nlohmann::json(r.volume_ratio) : nullptr;
-  if (r.kind == RepairKind::kWrapped) {
-    j["wrap_alpha"] = r.wrap_alpha;
-    j["wrap_offset"] = r.wrap_offset;
-  }
-  return j;
+  // NaN (an undefined volume ratio) is not JSON: it is written as null.
+  return fieldsJson(repairResultFields(r));
 }
 
 std::string repairLine(const RepairResult& r) {

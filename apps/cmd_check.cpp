@@ -54,37 +54,11 @@ ShellCounts countShells(const ShellAnalysis& sa) {
 }
 
 nlohmann::json checkJson(const LoadedMesh& m, const MeshDiagnosis& d) {
-  const LoadReport& r = m.report;
-  return {{"file", r.path},
-          {"format", r.format},
-          {"vertices", d.vertices},
-          {"triangles", d.triangles},
-          {"edges", d.edges},
-          {"closed", d.closed},
-          {"manifold", d.manifold},
-          {"oriented", d.oriented},
-          {"solid", d.isSolid()},
-          {"components", d.components},
-          {"boundary_edges", d.boundary_edges},
-          {"nonmanifold_edges", d.nonmanifold_edges},
-          {"nonmanifold_vertices", d.nonmanifold_vertices},
-          {"misoriented_edges", d.misoriented_edges},
-          {"volume", d.volume},
-          {"area", d.area},
-          {"bbox_min", vec(d.bbox.min)},
-          {"bbox_max", vec(d.bbox.max)},
-          {"bbox_diagonal", d.bbox.diagonal()},
-          {"min_edge", d.min_edge},
-          {"max_edge", d.max_edge},
-          {"load",
-           {{"scene_meshes", r.scene_meshes},
-            {"file_vertices", r.file_vertices},
-            {"file_triangles", r.file_faces},
-            {"welded_vertices", r.welded_vertices},
-            {"unused_vertices", r.unused_vertices},
-            {"degenerate_dropped", r.degenerate_dropped},
-            {"duplicate_dropped", r.duplicate_dropped},
-            {"flipped", r.flipped}}}};
+  nlohmann::json j = fieldsJson(meshDiagnosisFields(d));
+  j["file"] = m.report.path;
+  j["format"] = m.report.format;
+  j["load"] = fieldsJson(loadReportFields(m.report));
+  return j;
 }
 
 nlohmann::json shellsJson(const ShellCounts& c) {

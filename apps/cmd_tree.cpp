@@ -30,11 +30,7 @@ nlohmann::json treeJson(const TreeArgs& a, const TreeOptions& to, const FitOptio
                         const TreeFitResult& r, double volume, const EvalResult& ev) {
   nlohmann::json lv = nlohmann::json::array();
   for (const TreeLevelStats& l : r.tree.levels)
-    lv.push_back({{"level", l.level},
-                  {"spheres", l.nodes},
-                  {"er_sum", l.outside_volume / volume},
-                  {"rounds", l.iterations},
-                  {"converged", l.converged}});
+    lv.push_back(fieldsJson(treeLevelFields(l, volume)));
   return {{"mesh", a.fit.mesh.path},
           {"output", a.fit.out_path},
           {"branching", to.branching},

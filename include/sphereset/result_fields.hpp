@@ -12,6 +12,8 @@
 
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
+#include "sphereset/mesh.hpp"
+#include "sphereset/repair.hpp"
 
 namespace sphereset {
 
@@ -31,5 +33,18 @@ std::vector<ResultField> fitResultFields(const FitResult& r, double mesh_volume)
 // An evaluation's figures (EvalResult): E_r summed and of the union, the certificates with
 // their gaps, proximity and shadow errors.
 std::vector<ResultField> evalResultFields(const EvalResult& r);
+
+// What the repair did (RepairResult without its meshes): kind, weld tolerance, counts of each
+// step, the solid's triangles and volume, the volume ratio (NaN where undefined: null in JSON),
+// the wrap's parameters (0 unless wrapped), time and notes.
+std::vector<ResultField> repairResultFields(const RepairResult& r);
+
+// A mesh's diagnosis: counts, the closed/manifold/oriented/solid flags, volume, area, bounding
+// box ("bbox_min", "bbox_max" as x, y, z) and edge lengths.
+std::vector<ResultField> meshDiagnosisFields(const MeshDiagnosis& d);
+
+// How a file became a mesh (LoadReport without its maps): the file's counts and what the
+// clean-up merged, dropped or flipped.
+std::vector<ResultField> loadReportFields(const LoadReport& r);
 
 }  // namespace sphereset

@@ -8,6 +8,7 @@
 
 #include "sphereset/fit.hpp"
 #include "sphereset/options.hpp"
+#include "sphereset/result_fields.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_tree.hpp"
@@ -49,6 +50,11 @@ struct TreeLevelStats {
   bool converged = false;       // assignment stopped changing before the cap
   double outside_volume = 0.0;  // Σ SOV of the level (only when built with a SolidIndex)
 };
+
+// A level's statistics as a field list (result_fields.hpp), for `sphereset tree --json` and
+// Python's tree results: level, spheres, rounds, convergence, outside volume and E_r against
+// `volume` (0 when no solid was given).
+std::vector<ResultField> treeLevelFields(const TreeLevelStats& level, double volume);
 
 struct TreeResult {
   SphereTree tree;

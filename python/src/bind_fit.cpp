@@ -11,6 +11,7 @@
 #include "sphereset/animate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/robot_fit.hpp"
+#include "sphereset/tree.hpp"
 
 namespace sphereset::python {
 
@@ -181,9 +182,14 @@ void bindFit(py::module_& m) {
         if (kind == "robot_link") return resultSchema(robotLinkFields(RobotLinkFit{}));
         if (kind == "animate") return resultSchema(animateResultFields(AnimateResult{}));
         if (kind == "animate_frame") return resultSchema(animateFrameFields(AnimateFrameResult{}));
+        if (kind == "repair") return resultSchema(repairResultFields(RepairResult{}));
+        if (kind == "diagnosis") return resultSchema(meshDiagnosisFields(MeshDiagnosis{}));
+        if (kind == "load") return resultSchema(loadReportFields(LoadReport{}));
+        if (kind == "tree_level") return resultSchema(treeLevelFields(TreeLevelStats{}, 1.0));
         raise(ErrorCode::kInvalidArgument,
               "no result kind '" + kind +
-                  "' (expected fit, eval, robot, robot_link, animate or animate_frame)");
+                  "' (expected fit, eval, robot, robot_link, animate, animate_frame, repair, "
+                  "diagnosis, load or tree_level)");
       },
       py::arg("kind"));
 }

@@ -31,63 +31,16 @@ RepairOptions repairOptions(const std::string& repair, double weld_tolerance, bo
   return ro;
 }
 
-py::dict repairDict(const RepairResult& r) {
-  py::dict d;
-  d["kind"] = repairName(r.kind);
-  d["weld_tolerance"] = r.weld_tolerance;
-  d["triangles_flipped"] = r.triangles_flipped;
-  d["holes_capped"] = r.holes_capped;
-  d["shells_dropped"] = r.shells_dropped;
-  d["cavities_filled"] = r.cavities_filled;
-  d["cavities_kept"] = r.cavities_kept;
-  d["triangles"] = r.solid.triangles.size();
-  d["volume"] = signedVolume(r.solid);
-  d["volume_ratio"] = r.volume_ratio;  // NaN when undefined
-  d["wrap_alpha"] = r.wrap_alpha;
-  d["wrap_offset"] = r.wrap_offset;
-  d["seconds"] = r.seconds;
-  d["notes"] = r.notes;
-  return d;
-}
+py::dict repairDict(const RepairResult& r) { return fieldsDict(repairResultFields(r)); }
 
-py::dict diagnosisDict(const MeshDiagnosis& d) {
-  py::dict j;
-  j["vertices"] = d.vertices;
-  j["triangles"] = d.triangles;
-  j["edges"] = d.edges;
-  j["closed"] = d.closed;
-  j["manifold"] = d.manifold;
-  j["oriented"] = d.oriented;
-  j["solid"] = d.isSolid();
-  j["components"] = d.components;
-  j["boundary_edges"] = d.boundary_edges;
-  j["nonmanifold_edges"] = d.nonmanifold_edges;
-  j["nonmanifold_vertices"] = d.nonmanifold_vertices;
-  j["misoriented_edges"] = d.misoriented_edges;
-  j["volume"] = d.volume;
-  j["area"] = d.area;
-  j["bbox_min"] = py::make_tuple(d.bbox.min.x(), d.bbox.min.y(), d.bbox.min.z());
-  j["bbox_max"] = py::make_tuple(d.bbox.max.x(), d.bbox.max.y(), d.bbox.max.z());
-  j["bbox_diagonal"] = d.bbox.diagonal();
-  j["min_edge"] = d.min_edge;
-  j["max_edge"] = d.max_edge;
-  return j;
-}
+py::dict diagnosisDict(const MeshDiagnosis& d) { return fieldsDict(meshDiagnosisFields(d)); }
 
 namespace {
 
 py::dict loadReportDict(const LoadReport& r) {
-  py::dict d;
-  d["path"] = r.path;
+  py::dict d = fieldsDict(loadReportFields(r));
+  d["path"] = text(r.path);
   d["format"] = r.format;
-  d["file_vertices"] = r.file_vertices;
-  d["file_triangles"] = r.file_faces;
-  d["scene_meshes"] = r.scene_meshes;
-  d["welded_vertices"] = r.welded_vertices;
-  d["unused_vertices"] = r.unused_vertices;
-  d["degenerate_dropped"] = r.degenerate_dropped;
-  d["duplicate_dropped"] = r.duplicate_dropped;
-  d["flipped"] = r.flipped;
   return d;
 }
 

@@ -68,16 +68,7 @@ TreeOptions layoutFrom(int branching, int depth, const std::string& parents) {
 
 py::list levelsList(const TreeResult& r, double volume) {
   py::list out;
-  for (const TreeLevelStats& l : r.levels) {
-    py::dict d;
-    d["level"] = l.level;
-    d["spheres"] = l.nodes;
-    d["rounds"] = l.iterations;
-    d["converged"] = l.converged;
-    d["outside_volume"] = l.outside_volume;
-    d["er_sum"] = volume > 0.0 ? l.outside_volume / volume : 0.0;
-    out.append(d);
-  }
+  for (const TreeLevelStats& l : r.levels) out.append(fieldsDict(treeLevelFields(l, volume)));
   return out;
 }
 

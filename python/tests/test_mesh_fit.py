@@ -271,3 +271,30 @@ def test_check_refuses_repair_options_outside_the_table():
         with pytest.raises(ss.InvalidArgumentError, match=re.escape(words)):
             ss.check(DATA / "bow_tie.off", **kw)
     assert ss.check(DATA / "bow_tie.off", weld_tolerance=-1.0).diagnosis["triangles"] == 12
+
+
+@pytest.mark.parametrize("mesh", ["open_box.off", "overlapping_cubes.off"])
+def test_check_fields_are_the_command_lines(cli, mesh):
+    # One field list per result (result_fields.hpp) behind `sphereset check --json` and
+    # ss.check: the diagnosis, the load report and the repair, field by field.
+    path = DATA / mesh
+    ref = json.loads(cli("check", path, "--json").stdout)
+    r = ss.check(path)
+
+    def same(mine, theirs, name):
+        if isinstance(mine, np.ndarray):
+            mine = mine.tolist()
+        if isinstance(mine, float) and np.isnan(mine):
+            assert theirs is None, name  # NaN is written as null
+        else:
+            assert mine == theirs, name
+
+    for name, value in r.diagnosis.items():
+        same(value, ref[name], name)
+    for name, value in r.load.items():
+        if name not in ("path", "format"):
+            same(value, ref["load"][name], name)
+    assert r.repair is not None and set(r.repair) == set(ref["repair"])
+    for name, value in r.repair.items():
+        if name != "seconds":
+            same(value, ref["repair"][name], name)

@@ -73,4 +73,61 @@ std::vector<ResultField> evalResultFields(const EvalResult& r) {
   };
 }
 
+std::vector<ResultField> repairResultFields(const RepairResult& r) {
+  return {
+      {"kind", std::string(repairName(r.kind)), "what the repair did (repair.hpp's ladder)"},
+      {"weld_tolerance", r.weld_tolerance, "the weld tolerance used (0: exact)"},
+      {"triangles_flipped", r.triangles_flipped, "flipped by the consistent orientation"},
+      {"holes_capped", r.holes_capped, "boundary loops closed"},
+      {"shells_dropped", r.shells_dropped, "shells nested inside another, dropped"},
+      {"cavities_filled", r.cavities_filled, "inward shells dropped (cavities filled)"},
+      {"cavities_kept", r.cavities_kept, "inward shells kept as cavities"},
+      {"triangles", static_cast<int64_t>(r.solid.triangles.size()), "the solid's triangles"},
+      {"volume", signedVolume(r.solid), "the solid's volume"},
+      {"volume_ratio", r.volume_ratio, "the solid's volume over the input's (NaN: undefined)"},
+      {"wrap_alpha", r.wrap_alpha, "the wrap's alpha (0 unless wrapped)"},
+      {"wrap_offset", r.wrap_offset, "the wrap's offset (0 unless wrapped)"},
+      {"seconds", r.seconds, "seconds repairing"},
+      {"notes", r.notes, "one sentence per step taken"},
+  };
+}
+
+std::vector<ResultField> meshDiagnosisFields(const MeshDiagnosis& d) {
+  const Aabb& b = d.bbox;
+  return {
+      {"vertices", d.vertices, "vertices"},
+      {"triangles", d.triangles, "triangles"},
+      {"edges", d.edges, "edges"},
+      {"closed", d.closed, "no boundary edges"},
+      {"manifold", d.manifold, "no non-manifold edges or vertices"},
+      {"oriented", d.oriented, "every interior edge traversed once each way"},
+      {"solid", d.isSolid(), "closed, manifold, oriented, positive volume: what a fit needs"},
+      {"components", d.components, "edge-connected components"},
+      {"boundary_edges", d.boundary_edges, "edges with one triangle"},
+      {"nonmanifold_edges", d.nonmanifold_edges, "edges with three or more triangles"},
+      {"nonmanifold_vertices", d.nonmanifold_vertices, "vertices whose fan is not one disk"},
+      {"misoriented_edges", d.misoriented_edges, "edges traversed the same way twice"},
+      {"volume", d.volume, "signed volume"},
+      {"area", d.area, "surface area"},
+      {"bbox_min", std::vector<double>{b.min.x(), b.min.y(), b.min.z()}, "bounding box corner"},
+      {"bbox_max", std::vector<double>{b.max.x(), b.max.y(), b.max.z()}, "bounding box corner"},
+      {"bbox_diagonal", b.diagonal(), "its diagonal"},
+      {"min_edge", d.min_edge, "shortest edge"},
+      {"max_edge", d.max_edge, "longest edge"},
+  };
+}
+
+std::vector<ResultField> loadReportFields(const LoadReport& r) {
+  return {
+      {"scene_meshes", r.scene_meshes, "meshes in the file's scene graph"},
+      {"file_vertices", r.file_vertices, "vertices as stored in the file"},
+      {"file_triangles", r.file_faces, "faces after triangulation, before clean-up"},
+      {"welded_vertices", r.welded_vertices, "vertices merged into another"},
+      {"unused_vertices", r.unused_vertices, "vertices no kept triangle uses, removed"},
+      {"degenerate_dropped", r.degenerate_dropped, "triangles without area, dropped"},
+      {"duplicate_dropped", r.duplicate_dropped, "triangles repeating another, dropped"},
+      {"flipped", r.flipped, "the orientation was reversed to make the volume positive"},
+  };
+}
+
 }  // namespace sphereset

@@ -1,6 +1,7 @@
 // Private: the grammar of Valve's SMD and VTA files (developer.valvesoftware.com/wiki/SMD),
 // checked before assimp reads one. assimp 5.2's SMD reader trusts its input: fuzzing found it
-// looping forever on a section left open, asking for 412 GB for a node index of 88 digits,
+// looping forever on a section left open and on a nodes section with a blank line and no node,
+// asking for 412 GB for a node index of 88 digits,
 // 7.6 GB for a malformed skeleton line and 26 GB for a node that is its own parent, and
 // reading past its buffer on control characters.
 // assimp only ever sees files that follow the grammar, with indices and times in range.
@@ -27,8 +28,8 @@ inline constexpr size_t kMaxSmdNumberChars = 24;
 //                    PARENT X Y Z NX NY NZ U V [LINKS (BONE WEIGHT)*LINKS] then end
 //   vertexanimation  then lines: time T | VERTEX X Y Z NX NY NZ         then end
 // Blank lines and lines starting with "//" are skipped; integers are in [-1, kMaxSmdIndex];
-// nodes are numbered 0, 1, ... in order, each parent before its child; bones and links name
-// nodes listed before.
+// nodes are numbered 0, 1, ... in order, each parent before its child, at least one; bones and
+// links name nodes listed before.
 std::string smdProblem(std::istream& in);
 
 }  // namespace sphereset::detail

@@ -10,6 +10,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -344,6 +345,15 @@ Expected<Robot> loadRobot(const std::string& urdf_path, const RobotLoadOptions& 
   std::stringstream buffer;
   buffer << in.rdbuf();
   const std::string xml = buffer.str();
+  // TinyXML 2.6 steps over the end of its buffer on some malformed multibyte sequences (found
+  // by fuzzing: ASan, heap-buffer-overflow in TiXmlBase::ReadName on a 0xff byte), and a URDF is
+  // UTF-8 text: anything else is refused before it is parsed.
+  if (const size_t bad = detail::firstInvalidUtf8(xml); bad != std::string::npos) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02x", static_cast<unsigned char>(xml[bad]));
+    return Error{ErrorCode::kInvalidData, urdf_path + ": not UTF-8 text (byte " + hex +
+                                              " at offset " + std::to_string(bad) + ")"};
+  }
   if (xmlDepth(xml, limits::kMaxXmlDepth) > limits::kMaxXmlDepth)
     return Error{ErrorCode::kInvalidData, urdf_path + ": elements nested more than " +
                                               std::to_string(limits::kMaxXmlDepth) +

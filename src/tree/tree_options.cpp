@@ -1,5 +1,6 @@
 // The tree's layout options as one table (tree.hpp): the command line's flags and the Python
-// keywords are made from it, and the library parses and checks what users type through it.
+// keywords are made from it, and the library parses and checks what users type through it. And
+// a level's statistics as a field list.
 #include <string>
 #include <string_view>
 
@@ -72,6 +73,17 @@ Status checkTreeOptions(const TreeOptions& o) {
                                                   " make a tree of more than " +
                                                   std::to_string(SphereTree::kMaxSlots) + " nodes"};
   return {};
+}
+
+std::vector<ResultField> treeLevelFields(const TreeLevelStats& l, double volume) {
+  return {
+      {"level", int64_t{l.level}, "0 is the root"},
+      {"spheres", l.nodes, "spheres of the level"},
+      {"rounds", int64_t{l.iterations}, "Lloyd rounds run (0 for the leaves)"},
+      {"converged", l.converged, "the assignment stopped changing before the cap"},
+      {"outside_volume", l.outside_volume, "Σ outside volume of the level"},
+      {"er_sum", volume > 0.0 ? l.outside_volume / volume : 0.0, "E_r of the level"},
+  };
 }
 
 }  // namespace sphereset

@@ -378,6 +378,10 @@ TEST_F(FrameMesh, BinaryBytesInATextFormatAreRefusedBeforeAssimp) {
       write("cycle.smd", "version 1\nnodes\n0 \"root\" -1\n1 \"tip\" 1\nend\n");
   test::expectError(loadAnimation(cycle), ErrorCode::kUnreadable, cycle,
                     "line 4: not a line of the 'nodes' section");
+  // A nodes section with a blank line and no node never returned.
+  const std::string empty = write("empty.smd", "version 1\nnodes\n\nend\n");
+  test::expectError(loadAnimation(empty), ErrorCode::kUnreadable, empty,
+                    "line 4: the 'nodes' section lists no node");
 }
 
 }  // namespace

@@ -215,6 +215,14 @@ TEST_F(Urdf, BadFilesAreOneLineErrors) {
             "<robot name=\"x\"><link name=\"a\"/><joint name=\"j\" type=\"revolute\"><parent "
             "link=\"a\"/><child link=\"missing\"/></joint></robot>");
   test::expectError(loadRobot(bad_joint), ErrorCode::kInvalidData, bad_joint, "not a valid URDF");
+  // Found by fuzzing: TinyXML read past its buffer on a 0xff byte in a name. A URDF is UTF-8.
+  const std::string latin1 =
+      write("latin1.urdf", "<robot name=\"x\"><link name=\"caf\xe9\"/></robot>");
+  test::expectError(loadRobot(latin1), ErrorCode::kInvalidData, latin1,
+                    "not UTF-8 text (byte 0xe9 at offset 31)");
+  const std::string utf8 =
+      write("utf8.urdf", "<robot name=\"x\"><link name=\"caf\xc3\xa9\"/></robot>");
+  EXPECT_TRUE(loadRobot(utf8).ok());
 }
 
 // urdfdom drops a <collision> it cannot parse, with a console message, and goes on: the link
