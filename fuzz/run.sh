@@ -4,13 +4,16 @@
 # after replaying the inputs that once crashed (fuzz/regressions/<target>/). Fails when any
 # target crashes, leaks, times out or breaks an invariant; the input is kept in
 # <build>/crashes/. Environment: FUZZ_SECONDS (per target, default 6), FUZZ_BUILD_DIR
-# (default build-fuzz), FUZZ_TARGETS (default all).
+# (default build-fuzz), FUZZ_TARGETS (default all), FUZZ_SEED (default 1: the same mutations on
+# every run, so that CI's short run gives the same verdict each time; 0 draws a new seed, for
+# longer runs that look for new inputs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 root=$PWD
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 seconds=${FUZZ_SECONDS:-6}
+seed=${FUZZ_SEED:-1}
 targets=${FUZZ_TARGETS:-"off ply stl obj spheres_txt spheres_json spheres_sph spheres_yaml tree repair urdf animation"}
 
 launcher=()
@@ -48,7 +51,8 @@ for t in $targets; do
   mkdir -p "$corpus"
   cp "$root/fuzz/corpus/$t"/* "$corpus"/
   seed_data "$t" "$corpus"
-  opts=(-timeout=10 -rss_limit_mb=4096 -malloc_limit_mb=3072 "-artifact_prefix=$build/crashes/$t-")
+  opts=(-timeout=10 -rss_limit_mb=4096 -malloc_limit_mb=3072 "-artifact_prefix=$build/crashes/$t-"
+    "-seed=$seed")
   log="$build/fuzz_$t.log"
   if [ -d "$root/fuzz/regressions/$t" ]; then
     if ! "$bin" "${opts[@]}" "$root/fuzz/regressions/$t"/* > "$log" 2>&1; then

@@ -31,6 +31,13 @@ bool isNode(const std::string& w, long long nodes) {
 
 bool isNumber(const std::string& w) {
   if (w.empty() || w.size() > kMaxSmdNumberChars) return false;
+  // assimp reads the digits before the point as one 64-bit integer: more than 18 of them
+  // overflow it (found by fuzzing: 24 digits made it ask for 33 GB).
+  const size_t first = w.find_first_of("0123456789");
+  const size_t last = w.find_first_not_of("0123456789", first);
+  if (first != std::string::npos &&
+      (last == std::string::npos ? w.size() : last) - first > kMaxSmdIntegerDigits)
+    return false;
   char* end = nullptr;
   const double v = std::strtod(w.c_str(), &end);
   return end == w.c_str() + w.size() && std::fabs(v) <= limits::kMaxCoordinate;  // false: NaN
@@ -77,9 +84,17 @@ std::string smdProblem(std::istream& in) {
   long long nodes = 0;  // listed so far
   for (int64_t lineno = 1; std::getline(in, line); ++lineno) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    // assimp ends a line at a carriage return too: one inside a line would split it there.
+    if (line.find('\r') != std::string::npos)
+      return "line " + std::to_string(lineno) + ": a carriage return inside the line";
     std::istringstream split(line);
     std::vector<std::string> w;
     for (std::string s; split >> s;) w.push_back(s);
+    // assimp 5.2 never returns from a nodes section holding a line of spaces or tabs, an empty
+    // line before its first node, or an indented "end" (found by fuzzing): there, every line
+    // starts at its first column.
+    if (section == "nodes" && (w.empty() || line[0] == ' ' || line[0] == '\t'))
+      return "line " + std::to_string(lineno) + ": a blank or indented line in the 'nodes' section";
     if (w.empty() || w[0].rfind("//", 0) == 0) continue;
     const std::string where = "line " + std::to_string(lineno) + ": ";
     if (section.empty()) {
@@ -97,8 +112,7 @@ std::string smdProblem(std::istream& in) {
       continue;
     }
     if (w.size() == 1 && w[0] == "end" && triangle_line == 0) {
-      // assimp 5.2 never returns from a nodes section that holds a blank line and no node (found
-      // by fuzzing); a skeleton has at least one node anyway.
+      // A skeleton has at least one node.
       if (section == "nodes" && nodes == 0) return where + "the 'nodes' section lists no node";
       section.clear();
       continue;

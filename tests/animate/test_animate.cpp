@@ -378,10 +378,33 @@ TEST_F(FrameMesh, BinaryBytesInATextFormatAreRefusedBeforeAssimp) {
       write("cycle.smd", "version 1\nnodes\n0 \"root\" -1\n1 \"tip\" 1\nend\n");
   test::expectError(loadAnimation(cycle), ErrorCode::kUnreadable, cycle,
                     "line 4: not a line of the 'nodes' section");
-  // A nodes section with a blank line and no node never returned.
+  // A nodes section with a blank line and no node, or a line of spaces, never returned.
   const std::string empty = write("empty.smd", "version 1\nnodes\n\nend\n");
   test::expectError(loadAnimation(empty), ErrorCode::kUnreadable, empty,
-                    "line 4: the 'nodes' section lists no node");
+                    "line 3: a blank or indented line in the 'nodes' section");
+  const std::string spaces = write("spaces.smd", "version 1\nnodes\n0 \"root\" -1\n \t\nend\n");
+  test::expectError(loadAnimation(spaces), ErrorCode::kUnreadable, spaces,
+                    "line 4: a blank or indented line in the 'nodes' section");
+  const std::string none = write("none.smd", "version 1\nnodes\nend\n");
+  test::expectError(loadAnimation(none), ErrorCode::kUnreadable, none,
+                    "line 3: the 'nodes' section lists no node");
+  // A number with 24 digits before its point made assimp ask for 33 GB.
+  const std::string digits =
+      write("digits.smd",
+            "version 1\nnodes\n0 \"root\" -1\nend\nskeleton\ntime 0\n0 0 0 0 0 0 "
+            "0000000000000000000001\nend\n");
+  test::expectError(loadAnimation(digits), ErrorCode::kUnreadable, digits,
+                    "line 7: not a line of the 'skeleton' section");
+  // And one whose last "end" had no line break after it was read past its end.
+  const std::string no_eol = write("no_eol.smd", "version 1\nnodes\n0 \"root\" -1\nend");
+  test::expectError(loadAnimation(no_eol), ErrorCode::kUnreadable, no_eol,
+                    "the last line does not end with a line break");
+  // A form feed, which assimp takes for a line end, made it ask for 3.2 GB.
+  const std::string ff = write("ff.smd", "version 1\nnodes\n0 \"root\" -1\nend\n\fend\n");
+  test::expectError(loadAnimation(ff), ErrorCode::kUnreadable, ff, "byte 0x0c at offset 32");
+  const std::string cr = write("cr.smd", "version 1\nnodes\n0 \"root\"\r-1\nend\n");
+  test::expectError(loadAnimation(cr), ErrorCode::kUnreadable, cr,
+                    "line 3: a carriage return inside the line");
 }
 
 }  // namespace
