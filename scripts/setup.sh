@@ -28,6 +28,7 @@ test_packages=(
   ccache               # compiler cache (used by CMake when present)
   libgtest-dev         # unit tests
   libbenchmark-dev     # micro-benchmarks
+  libfcl-dev           # tests: FCL, an independent collision check of the robot spheres
   clang                # fuzzing (fuzz/run.sh): libFuzzer needs clang
   libclang-rt-14-dev   # libFuzzer and the sanitizer runtimes for clang 14
   python3              # benchmark scripts (CSV tables)
