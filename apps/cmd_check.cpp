@@ -25,33 +25,8 @@ struct CheckArgs {
   bool json = false;
 };
 
-struct ShellCounts {
-  int64_t shells = 0, closed = 0, clean = 0, inward = 0, nested = 0, intersecting_pairs = 0;
-  int64_t triangle_pairs = 0;
-  bool truncated = false;
-  std::vector<std::array<int32_t, 2>> first_pairs;  // a few crossing triangle pairs, to look at
-};
-
 // How many crossing pairs `check` lists.
 constexpr size_t kListedPairs = 5;
-
-ShellCounts countShells(const ShellAnalysis& sa) {
-  ShellCounts c;
-  c.shells = static_cast<int64_t>(sa.shells.size());
-  for (const Shell& s : sa.shells) {
-    c.closed += s.closed;
-    c.clean += s.clean();
-    c.inward += s.closed && s.volume < 0.0;
-    c.nested += s.parent >= 0;
-  }
-  c.intersecting_pairs = static_cast<int64_t>(sa.intersecting.size());
-  c.triangle_pairs = static_cast<int64_t>(sa.intersections.pairs.size());
-  c.truncated = sa.intersections.truncated;
-  const auto& p = sa.intersections.pairs;
-  c.first_pairs.assign(p.begin(),
-                       p.begin() + static_cast<std::ptrdiff_t>(std::min(kListedPairs, p.size())));
-  return c;
-}
 
 nlohmann::json checkJson(const LoadedMesh& m, const MeshDiagnosis& d) {
   nlohmann::json j = fieldsJson(meshDiagnosisFields(d));
@@ -61,16 +36,16 @@ nlohmann::json checkJson(const LoadedMesh& m, const MeshDiagnosis& d) {
   return j;
 }
 
-nlohmann::json shellsJson(const ShellCounts& c) {
-  return {{"shells", c.shells},
-          {"closed_shells", c.closed},
-          {"clean_shells", c.clean},
-          {"inward_shells", c.inward},
-          {"nested_shells", c.nested},
-          {"intersecting_shell_pairs", c.intersecting_pairs},
-          {"intersecting_triangle_pairs", c.triangle_pairs},
-          {"intersections_truncated", c.truncated},
-          {"first_intersecting_pairs", c.first_pairs}};
+// The first few crossing triangle pairs, to look at.
+std::vector<std::array<int32_t, 2>> firstPairs(const ShellAnalysis& sa) {
+  const auto& p = sa.intersections.pairs;
+  return {p.begin(), p.begin() + static_cast<std::ptrdiff_t>(std::min(kListedPairs, p.size()))};
+}
+
+nlohmann::json shellsJson(const ShellAnalysis& sa) {
+  nlohmann::json j = fieldsJson(shellCountFields(countShells(sa)));
+  j["first_intersecting_pairs"] = firstPairs(sa);
+  return j;
 }
 
 // Each problem found, with what the repair does about it (or that fit refuses the mesh).
@@ -118,13 +93,12 @@ std::vector<std::pair<std::string, std::string>> problemActions(const MeshDiagno
   return out;
 }
 
-void printShells(const ShellCounts& c) {
+void printShells(const ShellCounts& c, const std::vector<std::array<int32_t, 2>>& first_pairs) {
   std::printf("  crossings   %s%lld intersecting triangle pairs", c.truncated ? "at least " : "",
               static_cast<long long>(c.triangle_pairs));
-  for (size_t i = 0; i < c.first_pairs.size(); ++i)
-    std::printf("%s%d/%d", i == 0 ? " (triangles " : ", ", c.first_pairs[i][0],
-                c.first_pairs[i][1]);
-  std::printf("%s\n", c.first_pairs.empty() ? "" : (c.triangle_pairs > 5 ? ", ...)" : ")"));
+  for (size_t i = 0; i < first_pairs.size(); ++i)
+    std::printf("%s%d/%d", i == 0 ? " (triangles " : ", ", first_pairs[i][0], first_pairs[i][1]);
+  std::printf("%s\n", first_pairs.empty() ? "" : (c.triangle_pairs > 5 ? ", ...)" : ")"));
   std::printf(
       "  shells      %lld (%lld closed, %lld clean, %lld inward-facing, %lld nested in another, "
       "%lld intersecting pairs)\n",
@@ -174,7 +148,8 @@ int runCheck(const CheckArgs& a) {
   auto m = loadMesh(a.mesh.path, loadOptions(*ro));
   if (!m) return fail(m.error());
   const MeshDiagnosis d = diagnoseMesh(m->mesh);
-  const ShellCounts sc = countShells(analyzeShells(m->mesh));
+  const ShellAnalysis sa = analyzeShells(m->mesh);
+  const ShellCounts sc = countShells(sa);
   // What fit would do with the same options.
   auto r = repairMesh(m->mesh, *ro, a.mesh.path);
   std::string plan;
@@ -188,7 +163,7 @@ int runCheck(const CheckArgs& a) {
   const auto problems = problemActions(d, sc, r);
   if (a.json) {
     nlohmann::json j = checkJson(*m, d);
-    j["self_intersections"] = shellsJson(sc);
+    j["self_intersections"] = shellsJson(sa);
     nlohmann::json pj = nlohmann::json::array();
     for (const auto& [problem, action] : problems)
       pj.push_back({{"problem", problem}, {"action", action}});
@@ -198,7 +173,7 @@ int runCheck(const CheckArgs& a) {
     std::cout << jsonText(j) << '\n';
   } else {
     printCheck(*m, d);
-    printShells(sc);
+    printShells(sc, firstPairs(sa));
     for (const auto& [problem, action] : problems)
       std::printf("  problem     %s: %s\n", problem.c_str(), action.c_str());
     std::printf("  fit will    %s\n", plan.c_str());

@@ -58,6 +58,16 @@ struct ShellAnalysis {
 
 ShellAnalysis analyzeShells(const Mesh& mesh, const SelfIntersectionOptions& options = {});
 
+// What `check` reports of an analysis: shells, and of them closed, clean (closed, oriented,
+// free of crossings), closed and inward, nested in another; intersecting shell pairs, crossing
+// triangle pairs and whether their search stopped at its cap.
+struct ShellCounts {
+  int64_t shells = 0, closed = 0, clean = 0, inward = 0, nested = 0, intersecting_pairs = 0;
+  int64_t triangle_pairs = 0;
+  bool truncated = false;
+};
+ShellCounts countShells(const ShellAnalysis& sa);
+
 // The mesh made of the given triangles of `mesh` (unused vertices dropped).
 Mesh submesh(const Mesh& mesh, const std::vector<int32_t>& triangles);
 

@@ -13,6 +13,7 @@
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/mesh.hpp"
+#include "sphereset/mesh_defects.hpp"
 #include "sphereset/repair.hpp"
 
 namespace sphereset {
@@ -42,6 +43,9 @@ std::vector<ResultField> repairResultFields(const RepairResult& r);
 // A mesh's diagnosis: counts, the closed/manifold/oriented/solid flags, volume, area, bounding
 // box ("bbox_min", "bbox_max" as x, y, z) and edge lengths.
 std::vector<ResultField> meshDiagnosisFields(const MeshDiagnosis& d);
+
+// A shell analysis's counts (countShells).
+std::vector<ResultField> shellCountFields(const ShellCounts& c);
 
 // How a file became a mesh (LoadReport without its maps): the file's counts and what the
 // clean-up merged, dropped or flipped.

@@ -185,11 +185,12 @@ void bindFit(py::module_& m) {
         if (kind == "repair") return resultSchema(repairResultFields(RepairResult{}));
         if (kind == "diagnosis") return resultSchema(meshDiagnosisFields(MeshDiagnosis{}));
         if (kind == "load") return resultSchema(loadReportFields(LoadReport{}));
+        if (kind == "shells") return resultSchema(shellCountFields(ShellCounts{}));
         if (kind == "tree_level") return resultSchema(treeLevelFields(TreeLevelStats{}, 1.0));
         raise(ErrorCode::kInvalidArgument,
               "no result kind '" + kind +
                   "' (expected fit, eval, robot, robot_link, animate, animate_frame, repair, "
-                  "diagnosis, load or tree_level)");
+                  "diagnosis, load, shells or tree_level)");
       },
       py::arg("kind"));
 }

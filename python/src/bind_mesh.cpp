@@ -209,22 +209,7 @@ Raises InvalidDataError for NaN/infinite coordinates, indices out of range or no
           py::gil_scoped_release release;
           sa = analyzeShells(pm.loaded.mesh);
         }
-        py::dict c;
-        int64_t closed = 0, clean = 0, inward = 0, nested = 0;
-        for (const Shell& s : sa.shells) {
-          closed += s.closed;
-          clean += s.clean();
-          inward += s.closed && s.volume < 0.0;
-          nested += s.parent >= 0;
-        }
-        c["shells"] = sa.shells.size();
-        c["closed_shells"] = closed;
-        c["clean_shells"] = clean;
-        c["inward_shells"] = inward;
-        c["nested_shells"] = nested;
-        c["intersecting_shell_pairs"] = sa.intersecting.size();
-        c["intersecting_triangle_pairs"] = sa.intersections.pairs.size();
-        c["intersections_truncated"] = sa.intersections.truncated;
+        py::dict c = fieldsDict(shellCountFields(countShells(sa)));
         c["intersecting_pairs"] = sa.intersections.pairs;
         return c;
       },

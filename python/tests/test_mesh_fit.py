@@ -294,6 +294,8 @@ def test_check_fields_are_the_command_lines(cli, mesh):
     for name, value in r.load.items():
         if name not in ("path", "format"):
             same(value, ref["load"][name], name)
+    for row in ss._core._result_schema("shells"):
+        same(r.shells[row["name"]], ref["self_intersections"][row["name"]], row["name"])
     assert r.repair is not None and set(r.repair) == set(ref["repair"])
     for name, value in r.repair.items():
         if name != "seconds":

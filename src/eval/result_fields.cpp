@@ -130,4 +130,17 @@ std::vector<ResultField> loadReportFields(const LoadReport& r) {
   };
 }
 
+std::vector<ResultField> shellCountFields(const ShellCounts& c) {
+  return {
+      {"shells", c.shells, "edge-connected shells"},
+      {"closed_shells", c.closed, "of them closed"},
+      {"clean_shells", c.clean, "closed, oriented and free of crossings"},
+      {"inward_shells", c.inward, "closed and facing inward"},
+      {"nested_shells", c.nested, "inside another shell"},
+      {"intersecting_shell_pairs", c.intersecting_pairs, "pairs of shells that cross"},
+      {"intersecting_triangle_pairs", c.triangle_pairs, "pairs of triangles that cross"},
+      {"intersections_truncated", c.truncated, "the crossing search stopped at its cap"},
+  };
+}
+
 }  // namespace sphereset

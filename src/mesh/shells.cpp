@@ -243,4 +243,19 @@ ShellAnalysis analyzeShells(const Mesh& mesh, const SelfIntersectionOptions& opt
   return out;
 }
 
+ShellCounts countShells(const ShellAnalysis& sa) {
+  ShellCounts c;
+  c.shells = static_cast<int64_t>(sa.shells.size());
+  for (const Shell& s : sa.shells) {
+    c.closed += s.closed;
+    c.clean += s.clean();
+    c.inward += s.closed && s.volume < 0.0;
+    c.nested += s.parent >= 0;
+  }
+  c.intersecting_pairs = static_cast<int64_t>(sa.intersecting.size());
+  c.triangle_pairs = static_cast<int64_t>(sa.intersections.pairs.size());
+  c.truncated = sa.intersections.truncated;
+  return c;
+}
+
 }  // namespace sphereset
