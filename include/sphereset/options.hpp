@@ -65,6 +65,10 @@ struct TableValue {
 Expected<TableValue> parseTableOption(std::span<const OptionSpec> table, const char* what,
                                       const std::string& name, const std::string& text);
 
+// The text a user would type for `value`: the shortest that reads back as it ("-1", "0.5",
+// "1e+200", "nan"). Every door that hands a number to a table as text writes it so.
+std::string optionText(double value);
+
 // A value already in a struct checked against its row, as if a user had typed it: the shortest
 // text that reads back as `value` ("1e+200", "0.5", "nan") through parseTableOption, so a
 // struct set in code is refused with the message a typed value gets. `key` prefixes the text

@@ -7,7 +7,6 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <charconv>
 #include <filesystem>
 #include <span>
 #include <stdexcept>
@@ -83,13 +82,11 @@ void bindRobotFit(py::module_& m);
 // each item is handed over as KEY=VALUE.
 template <class Set>
 void setOptions(const py::dict& options, Set&& set) {
-  // A float as the shortest text that reads back as it ("-1", "0.5", "1e+200"), as the library
-  // writes a struct's value in its messages; other values as str() gives them.
+  // A float as the library writes a number's text (optionText: "-1", not str()'s "-1.0"); other
+  // values as str() gives them.
   auto text = [](const py::handle& v) -> std::string {
     if (!py::isinstance<py::float_>(v)) return py::str(v);
-    char buf[32];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v.cast<double>());
-    return std::string(buf, r.ptr);
+    return optionText(v.cast<double>());
   };
   for (const auto& [key, value] : options) {
     if (value.is_none()) continue;

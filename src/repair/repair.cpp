@@ -212,6 +212,17 @@ Mesh nestedSolid(const Mesh& m, const ShellAnalysis& sa, const detail::NestingPl
   return concat(solids);
 }
 
+// The notes both nesting steps end with: cavities filled and kept, inside-out shells turned.
+void noteCavitiesAndTurned(int64_t turned, RepairResult* res) {
+  if (res->cavities_filled > 0)
+    res->notes.push_back("filled " + count(res->cavities_filled, "cavity", "cavities"));
+  if (res->cavities_kept > 0)
+    res->notes.push_back("kept " + count(res->cavities_kept, "cavity", "cavities"));
+  if (turned > 0)
+    res->notes.push_back("turned " + count(turned, "inside-out shell", "inside-out shells") +
+                         " outward");
+}
+
 // Records what the nested-shells step does with the shells of a plan: counts and notes.
 void recordNested(const detail::NestingPlan& plan, RepairResult* res) {
   using detail::ShellRole;
@@ -225,13 +236,7 @@ void recordNested(const detail::NestingPlan& plan, RepairResult* res) {
   if (res->shells_dropped > 0)
     res->notes.push_back("dropped " + count(res->shells_dropped, "shell", "shells") +
                          " nested inside another with the same orientation");
-  if (res->cavities_filled > 0)
-    res->notes.push_back("filled " + count(res->cavities_filled, "cavity", "cavities"));
-  if (res->cavities_kept > 0)
-    res->notes.push_back("kept " + count(res->cavities_kept, "cavity", "cavities"));
-  if (turned > 0)
-    res->notes.push_back("turned " + count(turned, "inside-out shell", "inside-out shells") +
-                         " outward");
+  noteCavitiesAndTurned(turned, res);
 }
 
 // The input's volume, where defined: with shells closed, oriented and apart (planned by the
@@ -379,13 +384,7 @@ StepResult uniteShells(const Mesh& m, const ShellAnalysis& sa, const OptionalPla
   for (Mesh& a : apart) parts.push_back(std::move(a));
   res->notes.push_back("united " + count(static_cast<int64_t>(outward.size()), "shell", "shells") +
                        " that overlap (corefinement)");
-  if (res->cavities_filled > 0)
-    res->notes.push_back("filled " + count(res->cavities_filled, "cavity", "cavities"));
-  if (res->cavities_kept > 0)
-    res->notes.push_back("kept " + count(res->cavities_kept, "cavity", "cavities"));
-  if (turned > 0)
-    res->notes.push_back("turned " + count(turned, "inside-out shell", "inside-out shells") +
-                         " outward");
+  noteCavitiesAndTurned(turned, res);
   if (rounded.any())
     res->notes.push_back(
         count(static_cast<int64_t>(rounded.pairs.size()), "triangle pair", "triangle pairs") +

@@ -113,16 +113,19 @@ Expected<TableValue> parseTableOption(std::span<const OptionSpec> table, const c
   return TableValue{spec, std::move(v).value()};
 }
 
+std::string optionText(double value) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, value);
+  return std::string(buf, r.ptr);
+}
+
 Status checkTableValue(std::span<const OptionSpec> table, const char* what, const std::string& name,
                        double value, const std::string& key) {
   // Whole numbers for integer rows as a user types them ("10000000", not "1e+07").
   const OptionSpec* spec = findOption(table, name);
   const bool whole = spec && spec->type != OptionType::kReal && std::isfinite(value) &&
                      value == std::floor(value) && std::fabs(value) < 9e18;
-  char buf[32];
-  const auto r = whole ? std::to_chars(buf, buf + sizeof buf, static_cast<int64_t>(value))
-                       : std::to_chars(buf, buf + sizeof buf, value);
-  std::string text(buf, r.ptr);
+  std::string text = whole ? std::to_string(static_cast<int64_t>(value)) : optionText(value);
   if (!key.empty()) text = key + "=" + text;
   if (auto v = parseTableOption(table, what, name, text); !v) return v.error();
   return {};
