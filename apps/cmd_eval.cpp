@@ -117,6 +117,7 @@ int runEval(EvalArgs a) {
   }
   const SolidIndex index(m->repair.solid);
   eo.original = m->original();
+  eo.walls = m->walls();
   const std::string rl = repairLine(m->repair);
   if (!a.json && !rl.empty())
     std::printf(

@@ -65,6 +65,11 @@ void printFitSummary(const FitArgs& a, const FitResult& r, const EvalResult& ev,
     std::fprintf(stderr,
                  "  E_r relative to the repaired solid's volume; original triangles covered %s\n",
                  ev.original_covered ? "yes" : "NO");
+  if (in.walls())
+    std::fprintf(stderr,
+                 "  the solid is the walls' envelope (openings narrower than %.4g closed): E_r "
+                 "against the walls %.4f\n",
+                 in.repair.fill_openings, ev.er_walls);
 }
 
 int runFit(const FitCommandArgs& c) {
@@ -88,7 +93,7 @@ int runFit(const FitCommandArgs& c) {
   meta.source_mesh = a.mesh.path;
   Status st = writeSpheres(a.out_path, r->spheres, meta);
   if (!st) return fail(st.error());
-  auto checked = evaluateSpheres(index, r->spheres, fitCheckEvalOptions(fo.seed, m->original()));
+  auto checked = evaluateSpheres(index, r->spheres, fitCheckEvalOptions(fo.seed, m->original(), m->walls()));
   if (!checked) return fail(checked.error());
   const EvalResult& ev = *checked;
   if (c.json) std::cout << jsonText(fitJson(a, fo, *r, ev, m->repair)) << '\n';

@@ -56,13 +56,13 @@ nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const RobotFitR
 }
 
 void printSummary(const RobotFitResult& r, double seconds) {
-  std::fprintf(stderr, "%-28s %9s %-10s %7s %9s %7s %7s\n", "link", "triangles", "repair",
-               "spheres", "E_r", "covered", "time s");
+  std::fprintf(stderr, "%-28s %9s %-10s %9s %7s %9s %9s %7s %7s\n", "link", "triangles",
+               "repair", "openings", "spheres", "E_r", "E_r walls", "covered", "time s");
   for (const RobotLinkFit& j : r.links)
-    std::fprintf(stderr, "%-28s %9zu %-10s %7zu %9.4f %7s %7.2f\n", j.link.c_str(),
+    std::fprintf(stderr, "%-28s %9zu %-10s %9.3g %7zu %9.4f %9.4f %7s %7.2f\n", j.link.c_str(),
                  j.fitted ? j.repair.original.triangles.size() : size_t{0},
-                 j.fitted ? repairName(j.repair.kind) : "-", j.spheres.size(),
-                 j.fitted ? j.eval.er_sum : 0.0,
+                 j.fitted ? repairName(j.repair.kind) : "-", j.repair.fill_openings,
+                 j.spheres.size(), j.fitted ? j.eval.er_sum : 0.0, j.fitted ? j.eval.er_walls : 0.0,
                  j.skipped   ? "skipped"
                  : j.covered ? "yes"
                              : "NO",
@@ -76,6 +76,10 @@ void printSummary(const RobotFitResult& r, double seconds) {
                  "budget: outside volume %.6g of the links it split (split by curves %.6g, "
                  "even split %.6g)\n",
                  r.outside_volume, r.split_outside_volume, r.even_outside_volume);
+  std::fprintf(stderr,
+               "E_r is against each link's fitted solid: its envelope when openings is above 0 "
+               "(openings narrower than that closed, the hollow behind them inside), else its "
+               "walls\n");
   std::fprintf(stderr, "total %.2f s\n", seconds);
 }
 

@@ -94,6 +94,7 @@ int runTree(TreeArgs a) {
   eo.proximity_segments = 0;
   eo.shadow_resolution = 0;
   eo.original = m->original();
+  eo.walls = m->walls();
   auto checked = evaluateSpheres(index, r->tree.tree.leaves(), eo);
   if (!checked) return fail(checked.error());
   const EvalResult& ev = *checked;

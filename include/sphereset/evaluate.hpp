@@ -30,6 +30,9 @@ struct EvalOptions {
   // The triangles of the input a repaired solid was made from (repair.hpp), certified as
   // covered too; not owned, may be null.
   const Mesh* original = nullptr;
+  // When the solid is an envelope (repair.hpp, envelopeWalls): its walls, against which E_r is
+  // reported too (EvalResult::er_walls); not owned, may be null.
+  const Mesh* walls = nullptr;
   // Called from the calling thread every `poll_interval` seconds or so inside the long loops
   // (samples, segments, coverage, shadows). It may throw to cancel the evaluation (how the
   // Python module honours Ctrl-C): the exception leaves evaluateSpheres.
@@ -47,6 +50,10 @@ struct EvalResult {
   double er_union = 0.0;
   double er_union_stderr = 0.0;
   std::vector<double> outside_volume;  // per sphere, exact
+  // E_r against the walls when the solid is their envelope (EvalOptions::walls): Σ_i SOV(S_i)
+  // against the walls / their volume, exact. Without walls: the solid's volume and er_sum.
+  double walls_volume = 0.0;
+  double er_walls = 0.0;
   // Surface coverage: certified by subdivision (every sub-triangle inside one sphere).
   bool surface_covered = false;
   double max_surface_gap = 0.0;           // largest distance found from surface to the union / diag
@@ -72,13 +79,15 @@ struct EvalResult {
 
 // The evaluation `sphereset fit` (and the batch) runs on its result: the coverage certificates
 // and E_r of the union by 100000 seeded samples; no proximity segments, no shadows.
-inline EvalOptions fitCheckEvalOptions(uint64_t seed, const Mesh* original = nullptr) {
+inline EvalOptions fitCheckEvalOptions(uint64_t seed, const Mesh* original = nullptr,
+                                       const Mesh* walls = nullptr) {
   EvalOptions eo;
   eo.seed = seed;
   eo.union_samples = 100000;
   eo.proximity_segments = 0;
   eo.shadow_resolution = 0;
   eo.original = original;
+  eo.walls = walls;
   return eo;
 }
 

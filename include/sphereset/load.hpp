@@ -28,6 +28,8 @@ struct SolidInput {
   // bound them too: FitOptions::original, EvalOptions::original), else null. Points into
   // `repair`: valid while this object lives and is not moved.
   const Mesh* original() const;
+  // The walls when the solid is their envelope (EvalOptions::walls), else null (repair.hpp).
+  const Mesh* walls() const;
 };
 
 // Loads `path` and makes a solid of it. Errors: those of loadMesh and repairMesh, with messages

@@ -31,7 +31,12 @@ struct OptionSpec {
   // A keyed row ("LINK" for per-link values): the text is KEY=VALUE, VALUE parsed as `type`
   // says, and the row may be given once per key. Null for plain rows.
   const char* key = nullptr;
+  // A word accepted in place of a number on kReal rows ("auto"): the value is kAutomatic and
+  // the library chooses it from the input. Null when the row takes numbers only.
+  const char* automatic = nullptr;
 };
+// The value of a kReal row given its `automatic` word.
+inline constexpr double kAutomatic = -1.0;
 
 // Parsed values of one option, as the table's setters receive them.
 struct OptionValue {

@@ -63,13 +63,20 @@ struct RepairOptions {
   // Alpha Wrapping parameters, absolute lengths; 0 chooses them from the mesh (repair.cpp).
   double wrap_alpha = 0.0;
   double wrap_offset = 0.0;
+  // The link envelope (envelope.cpp): after the steps above have made the walls a solid,
+  // openings narrower than this length are closed and the hollow behind them counts as inside
+  // (a wrap from outside whose carving ball is this wide). 0: off, the walls are the solid;
+  // kAutomatic (options.hpp): the smallest extent of the walls' bounding box, so a casing or
+  // tube is closed and a shape wide open on a side is not. The original triangles and the walls
+  // stay in the result, for the certificate and for E_r against the walls.
+  double fill_openings = 0.0;
   // The union and the wrapping; when empty, meshes that need them are refused.
   SolidOperations operations;
 };
 
 // The repair's options as one table (options.hpp): repair (auto or off: `enabled`),
 // weld_tolerance (absolute; automatic when not given), wrap_alpha and wrap_offset (absolute; 0
-// chooses them from the mesh). The command line's flags, the Dask batch's flags and the
+// chooses them from the mesh), fill_openings (absolute, 0 off, "auto" chosen from the mesh). The command line's flags, the Dask batch's flags and the
 // Python keywords are made from it. (fill_cavities is a switch of its own: --fill-cavities and
 // --keep-cavities.)
 std::span<const OptionSpec> repairOptionTable();
@@ -96,6 +103,10 @@ struct RepairResult {
   int64_t cavities_filled = 0;                 // inward shells dropped (fill_cavities)
   int64_t cavities_kept = 0;                   // inward shells kept as cavities
   double wrap_alpha = 0.0, wrap_offset = 0.0;  // when wrapped
+  // The envelope (RepairOptions::fill_openings): the opening size used (0: none, `solid` is the
+  // walls) and the walls, the solid before the openings were closed (empty without an envelope).
+  double fill_openings = 0.0;
+  Mesh walls;
   // Volume of the solid over the input's, when the input's is defined: its shells clean and
   // apart (the nested ones as planned), or the input closed with every edge traversed as often
   // each way (|signed volume|, regions wound twice counting twice); NaN otherwise.
@@ -103,6 +114,14 @@ struct RepairResult {
   double seconds = 0.0;
   std::vector<std::string> notes;  // one sentence per step taken, for the summary
 };
+
+// The input's triangles when the solid differs from them (the fit and the evaluation must bound
+// them too: FitOptions::original, EvalOptions::original), else null: a repair that changed
+// anything, dropped shells, filled cavities or closed openings. Points into `r`.
+const Mesh* originalTriangles(const RepairResult& r);
+// The walls when the solid is their envelope (EvalOptions::walls, for E_r against them), else
+// null. Points into `r`.
+const Mesh* envelopeWalls(const RepairResult& r);
 
 // Repairs `mesh` (as loadMesh returns it, welded exactly). `name` prefixes error messages.
 // Errors: kNotSolid when the mesh needs a repair that is disabled or unavailable,

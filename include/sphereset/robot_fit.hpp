@@ -67,6 +67,12 @@ struct LinkCandidate {
 Expected<std::vector<int>> pickCandidates(const std::vector<std::vector<LinkCandidate>>& candidates,
                                           int budget);
 
+// What each link's solid is (RobotFitOptions::link_solid).
+enum class LinkSolid {
+  kEnvelope,  // the walls with the hollow behind their openings (RepairOptions::fill_openings)
+  kWalls,     // the walls alone, as the repair makes them
+};
+
 // Fitting a whole robot (what `sphereset robot` does; fit_robot.cpp).
 struct RobotFitOptions {
   // Spheres over the whole robot, sphere primitives included (at most: the split may use fewer
@@ -78,6 +84,11 @@ struct RobotFitOptions {
   FitQuality quality = FitQuality::kDefault;   // the presets of fit.hpp
   uint64_t seed = 1;
   RepairOptions repair;  // how each link's geometry is made a solid (repair.hpp)
+  // kEnvelope: each link's solid is its envelope, repair.fill_openings (0 there means
+  // kAutomatic: the link's smallest extent); kWalls: the walls (repair.fill_openings must be 0).
+  // A planner treats a casing's hollow as part of the link; fitted as walls, the spheres avoid
+  // it at a cost of outside volume that buys nothing.
+  LinkSolid link_solid = LinkSolid::kEnvelope;
   int default_link_spheres = 8;
   std::string name;  // prefixes messages (e.g. the URDF's path)
   // Each link fit's progress (fit.hpp), with the link's name. Called from the threads that fit
@@ -87,7 +98,7 @@ struct RobotFitOptions {
 };
 
 // RobotFitOptions' numbers as one table (options.hpp): budget, default_link_spheres,
-// link_spheres (keyed LINK=N), padding and link_padding (keyed LINK=R). The command line's flags
+// link_spheres (keyed LINK=N), padding, link_padding (keyed LINK=R) and link_solid. The command line's flags
 // of `sphereset robot` and Python's fit_robot keywords are made from it. setRobotFitOption sets a
 // row from the text a user typed (a keyed row adds or replaces its link's entry);
 // checkRobotFitOptions checks a struct against the rows with the same messages. (quality and

@@ -13,6 +13,7 @@ void bindEval(py::module_& m) {
          const py::dict& options) {
         EvalOptions eo;
         eo.original = solid->original();
+        eo.walls = solid->walls();
         setOptions(options, [&](const std::string& name, const std::string& text) {
           return setEvalOption(&eo, name, text);
         });

@@ -43,6 +43,7 @@ py::list optionTable(std::span<const OptionSpec> table) {
     d["default"] = o.default_text;
     d["help"] = o.help;
     d["key"] = o.key ? py::object(py::str(o.key)) : py::object(py::none());
+    d["automatic"] = o.automatic ? py::object(py::str(o.automatic)) : py::object(py::none());
     rows.append(d);
   }
   return rows;

@@ -25,11 +25,8 @@ struct PySolid {
   std::string name;
   // The input triangles when the solid differs from them (fit and evaluation cover them too),
   // else null: as the command line decides it.
-  const Mesh* original() const {
-    const bool same = repair.kind == RepairKind::kNone && repair.shells_dropped == 0 &&
-                      repair.cavities_filled == 0;
-    return same ? nullptr : &repair.original;
-  }
+  const Mesh* original() const { return originalTriangles(repair); }
+  const Mesh* walls() const { return envelopeWalls(repair); }
 };
 
 // The repair's options from the Python keywords (repair "auto"/"off", weld tolerance, cavities,

@@ -152,7 +152,7 @@ Status fitItem(const BatchItem& item, const std::string& out_dir, const BatchOpt
   files->output_digest = *d;
 
   auto checked =
-      evaluateSpheres(index, fit->spheres, fitCheckEvalOptions(fo.seed, solid->original()));
+      evaluateSpheres(index, fit->spheres, fitCheckEvalOptions(fo.seed, solid->original(), solid->walls()));
   if (!checked) return Error{checked.error().code, item.mesh + ": " + checked.error().message};
   const EvalResult& ev = *checked;
   rep->spheres = static_cast<int>(fit->spheres.size());

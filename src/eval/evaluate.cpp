@@ -220,6 +220,22 @@ Expected<EvalResult> evaluateSpheres(const SolidIndex& index, const std::vector<
   double total = 0.0;
   for (double v : res.outside_volume) total += v;
   res.er_sum = total / vol;
+  if (options.walls) {
+    // E_r against the walls of an envelope (repair.hpp): the same spheres, the walls' volume.
+    const SolidIndex walls(*options.walls);
+    std::vector<double> walls_outside(n, 0.0);
+    tbb::parallel_for(size_t{0}, n, [&](size_t i) {
+      detail::pollCancel();
+      walls_outside[i] = walls.outsideVolume(spheres[i]).volume;
+    });
+    double walls_total = 0.0;
+    for (double v : walls_outside) walls_total += v;
+    res.walls_volume = signedVolume(*options.walls);
+    res.er_walls = res.walls_volume > 0.0 ? walls_total / res.walls_volume : 0.0;
+  } else {
+    res.walls_volume = res.mesh_volume;
+    res.er_walls = res.er_sum;
+  }
 
   unionOutsideVolume(index, spheres, options, vol, &res);
 

@@ -8,11 +8,8 @@
 
 namespace sphereset {
 
-const Mesh* SolidInput::original() const {
-  const bool same =
-      repair.kind == RepairKind::kNone && repair.shells_dropped == 0 && repair.cavities_filled == 0;
-  return same ? nullptr : &repair.original;
-}
+const Mesh* SolidInput::original() const { return originalTriangles(repair); }
+const Mesh* SolidInput::walls() const { return envelopeWalls(repair); }
 
 Expected<SolidInput> loadSolid(const std::string& path, const RepairOptions& options) {
   auto m = loadMesh(path);

@@ -22,9 +22,11 @@
 #include <utility>
 
 #include "repair/canonical_order.hpp"
+#include "repair/envelope.hpp"
 #include "repair/cap_holes.hpp"
 #include "repair/nesting_plan.hpp"
 #include "repair/orient.hpp"
+#include "repair/wrap_parameters.hpp"
 #include "sphereset/limits.hpp"
 
 namespace sphereset {
@@ -34,29 +36,6 @@ namespace {
 // that closes the mesh is used (coordinates stored per corner in float differ by ~1e-7).
 constexpr double kAutoWeldSteps[] = {1e-8, 1e-7, kAutoWeldRel};
 
-// Automatic wrap parameters. CGAL 5.5's wrapping time grows with the number of triangles it
-// outputs, about kWrapTrianglesPerArea * area / alpha^2 for an offset of alpha / 20 (measured on
-// the benchmark meshes: spot gives 5.0k triangles at alpha = d/50), at a rate that falls with
-// the input's size (about 10k triangles per second for small inputs, 3k at 86k input triangles).
-// Alpha is the smallest that keeps the predicted output within what kWrapSeconds allows, so a
-// mesh with little surface for its size (a compact link) is wrapped more tightly than one with
-// much (a chair's thin legs), and a large input more coarsely; it stays between d/100 and d/50
-// of the bounding box diagonal d. The offset is alpha / 20.
-constexpr double kWrapTrianglesPerArea = 2.35;
-constexpr double kWrapRate = 10000.0;           // output triangles per second, small inputs
-constexpr double kWrapRateHalfInput = 37000.0;  // input triangles at which the rate halves
-constexpr double kWrapSeconds = 0.5;
-constexpr double kWrapAlphaMinRel = 1.0 / 100.0, kWrapAlphaMaxRel = 1.0 / 50.0;
-constexpr double kWrapOffsetOfAlpha = 1.0 / 20.0;
-// Limits of a wrap, checked before CGAL runs. Its exact arithmetic raises a floating-point
-// signal in GMP (a double overflowing to infinity) when coordinates, alpha or offset are
-// astronomically large (seen at 1e80 and at alpha 1e200), and its time grows with the output:
-// alpha and offset at most kWrapMaxSizeRel times the diagonal, coordinates (units of the mesh)
-// at most limits::kMaxCoordinate, and, for an alpha or offset the user chose, at most
-// kWrapMaxTriangles predicted output triangles (about a minute: the wrap of a one-triangle mesh
-// of diagonal 1.4 at offset 2 predicts 0.26M and took 20 s).
-constexpr double kWrapMaxSizeRel = 100.0;
-constexpr double kWrapMaxTriangles = 1e6;
 
 std::string fmt(const char* f, double x) {
   char buf[64];
@@ -121,49 +100,6 @@ bool allClean(const ShellAnalysis& sa) {
 
 std::string count(int64_t k, const char* one, const char* many) {
   return std::to_string(k) + " " + (k == 1 ? one : many);
-}
-
-// Alpha and offset for the wrap: the options' or the automatic ones.
-void wrapParameters(const Mesh& m, const RepairOptions& o, double* alpha, double* offset) {
-  const double diag = boundingBox(m).diagonal();
-  const double rate =
-      kWrapRate / (1.0 + static_cast<double>(m.triangles.size()) / kWrapRateHalfInput);
-  const double budget = rate * kWrapSeconds;  // output triangles
-  const double fit = std::sqrt(kWrapTrianglesPerArea * surfaceArea(m) / budget);
-  *alpha = o.wrap_alpha > 0.0 ? o.wrap_alpha
-                              : std::clamp(fit, kWrapAlphaMinRel * diag, kWrapAlphaMaxRel * diag);
-  *offset = o.wrap_offset > 0.0 ? o.wrap_offset : kWrapOffsetOfAlpha * *alpha;
-}
-
-// Whether a wrap of `m` with these parameters stays within the limits above. The output's area is
-// at most about twice the input's (both sides of an open surface) plus the offset's sphere and
-// band around it (Steiner's formula with the diagonal for the mean width).
-Status checkWrap(const Mesh& m, const RepairOptions& o, double alpha, double offset,
-                 const std::string& name) {
-  const Aabb box = boundingBox(m);
-  const double coordinate = std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff());
-  if (!(coordinate <= limits::kMaxCoordinate))
-    return Error{ErrorCode::kInvalidData, name + ": coordinates up to " + fmt("%.3g", coordinate) +
-                                              " cannot be wrapped (the limit is " +
-                                              fmt("%.3g", limits::kMaxCoordinate) + ")"};
-  const double diag = box.diagonal();
-  for (const auto& [what, value] : {std::pair{"wrap_alpha", alpha}, {"wrap_offset", offset}})
-    if (!(value <= kWrapMaxSizeRel * diag))
-      return Error{ErrorCode::kInvalidArgument,
-                   name + ": " + what + " " + fmt("%.3g", value) + " is more than " +
-                       fmt("%.3g", kWrapMaxSizeRel) + " times the mesh's diagonal " +
-                       fmt("%.3g", diag)};
-  if (o.wrap_alpha > 0.0 || o.wrap_offset > 0.0) {
-    const double area = 2.0 * surfaceArea(m) + 4.0 * std::numbers::pi * offset * (offset + diag);
-    const double predicted = kWrapTrianglesPerArea * area / (alpha * alpha);
-    if (!(predicted <= kWrapMaxTriangles))
-      return Error{ErrorCode::kInvalidArgument,
-                   name + ": a wrap with alpha " + fmt("%.3g", alpha) + " and offset " +
-                       fmt("%.3g", offset) + " would make about " + fmt("%.3g", predicted) +
-                       " triangles (the limit is " + fmt("%.3g", kWrapMaxTriangles) +
-                       "); give a larger wrap_alpha or a smaller wrap_offset"};
-  }
-  return {};
 }
 
 Error needs(const std::string& name, const std::string& what, const std::string& why) {
@@ -411,8 +347,8 @@ StepResult wrapMesh(const Mesh& soup, const RepairOptions& o, double input_volum
   if (why.empty()) why = "not a clean solid";
   if (!(o.operations.unite && o.operations.wrap))
     return needs(name, "rebuild with SPHERESET_WITH_REPAIR=ON to wrap it", why);
-  wrapParameters(soup, o, &res->wrap_alpha, &res->wrap_offset);
-  if (Status st = checkWrap(soup, o, res->wrap_alpha, res->wrap_offset, name); !st)
+  detail::wrapParameters(soup, o, &res->wrap_alpha, &res->wrap_offset);
+  if (Status st = detail::checkWrap(soup, o.wrap_alpha > 0.0 || o.wrap_offset > 0.0, res->wrap_alpha, res->wrap_offset, name); !st)
     return st.error();
   auto w = o.operations.wrap(soup, res->wrap_alpha, res->wrap_offset);
   if (!w) return Error{w.error().code, name + ": " + w.error().message};
@@ -463,8 +399,11 @@ const char* repairName(RepairKind k) {
   return "none";
 }
 
-Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
-                                  const std::string& name) {
+namespace {
+
+// The ladder: the walls as a solid.
+Expected<RepairResult> repairWalls(const Mesh& mesh, const RepairOptions& o,
+                                   const std::string& name) {
   const auto t0 = std::chrono::steady_clock::now();
   RepairResult res;
   res.original = mesh;
@@ -493,6 +432,28 @@ Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
   if (StepResult s = uniteShells(m, res.shells, plan, o, name, &res); stops(s))
     return done(std::move(s));
   return done(wrapMesh(res.holes_capped > 0 ? capped : m, o, input_volume, name, &res));
+}
+
+}  // namespace
+
+Expected<RepairResult> repairMesh(const Mesh& mesh, const RepairOptions& o,
+                                  const std::string& name) {
+  const auto t0 = std::chrono::steady_clock::now();
+  auto res = repairWalls(mesh, o, name);
+  if (!res || o.fill_openings == 0.0) return res;
+  if (Status st = detail::closeOpenings(o, name, &*res); !st) return st.error();
+  res->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+const Mesh* originalTriangles(const RepairResult& r) {
+  const bool same = r.kind == RepairKind::kNone && r.shells_dropped == 0 &&
+                    r.cavities_filled == 0 && r.fill_openings == 0.0;
+  return same ? nullptr : &r.original;
+}
+
+const Mesh* envelopeWalls(const RepairResult& r) {
+  return r.fill_openings > 0.0 ? &r.walls : nullptr;
 }
 
 }  // namespace sphereset

@@ -44,6 +44,17 @@ constexpr OptionSpec kRepairOptions[] = {
      {},
      "0",
      "Wrapping: distance of the wrap outside the triangles (0: alpha/20)"},
+    {"fill_openings",
+     "--fill-openings",
+     OptionType::kReal,
+     0.0,
+     limits::kMaxCoordinate,
+     {},
+     "0",
+     "Envelope: close openings narrower than this length and count the hollow behind them as "
+     "inside (auto: the smallest extent of the bounding box; 0: off, the walls as they are)",
+     nullptr,
+     "auto"},
 };
 
 }  // namespace
@@ -59,6 +70,7 @@ Status setRepairOption(RepairOptions* o, const std::string& name, const std::str
   if (n == "weld_tolerance") o->weld_tolerance = v->real;
   if (n == "wrap_alpha") o->wrap_alpha = v->real;
   if (n == "wrap_offset") o->wrap_offset = v->real;
+  if (n == "fill_openings") o->fill_openings = v->real;
   return {};
 }
 
@@ -68,7 +80,8 @@ Status checkRepairOptions(const RepairOptions& o) {
   const std::pair<const char*, double> values[] = {
       {"weld_tolerance", o.weld_tolerance < 0.0 ? 0.0 : o.weld_tolerance},
       {"wrap_alpha", o.wrap_alpha},
-      {"wrap_offset", o.wrap_offset}};
+      {"wrap_offset", o.wrap_offset},
+      {"fill_openings", o.fill_openings}};
   for (const auto& [name, value] : values)
     if (Status st = checkTableValue(kRepairOptions, "repair", name, value); !st) return st;
   return {};

@@ -67,7 +67,7 @@ FitOptions linkFitOptions(const RobotFitOptions& o, const Job& j, int n, bool qu
     fo.max_iterations = kCurveRounds;
   }
   fo.seed = o.seed;
-  fo.original = j.repair.kind == RepairKind::kNone ? nullptr : &j.repair.original;
+  fo.original = originalTriangles(j.repair);
   if (o.progress)
     fo.progress = [&o, &link = j.link->name](const FitProgress& p) { o.progress(link, p); };
   return fo;
@@ -96,7 +96,10 @@ Expected<std::vector<Job>> prepareLinks(const RobotFitOptions& o, const Robot& r
     if (!fitted) return;  // sphere primitives only
     if (auto it = o.link_spheres.find(link.name); it != o.link_spheres.end() && it->second == 0)
       return;  // skipped: not worth repairing
-    auto solid = linkSolid(link, o.repair, name);
+    RepairOptions ro = o.repair;
+    if (o.link_solid == LinkSolid::kEnvelope && ro.fill_openings == 0.0)
+      ro.fill_openings = kAutomatic;
+    auto solid = linkSolid(link, ro, name);
     if (!solid) {
       status[i] = solid.error();
       return;
@@ -189,7 +192,8 @@ LinkFit fitLinkAt(const RobotFitOptions& o, const Job& j, int count) {
     eo.union_samples = 0;
     eo.proximity_segments = 0;
     eo.shadow_resolution = 0;
-    eo.original = j.repair.kind == RepairKind::kNone ? nullptr : &j.repair.original;
+    eo.original = originalTriangles(j.repair);
+    eo.walls = envelopeWalls(j.repair);
     auto e = evaluateSpheres(*j.index, f->spheres, eo);
     if (!e) {
       out.error = e.error().message;

@@ -12,6 +12,7 @@ namespace sphereset {
 namespace {
 
 constexpr double kNoLimit = std::numeric_limits<double>::max();
+constexpr const char* kLinkSolids[] = {"envelope", "walls"};
 
 constexpr OptionSpec kRobotOptions[] = {
     {"budget",
@@ -57,6 +58,10 @@ constexpr OptionSpec kRobotOptions[] = {
      "none",
      "LINK=R: the link's padding instead; repeatable",
      "LINK"},
+    {"link_solid", "--link-solid", OptionType::kChoice, 0, 0, kLinkSolids, "envelope",
+     "envelope: each link's walls with the hollow behind openings up to fill_openings (auto: "
+     "the link's smallest extent) inside, what a planner treats as the link; walls: the walls "
+     "alone"},
 };
 
 }  // namespace
@@ -73,6 +78,7 @@ Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std:
   if (n == "link_spheres") o->link_spheres[v.key] = static_cast<int>(v.integer);
   if (n == "padding") o->padding = v.real;
   if (n == "link_padding") o->link_padding[v.key] = v.real;
+  if (n == "link_solid") o->link_solid = v.choice == "walls" ? LinkSolid::kWalls : LinkSolid::kEnvelope;
   return {};
 }
 
@@ -89,6 +95,12 @@ Status checkRobotFitOptions(const RobotFitOptions& o) {
   for (const auto& [link, padding] : o.link_padding)
     if (Status st = checkTableValue(kRobotOptions, "robot", "link_padding", padding, link); !st)
       return st;
+  if (o.link_solid == LinkSolid::kWalls && o.repair.fill_openings != 0.0)
+    return Error{ErrorCode::kInvalidArgument,
+                 "link_solid walls: fill_openings " +
+                     (o.repair.fill_openings == kAutomatic ? std::string("auto")
+                                                           : optionText(o.repair.fill_openings)) +
+                     " asks for an envelope; give link_solid envelope or no fill_openings"};
   return {};
 }
 

@@ -30,10 +30,11 @@ std::string expectation(const OptionSpec& spec) {
     case OptionType::kUnsigned:
       return "an integer from 0 to " + std::to_string(std::numeric_limits<uint64_t>::max());
     case OptionType::kReal:
-      return spec.max == std::numeric_limits<double>::max()
-                 ? "a finite number >= " + detail::numberText(spec.min)
-                 : "a number from " + detail::numberText(spec.min) + " to " +
-                       detail::numberText(spec.max);
+      return (spec.max == std::numeric_limits<double>::max()
+                  ? "a finite number >= " + detail::numberText(spec.min)
+                  : "a number from " + detail::numberText(spec.min) + " to " +
+                        detail::numberText(spec.max)) +
+             (spec.automatic ? " or " + std::string(spec.automatic) : std::string());
     case OptionType::kChoice:
       return choiceList(spec.choices);
   }
@@ -72,6 +73,11 @@ Expected<OptionValue> parseOption(const OptionSpec& spec, const std::string& ful
       ok = wholeInteger(text, &v.unsigned_integer);
       break;
     case OptionType::kReal: {
+      if (spec.automatic && text == spec.automatic) {
+        v.real = kAutomatic;
+        ok = true;
+        break;
+      }
       char* end = nullptr;
       v.real = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
       ok = !text.empty() && end == text.c_str() + text.size() && std::isfinite(v.real) &&
@@ -126,6 +132,7 @@ Status checkTableValue(std::span<const OptionSpec> table, const char* what, cons
   const bool whole = spec && spec->type != OptionType::kReal && std::isfinite(value) &&
                      value == std::floor(value) && std::fabs(value) < 9e18;
   std::string text = whole ? std::to_string(static_cast<int64_t>(value)) : optionText(value);
+  if (spec && spec->automatic && value == kAutomatic) text = spec->automatic;
   if (!key.empty()) text = key + "=" + text;
   if (auto v = parseTableOption(table, what, name, text); !v) return v.error();
   return {};

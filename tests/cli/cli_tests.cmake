@@ -261,7 +261,7 @@ set_tests_properties(cli.robot_render PROPERTIES DEPENDS cli.robot_budget)
 cli_test(robot_summary 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres base_link=2 --link-spheres link1=2 --link-spheres link2=3 --quality fast
          -o ${work}/three_summary.json
-         STDERR "link +triangles +repair.*link2 +300 +none +3 .*tool: no <collision> geometry, its <visual> geometry was used")
+         STDERR "link +triangles +repair +openings.*link2 +300 +none +0.152 +3 .*tool: no <collision> geometry, its <visual> geometry was used")
 # The same robot file on one thread and on two (links are prepared and fitted in parallel).
 cli_test(robot_one_thread 0 ARGS --threads 1 robot ${robot}/three_link.urdf --package-path
          ${robot} --budget 12 --quality fast -o ${work}/three_t1.yml -q FILE ${work}/three_t1.yml)
@@ -277,7 +277,7 @@ cli_test(robot_budget_summary 0 ARGS robot ${robot}/three_link.urdf --package-pa
 
 cli_test(robot_skip_link 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres link1=0 --link-spheres tool=0 --quality fast -o ${work}/three_skip.yml
-         STDERR "link1 +0 - +0 +0.0000 +skipped.*tool +0 - +0 +0.0000 +skipped")
+         STDERR "link1 +0 - +0 +0 +0.0000 +0.0000 +skipped.*tool +0 - +0 +0 +0.0000 +0.0000 +skipped")
 cli_test(robot_fractional_count 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres link1=2.5 -o ${work}/never35.yml -q
          STDERR "link_spheres .link1=2.5.: expected LINK=VALUE, VALUE an integer from 0 to 1000000" FORBID ${work}/never35.yml)

@@ -10,6 +10,9 @@
 #include "robot_data.hpp"
 #include "sphereset/robot_fit.hpp"
 #include "test_support.hpp"
+#ifdef SPHERESET_TEST_REPAIR
+#include "sphereset/repair_cgal.hpp"
+#endif
 
 namespace sphereset::test {
 namespace {
@@ -18,6 +21,11 @@ RobotFitOptions fastOptions() {
   RobotFitOptions o;
   o.quality = FitQuality::kFast;
   o.name = "three_link.urdf";
+#ifdef SPHERESET_TEST_REPAIR
+  o.repair.operations = cgalSolidOperations();
+#else
+  o.link_solid = LinkSolid::kWalls;  // the envelope needs the wrapping
+#endif
   return o;
 }
 

@@ -34,7 +34,7 @@ TEST(OptionTables, UnknownNamesListTheirTable) {
                 "shadow_resolution, shadow_lights, surface_max_depth, interior_max_depth)");
   expectRefused(setRepairOption(&r, "weld", "0.1"),
                 "unknown repair option 'weld' (expected repair, weld_tolerance, wrap_alpha, "
-                "wrap_offset)");
+                "wrap_offset, fill_openings)");
   expectRefused(setTreeOption(&t, "branch", "4"),
                 "unknown tree option 'branch' (expected branching, depth, parents)");
 }
@@ -49,6 +49,17 @@ TEST(OptionTables, SettersAndCheckersShareTheRowsMessages) {
   EXPECT_EQ(r.wrap_offset, 0.25);
   r.wrap_offset = -0.5;
   expectRefused(checkRepairOptions(r), "wrap_offset '-0.5': expected a number from 0 to 1e+30");
+  // A row's automatic word: read as kAutomatic, named in the expectation, and a struct holding
+  // kAutomatic passes the checker.
+  ASSERT_TRUE(setRepairOption(&r, "fill_openings", "auto").ok());
+  EXPECT_EQ(r.fill_openings, kAutomatic);
+  r.wrap_offset = 0.0;
+  EXPECT_TRUE(checkRepairOptions(r).ok());
+  expectRefused(setRepairOption(&r, "fill_openings", "-1"),
+                "fill_openings '-1': expected a number from 0 to 1e+30 or auto");
+  r.fill_openings = -2.0;
+  expectRefused(checkRepairOptions(r),
+                "fill_openings '-2': expected a number from 0 to 1e+30 or auto");
   FitRequest f;
   ASSERT_TRUE(setFitRequestOption(&f, "quality", "fast").ok());
   EXPECT_EQ(f.quality, FitQuality::kFast);
