@@ -78,6 +78,11 @@ MeshLike = Union[Mesh, Solid, PathLike]
 ProgressCallback = Callable[[Dict[str, Any]], None]
 
 
+def _size_text(value: Union[float, str]) -> str:
+    """A length keyword as the text the library's table parses ("auto" stays a word)."""
+    return value if isinstance(value, str) else repr(float(value))
+
+
 def load_mesh(path: PathLike, *, weld_tolerance: float = 0.0) -> Mesh:
     """Reads a mesh file (OBJ, PLY, STL, OFF, DAE, glTF/GLB, ... anything assimp reads).
 
@@ -90,7 +95,8 @@ def load_mesh(path: PathLike, *, weld_tolerance: float = 0.0) -> Mesh:
 
 def solid(mesh: MeshLike, *, repair: Union[str, bool] = "auto",
           weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
-          wrap_alpha: float = 0.0, wrap_offset: float = 0.0) -> Solid:
+          wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
+          fill_openings: Union[float, str] = 0.0) -> Solid:
     """The solid the fit runs on: ``mesh`` repaired as ``sphereset fit`` does and indexed.
 
     ``mesh`` is a Mesh, a path, or already a Solid (returned as it is). ``repair`` is "auto"
@@ -98,6 +104,9 @@ def solid(mesh: MeshLike, *, repair: Union[str, bool] = "auto",
     closed solid raises NotSolidError). ``weld_tolerance`` None welds automatically (exact, then
     up to 1e-6 of the diagonal if that closes the mesh). ``fill_cavities`` fills inner cavities;
     ``wrap_alpha``/``wrap_offset`` (absolute, 0: from the mesh) tune the wrapping.
+    ``fill_openings`` (absolute, "auto": the smallest extent of the bounding box, 0: off) makes
+    the solid the walls' envelope: openings narrower than it closed, the hollow behind them
+    inside (E_r is then reported against the walls too, ``er_walls``).
     """
     if isinstance(mesh, Solid):
         return mesh
@@ -108,7 +117,8 @@ def solid(mesh: MeshLike, *, repair: Union[str, bool] = "auto",
     elif repair is False:
         repair = "off"
     return Solid(mesh, repair=repair, weld_tolerance=weld_tolerance,
-                 fill_cavities=fill_cavities, wrap_alpha=wrap_alpha, wrap_offset=wrap_offset)
+                 fill_cavities=fill_cavities, wrap_alpha=wrap_alpha, wrap_offset=wrap_offset,
+                 fill_openings=_size_text(fill_openings))
 
 
 @dataclass
@@ -141,7 +151,8 @@ def diagnose(mesh: Union[Mesh, PathLike]) -> Dict[str, Any]:
 
 def check(mesh: Union[Mesh, PathLike], *, repair: Union[str, bool] = "auto",
           weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
-          wrap_alpha: float = 0.0, wrap_offset: float = 0.0) -> CheckResult:
+          wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
+          fill_openings: Union[float, str] = 0.0) -> CheckResult:
     """Diagnoses a mesh as a solid and says what the fit does about its problems, like
     ``sphereset check`` (same options as :func:`solid`). Never raises for a mesh the fit
     refuses: ``result.error`` holds the reason; a file that cannot be read and options outside
@@ -152,7 +163,7 @@ def check(mesh: Union[Mesh, PathLike], *, repair: Union[str, bool] = "auto",
         repair = "off"
     weld = -1.0 if weld_tolerance is None else float(weld_tolerance)
     _core._check_repair_options(repair, weld, bool(fill_cavities), float(wrap_alpha),
-                                float(wrap_offset))
+                                float(wrap_offset), _size_text(fill_openings))
     if not isinstance(mesh, Mesh):
         mesh = load_mesh(mesh, weld_tolerance=max(0.0, weld))
     rep: Optional[Dict[str, Any]] = None
@@ -160,7 +171,7 @@ def check(mesh: Union[Mesh, PathLike], *, repair: Union[str, bool] = "auto",
     try:
         rep = solid(mesh, repair=repair, weld_tolerance=weld_tolerance,
                     fill_cavities=fill_cavities, wrap_alpha=wrap_alpha,
-                    wrap_offset=wrap_offset).repair
+                    wrap_offset=wrap_offset, fill_openings=fill_openings).repair
     except Error as e:
         err = str(e)
     return CheckResult(name=mesh.name, diagnosis=_core._diagnose(mesh), load=mesh.load_report,
@@ -173,6 +184,7 @@ def fit(mesh: MeshLike, n: int = 32, *, seed: int = 1, quality: str = "default",
         optimizer: str = "powell", init: str = "fps", method: str = "variational",
         repair: Union[str, bool] = "auto", weld_tolerance: Optional[float] = None,
         fill_cavities: bool = True, wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
+        fill_openings: Union[float, str] = 0.0,
         progress: Optional[ProgressCallback] = None) -> FitResult:
     """Fits ``n`` spheres that bound the solid: the options and defaults of ``sphereset fit``.
 
@@ -192,7 +204,7 @@ def fit(mesh: MeshLike, n: int = 32, *, seed: int = 1, quality: str = "default",
                    optimizer=optimizer, init=init, method=method)
     _core._check_fit_options(options)
     s = solid(mesh, repair=repair, weld_tolerance=weld_tolerance, fill_cavities=fill_cavities,
-              wrap_alpha=wrap_alpha, wrap_offset=wrap_offset)
+              wrap_alpha=wrap_alpha, wrap_offset=wrap_offset, fill_openings=fill_openings)
     d = _core._fit(s, options, progress)
     return FitResult(**d)
 
@@ -203,7 +215,8 @@ def evaluate(mesh: MeshLike, spheres: Any, *, seed: Optional[int] = None,
              shadow_lights: Optional[int] = None, surface_max_depth: Optional[int] = None,
              interior_max_depth: Optional[int] = None, repair: Union[str, bool] = "auto",
              weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
-             wrap_alpha: float = 0.0, wrap_offset: float = 0.0) -> EvalResult:
+             wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
+             fill_openings: Union[float, str] = 0.0) -> EvalResult:
     """Measures (N, 4) ``spheres`` against the solid with the options and defaults of
     ``sphereset eval`` (the library's evaluation table; None keeps a default, see
     :func:`eval_option_table`).
@@ -219,7 +232,7 @@ def evaluate(mesh: MeshLike, spheres: Any, *, seed: Optional[int] = None,
                    surface_max_depth=surface_max_depth, interior_max_depth=interior_max_depth)
     _core._check_eval_options(options)
     s = solid(mesh, repair=repair, weld_tolerance=weld_tolerance, fill_cavities=fill_cavities,
-              wrap_alpha=wrap_alpha, wrap_offset=wrap_offset)
+              wrap_alpha=wrap_alpha, wrap_offset=wrap_offset, fill_openings=fill_openings)
     return EvalResult(**_core._evaluate(s, spheres, options))
 
 
@@ -249,6 +262,7 @@ def tree(mesh: MeshLike, *, branching: int = 8, depth: int = 2, parents: str = "
          method: str = "variational", repair: Union[str, bool] = "auto",
          weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
          wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
+         fill_openings: Union[float, str] = 0.0,
          progress: Optional[ProgressCallback] = None) -> TreeResult:
     """Fits leaves and builds a sphere tree over them, like ``sphereset tree``: ``n`` leaves
     (None: branching**depth), levels above by Lloyd clustering of the children, each parent the
@@ -259,7 +273,7 @@ def tree(mesh: MeshLike, *, branching: int = 8, depth: int = 2, parents: str = "
                    optimizer=optimizer, init=init, method=method)
     _core._check_fit_options(options)
     s = solid(mesh, repair=repair, weld_tolerance=weld_tolerance, fill_cavities=fill_cavities,
-              wrap_alpha=wrap_alpha, wrap_offset=wrap_offset)
+              wrap_alpha=wrap_alpha, wrap_offset=wrap_offset, fill_openings=fill_openings)
     d = _core._fit_tree(s, int(branching), int(depth), parents, options, progress)
     d["fit"] = FitResult(**d["fit"], options={}, repair=d["repair"])
     return TreeResult(**d)
@@ -469,7 +483,9 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
               package_paths: Sequence[PathLike] = (), use_ros_package_path: bool = True,
               seed: int = 1, quality: str = "default", repair: Union[str, bool] = "auto",
               weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
-              wrap_alpha: float = 0.0, wrap_offset: float = 0.0) -> RobotFitResult:
+              wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
+              fill_openings: Union[float, str] = 0.0,
+              link_solid: str = "envelope") -> RobotFitResult:
     """Fits collision spheres to every link of a URDF robot, like ``sphereset robot`` (the same
     library call, options and defaults, so the same spheres for the same seed).
 
@@ -479,6 +495,9 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
     to every radius, ``link_padding`` {link: padding} instead for those links; mesh paths
     resolve through ``package_paths`` (package://), then ROS_PACKAGE_PATH. ``quality`` is the
     fit preset ("fast", "default", "best"); the repair keywords are those of :func:`solid`.
+    ``link_solid`` "envelope" (the default) fits each link's envelope, its walls with the hollow
+    behind openings up to ``fill_openings`` (0 or "auto": the link's smallest extent) inside;
+    "walls" fits the walls alone.
     Raises InvalidArgumentError (a link name the robot lacks, a budget too small), UnreadableError
     (the URDF or a mesh), NotSolidError (a link's geometry cannot be made a solid). The call
     releases the GIL; Ctrl-C raises KeyboardInterrupt at the next progress report of a link fit
@@ -491,10 +510,10 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
     # The keywords of the library's robot table (robot_fit.hpp), checked there.
     options = dict(budget=budget, default_link_spheres=default_link_spheres,
                    link_spheres=dict(link_spheres or {}), padding=padding,
-                   link_padding=dict(link_padding or {}))
+                   link_padding=dict(link_padding or {}), link_solid=link_solid)
     d = _core._fit_robot(os.fspath(urdf), options, dict(quality=quality, seed=seed),
                          [os.fspath(p) for p in package_paths], bool(use_ros_package_path),
                          repair, weld_tolerance, bool(fill_cavities), float(wrap_alpha),
-                         float(wrap_offset))
+                         float(wrap_offset), _size_text(fill_openings))
     d["links"] = [RobotLinkFit(**lf) for lf in d["links"]]
     return RobotFitResult(**d)

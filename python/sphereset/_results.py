@@ -108,6 +108,10 @@ class EvalResult:
     """its bounding box's diagonal (the unit of the gaps)"""
     er_sum: float
     """E_r: Σ outside volume / mesh volume (exact)"""
+    walls_volume: float
+    """the walls' volume when the solid is their envelope (else the solid's)"""
+    er_walls: float
+    """E_r against the walls: Σ outside volume of them / their volume"""
     er_union: float
     """outside volume of the union / mesh volume (Monte Carlo)"""
     er_union_stderr: float
@@ -251,8 +255,18 @@ class RobotLinkFit:
     """some spheres were fitted"""
     covered: bool
     """the coverage certificates of the fitted spheres"""
+    solid: str
+    """what was fitted: the link's walls or their envelope (openings closed)"""
+    fill_openings: float
+    """the envelope's opening size (0: walls)"""
+    volume: float
+    """the fitted solid's volume"""
+    walls_volume: float
+    """the walls' volume"""
     er_sum: float
-    """E_r of the fitted spheres, before padding"""
+    """E_r of the fitted spheres against the fitted solid, before padding"""
+    er_walls: float
+    """E_r of the same against the walls"""
     outside_volume: float
     """Σ outside volume of the fitted spheres"""
     padding: float

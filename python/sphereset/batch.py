@@ -27,7 +27,7 @@ import os
 import sys
 import time
 import uuid
-from typing import Any, Dict, List, Optional
+from typing import Any, Dict, List, Optional, Union
 
 from . import _sphereset as _core
 
@@ -40,7 +40,7 @@ def batch_options(n: int = 32, *, quality: str = "default", seed: int = 1, paddi
                   optimizer: str = "powell", init: str = "fps", method: str = "variational",
                   repair: str = "auto", weld_tolerance: Optional[float] = None,
                   fill_cavities: bool = True, wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
-                  format: str = "json", resume: bool = True,  # noqa: A002
+                  fill_openings: Union[float, str] = 0.0, format: str = "json", resume: bool = True,  # noqa: A002
                   threads: int = 0) -> Dict[str, Any]:
     """The options of a batch as a plain dict (picklable, sent to the workers): the fit and
     repair options of ``sphereset fit``, the sphere file format, resuming, and the threads of
@@ -54,7 +54,9 @@ def batch_options(n: int = 32, *, quality: str = "default", seed: int = 1, paddi
         "repair": repair,
         "weld_tolerance": -1.0 if weld_tolerance is None else float(weld_tolerance),
         "fill_cavities": bool(fill_cavities), "wrap_alpha": float(wrap_alpha),
-        "wrap_offset": float(wrap_offset), "format": format, "resume": bool(resume),
+        "wrap_offset": float(wrap_offset),
+        "fill_openings": fill_openings if isinstance(fill_openings, str) else repr(float(fill_openings)),
+        "format": format, "resume": bool(resume),
         "threads": int(threads),
     }
 

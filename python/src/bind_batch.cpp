@@ -46,13 +46,14 @@ BatchItem itemFrom(const py::dict& d) {
 }
 
 // Options dict: {"fit": request, "repair": "auto"/"off", "weld_tolerance", "fill_cavities",
-// "wrap_alpha", "wrap_offset", "format", "resume", "threads"}.
+// "wrap_alpha", "wrap_offset", "fill_openings" (text), "format", "resume", "threads"}.
 BatchOptions optionsFrom(const py::dict& d) {
   BatchOptions o;
   o.fit = requestFrom(d["fit"].cast<py::dict>());
   o.repair = repairOptions(d["repair"].cast<std::string>(), d["weld_tolerance"].cast<double>(),
                            d["fill_cavities"].cast<bool>(), d["wrap_alpha"].cast<double>(),
-                           d["wrap_offset"].cast<double>());
+                           d["wrap_offset"].cast<double>(),
+                           d["fill_openings"].cast<std::string>());
   o.format = d["format"].cast<std::string>();
   o.resume = d["resume"].cast<bool>();
   o.threads = d["threads"].cast<int>();

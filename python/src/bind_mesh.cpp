@@ -16,10 +16,12 @@
 namespace sphereset::python {
 
 RepairOptions repairOptions(const std::string& repair, double weld_tolerance, bool fill_cavities,
-                            double wrap_alpha, double wrap_offset) {
+                            double wrap_alpha, double wrap_offset,
+                            const std::string& fill_openings) {
   // The library's table checks every value, with the messages of every door.
   RepairOptions ro;
   check(setRepairOption(&ro, "repair", repair));
+  check(setRepairOption(&ro, "fill_openings", fill_openings));
   ro.weld_tolerance = weld_tolerance;
   ro.fill_cavities = fill_cavities;
   ro.wrap_alpha = wrap_alpha;
@@ -153,11 +155,12 @@ Raises InvalidDataError for NaN/infinite coordinates, indices out of range or no
   m.def(
       "_check_repair_options",
       [](const std::string& repair, double weld_tolerance, bool fill_cavities, double wrap_alpha,
-         double wrap_offset) {
-        repairOptions(repair, weld_tolerance, fill_cavities, wrap_alpha, wrap_offset);
+         double wrap_offset, const std::string& fill_openings) {
+        repairOptions(repair, weld_tolerance, fill_cavities, wrap_alpha, wrap_offset,
+                      fill_openings);
       },
       py::arg("repair"), py::arg("weld_tolerance"), py::arg("fill_cavities"), py::arg("wrap_alpha"),
-      py::arg("wrap_offset"),
+      py::arg("wrap_offset"), py::arg("fill_openings"),
       "Raises the library's InvalidArgumentError when a repair option is outside its table row.");
   m.def(
       "_repair_option_values",
@@ -170,6 +173,8 @@ Raises InvalidDataError for NaN/infinite coordinates, indices out of range or no
         d["weld_tolerance"] = ro.weld_tolerance;
         d["wrap_alpha"] = ro.wrap_alpha;
         d["wrap_offset"] = ro.wrap_offset;
+        d["fill_openings"] = ro.fill_openings == kAutomatic ? py::object(py::str("auto"))
+                                                            : py::object(py::float_(ro.fill_openings));
         return d;
       },
       py::arg("texts"),
@@ -219,15 +224,16 @@ Raises InvalidDataError for NaN/infinite coordinates, indices out of range or no
 A mesh made a solid the fit can run on, indexed for the fit and the evaluation.
 
 Solid(mesh, *, repair="auto", weld_tolerance=None, fill_cavities=True, wrap_alpha=0.0,
-      wrap_offset=0.0)
+      wrap_offset=0.0, fill_openings="0")
 
 The repair is the one `sphereset fit` applies (welding, re-orienting, capping holes, uniting
 crossing shells, wrapping); repair="off" accepts only a clean closed solid. Build it once to fit
 and evaluate the same mesh several times. Raises NotSolidError when no solid can be made.)doc")
       .def(py::init([](std::shared_ptr<const PyMesh> mesh, const std::string& repair,
-                       const py::object& weld, bool fill, double alpha, double offset) {
+                       const py::object& weld, bool fill, double alpha, double offset,
+                       const std::string& openings) {
              const double w = weld.is_none() ? -1.0 : weld.cast<double>();
-             RepairOptions ro = repairOptions(repair, w, fill, alpha, offset);
+             RepairOptions ro = repairOptions(repair, w, fill, alpha, offset, openings);
              auto s = std::make_shared<PySolid>();
              s->input = mesh;
              s->name = mesh->loaded.report.path;
@@ -238,7 +244,8 @@ and evaluate the same mesh several times. Raises NotSolidError when no solid can
            }),
            py::arg("mesh"), py::kw_only(), py::arg("repair") = "auto",
            py::arg("weld_tolerance") = py::none(), py::arg("fill_cavities") = true,
-           py::arg("wrap_alpha") = 0.0, py::arg("wrap_offset") = 0.0)
+           py::arg("wrap_alpha") = 0.0, py::arg("wrap_offset") = 0.0,
+           py::arg("fill_openings") = "0")
       .def_property_readonly(
           "mesh",
           [](const PySolid& s) {

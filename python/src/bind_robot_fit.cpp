@@ -27,7 +27,7 @@ void bindRobotFit(py::module_& m) {
       [](const Path& urdf_arg, const py::dict& options, const py::dict& fit_options,
          const std::vector<std::string>& package_paths, bool use_ros_package_path,
          const std::string& repair, const py::object& weld, bool fill, double alpha,
-         double offset) {
+         double offset, const std::string& openings) {
         const std::string urdf = urdf_arg.string();
         // The rows of the robot table and the fit table's quality and seed, parsed and checked
         // by the library (its messages) before anything is read.
@@ -42,7 +42,8 @@ void bindRobotFit(py::module_& m) {
         fo.quality = request.quality;
         fo.seed = request.seed;
         fo.repair =
-            repairOptions(repair, weld.is_none() ? -1.0 : weld.cast<double>(), fill, alpha, offset);
+            repairOptions(repair, weld.is_none() ? -1.0 : weld.cast<double>(), fill, alpha, offset,
+                          openings);
         fo.name = urdf;
         // Ctrl-C: Python runs signal handlers on the main thread only, which fits links too;
         // there the check raises KeyboardInterrupt and the exception cancels the whole fit.
@@ -71,7 +72,8 @@ void bindRobotFit(py::module_& m) {
       },
       py::arg("urdf"), py::arg("options"), py::arg("fit_options"), py::arg("package_paths"),
       py::arg("use_ros_package_path"), py::arg("repair"), py::arg("weld_tolerance"),
-      py::arg("fill_cavities"), py::arg("wrap_alpha"), py::arg("wrap_offset"));
+      py::arg("fill_cavities"), py::arg("wrap_alpha"), py::arg("wrap_offset"),
+      py::arg("fill_openings"));
   m.def("_robot_option_table", [] { return optionTable(robotFitOptionTable()); });
 }
 

@@ -32,7 +32,8 @@ struct PySolid {
 // The repair's options from the Python keywords (repair "auto"/"off", weld tolerance, cavities,
 // wrapping), with the union and the wrapping of this build.
 RepairOptions repairOptions(const std::string& repair, double weld_tolerance, bool fill_cavities,
-                            double wrap_alpha, double wrap_offset);
+                            double wrap_alpha, double wrap_offset,
+                            const std::string& fill_openings);
 
 py::dict repairDict(const RepairResult& r);
 py::dict diagnosisDict(const MeshDiagnosis& d);
