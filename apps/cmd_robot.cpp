@@ -99,6 +99,7 @@ int runRobot(const RobotArgs& a) {
   auto repair = repairOptions(a.repair);
   if (!repair) return fail(repair.error());
   fo.repair = std::move(repair).value();
+  if (Status st = checkRobotFitOptions(fo); !st) return fail(st.error());
   if (ext != ".json" && ext != ".urdf" && (!format || *format != SphereFormat::kYaml))
     return fail(Error{ErrorCode::kInvalidArgument,
                       a.out_path + ": robot output is .yml/.yaml (cuRobo), .urdf or .json"});

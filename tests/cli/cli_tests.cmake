@@ -184,6 +184,23 @@ cli_test(check_cavity 0 ARGS check ${work}/cavity.off
 cli_test(fit_cavity_kept 0 ARGS fit ${work}/cavity.off -n 6 -o ${work}/cavity.txt --quality fast
          --keep-cavities --json -q FILE ${work}/cavity.txt SPHERES 6
          STDOUT "\"cavities_kept\":1.*\"kind\":\"none\".*\"volume\":0.875")
+# The envelope: openings closed, E_r against the walls too; the robot refuses an envelope size
+# with walls.
+if(SPHERESET_WITH_REPAIR)
+  cli_test(fit_fill_openings 0 ARGS fit ${data}/open_box.off -n 4 -o ${work}/envelope.txt
+           --fill-openings auto --quality fast --json -q FILE ${work}/envelope.txt SPHERES 4
+           STDOUT "\"er_walls\":[0-9.]+.*\"fill_openings\":1.0.*\"solid\":\"envelope\"")
+  cli_test(eval_fill_openings 0 ARGS eval ${data}/open_box.off ${work}/envelope.txt
+           --fill-openings auto --samples 2000 --segments 10 --json
+           STDOUT "\"er_walls\":[0-9.]+.*\"original_covered\":true")
+  set_tests_properties(cli.eval_fill_openings PROPERTIES DEPENDS cli.fit_fill_openings)
+endif()
+cli_test(fit_bad_openings 2 ARGS fit ${data}/open_box.off -n 4 -o ${work}/never_env.txt -q
+         --fill-openings -2 STDERR "fill_openings '-2': expected a number from 0 to 1e.30 or auto"
+         FORBID ${work}/never_env.txt)
+cli_test(robot_walls_with_openings 2 ARGS robot ${data}/robot/three_link.urdf --link-solid walls
+         --fill-openings 0.1 -o ${work}/never_walls.yml
+         STDERR "link_solid walls: fill_openings 0.1 asks for an envelope" FORBID ${work}/never_walls.yml)
 if(SPHERESET_WITH_REPAIR)
   cli_test(fit_sheet 0 ARGS fit ${work}/sheet.off -n 4 -o ${work}/sheet.txt --quality fast --json -q
            FILE ${work}/sheet.txt SPHERES 4 STDOUT "\"original_covered\":true.*\"kind\":\"wrapped\"")
