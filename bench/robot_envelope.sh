@@ -7,7 +7,12 @@
 # unscaled, so the envelope is the one the robot command fits). Per row: E_r and outside volume
 # against the envelope and against the walls, the fit's own coverage certificates, and the
 # robot command's wall time. Into bench/results/robot_envelope.csv, with a summary on stdout.
+# BASELINE=PATH adds a third fit, "today": the robot command of another build (an earlier
+# commit's, whose only link solid is the walls), run side by side in the same session.
 #   bash bench/robot_envelope.sh         BUDGETS="60" SEEDS="1" bash bench/robot_envelope.sh
+#   git worktree add /tmp/base COMMIT && cmake -S /tmp/base -B /tmp/base/build && \
+#     cmake --build /tmp/base/build --target sphereset_cli && \
+#     BASELINE=/tmp/base/build/apps/sphereset bash bench/robot_envelope.sh
 set -euo pipefail
 args=()
 source "$(dirname "$0")/common.sh"
@@ -24,11 +29,13 @@ out=${OUT:-bench/results/robot_envelope.csv}
 echo "budget,seed,fit,wall_s,link,spheres,covered,envelope_volume,walls_volume,er_envelope,er_walls,outside_envelope,outside_walls" >"$out.tmp"
 for budget in ${BUDGETS:-30 60}; do
   for seed in ${SEEDS:-1 2 3}; do
-    for fit in walls envelope; do
+    for fit in ${BASELINE:+today} walls envelope; do
       run=$tmp/${fit}_${budget}_$seed
+      cli=(build/apps/sphereset) solid=(--link-solid "$fit")
+      [ "$fit" = today ] && cli=("$BASELINE") solid=()
       start=$(date +%s.%N)
-      build/apps/sphereset robot "$urdf" --package-path "$root" --budget "$budget" --seed "$seed" \
-        --link-solid "$fit" -o "$run.yml" --json -q >"$run.json"
+      "${cli[@]}" robot "$urdf" --package-path "$root" --budget "$budget" --seed "$seed" \
+        "${solid[@]}" -o "$run.yml" --json -q >"$run.json"
       wall=$(echo "$(date +%s.%N) - $start" | bc)
       for i in "${!links[@]}"; do
         build/apps/sphereset eval "$meshes/${files[$i]}.STL" "$run.yml" --link "${links[$i]}" \
@@ -57,28 +64,35 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 budgets = sorted({int(r["budget"]) for r in rows})
 seeds = sorted({r["seed"] for r in rows})
 links = list(dict.fromkeys(r["link"] for r in rows))
+fits = list(dict.fromkeys(r["fit"] for r in rows))
 def pick(budget, fit, seed=None, link=None):
     return [r for r in rows if int(r["budget"]) == budget and r["fit"] == fit and
             (seed is None or r["seed"] == seed) and (link is None or r["link"] == link)]
-print("Outside volume against each link's envelope (cm^3), mean over seeds %s" % ",".join(seeds))
+def mean(budget, fit, key, link=None, seed=None, total=False):
+    sel = pick(budget, fit, seed, link)
+    if total:
+        return statistics.mean(sum(float(r[key]) for r in pick(budget, fit, s)) for s in seeds)
+    return statistics.mean(float(r[key]) for r in sel)
+print("Outside volume against each link's envelope (cm^3), mean over seeds %s; ratios to %s"
+      % (",".join(seeds), fits[0]))
 for b in budgets:
     print("\nbudget %d" % b)
-    print("%-24s %14s %14s %8s %12s %12s" % ("link", "walls fit", "envelope fit", "ratio",
-                                              "E_r env (w)", "E_r env (e)"))
-    for link in links:
-        w = statistics.mean(float(r["outside_envelope"]) for r in pick(b, "walls", link=link))
-        e = statistics.mean(float(r["outside_envelope"]) for r in pick(b, "envelope", link=link))
-        ew = statistics.mean(float(r["er_envelope"]) for r in pick(b, "walls", link=link))
-        ee = statistics.mean(float(r["er_envelope"]) for r in pick(b, "envelope", link=link))
-        print("%-24s %14.2f %14.2f %8.3f %12.3f %12.3f" % (link, w * 1e6, e * 1e6, e / w, ew, ee))
-    for s in seeds:
-        w, e = pick(b, "walls", s), pick(b, "envelope", s)
-        tw = sum(float(r["outside_envelope"]) for r in w)
-        te = sum(float(r["outside_envelope"]) for r in e)
-        print("seed %s: total %.2f -> %.2f cm^3 (ratio %.3f); spheres %d -> %d; time %s -> %s s; "
-              "every link covered: %s" % (s, tw * 1e6, te * 1e6, te / tw,
-                                           sum(int(r["spheres"]) for r in w),
-                                           sum(int(r["spheres"]) for r in e), w[0]["wall_s"],
-                                           e[0]["wall_s"],
-                                           all(r["covered"] == "True" for r in w + e)))
+    print("%-24s" % "link" + "".join(" %12s" % f for f in fits) +
+          "".join(" %9s" % ("/" + fits[0])[:9] for f in fits[1:]) +
+          "".join(" %9s" % ("E_r " + f)[:9] for f in fits))
+    for link in links + ["total"]:
+        if link == "total":
+            v = [mean(b, f, "outside_envelope", total=True) for f in fits]
+            e = [float("nan")] * len(fits)
+        else:
+            v = [mean(b, f, "outside_envelope", link) for f in fits]
+            e = [mean(b, f, "er_envelope", link) for f in fits]
+        print("%-24s" % link + "".join(" %12.2f" % (x * 1e6) for x in v) +
+              "".join(" %9.3f" % (x / v[0]) for x in v[1:]) + "".join(" %9.3f" % x for x in e))
+    for f in fits:
+        t = [float(pick(b, f, s)[0]["wall_s"]) for s in seeds]
+        print("%-9s time %s s (mean %.1f), spheres %s, every link covered: %s" % (
+            f, " ".join("%.1f" % x for x in t), statistics.mean(t),
+            " ".join(str(sum(int(r["spheres"]) for r in pick(b, f, s))) for s in seeds),
+            all(r["covered"] == "True" for r in pick(b, f))))
 PY

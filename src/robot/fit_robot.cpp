@@ -21,6 +21,12 @@
 namespace sphereset {
 namespace {
 
+// Under a budget, each free link is also fitted at the counts within this many of the split's,
+// and the exact pick (pickCandidates) chooses among all of them: a fit's outside volume is not
+// monotone in its count (a fit with more spheres can end in a worse local minimum: the Kinova's
+// base link envelope gives E_r 0.54 at 6 spheres and 0.74 at 8), so a link may do better with
+// fewer and leave its spheres to another.
+constexpr int kCandidateSpread = 2;
 // Sphere counts at which each free link is fitted to measure its curve for the budget split.
 constexpr int kCurveCounts[] = {1, 2, 4, 8, 16, 32};
 // The curve fits are quick ones: fewer points and rounds than the final fit.
@@ -204,8 +210,8 @@ LinkFit fitLinkAt(const RobotFitOptions& o, const Job& j, int count) {
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
-// Fits every link at its count, and free links under a budget at both the curve split's and
-// the even split's counts (all fits in parallel); then keeps, per link, the fit of whichever
+// Fits every link at its count, and free links under a budget at the curve split's count, the
+// even split's and those within kCandidateSpread of the split's (all fits in parallel); then keeps, per link, the fit of whichever
 // count gives the least total outside volume within the budget (pickCandidates), so the
 // result is never worse than either split. Fails with the first error in link order.
 Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
@@ -214,6 +220,9 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
     const Job& j = (*jobs)[i];
     tasks.emplace_back(i, j.count);
     if (j.even_count >= 0 && j.even_count != j.count) tasks.emplace_back(i, j.even_count);
+    if (j.split_count < 0) continue;
+    for (int k = std::max(1, j.count - kCandidateSpread); k <= j.count + kCandidateSpread; ++k)
+      if (k != j.count && k != j.even_count) tasks.emplace_back(i, k);
   }
   std::vector<LinkFit> fits(tasks.size());
   tbb::parallel_for(size_t{0}, tasks.size(), [&](size_t t) {
