@@ -1,7 +1,9 @@
-// sphereset query: point, segment and set-to-set queries on a sphere set or tree.
+// sphereset query: point, segment and set-to-set queries on a sphere set or tree; with a robot
+// (.urdf) first, the posed robot's spheres against obstacles (cmd_query_robot.cpp).
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -10,6 +12,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "query_robot.hpp"
 #include "sphereset/query.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/sphere_tree.hpp"
@@ -21,6 +24,7 @@ struct QueryArgs {
   std::string path, other_path;
   std::vector<double> points, segments, other_pose;
   bool json = false;
+  RobotQueryArgs robot;  // the robot mode's own options (path, json and spheres set at run)
 };
 
 template <class... Args>
@@ -100,6 +104,23 @@ int otherQuery(const QueryArgs& a, const SphereTree& qa, nlohmann::json* out) {
 }
 
 int runQuery(const QueryArgs& a) {
+  const bool robot_options = !a.robot.spheres.empty() || !a.robot.package_paths.empty() ||
+                             !a.robot.joint_positions.empty() || !a.robot.trajectory.empty() ||
+                             !a.robot.points.empty() || !a.robot.obstacle_spheres.empty();
+  if (std::filesystem::path(a.path).extension() == ".urdf") {
+    if (!a.points.empty() || !a.segments.empty() || !a.other_path.empty())
+      return fail(Error{ErrorCode::kInvalidArgument,
+                        a.path + ": --point, --segment and --other query a sphere set; a robot "
+                                 "takes --points or --spheres"});
+    RobotQueryArgs r = a.robot;
+    r.urdf = a.path;
+    r.json = a.json;
+    return runRobotQuery(r);
+  }
+  if (robot_options)
+    return fail(Error{ErrorCode::kInvalidArgument,
+                      a.path + ": a second file, --points, --spheres, --trajectory, "
+                               "--joint-positions and --package-path need a robot (.urdf) first"});
   if (a.points.size() % 3 != 0 || a.segments.size() % 6 != 0)
     return fail(
         Error{ErrorCode::kInvalidArgument, "--point takes x,y,z and --segment ax,ay,az,bx,by,bz"});
@@ -122,7 +143,12 @@ Command registerQuery(CLI::App& app) {
   auto a = std::make_shared<QueryArgs>();
   CLI::App* cmd =
       app.add_subcommand("query", "Point, segment and set-to-set queries on a sphere set or tree");
-  cmd->add_option("spheres", a->path, "Sphere set or tree (.txt, .json, .sph, .yaml)")->required();
+  cmd->add_option("spheres", a->path,
+                  "Sphere set or tree (.txt, .json, .sph, .yaml), or a robot (.urdf)")
+      ->required();
+  cmd->add_option("robot_spheres", a->robot.spheres,
+                  "Robot: its spheres in the link frames (cuRobo .yml, .json, ... or the sphere "
+                  ".urdf of `robot`)");
   cmd->add_option("--point", a->points, "x,y,z: inside? and signed distance to the set")
       ->delimiter(',')
       ->expected(3)
@@ -137,6 +163,20 @@ Command registerQuery(CLI::App& app) {
                   "tx,ty,tz,qw,qx,qy,qz: rigid pose of the second set (default identity)")
       ->delimiter(',')
       ->expected(7);
+  cmd->add_option("--package-path", a->robot.package_paths,
+                  "Robot: folder searched for package://NAME/ paths (repeatable)");
+  auto* joints = cmd->add_option("--joint-positions", a->robot.joint_positions,
+                                 "Robot: JOINT=VALUE,... (default: all joints at 0)");
+  cmd->add_option("--trajectory", a->robot.trajectory,
+                  "Robot: CSV of waypoints (a header of joint names, one row each)")
+      ->excludes(joints);
+  auto* cloud =
+      cmd->add_option("--points", a->robot.points,
+                      "Robot: obstacle point cloud (.ply, .off, .obj vertices, or .xyz/.txt "
+                      "lines x y z)");
+  cmd->add_option("--spheres", a->robot.obstacle_spheres,
+                  "Robot: obstacle spheres (.txt, .json, .sph, .yaml)")
+      ->excludes(cloud);
   cmd->add_flag("--json", a->json, "Print one JSON object");
   return {cmd, [a] { return runQuery(*a); }};
 }

@@ -308,6 +308,61 @@ set_tests_properties(cli.robot_eval_urdf_link PROPERTIES DEPENDS cli.robot_budge
 cli_test(robot_eval_urdf_needs_link 2 ARGS eval ${robot}/three_link.urdf ${work}/three.yml
          --package-path ${robot} STDERR "three_link.urdf: a URDF needs --link LINK")
 
+# The posed robot against obstacles. Spheres by hand: link2's sphere (0.45, 0, 0) r 0.05 is at
+# (0.45, 0, 0.5) at zero and at (0.45 cos q, 0, 0.5 - 0.45 sin q) at joint2 = q; the obstacle
+# sphere r 0.02 sits where it is at q = 0.4, reached first by waypoint 2 of 0, 0.2, 0.4, 0.6.
+set(q ${work}/query_robot)
+file(MAKE_DIRECTORY ${q})
+file(WRITE ${q}/hand.yml "collision_spheres:\n  base_link:\n    - center: [0, 0, 0.05]\n      radius: 0.1\n  link2:\n    - center: [0.45, 0, 0]\n      radius: 0.05\n")
+file(WRITE ${q}/elbow.yml "collision_spheres:\n  elbow:\n    - center: [0, 0, 0]\n      radius: 0.1\n")
+file(WRITE ${q}/cloud.xyz "# x y z\n0.45 0 0.52\n5 5 5\n")
+file(WRITE ${q}/nan.xyz "0 0 0\n0.45 nan 0.52\n")
+file(WRITE ${q}/obstacles.txt "0.4144775 0 0.3247619 0.02\n5 5 5 0.1\n")
+file(WRITE ${q}/negative.txt "0 0 0 -1\n")
+file(WRITE ${q}/traj.csv "joint2,joint1\n0,0\n0.2,0\n0.4,0\n0.6,0\n")
+file(WRITE ${q}/unknown_joint.csv "joint2,joint9\n0,0\n")
+file(WRITE ${q}/not_a_number.csv "joint2\n0\nabc\n")
+file(WRITE ${q}/ragged.csv "joint1,joint2\n0,0\n0,0,0\n")
+file(WRITE ${q}/empty.csv "")
+set(qr query ${robot}/three_link.urdf ${q}/hand.yml --package-path ${robot})
+cli_test(query_robot_points 0 ARGS ${qr} --points ${q}/cloud.xyz
+         STDOUT "base_link: clear.*link2: collides, signed distance -0.03 .sphere 0, obstacle 0.*robot: collides")
+cli_test(query_robot_json 0 ARGS ${qr} --points ${q}/cloud.xyz --joint-positions joint2=1 --json
+         STDOUT "^\\{.*\"collides\":false.*\"link\":\"link2\".*\"kind\":\"points\"")
+cli_test(query_robot_trajectory 0 ARGS ${qr} --spheres ${q}/obstacles.txt --trajectory ${q}/traj.csv
+         STDOUT "waypoints: 4, first collision at waypoint 2: link2 sphere 0 with obstacle 0")
+cli_test(query_robot_trajectory_json 0 ARGS ${qr} --spheres ${q}/obstacles.txt --trajectory
+         ${q}/traj.csv --json
+         STDOUT "\"first_collision\":\\{[^}]*\"link\":\"link2\"[^}]*\"waypoint\":2\\}.*\"per_waypoint\":\\[\\{\"collides\":false")
+cli_test(query_robot_sphere_urdf 0 ARGS query ${robot}/three_link.urdf ${work}/three_spheres.urdf
+         --package-path ${robot} --points ${q}/cloud.xyz
+         STDOUT "base_link: clear, signed distance [0-9.]+ .sphere.*link1: .*link2: .*tool: .*robot: ")
+set_tests_properties(cli.query_robot_sphere_urdf PROPERTIES DEPENDS cli.robot_urdf)
+cli_test(query_robot_unknown_joint_csv 4 ARGS ${qr} --points ${q}/cloud.xyz --trajectory
+         ${q}/unknown_joint.csv STDERR "unknown_joint.csv:1: no joint 'joint9' in robot 'three_link'"
+         STDOUT "^$")
+cli_test(query_robot_not_a_number_csv 4 ARGS ${qr} --points ${q}/cloud.xyz --trajectory
+         ${q}/not_a_number.csv STDERR "not_a_number.csv:3: joint 'joint2': 'abc' is not a finite number")
+cli_test(query_robot_ragged_csv 4 ARGS ${qr} --points ${q}/cloud.xyz --trajectory ${q}/ragged.csv
+         STDERR "ragged.csv:3: 3 values, the header names 2 joints")
+cli_test(query_robot_empty_csv 4 ARGS ${qr} --points ${q}/cloud.xyz --trajectory ${q}/empty.csv
+         STDERR "empty.csv: empty, expected a header row of joint names")
+cli_test(query_robot_nan_point 4 ARGS ${qr} --points ${q}/nan.xyz STDERR "nan.xyz:2 .*finite"
+         STDOUT "^$")
+cli_test(query_robot_negative_radius 4 ARGS ${qr} --spheres ${q}/negative.txt
+         STDERR "negative.txt:1: .*negative")
+cli_test(query_robot_unknown_link 4 ARGS query ${robot}/three_link.urdf ${q}/elbow.yml
+         --package-path ${robot} --points ${q}/cloud.xyz
+         STDERR "elbow.yml: link 'elbow' is not a link of robot 'three_link'")
+cli_test(query_robot_unknown_joint 2 ARGS ${qr} --points ${q}/cloud.xyz --joint-positions joint9=1
+         STDERR "--joint-positions: no joint 'joint9' in robot")
+cli_test(query_robot_no_obstacles 2 ARGS ${qr} STDERR "needs obstacles: --points CLOUD or --spheres")
+cli_test(query_robot_missing_cloud 3 ARGS ${qr} --points ${q}/missing.xyz STDERR "missing.xyz")
+cli_test(query_robot_point_option 2 ARGS ${qr} --points ${q}/cloud.xyz --point 0,0,0
+         STDERR "--point, --segment and --other query a sphere set")
+cli_test(query_set_robot_option 2 ARGS query ${work}/bound.txt --points ${q}/cloud.xyz
+         STDERR "bound.txt: a second file, --points.* need a robot")
+
 # Batch: a folder (recursively) or a manifest, one sphere file per mesh, failed items reported,
 # up-to-date items skipped on the next run.
 file(REMOVE_RECURSE ${work}/batch_in ${work}/batch_ok ${work}/batch_empty)
