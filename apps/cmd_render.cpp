@@ -14,6 +14,7 @@
 #include "sphereset/mesh.hpp"
 #include "sphereset/render.hpp"
 #include "sphereset/robot.hpp"
+#include "sphereset/robot_query.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/sphere_tree.hpp"
@@ -25,7 +26,7 @@ struct RenderArgs {
   MeshArgs mesh;
   std::string spheres, out, size = "1200x900", views = "front,side,top,three-quarter", up = "y";
   std::vector<std::string> package_paths;
-  std::string joint_positions;
+  std::string joint_positions, link;
   bool up_given = false;
   RenderOptions ro;
   bool no_ground = false;
@@ -66,7 +67,8 @@ Status renderOptions(const RenderArgs& a, RenderOptions* ro) {
 }
 
 // A robot posed by forward kinematics: every link's geometry and spheres (a file of per-link
-// spheres in the link frames, e.g. robot's YAML) moved to the root frame.
+// spheres in the link frames, e.g. robot's YAML) moved to the root frame; or, with --link, one
+// link alone in its own frame.
 int renderRobot(const RenderArgs& a, RenderOptions ro) {
   RobotLoadOptions lo;
   lo.package_paths = a.package_paths;
@@ -74,35 +76,21 @@ int renderRobot(const RenderArgs& a, RenderOptions ro) {
   if (!robot) return fail(robot.error());
   auto joints = parseJointPositions(a.joint_positions, *robot);
   if (!joints) return fail(joints.error());
-  auto posed = linkPoses(*robot, *joints);
-  if (!posed) return fail(posed.error());
-  const std::map<std::string, Eigen::Isometry3d>& poses = *posed;
-  Mesh all;
-  for (const RobotLink& link : robot->links) {
-    const auto pose = poses.find(link.name);
-    if (pose == poses.end()) continue;
-    auto m = linkMesh(link);
-    if (!m) return fail(Error{m.error().code, a.mesh.path + ": " + m.error().message});
-    const auto base = static_cast<int32_t>(all.vertices.size());
-    for (const Vec3& v : m->vertices) all.vertices.push_back(pose->second * v);
-    for (Triangle t : m->triangles)
-      all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-  }
-  std::vector<Sphere> spheres;
+  std::vector<LinkSpheres> links;
   if (!a.spheres.empty()) {
-    auto links = readLinkSpheres(a.spheres);
-    if (!links) return fail(links.error());
-    for (const LinkSpheres& ls : *links) {
-      const auto pose = poses.find(ls.link);
-      if (pose == poses.end())
-        return fail(Error{ErrorCode::kInvalidData,
-                          a.spheres + ": link '" + ls.link + "' is not a link of " + robot->name});
-      for (const Sphere& s : ls.spheres) spheres.push_back({pose->second * s.center, s.radius});
-    }
+    auto read = readLinkSpheres(a.spheres);
+    if (!read) return fail(read.error());
+    links = std::move(read).value();
+    // The file's links checked against the robot, its name on the message.
+    if (auto posed = posedLinkSpheres(*robot, links); !posed)
+      return fail(Error{posed.error().code, a.spheres + ": " + posed.error().message});
   }
+  auto scene =
+      a.link.empty() ? robotScene(*robot, links, *joints) : linkScene(*robot, links, a.link);
+  if (!scene) return fail(Error{scene.error().code, a.mesh.path + ": " + scene.error().message});
   if (!a.up_given) ro.up_axis = 2;  // URDF frames are z-up
-  const SolidIndex index(all);
-  auto img = renderScene(all.triangles.empty() ? nullptr : &index, spheres, ro);
+  const SolidIndex index(scene->mesh);
+  auto img = renderScene(scene->mesh.triangles.empty() ? nullptr : &index, scene->spheres, ro);
   if (!img) return fail(img.error());
   Status st = writePng(a.out, *img);
   if (!st) return fail(st.error());
@@ -200,7 +188,10 @@ int runRender(const RenderArgs& a) {
   if (!a.frames.empty() || !a.animation.empty()) return renderFrames(a, ro);
   if (!a.spheres_dir.empty())
     return fail(Error{ErrorCode::kInvalidArgument, "--spheres-dir needs --frames or --animation"});
-  if (std::filesystem::path(a.mesh.path).extension() == ".urdf") return renderRobot(a, ro);
+  const bool urdf = std::filesystem::path(a.mesh.path).extension() == ".urdf";
+  if (urdf) return renderRobot(a, ro);
+  if (!a.link.empty())
+    return fail(Error{ErrorCode::kInvalidArgument, "--link needs a robot (.urdf)"});
   // The mesh is drawn even when it is not a closed solid.
   auto lo = loadOptions(a.mesh);
   if (!lo) return fail(lo.error());
@@ -233,6 +224,7 @@ Command registerRender(CLI::App& app) {
                   "Robot: folder searched for package://NAME/ paths (repeatable)");
   cmd->add_option("--joint-positions", a->joint_positions,
                   "Robot: JOINT=VALUE,... (default: all joints at 0)");
+  cmd->add_option("--link", a->link, "Robot: draw this link alone, in its own frame");
   addWeldArg(cmd, &a->mesh);
   cmd->add_option("spheres", a->spheres, "Sphere set or tree (its leaves are drawn)");
   cmd->add_option("-o,--output", a->out, "PNG file")->required();

@@ -24,7 +24,9 @@ struct RenderOptions {
   bool ground = true;           // ground plane under the object, with shadows
   double field_of_view = 30.0;  // degrees, vertical
   // The box the cameras frame, the ground lies under and the light scales with; unset: the
-  // scene's own bounds. Frames of a motion share one box so that the motion shows.
+  // scene's own bounds. Frames of a motion share one box so that the motion shows. Each view's
+  // camera looks at the box's centre from as close as keeps the scene whole in view (every mesh
+  // vertex and sphere; the box's corners when the box is given), with a small margin.
   std::optional<Aabb> bounds;
 };
 

@@ -17,8 +17,9 @@ struct Camera {
   bool project(const Vec3& p, double* px, double* py) const;
 };
 
-// The cameras of a render: one per view, tiled 1x1, 2x1 or 2x2 (3 or 4 views), framing the
-// mesh (when given) and the spheres.
+// The cameras of a render: one per view, tiled 1x1, 2x1 or 2x2 (3 or 4 views), each as close
+// as keeps the mesh's vertices (when given) and the spheres in its view (the corners of
+// options.bounds when given).
 std::vector<Camera> renderCameras(const SolidIndex* mesh, const std::vector<Sphere>& spheres,
                                   const RenderOptions& options);
 

@@ -28,6 +28,9 @@ constexpr double kAmbient = 0.3;
 constexpr double kRayOffsetRel = 1e-6;
 // The visible ground is a square this many times the scene radius, centred under it.
 constexpr double kGroundScale = 2.5;
+// The scene fills a view up to this factor: its widest extent leaves about 4% of the tile free on
+// each side.
+constexpr double kFramingMargin = 1.08;
 // The scene's radius at least this: only an empty scene (a point) gets it. Everything else is
 // relative to the scene's size, so that a mesh of size 1e-30 renders like one of size 1 (an
 // absolute floor of 1e-12 used to frame such a mesh as a speck: a blank picture).
@@ -122,6 +125,48 @@ Vec3 trace(const Scene& sc, const Vec3& o, const Vec3& d) {
   return colour;
 }
 
+// The least distance from the scene's centre, along a camera's backward axis, at which the
+// camera sees every ball given to fit() (a point is a ball of radius 0) whole, with
+// kFramingMargin to spare. A ball at lateral offset x (along the camera's right) and depth
+// offset z towards the camera is inside the side plane of half-angle tangent t when the
+// camera is at least z + (|x| + r·sqrt(1 + t²)) / t away (its distance to the plane is then at
+// least r); likewise up. Framing the geometry itself, not its bounding sphere, lets a tall,
+// thin robot fill the tile's height.
+struct Framing {
+  Vec3 centre;
+  const Camera* cam;
+  double tan_x, tan_y;  // the view's half-angle tangents, shrunk by the margin
+  double dist = 0.0;
+  void fit(const Vec3& p, double r) {
+    const Vec3 v = p - centre;
+    const double towards = -v.dot(cam->forward);
+    dist = std::max(
+        {dist, towards + (std::abs(v.dot(cam->right)) + r * std::sqrt(1.0 + tan_x * tan_x)) / tan_x,
+         towards + (std::abs(v.dot(cam->up)) + r * std::sqrt(1.0 + tan_y * tan_y)) / tan_y});
+  }
+};
+
+// The camera's distance for the scene: its mesh's vertices and its spheres, or the corners of
+// the box the options give (the frames of a motion share it).
+double framingDistance(const SolidIndex* mesh, const std::vector<Sphere>& spheres,
+                       const RenderOptions& o, const Vec3& centre, const Camera& cam) {
+  const double aspect = static_cast<double>(cam.width) / cam.height;
+  Framing f{centre, &cam, cam.tan_half_fov * aspect / kFramingMargin,
+            cam.tan_half_fov / kFramingMargin};
+  if (o.bounds) {
+    const Aabb& b = *o.bounds;
+    for (int k = 0; k < 8; ++k)
+      f.fit(Vec3((k & 1) ? b.max.x() : b.min.x(), (k & 2) ? b.max.y() : b.min.y(),
+                 (k & 4) ? b.max.z() : b.min.z()),
+            0.0);
+    return f.dist;
+  }
+  if (mesh)
+    for (const Vec3& v : mesh->mesh().vertices) f.fit(v, 0.0);
+  for (const Sphere& s : spheres) f.fit(s.center, s.radius);
+  return f.dist;
+}
+
 }  // namespace
 
 bool Camera::project(const Vec3& p, double* px, double* py) const {
@@ -169,13 +214,16 @@ std::vector<Camera> renderCameras(const SolidIndex* mesh, const std::vector<Sphe
         from = (a + c + 0.8 * up).normalized();
         break;
     }
-    const double aspect = static_cast<double>(cam.width) / cam.height;
-    const double fit = std::min(thf, thf * aspect);  // the tighter half-angle tangent
-    const double dist = 1.08 * radius * std::sqrt(1.0 + 1.0 / (fit * fit));
-    cam.eye = centre + dist * from;
     cam.forward = -from;
     cam.right = cam.forward.cross(cam_up).normalized();
     cam.up = cam.right.cross(cam.forward);
+    double dist = framingDistance(mesh, spheres, o, centre, cam);
+    if (!(dist > 0.0)) {  // a scene without extent across the view: frame its bounding sphere
+      const double aspect = static_cast<double>(cam.width) / cam.height;
+      const double fit = std::min(thf, thf * aspect);  // the tighter half-angle tangent
+      dist = kFramingMargin * radius * std::sqrt(1.0 + 1.0 / (fit * fit));
+    }
+    cam.eye = centre + dist * from;
     cams.push_back(cam);
   }
   return cams;

@@ -362,6 +362,16 @@ cli_test(query_robot_point_option 2 ARGS ${qr} --points ${q}/cloud.xyz --point 0
          STDERR "--point, --segment and --other query a sphere set")
 cli_test(query_set_robot_option 2 ARGS query ${work}/bound.txt --points ${q}/cloud.xyz
          STDERR "bound.txt: a second file, --points.* need a robot")
+cli_test(robot_render_link 0 ARGS render ${robot}/three_link.urdf ${q}/hand.yml --package-path
+         ${robot} --link link2 --size 160x120 -o ${q}/link2.png FILE ${q}/link2.png)
+cli_test(robot_render_bad_link 2 ARGS render ${robot}/three_link.urdf ${q}/hand.yml --package-path
+         ${robot} --link elbow -o ${q}/never_link.png
+         STDERR "three_link.urdf: no link 'elbow' in robot 'three_link' .it has base_link"
+         FORBID ${q}/never_link.png)
+cli_test(robot_render_unknown_link_spheres 4 ARGS render ${robot}/three_link.urdf ${q}/elbow.yml
+         --package-path ${robot} -o ${q}/never_elbow.png
+         STDERR "elbow.yml: link 'elbow' is not a link of robot 'three_link'"
+         FORBID ${q}/never_elbow.png)
 
 # Batch: a folder (recursively) or a manifest, one sphere file per mesh, failed items reported,
 # up-to-date items skipped on the next run.
