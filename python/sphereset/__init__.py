@@ -47,8 +47,10 @@ from ._sphereset import (  # noqa: F401  (re-exported)
     read_link_spheres,
     read_sphere_tree,
     read_spheres,
+    robot_contacts,
     sphere_format,
     split_budget,
+    trajectory_contacts,
     write_link_spheres,
     write_robot_spheres,
     write_sphere_mesh,
@@ -70,7 +72,7 @@ __all__ = [
     "load_robot", "write_robot_spheres", "write_sphere_urdf", "format_sphere_urdf",
     "split_budget", "curve_volume", "Animation", "AnimateResult", "mean_value_coordinates",
     "mean_value_weights", "point_bone_weights", "skin_points", "load_animation", "animate",
-    "RobotLinkFit", "RobotFitResult", "fit_robot",
+    "RobotLinkFit", "RobotFitResult", "fit_robot", "robot_contacts", "trajectory_contacts",
 ]
 
 PathLike = Union[str, "os.PathLike[str]"]

@@ -75,6 +75,7 @@ void bindRobot(py::module_& m);
 void bindBatch(py::module_& m);
 void bindAnimate(py::module_& m);
 void bindRobotFit(py::module_& m);
+void bindRobotQuery(py::module_& m);
 
 // Keyword options by the names of a library option table: each value that is not None is handed
 // to `set(name, text)` as its text (str()), so that the library parses and checks it exactly as

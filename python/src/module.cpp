@@ -182,4 +182,5 @@ PYBIND11_MODULE(_sphereset, m) {
   bindBatch(m);
   bindAnimate(m);
   bindRobotFit(m);
+  bindRobotQuery(m);
 }
