@@ -34,9 +34,8 @@ nlohmann::json fitJson(const FitArgs& a, const FitOptions& fo, const FitResult& 
   j["seed"] = fo.seed;
   // The fit's own check (fitCheckEvalOptions): the union's E_r and the certificates.
   const nlohmann::json e = fieldsJson(evalResultFields(ev));
-  for (const char* name :
-       {"er_union", "er_union_stderr", "surface_covered", "interior_covered", "original_covered",
-        "walls_volume", "er_walls"})
+  for (const char* name : {"er_union", "er_union_stderr", "surface_covered", "interior_covered",
+                           "original_covered", "walls_volume", "er_walls"})
     j[name] = e.at(name);
   return j;
 }
@@ -94,7 +93,8 @@ int runFit(const FitCommandArgs& c) {
   meta.source_mesh = a.mesh.path;
   Status st = writeSpheres(a.out_path, r->spheres, meta);
   if (!st) return fail(st.error());
-  auto checked = evaluateSpheres(index, r->spheres, fitCheckEvalOptions(fo.seed, m->original(), m->walls()));
+  auto checked =
+      evaluateSpheres(index, r->spheres, fitCheckEvalOptions(fo.seed, m->original(), m->walls()));
   if (!checked) return fail(checked.error());
   const EvalResult& ev = *checked;
   if (c.json) std::cout << jsonText(fitJson(a, fo, *r, ev, m->repair)) << '\n';

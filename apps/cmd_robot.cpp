@@ -56,8 +56,8 @@ nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const RobotFitR
 }
 
 void printSummary(const RobotFitResult& r, double seconds) {
-  std::fprintf(stderr, "%-28s %9s %-10s %9s %7s %9s %9s %7s %7s\n", "link", "triangles",
-               "repair", "openings", "spheres", "E_r", "E_r walls", "covered", "time s");
+  std::fprintf(stderr, "%-28s %9s %-10s %9s %7s %9s %9s %7s %7s\n", "link", "triangles", "repair",
+               "openings", "spheres", "E_r", "E_r walls", "covered", "time s");
   for (const RobotLinkFit& j : r.links)
     std::fprintf(stderr, "%-28s %9zu %-10s %9.3g %7zu %9.4f %9.4f %7s %7.2f\n", j.link.c_str(),
                  j.fitted ? j.repair.original.triangles.size() : size_t{0},

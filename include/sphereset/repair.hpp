@@ -76,8 +76,9 @@ struct RepairOptions {
 
 // The repair's options as one table (options.hpp): repair (auto or off: `enabled`),
 // weld_tolerance (absolute; automatic when not given), wrap_alpha and wrap_offset (absolute; 0
-// chooses them from the mesh), fill_openings (absolute, 0 off, "auto" chosen from the mesh). The command line's flags, the Dask batch's flags and the
-// Python keywords are made from it. (fill_cavities is a switch of its own: --fill-cavities and
+// chooses them from the mesh), fill_openings (absolute, 0 off, "auto" chosen from the mesh). The
+// command line's flags, the Dask batch's flags and the Python keywords are made from it.
+// (fill_cavities is a switch of its own: --fill-cavities and
 // --keep-cavities.)
 std::span<const OptionSpec> repairOptionTable();
 // Sets the option `name` from `text` as a user typed it. kInvalidArgument names the option and

@@ -98,11 +98,11 @@ struct RobotFitOptions {
 };
 
 // RobotFitOptions' numbers as one table (options.hpp): budget, default_link_spheres,
-// link_spheres (keyed LINK=N), padding, link_padding (keyed LINK=R) and link_solid. The command line's flags
-// of `sphereset robot` and Python's fit_robot keywords are made from it. setRobotFitOption sets a
-// row from the text a user typed (a keyed row adds or replaces its link's entry);
-// checkRobotFitOptions checks a struct against the rows with the same messages. (quality and
-// seed are the fit table's rows, fit.hpp; the repair's are repair.hpp's.)
+// link_spheres (keyed LINK=N), padding, link_padding (keyed LINK=R) and link_solid. The command
+// line's flags of `sphereset robot` and Python's fit_robot keywords are made from it.
+// setRobotFitOption sets a row from the text a user typed (a keyed row adds or replaces its link's
+// entry); checkRobotFitOptions checks a struct against the rows with the same messages. (quality
+// and seed are the fit table's rows, fit.hpp; the repair's are repair.hpp's.)
 std::span<const OptionSpec> robotFitOptionTable();
 Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std::string& text);
 Status checkRobotFitOptions(const RobotFitOptions& o);

@@ -52,8 +52,7 @@ BatchOptions optionsFrom(const py::dict& d) {
   o.fit = requestFrom(d["fit"].cast<py::dict>());
   o.repair = repairOptions(d["repair"].cast<std::string>(), d["weld_tolerance"].cast<double>(),
                            d["fill_cavities"].cast<bool>(), d["wrap_alpha"].cast<double>(),
-                           d["wrap_offset"].cast<double>(),
-                           d["fill_openings"].cast<std::string>());
+                           d["wrap_offset"].cast<double>(), d["fill_openings"].cast<std::string>());
   o.format = d["format"].cast<std::string>();
   o.resume = d["resume"].cast<bool>();
   o.threads = d["threads"].cast<int>();

@@ -173,8 +173,9 @@ Raises InvalidDataError for NaN/infinite coordinates, indices out of range or no
         d["weld_tolerance"] = ro.weld_tolerance;
         d["wrap_alpha"] = ro.wrap_alpha;
         d["wrap_offset"] = ro.wrap_offset;
-        d["fill_openings"] = ro.fill_openings == kAutomatic ? py::object(py::str("auto"))
-                                                            : py::object(py::float_(ro.fill_openings));
+        d["fill_openings"] = ro.fill_openings == kAutomatic
+                                 ? py::object(py::str("auto"))
+                                 : py::object(py::float_(ro.fill_openings));
         return d;
       },
       py::arg("texts"),

@@ -26,8 +26,8 @@ void bindRobotFit(py::module_& m) {
       "_fit_robot",
       [](const Path& urdf_arg, const py::dict& options, const py::dict& fit_options,
          const std::vector<std::string>& package_paths, bool use_ros_package_path,
-         const std::string& repair, const py::object& weld, bool fill, double alpha,
-         double offset, const std::string& openings) {
+         const std::string& repair, const py::object& weld, bool fill, double alpha, double offset,
+         const std::string& openings) {
         const std::string urdf = urdf_arg.string();
         // The rows of the robot table and the fit table's quality and seed, parsed and checked
         // by the library (its messages) before anything is read.
@@ -41,9 +41,8 @@ void bindRobotFit(py::module_& m) {
         });
         fo.quality = request.quality;
         fo.seed = request.seed;
-        fo.repair =
-            repairOptions(repair, weld.is_none() ? -1.0 : weld.cast<double>(), fill, alpha, offset,
-                          openings);
+        fo.repair = repairOptions(repair, weld.is_none() ? -1.0 : weld.cast<double>(), fill, alpha,
+                                  offset, openings);
         fo.name = urdf;
         // Ctrl-C: Python runs signal handlers on the main thread only, which fits links too;
         // there the check raises KeyboardInterrupt and the exception cancels the whole fit.

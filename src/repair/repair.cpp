@@ -22,8 +22,8 @@
 #include <utility>
 
 #include "repair/canonical_order.hpp"
-#include "repair/envelope.hpp"
 #include "repair/cap_holes.hpp"
+#include "repair/envelope.hpp"
 #include "repair/nesting_plan.hpp"
 #include "repair/orient.hpp"
 #include "repair/wrap_parameters.hpp"
@@ -35,7 +35,6 @@ namespace {
 // Weld tolerances tried automatically, relative to the bounding box diagonal: the smallest
 // that closes the mesh is used (coordinates stored per corner in float differ by ~1e-7).
 constexpr double kAutoWeldSteps[] = {1e-8, 1e-7, kAutoWeldRel};
-
 
 std::string fmt(const char* f, double x) {
   char buf[64];
@@ -348,7 +347,9 @@ StepResult wrapMesh(const Mesh& soup, const RepairOptions& o, double input_volum
   if (!(o.operations.unite && o.operations.wrap))
     return needs(name, "rebuild with SPHERESET_WITH_REPAIR=ON to wrap it", why);
   detail::wrapParameters(soup, o, &res->wrap_alpha, &res->wrap_offset);
-  if (Status st = detail::checkWrap(soup, o.wrap_alpha > 0.0 || o.wrap_offset > 0.0, res->wrap_alpha, res->wrap_offset, name); !st)
+  if (Status st = detail::checkWrap(soup, o.wrap_alpha > 0.0 || o.wrap_offset > 0.0,
+                                    res->wrap_alpha, res->wrap_offset, name);
+      !st)
     return st.error();
   auto w = o.operations.wrap(soup, res->wrap_alpha, res->wrap_offset);
   if (!w) return Error{w.error().code, name + ": " + w.error().message};

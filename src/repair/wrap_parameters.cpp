@@ -68,7 +68,8 @@ Status checkWrap(const Mesh& m, bool user_sized, double alpha, double offset,
   const Aabb box = boundingBox(m);
   const double coordinate = std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff());
   if (!(coordinate <= limits::kMaxCoordinate))
-    return Error{ErrorCode::kInvalidData, name + ": coordinates up to " + numberFormat("%.3g", coordinate) +
+    return Error{ErrorCode::kInvalidData, name + ": coordinates up to " +
+                                              numberFormat("%.3g", coordinate) +
                                               " cannot be wrapped (the limit is " +
                                               numberFormat("%.3g", limits::kMaxCoordinate) + ")"};
   const double diag = box.diagonal();
@@ -83,8 +84,9 @@ Status checkWrap(const Mesh& m, bool user_sized, double alpha, double offset,
     if (!(predicted <= kMaxWrapTriangles))
       return Error{ErrorCode::kInvalidArgument,
                    name + ": a wrap with alpha " + numberFormat("%.3g", alpha) + " and offset " +
-                       numberFormat("%.3g", offset) + " would make about " + numberFormat("%.3g", predicted) +
-                       " triangles (the limit is " + numberFormat("%.3g", kMaxWrapTriangles) +
+                       numberFormat("%.3g", offset) + " would make about " +
+                       numberFormat("%.3g", predicted) + " triangles (the limit is " +
+                       numberFormat("%.3g", kMaxWrapTriangles) +
                        "); give a larger wrap_alpha or a smaller wrap_offset"};
   }
   return {};

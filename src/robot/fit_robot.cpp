@@ -211,9 +211,10 @@ LinkFit fitLinkAt(const RobotFitOptions& o, const Job& j, int count) {
   return out;
 }
 // Fits every link at its count, and free links under a budget at the curve split's count, the
-// even split's and those within kCandidateSpread of the split's (all fits in parallel); then keeps, per link, the fit of whichever
-// count gives the least total outside volume within the budget (pickCandidates), so the
-// result is never worse than either split. Fails with the first error in link order.
+// even split's and those within kCandidateSpread of the split's (all fits in parallel); then keeps,
+// per link, the fit of whichever count gives the least total outside volume within the budget
+// (pickCandidates), so the result is never worse than either split. Fails with the first error in
+// link order.
 Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
   std::vector<std::pair<size_t, int>> tasks;  // (link, count)
   for (size_t i = 0; i < jobs->size(); ++i) {

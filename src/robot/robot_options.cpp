@@ -78,7 +78,8 @@ Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std:
   if (n == "link_spheres") o->link_spheres[v.key] = static_cast<int>(v.integer);
   if (n == "padding") o->padding = v.real;
   if (n == "link_padding") o->link_padding[v.key] = v.real;
-  if (n == "link_solid") o->link_solid = v.choice == "walls" ? LinkSolid::kWalls : LinkSolid::kEnvelope;
+  if (n == "link_solid")
+    o->link_solid = v.choice == "walls" ? LinkSolid::kWalls : LinkSolid::kEnvelope;
   return {};
 }
 

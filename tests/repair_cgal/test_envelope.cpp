@@ -52,10 +52,10 @@ Mesh tube(double R, double r, double length, int n) {
   for (int k = 0; k < n; ++k) {
     const double a = 2 * std::numbers::pi * k / n;
     const Vec3 u(std::cos(a), std::sin(a), 0);
-    m.vertices.push_back(R * u);                         // 4k: outer bottom
-    m.vertices.push_back(R * u + Vec3(0, 0, length));    // 4k + 1: outer top
-    m.vertices.push_back(r * u);                         // 4k + 2: inner bottom
-    m.vertices.push_back(r * u + Vec3(0, 0, length));    // 4k + 3: inner top
+    m.vertices.push_back(R * u);                       // 4k: outer bottom
+    m.vertices.push_back(R * u + Vec3(0, 0, length));  // 4k + 1: outer top
+    m.vertices.push_back(r * u);                       // 4k + 2: inner bottom
+    m.vertices.push_back(r * u + Vec3(0, 0, length));  // 4k + 3: inner top
   }
   for (int k = 0; k < n; ++k) {
     const int i = 4 * k, j = 4 * ((k + 1) % n);

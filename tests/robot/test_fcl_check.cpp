@@ -1,6 +1,6 @@
 // An independent check of the robot fit's coverage with FCL, the collision library planners use
 // (MoveIt's default checker): at random configurations of the test robot, every small probe
-// sphere that FCL finds touching a link's mesh also touches that link's fitted spheres. FCL
+// sphere or box that FCL finds touching a link's mesh also touches that link's fitted spheres. FCL
 // models the mesh as its triangles, so the probes that touch it are the ones near the surface,
 // which the certificate says the spheres cover.
 #include <fcl/fcl.h>
@@ -92,8 +92,16 @@ TEST(FclCheck, EveryProbeTouchingALinkMeshTouchesItsSpheres) {
       std::uniform_real_distribution<double> u(0.0, 1.0);
       for (int i = 0; i < 3000; ++i) {
         const Vec3 c = lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(hi - lo);
-        const fcl::CollisionObjectd probe(std::make_shared<fcl::Sphered>(r),
-                                          fcl::Transform3d(Eigen::Translation3d(c)));
+        // Every other probe a small box of the same size, turned at random.
+        fcl::Transform3d at = fcl::Transform3d::Identity();
+        at.translation() = c;
+        std::shared_ptr<fcl::CollisionGeometryd> shape = std::make_shared<fcl::Sphered>(r);
+        if (i % 2 == 1) {
+          const Eigen::Quaterniond q(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5);
+          at.linear() = q.normalized().toRotationMatrix();
+          shape = std::make_shared<fcl::Boxd>(2 * r, 2 * r, 2 * r);
+        }
+        const fcl::CollisionObjectd probe(shape, at);
         if (!touch(probe, surface)) continue;
         ++hits;
         bool covered = false;
