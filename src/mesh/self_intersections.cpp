@@ -259,10 +259,19 @@ bool trianglesIntersect(const Mesh& mesh, int32_t i, int32_t j, const TriangleGe
            directionInCone(n, u2, w2, u1, sin_tol) || directionInCone(n, u2, w2, w1, sin_tol);
   }
 
-  // No shared vertex: the closed triangles meet iff an edge of one meets the other.
+  return separateTrianglesIntersect(pa, pb, gi, gj);
+}
+
+bool separateTrianglesIntersect(const Vec3 (&a)[3], const Vec3 (&b)[3], const TriangleGeometry& ga,
+                                const TriangleGeometry& gb) {
+  if (ga.degenerate || gb.degenerate) return false;
+  const Tri A{a[0], a[1], a[2]};
+  const Tri B{b[0], b[1], b[2]};
+  const double eps = kRelTol * std::max(ga.longest_edge, gb.longest_edge);
+  // The closed triangles meet iff an edge of one meets the other.
   for (int k = 0; k < 3; ++k) {
-    if (segmentMeetsTriangle(pa[k], pa[(k + 1) % 3], B, gj.normal, eps)) return true;
-    if (segmentMeetsTriangle(pb[k], pb[(k + 1) % 3], A, gi.normal, eps)) return true;
+    if (segmentMeetsTriangle(a[k], a[(k + 1) % 3], B, gb.normal, eps)) return true;
+    if (segmentMeetsTriangle(b[k], b[(k + 1) % 3], A, ga.normal, eps)) return true;
   }
   return false;
 }

@@ -30,6 +30,12 @@ TriangleGeometry triangleGeometry(const Vec3& a, const Vec3& b, const Vec3& c);
 bool trianglesIntersect(const Mesh& mesh, int32_t i, int32_t j, const TriangleGeometry& gi,
                         const TriangleGeometry& gj);
 
+// Whether two triangles given by their corners, with no vertex in common (e.g. of two different
+// meshes), share a point: the no-shared-vertex case of trianglesIntersect, same tolerance.
+// Degenerate triangles never intersect anything.
+bool separateTrianglesIntersect(const Vec3 (&a)[3], const Vec3 (&b)[3], const TriangleGeometry& ga,
+                                const TriangleGeometry& gb);
+
 // Every pair (i < j, sorted) for which trianglesIntersect holds, by testing all pairs: O(n²).
 std::vector<std::array<int32_t, 2>> selfIntersectionsAllPairs(const Mesh& mesh);
 
