@@ -44,7 +44,8 @@ struct LinkSpheres {
 // Reads every link of a YAML file in file order, as cuRobo writes them: a "collision_spheres:"
 // mapping of link names to lists of spheres {center: [x, y, z], radius: r} (flow or block
 // style) at the top level, or nested as robot_cfg: kinematics: collision_spheres: (or
-// kinematics: collision_spheres:). A link
+// kinematics: collision_spheres:), or Lula's list of one-link mappings
+// (collision_spheres: [{link: [spheres]}, ...], robot_collision.hpp). A link
 // with an empty entry has no spheres. Any other format holds one set, returned as one link
 // named after the file's stem. Errors: kUnreadable (not YAML), kInvalidData (no
 // collision_spheres, a link that is not a list, a sphere without center or radius, a value
@@ -83,7 +84,9 @@ Status checkOutputPath(const std::string& output, const std::vector<std::string>
 Status checkOutputFolder(const std::string& folder, const std::vector<std::string>& inputs);
 
 // Pairs of links to leave out of self-collision checking, as cuRobo lists them: links joined
-// by a joint (adjacent), and links whose sphere sets overlap at one pose (overlapping). Each pair
+// by a joint (adjacent), and the others to ignore (overlapping): links whose sphere sets overlap
+// at one pose (selfCollisionPairs), or every other pair the joint-space sampling disabled
+// (ignoredPairs, robot_collision.hpp). Each pair
 // {a, b} has a before b in the robot's link order; the lists are sorted by that order and hold
 // no duplicates. A pair both adjacent and overlapping is in both lists.
 struct SelfCollisionPairs {

@@ -116,14 +116,12 @@ Expected<std::vector<LinkSpheres>> parseLinks(const std::string& text, const std
   if (spheres.IsScalar())
     return invalid(at(name, spheres) + ": " + key_path + " is '" + spheres.Scalar() +
                    "', the name of another file, not the spheres themselves: read that file");
-  if (!spheres.IsMap())
+  if (!spheres.IsMap() && !spheres.IsSequence())
     return invalid(at(name, spheres) + ": " + key_path +
                    " must map link names to lists of spheres");
   std::unordered_set<std::string> seen;
   size_t total = 0;
-  for (const auto& entry : spheres) {
-    const YAML::Node& key = entry.first;
-    const YAML::Node& list = entry.second;
+  auto addLink = [&](const YAML::Node& key, const YAML::Node& list) -> Status {
     if (!key.IsScalar() || key.Scalar().empty())
       return invalid(at(name, key) + ": " + key_path + ": a link name must be a non-empty string");
     LinkSpheres link{key.Scalar(), {}};
@@ -146,6 +144,20 @@ Expected<std::vector<LinkSpheres>> parseLinks(const std::string& text, const std
       }
     }
     out.push_back(std::move(link));
+    return {};
+  };
+  // cuRobo's mapping {link: [...], ...}, or Lula's list [{link: [...]}, ...].
+  if (spheres.IsMap()) {
+    for (const auto& entry : spheres)
+      if (Status st = addLink(entry.first, entry.second); !st) return st.error();
+    return out;
+  }
+  for (const YAML::Node& item : spheres) {
+    if (!item.IsMap())
+      return invalid(at(name, item) + ": " + key_path +
+                     ": a list entry must map link names to lists of spheres (Lula's layout)");
+    for (const auto& entry : item)
+      if (Status st = addLink(entry.first, entry.second); !st) return st.error();
   }
   return out;
 }

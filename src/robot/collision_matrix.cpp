@@ -1,0 +1,203 @@
+// The self-collision matrix of a robot by sampling its joint space, as MoveIt's setup assistant
+// computes the disable_collisions entries of an SRDF (moveit_setup_srdf_plugins,
+// compute_default_collisions.cpp): adjacent links first (joined by a joint, or through links
+// without geometry), then the pairs in collision at the default pose, then those in collision in
+// at least a fraction of random configurations ("Always", 95 % in MoveIt), then those in
+// collision in none ("Never"). Collisions are measured on the sphere sets or, on request, on the
+// link solids (link_contact.cpp).
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <random>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "robot/link_contact.hpp"
+#include "sphereset/robot_collision.hpp"
+#include "util/sampling.hpp"
+
+namespace sphereset {
+namespace {
+
+using PosesByLink = std::map<std::string, Eigen::Isometry3d>;
+
+bool movable(const RobotJoint& j) {
+  return j.type == RobotJoint::Type::kRevolute || j.type == RobotJoint::Type::kContinuous ||
+         j.type == RobotJoint::Type::kPrismatic;
+}
+
+// Pairs (by index into the robot's links, first < second) joined by a joint, or through links
+// not in `has_geometry` (MoveIt's rule: a link without geometry joins its neighbours).
+std::set<std::pair<size_t, size_t>> adjacentPairs(const Robot& robot,
+                                                  const std::map<std::string, size_t>& index,
+                                                  const std::vector<bool>& has_geometry) {
+  std::vector<std::set<size_t>> next(robot.links.size());
+  for (const RobotJoint& j : robot.joints) {
+    const auto p = index.find(j.parent);
+    const auto c = index.find(j.child);
+    if (p == index.end() || c == index.end() || p->second == c->second) continue;
+    next[p->second].insert(c->second);
+    next[c->second].insert(p->second);
+  }
+  for (size_t w = 0; w < robot.links.size(); ++w) {
+    if (has_geometry[w]) continue;
+    const std::vector<size_t> around(next[w].begin(), next[w].end());
+    for (size_t x : around)
+      for (size_t y : around)
+        if (x != y) next[x].insert(y);
+  }
+  std::set<std::pair<size_t, size_t>> out;
+  for (size_t a = 0; a < next.size(); ++a)
+    for (size_t b : next[a])
+      if (a < b && has_geometry[a] && has_geometry[b]) out.emplace(a, b);
+  return out;
+}
+
+// Configuration `i`: each movable joint that is not a mimic uniform within its limits
+// (continuous joints over [-π, π]), from a generator of its own.
+std::map<std::string, double> sampledConfiguration(const std::vector<const RobotJoint*>& joints,
+                                                   uint64_t seed, int64_t i) {
+  std::mt19937_64 rng(detail::mixSeed(seed, static_cast<uint64_t>(i)));
+  std::map<std::string, double> q;
+  for (const RobotJoint* j : joints) {
+    const double u = detail::uniform01(rng);
+    if (j->type == RobotJoint::Type::kContinuous) {
+      q[j->name] = std::numbers::pi * (2.0 * u - 1.0);
+    } else {
+      const double lo = std::min(j->lower, j->upper), hi = std::max(j->lower, j->upper);
+      q[j->name] = lo + u * (hi - lo);
+    }
+  }
+  return q;
+}
+
+struct Participants {
+  std::vector<size_t> links;              // robot link indices, in order
+  std::vector<detail::LinkBody> bodies;   // one per entry of `links`
+  std::vector<std::array<int, 2>> pairs;  // positions in `links`, not adjacent
+};
+
+// Whether pair p of `who` is in collision at `poses`.
+bool pairTouches(const Robot& robot, const Participants& who, const PosesByLink& poses,
+                 const std::array<int, 2>& p) {
+  const Eigen::Isometry3d& ta = poses.at(robot.links[who.links[p[0]]].name);
+  const Eigen::Isometry3d& tb = poses.at(robot.links[who.links[p[1]]].name);
+  return detail::bodiesTouch(who.bodies[p[0]], who.bodies[p[1]], ta.inverse() * tb);
+}
+
+// Collisions per pair of `who` over the samples, in parallel (integer sums: the same on any
+// number of threads).
+std::vector<int64_t> countCollisions(const Robot& robot, const Participants& who, int samples,
+                                     uint64_t seed) {
+  std::vector<const RobotJoint*> joints;
+  for (const RobotJoint& j : robot.joints)
+    if (movable(j) && !j.mimic) joints.push_back(&j);
+  tbb::enumerable_thread_specific<std::vector<int64_t>> local(
+      std::vector<int64_t>(who.pairs.size(), 0));
+  tbb::parallel_for(tbb::blocked_range<int64_t>(0, samples, 16),
+                    [&](const tbb::blocked_range<int64_t>& range) {
+                      std::vector<int64_t>& counts = local.local();
+                      for (int64_t i = range.begin(); i != range.end(); ++i) {
+                        auto poses = linkPoses(robot, sampledConfiguration(joints, seed, i));
+                        if (!poses) continue;  // not reached: the default pose passed
+                        for (size_t p = 0; p < who.pairs.size(); ++p)
+                          if (pairTouches(robot, who, *poses, who.pairs[p])) ++counts[p];
+                      }
+                    });
+  std::vector<int64_t> total(who.pairs.size(), 0);
+  for (const std::vector<int64_t>& c : local)
+    for (size_t p = 0; p < c.size(); ++p) total[p] += c[p];
+  return total;
+}
+
+}  // namespace
+
+Expected<CollisionMatrix> sampleSelfCollisions(const Robot& robot,
+                                               const std::vector<LinkSpheres>& spheres,
+                                               const CollisionSamplingOptions& options,
+                                               const std::vector<CollisionSolid>& solids) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (Status st = checkCollisionSamplingOptions(options); !st) return st.error();
+  auto defaults = linkPoses(robot, options.default_pose);
+  if (!defaults) return Error{defaults.error().code, "default_pose: " + defaults.error().message};
+  std::map<std::string, size_t> index;
+  for (size_t i = 0; i < robot.links.size(); ++i) index.emplace(robot.links[i].name, i);
+
+  // Each link's spheres (a link named twice: one set), for the links the root reaches.
+  std::map<size_t, std::vector<Sphere>> merged;
+  for (const LinkSpheres& ls : spheres) {
+    const auto i = index.find(ls.link);
+    if (i == index.end() || defaults->count(ls.link) == 0 || ls.spheres.empty()) continue;
+    auto& set = merged[i->second];
+    set.insert(set.end(), ls.spheres.begin(), ls.spheres.end());
+  }
+  std::map<std::string, const CollisionSolid*> solid_of;
+  for (const CollisionSolid& s : solids) solid_of.emplace(s.link, &s);
+  Participants who;
+  std::vector<bool> has_geometry(robot.links.size(), false);
+  for (auto& [i, set] : merged) {
+    has_geometry[i] = true;
+    who.links.push_back(i);
+    const auto solid = solid_of.find(robot.links[i].name);
+    if (options.check == CollisionCheck::kMeshes && solid != solid_of.end())
+      who.bodies.push_back(detail::makeLinkBody(solid->second->mesh, solid->second->primitives));
+    else
+      who.bodies.push_back(detail::makeLinkBody(Mesh{}, set));
+  }
+
+  CollisionMatrix out;
+  out.check = options.check;
+  out.samples = options.samples > 0 ? options.samples : defaultSampleCount(robot);
+  const auto adjacent = adjacentPairs(robot, index, has_geometry);
+  std::map<std::pair<size_t, size_t>, DisabledPair> disabled;
+  auto disable = [&](size_t a, size_t b, DisableReason reason, int64_t collisions) {
+    disabled[{a, b}] = DisabledPair{robot.links[a].name, robot.links[b].name, reason, collisions};
+  };
+  for (const auto& [a, b] : adjacent) disable(a, b, DisableReason::kAdjacent, 0);
+  const int n = static_cast<int>(who.links.size());
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      ++out.pairs;
+      if (adjacent.count({who.links[a], who.links[b]}) > 0) continue;
+      if (pairTouches(robot, who, *defaults, {a, b}))
+        disable(who.links[a], who.links[b], DisableReason::kDefault, 0);
+      else
+        who.pairs.push_back({a, b});
+    }
+
+  const std::vector<int64_t> counts = countCollisions(robot, who, out.samples, options.seed);
+  const double always = options.always_fraction * out.samples;
+  for (size_t p = 0; p < who.pairs.size(); ++p) {
+    const size_t a = who.links[who.pairs[p][0]], b = who.links[who.pairs[p][1]];
+    if (counts[p] == 0)
+      disable(a, b, DisableReason::kNever, 0);
+    else if (static_cast<double>(counts[p]) >= always)
+      disable(a, b, DisableReason::kAlways, counts[p]);
+    else
+      ++out.enabled;
+  }
+  for (auto& [ab, pair] : disabled) {
+    ++out.counts[static_cast<int>(pair.reason)];
+    out.disabled.push_back(std::move(pair));
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+SelfCollisionPairs ignoredPairs(const CollisionMatrix& matrix) {
+  SelfCollisionPairs out;
+  for (const DisabledPair& p : matrix.disabled)
+    (p.reason == DisableReason::kAdjacent ? out.adjacent : out.overlapping)
+        .push_back({p.link1, p.link2});
+  return out;
+}
+
+}  // namespace sphereset
