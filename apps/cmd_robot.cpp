@@ -1,9 +1,13 @@
 // sphereset robot: collision spheres for every link of a robot described by a URDF, in the link
-// frames (fitRobot, robot_fit.hpp, does the fitting). Outputs: cuRobo's YAML with the
-// self-collision ignore list, the URDF with sphere collisions, or a JSON report.
+// frames (fitRobot, robot_fit.hpp, does the fitting), and the link pairs a planner may skip,
+// found by sampling the joint space (sampleSelfCollisions, robot_collision.hpp). Outputs, one or
+// more (-o repeated), by the name's ending: cuRobo's YAML with the self-collision ignore list,
+// Lula's robot description, MoveIt's SRDF, the URDF with sphere collisions, a JSON report.
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -18,6 +22,7 @@
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/robot.hpp"
+#include "sphereset/robot_collision.hpp"
 #include "sphereset/robot_fit.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"
@@ -26,16 +31,59 @@ namespace sphereset::cli {
 namespace {
 
 struct RobotArgs {
-  std::string urdf, out_path, joint_positions;
-  TableArgs fit;    // --quality and --seed
-  TableArgs robot;  // the rows of robotFitOptionTable()
+  std::string urdf, joint_positions;
+  std::vector<std::string> outputs;
+  TableArgs fit;        // --quality and --seed
+  TableArgs robot;      // the rows of robotFitOptionTable()
+  TableArgs collision;  // the rows of collisionSamplingOptionTable() but default_pose
   std::vector<std::string> package_paths;
   MeshArgs repair;  // repair options only (no mesh path)
   bool quiet = false, json = false;
 };
 
+enum class RobotOutput { kCurobo, kLula, kSrdf, kUrdf, kJson };
+
+bool endsWith(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// The format of an output by its name's ending (letter case ignored): .lula.yml/.lula.yaml
+// (Lula), .yml/.yaml (cuRobo), .srdf, .urdf, .json.
+Expected<RobotOutput> robotOutput(const std::string& path) {
+  std::string name = path;
+  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (endsWith(name, ".lula.yml") || endsWith(name, ".lula.yaml")) return RobotOutput::kLula;
+  if (endsWith(name, ".yml") || endsWith(name, ".yaml")) return RobotOutput::kCurobo;
+  if (endsWith(name, ".srdf")) return RobotOutput::kSrdf;
+  if (endsWith(name, ".urdf")) return RobotOutput::kUrdf;
+  if (endsWith(name, ".json")) return RobotOutput::kJson;
+  return Error{ErrorCode::kInvalidArgument,
+               path +
+                   ": robot output is .yml/.yaml (cuRobo), .lula.yml/.lula.yaml (Lula), "
+                   ".srdf, .urdf or .json"};
+}
+
+nlohmann::json collisionJson(const CollisionMatrix& m) {
+  nlohmann::json pairs = nlohmann::json::array();
+  for (const DisabledPair& p : m.disabled)
+    pairs.push_back({{"link1", p.link1},
+                     {"link2", p.link2},
+                     {"reason", disableReasonName(p.reason)},
+                     {"collisions", p.collisions}});
+  return {{"samples", m.samples},
+          {"check", m.check == CollisionCheck::kMeshes ? "meshes" : "spheres"},
+          {"pairs", m.pairs},
+          {"enabled", m.enabled},
+          {"adjacent", m.count(DisableReason::kAdjacent)},
+          {"default", m.count(DisableReason::kDefault)},
+          {"always", m.count(DisableReason::kAlways)},
+          {"never", m.count(DisableReason::kNever)},
+          {"seconds", m.seconds},
+          {"disabled", pairs}};
+}
+
 nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const RobotFitResult& r,
-                         const RobotFitOptions& fo) {
+                         const RobotFitOptions& fo, const CollisionMatrix& m) {
   nlohmann::json links = nlohmann::json::array();
   for (const RobotLinkFit& j : r.links) {
     nlohmann::json l = fieldsJson(robotLinkFields(j));
@@ -52,10 +100,11 @@ nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const RobotFitR
   out["seed"] = fo.seed;
   out["budget"] = fo.budget;
   out["links"] = links;
+  out["self_collision"] = collisionJson(m);
   return out;
 }
 
-void printSummary(const RobotFitResult& r, double seconds) {
+void printSummary(const RobotFitResult& r, const CollisionMatrix& m, double seconds) {
   std::fprintf(stderr, "%-28s %9s %-10s %9s %7s %9s %9s %7s %7s\n", "link", "triangles", "repair",
                "openings", "spheres", "E_r", "E_r walls", "covered", "time s");
   for (const RobotLinkFit& j : r.links)
@@ -80,13 +129,81 @@ void printSummary(const RobotFitResult& r, double seconds) {
                "E_r is against each link's fitted solid: its envelope when openings is above 0 "
                "(openings narrower than that closed, the hollow behind them inside), else its "
                "walls\n");
+  std::fprintf(stderr,
+               "self-collision: %lld adjacent, %lld default, %lld always, %lld never, %lld of %lld "
+               "pairs left to check (%d configurations on the %s, %.2f s)\n",
+               static_cast<long long>(m.count(DisableReason::kAdjacent)),
+               static_cast<long long>(m.count(DisableReason::kDefault)),
+               static_cast<long long>(m.count(DisableReason::kAlways)),
+               static_cast<long long>(m.count(DisableReason::kNever)),
+               static_cast<long long>(m.enabled), static_cast<long long>(m.pairs), m.samples,
+               m.check == CollisionCheck::kMeshes ? "link solids" : "spheres", m.seconds);
   std::fprintf(stderr, "total %.2f s\n", seconds);
+}
+
+// The outputs' formats, each checked before any work: a known ending, not an input, not given
+// twice, writable.
+Expected<std::vector<RobotOutput>> checkOutputs(const RobotArgs& a) {
+  std::vector<RobotOutput> formats;
+  for (size_t i = 0; i < a.outputs.size(); ++i) {
+    auto f = robotOutput(a.outputs[i]);
+    if (!f) return f.error();
+    formats.push_back(*f);
+    if (Status st = checkOutputPath(a.outputs[i], {a.urdf}); !st) return st.error();
+    // The same file again (through links and relative paths too) would lose the first.
+    const std::vector<std::string> earlier(a.outputs.begin(),
+                                           a.outputs.begin() + static_cast<std::ptrdiff_t>(i));
+    if (!earlier.empty())
+      if (Status st = checkOutputPath(a.outputs[i], earlier); !st)
+        return Error{ErrorCode::kInvalidArgument, a.outputs[i] + ": given twice as an output"};
+  }
+  return formats;
+}
+
+// The link solids of the fit for the mesh check: each fitted link's repaired mesh (its walls
+// when the fit closed its openings) and its exact sphere primitives; links of primitives alone
+// with those.
+std::vector<CollisionSolid> fitSolids(const Robot& robot, const RobotFitResult& fit) {
+  std::vector<CollisionSolid> out;
+  for (const RobotLinkFit& j : fit.links) {
+    if (j.skipped) continue;
+    CollisionSolid s;
+    s.link = j.link;
+    // The walls: the link's own solid, not the envelope that closes its openings.
+    if (j.fitted) s.mesh = j.repair.walls.triangles.empty() ? j.repair.solid : j.repair.walls;
+    for (const RobotLink& l : robot.links)
+      if (l.name == j.link) s.primitives = linkSpheres(l);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+Status writeRobotOutput(const RobotArgs& a, const std::string& path, RobotOutput format,
+                        const Robot& robot, const RobotFitResult& fit, const RobotFitOptions& fo,
+                        const std::vector<LinkSpheres>& spheres, const CollisionMatrix& matrix,
+                        const CollisionSamplingOptions& co) {
+  switch (format) {
+    case RobotOutput::kJson:
+      return writeTextFile(path, jsonText(robotJson(a, robot, fit, fo, matrix), 1) + "\n");
+    case RobotOutput::kUrdf:
+      return writeSphereUrdf(a.urdf, path, spheres);
+    case RobotOutput::kSrdf:
+      return writeSrdf(path, robot, matrix);
+    case RobotOutput::kLula:
+      return writeLulaDescription(path, robot, spheres, co.default_pose);
+    case RobotOutput::kCurobo: {
+      // cuRobo's self_collision_ignore: every pair the sampling disabled.
+      const SelfCollisionPairs pairs = ignoredPairs(matrix);
+      SphereFileMeta meta;
+      meta.source_mesh = a.urdf;
+      return writeRobotSpheres(path, spheres, &pairs, meta);
+    }
+  }
+  return {};
 }
 
 int runRobot(const RobotArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  auto format = sphereFormatFromPath(a.out_path);
-  const std::string ext = std::filesystem::path(a.out_path).extension().string();
   // The options first: a bad value is refused before anything is read.
   RobotFitOptions fo;
   for (const auto& [name, text] : a.robot.given())
@@ -96,49 +213,47 @@ int runRobot(const RobotArgs& a) {
     if (Status st = setFitRequestOption(&request, name, text); !st) return fail(st.error());
   fo.quality = request.quality;
   fo.seed = request.seed;
+  CollisionSamplingOptions co;
+  for (const auto& [name, text] : a.collision.given())
+    if (Status st = setCollisionSamplingOption(&co, name, text); !st) return fail(st.error());
   auto repair = repairOptions(a.repair);
   if (!repair) return fail(repair.error());
   fo.repair = std::move(repair).value();
   if (Status st = checkRobotFitOptions(fo); !st) return fail(st.error());
-  if (ext != ".json" && ext != ".urdf" && (!format || *format != SphereFormat::kYaml))
-    return fail(Error{ErrorCode::kInvalidArgument,
-                      a.out_path + ": robot output is .yml/.yaml (cuRobo), .urdf or .json"});
-  if (Status st = checkOutputPath(a.out_path, {a.urdf}); !st) return fail(st.error());
+  auto formats = checkOutputs(a);
+  if (!formats) return fail(formats.error());
   RobotLoadOptions lo;
   lo.package_paths = a.package_paths;
   auto robot = loadRobot(a.urdf, lo);
   if (!robot) return fail(robot.error());
   auto joints = parseJointPositions(a.joint_positions, *robot);
   if (!joints) return fail(joints.error());
+  co.default_pose = *joints;  // the default pose of the sampling and of Lula's default_q
   fo.name = a.urdf;
   auto fit = fitRobot(*robot, fo);
   if (!fit) return fail(fit.error());
   std::vector<LinkSpheres> out;
   for (const RobotLinkFit& j : fit->links)
     if (!j.skipped) out.push_back({j.link, j.spheres});
-  Status st;
-  if (ext == ".json") {
-    st = writeTextFile(a.out_path, jsonText(robotJson(a, *robot, *fit, fo), 1) + "\n");
-  } else if (ext == ".urdf") {
-    st = writeSphereUrdf(a.urdf, a.out_path, out);
-  } else {
-    // cuRobo's self_collision_ignore: adjacent links and links whose spheres overlap at the
-    // pose given (zero by default).
-    auto pairs = selfCollisionPairs(*robot, out, *joints);
-    if (!pairs) return fail(pairs.error());
-    SphereFileMeta meta;
-    meta.source_mesh = a.urdf;
-    st = writeRobotSpheres(a.out_path, out, &*pairs, meta);
-  }
-  if (!st) return fail(st.error());
+  const std::vector<CollisionSolid> solids =
+      co.check == CollisionCheck::kMeshes ? fitSolids(*robot, *fit) : std::vector<CollisionSolid>{};
+  auto matrix = sampleSelfCollisions(*robot, out, co, solids);
+  if (!matrix) return fail(matrix.error());
+  for (size_t i = 0; i < a.outputs.size(); ++i)
+    if (Status st =
+            writeRobotOutput(a, a.outputs[i], (*formats)[i], *robot, *fit, fo, out, *matrix, co);
+        !st)
+      return fail(st.error());
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (a.json) std::cout << jsonText(robotJson(a, *robot, *fit, fo)) << '\n';
-  if (!a.quiet) printSummary(*fit, seconds);
+  if (a.json) std::cout << jsonText(robotJson(a, *robot, *fit, fo, *matrix)) << '\n';
+  if (!a.quiet) printSummary(*fit, *matrix, seconds);
   for (const RobotLinkFit& j : fit->links)
     if (!j.covered) {
+      std::string written;
+      for (const std::string& o : a.outputs) written += (written.empty() ? "" : ", ") + o;
       std::cerr << "sphereset: " << a.urdf << ": link '" << j.link
-                << "' failed the coverage check (written to " << a.out_path << " anyway)\n";
+                << "' failed the coverage check (written to " << written << " anyway)\n";
       return kUncovered;
     }
   return kOk;
@@ -151,16 +266,22 @@ Command registerRobot(CLI::App& app) {
   CLI::App* cmd =
       app.add_subcommand("robot", "Fit collision spheres to every link of a URDF robot");
   cmd->add_option("urdf", a->urdf, "Robot description (URDF)")->required();
-  cmd->add_option("-o,--output", a->out_path,
-                  "Output: .yml/.yaml (cuRobo collision_spheres and self_collision_ignore), "
-                  ".urdf (the input with sphere collisions) or .json (per link)")
-      ->required();
+  cmd->add_option("-o,--output", a->outputs,
+                  "Output, repeatable (one fit, several files), by the name's ending: "
+                  ".yml/.yaml (cuRobo collision_spheres and self_collision_ignore), "
+                  ".lula.yml/.lula.yaml (Lula robot description), .srdf (MoveIt: chain group "
+                  "and disable_collisions), .urdf (the input with sphere collisions) or .json "
+                  "(per link, and the self-collision pairs)")
+      ->required()
+      ->allow_extra_args(false);
   cmd->add_option("--joint-positions", a->joint_positions,
-                  "JOINT=VALUE,...: the pose at which overlapping links are listed for "
-                  "self_collision_ignore (default: all joints at 0)");
+                  "JOINT=VALUE,...: the default pose (rad or m): its collisions are disabled as "
+                  "\"Default\", and it is Lula's default_q (default: all joints at 0)");
   cmd->add_option("--package-path", a->package_paths,
                   "Folder searched for package://NAME/ paths (repeatable; then ROS_PACKAGE_PATH)");
   addTableOptions(cmd, &a->robot, robotFitOptionTable());
+  // The sampling of self-collision pairs; its default pose is --joint-positions.
+  addTableOptions(cmd, &a->collision, collisionSamplingOptionTable(), {"default_pose"});
   // --quality and --seed: the fit table's rows, parsed by the library.
   addTableOptions(cmd, &a->fit, fitRequestOptions(),
                   {"n", "points", "iterations", "restarts", "decimation", "padding", "optimizer",

@@ -224,7 +224,8 @@ cli_test(robot_missing_package 3 ARGS robot ${robot}/three_link.urdf -o ${work}/
 cli_test(robot_small_budget 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --budget 2 -o ${work}/never32.yml -q STDERR "budget of" FORBID ${work}/never32.yml)
 cli_test(robot_bad_extension 2 ARGS robot ${robot}/three_link.urdf -o ${work}/never33.txt -q
-         STDERR "robot output is .yml/.yaml .cuRobo., .urdf or .json" FORBID ${work}/never33.txt)
+         STDERR "robot output is .yml/.yaml .cuRobo., .lula.yml/.lula.yaml .Lula., .srdf, .urdf or .json"
+         FORBID ${work}/never33.txt)
 cli_test(robot_yaml_ignore 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --budget 12 --quality fast --joint-positions joint1=0.5,joint2=-0.3 -o ${work}/three_ignore.yml -q
          FILE ${work}/three_ignore.yml)
@@ -291,6 +292,42 @@ set_tests_properties(cli.robot_same_on_any_thread_count PROPERTIES
 cli_test(robot_budget_summary 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --budget 12 --quality fast -o ${work}/three_budget.yml
          STDERR "budget: outside volume [0-9.e-]+ of the links it split .split by curves [0-9.e-]+, even split [0-9.e-]+.")
+
+# Several outputs of one fit; the self-collision pairs by sampling the joint space.
+cli_test(robot_srdf 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot} --quality fast
+         -o ${work}/three.srdf -o ${work}/three_srdf.json -o ${work}/three.lula.yml
+         --collision-samples 500
+         STDERR "self-collision: 3 adjacent, 0 default, 0 always, [0-9]+ never, [0-9]+ of 6 pairs left to check .500 configurations on the spheres"
+         FILE ${work}/three.srdf)
+cli_test(robot_lula 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot} --quality fast
+         -o ${work}/three_lula.lula.yaml -o ${work}/three_lula.yml --joint-positions joint2=0.5 -q
+         FILE ${work}/three_lula.lula.yaml)
+cli_test(robot_collision_json 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --quality fast -o ${work}/three_collision.json --collision-check meshes
+         --collision-seed 7 --always-fraction 0.9 --json -q
+         STDOUT "\"self_collision\":{\"adjacent\":3,\"always\":[0-9]+,\"check\":\"meshes\",.*\"samples\":4000")
+cli_test(robot_bad_collision_samples 2 ARGS robot ${robot}/three_link.urdf --package-path
+         ${robot} --collision-samples -5 -o ${work}/never38.srdf -q
+         STDERR "collision_samples '-5': expected an integer from 0 to 10000000"
+         FORBID ${work}/never38.srdf)
+cli_test(robot_bad_collision_seed 2 ARGS robot ${robot}/three_link.urdf --package-path
+         ${robot} --collision-seed -1 -o ${work}/never39.srdf -q
+         STDERR "collision_seed '-1': expected an integer from 0 to 18446744073709551615"
+         FORBID ${work}/never39.srdf)
+cli_test(robot_bad_always_fraction 2 ARGS robot ${robot}/three_link.urdf --package-path
+         ${robot} --always-fraction 0.2 -o ${work}/never40.srdf -q
+         STDERR "always_fraction '0.2': expected a number from 0.5 to 1"
+         FORBID ${work}/never40.srdf)
+cli_test(robot_bad_collision_check 2 ARGS robot ${robot}/three_link.urdf --package-path
+         ${robot} --collision-check fcl -o ${work}/never41.srdf -q
+         STDERR "collision_check 'fcl': expected spheres or meshes" FORBID ${work}/never41.srdf)
+cli_test(robot_output_twice 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         -o ${work}/never42.srdf -o ${work}/../cli/never42.srdf -q
+         STDERR "never42.srdf: given twice as an output" FORBID ${work}/never42.srdf)
+# Every output is checked before the fit: a bad second output leaves no first.
+cli_test(robot_second_output_unwritable 6 ARGS robot ${robot}/three_link.urdf --package-path
+         ${robot} -o ${work}/never43.srdf -o ${work}/no/such/folder/x.yml -q
+         STDERR "x.yml: the folder .* does not exist" FORBID ${work}/never43.srdf)
 
 cli_test(robot_skip_link 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres link1=0 --link-spheres tool=0 --quality fast -o ${work}/three_skip.yml
