@@ -2,18 +2,23 @@
 // (MoveIt's default checker): at random configurations of the test robot, every small probe
 // sphere or box that FCL finds touching a link's mesh also touches that link's fitted spheres. FCL
 // models the mesh as its triangles, so the probes that touch it are the ones near the surface,
-// which the certificate says the spheres cover.
+// which the certificate says the spheres cover. And the self-collision pairs of the SRDF: the
+// pairs disabled as "Never" do not collide in FCL, on the link meshes, at fresh random
+// configurations, and the "Adjacent" ones are joined by a joint.
 #include <fcl/fcl.h>
 #include <gtest/gtest.h>
+#include <tinyxml.h>
 
 #include <map>
 #include <memory>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "robot/robot_data.hpp"
 #include "sphereset/robot.hpp"
+#include "sphereset/robot_collision.hpp"
 #include "sphereset/robot_fit.hpp"
 #ifdef SPHERESET_TEST_REPAIR
 #include "sphereset/repair_cgal.hpp"
@@ -117,6 +122,76 @@ TEST(FclCheck, EveryProbeTouchingALinkMeshTouchesItsSpheres) {
   EXPECT_GE(links_checked, 8);  // two links with meshes or primitives, four configurations
   EXPECT_GT(hits, 500);         // the probes did meet the surfaces
   EXPECT_EQ(misses, 0);
+}
+
+// The pairs of an SRDF with the given reason, as written.
+std::vector<std::array<std::string, 2>> srdfPairsWith(const std::string& srdf,
+                                                      const std::string& reason) {
+  TiXmlDocument doc;
+  doc.Parse(srdf.c_str());
+  EXPECT_FALSE(doc.Error()) << doc.ErrorDesc();
+  std::vector<std::array<std::string, 2>> out;
+  if (doc.RootElement() == nullptr) return out;
+  for (const TiXmlElement* d = doc.RootElement()->FirstChildElement("disable_collisions");
+       d != nullptr; d = d->NextSiblingElement("disable_collisions"))
+    if (reason == d->Attribute("reason"))
+      out.push_back({d->Attribute("link1"), d->Attribute("link2")});
+  return out;
+}
+
+TEST(FclCheck, SrdfNeverPairsDoNotCollideAndAdjacentPairsAreJoined) {
+  const Robot robot = test::threeLinkRobot();
+  ASSERT_FALSE(robot.links.empty());
+  RobotFitOptions fo;
+  fo.quality = FitQuality::kFast;
+  fo.default_link_spheres = 6;
+  fo.name = "three_link";
+#ifdef SPHERESET_TEST_REPAIR
+  fo.repair.operations = cgalSolidOperations();
+#endif
+  auto fit = fitRobot(robot, fo);
+  ASSERT_TRUE(fit.ok()) << fit.error().message;
+  std::vector<LinkSpheres> spheres;
+  for (const RobotLinkFit& lf : fit->links) spheres.push_back({lf.link, lf.spheres});
+  CollisionSamplingOptions co;
+  co.samples = 2000;
+  co.seed = 1;
+  auto matrix = sampleSelfCollisions(robot, spheres, co);
+  ASSERT_TRUE(matrix.ok()) << matrix.error().message;
+  const std::string srdf = formatSrdf(robot, *matrix);
+  const auto never = srdfPairsWith(srdf, "Never");
+  const auto adjacent = srdfPairsWith(srdf, "Adjacent");
+  ASSERT_FALSE(never.empty()) << srdf;
+  ASSERT_EQ(adjacent.size(), 3u) << srdf;
+
+  for (const auto& [a, b] : adjacent) {
+    bool joined = false;
+    for (const RobotJoint& j : robot.joints)
+      joined = joined || (j.parent == a && j.child == b) || (j.parent == b && j.child == a);
+    EXPECT_TRUE(joined) << a << " and " << b << " are not joined by a joint";
+  }
+
+  std::map<std::string, std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>>> meshes;
+  for (const RobotLink& l : robot.links) {
+    auto mesh = linkMesh(l);
+    ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+    if (!mesh->triangles.empty()) meshes[l.name] = fclMesh(*mesh);
+  }
+  // Fresh configurations: another generator and seed than the sampling's.
+  std::mt19937 rng(20261202);
+  int64_t tested = 0;
+  for (int config = 0; config < 3000; ++config) {
+    auto poses = linkPoses(robot, randomConfiguration(robot, rng));
+    ASSERT_TRUE(poses.ok()) << poses.error().message;
+    for (const auto& [a, b] : never) {
+      ASSERT_TRUE(meshes.count(a) && meshes.count(b)) << a << ", " << b;
+      const fcl::CollisionObjectd oa(meshes[a], fcl::Transform3d(poses->at(a).matrix()));
+      const fcl::CollisionObjectd ob(meshes[b], fcl::Transform3d(poses->at(b).matrix()));
+      ++tested;
+      ASSERT_FALSE(touch(oa, ob)) << a << " and " << b << " (\"Never\") collide in FCL";
+    }
+  }
+  EXPECT_EQ(tested, 3000 * static_cast<int64_t>(never.size()));
 }
 
 }  // namespace
