@@ -75,7 +75,7 @@ struct CollisionSolid {
 struct DisabledPair {
   std::string link1, link2;
   DisableReason reason = DisableReason::kNever;
-  int64_t collisions = 0;  // samples in which the pair was in collision
+  int64_t collisions = 0;  // Always: the samples in collision; 0 for the others (not sampled)
 };
 
 struct CollisionMatrix {

@@ -1,14 +1,17 @@
 // Exact contact between two link solids, for the self-collision sampling's mesh check: two
 // closed meshes touch when a triangle of one meets a triangle of the other (candidates from the
 // solid index's hierarchy, then the triangle-triangle test of the self-intersection search,
-// mesh/triangle_intersection.hpp), or else when a part of one lies inside the other (one vertex
-// of each connected part classified by the solid index's point-in-solid test). A sphere touches
+// mesh/triangle_intersection.hpp; both hierarchies walked together, one placed in the other's
+// frame), or else when a part of one lies inside the other (one vertex of each connected part
+// classified by the solid index's point-in-solid test). A sphere touches
 // a mesh when its centre is inside or nearer the surface than its radius.
 #include "robot/link_contact.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <utility>
+#include <vector>
 
 #include "index/solid_index_impl.hpp"
 #include "mesh/triangle_intersection.hpp"
@@ -22,37 +25,53 @@ bool ballsMeet(const Sphere& a, const Sphere& b) {
   return (a.center - b.center).squaredNorm() < reach * reach;
 }
 
-bool boxesMeet(const Vec3& amin, const Vec3& amax, const Vec3& bmin, const Vec3& bmax) {
-  return (amin.array() <= bmax.array()).all() && (bmin.array() <= amax.array()).all();
-}
-
 // Whether a sphere (in the mesh's frame) touches the solid.
 bool sphereTouchesSolid(const SolidIndex& solid, const Sphere& s) {
   if (s.radius > 0.0 && solid.distance(s.center) < s.radius) return true;
   return solid.classify(s.center) != Containment::kOutside;
 }
 
-// Whether a triangle of `small`, placed in `big`'s frame by `small_in_big`, meets one of `big`.
-bool trianglesCross(const SolidIndex& big, const SolidIndex& small,
-                    const Eigen::Isometry3d& small_in_big) {
-  const Bvh& bb = big.impl().bvh;
-  const Aabb& bounds = big.bounds();
-  for (const TriRecord& t : small.impl().bvh.tris) {
-    const Vec3 q[3] = {small_in_big * t.a, small_in_big * t.b, small_in_big * t.c};
-    const Vec3 lo = q[0].cwiseMin(q[1]).cwiseMin(q[2]);
-    const Vec3 hi = q[0].cwiseMax(q[1]).cwiseMax(q[2]);
-    if (!boxesMeet(lo, hi, bounds.min, bounds.max)) continue;
-    const TriangleGeometry gq = triangleGeometry(q[0], q[1], q[2]);
-    if (gq.degenerate) continue;
-    bool met = false;
-    bb.traverse([&](const Vec3& mn, const Vec3& mx) { return !met && boxesMeet(lo, hi, mn, mx); },
-                [&](int32_t i) {
-                  if (met) return;
-                  const TriRecord& r = bb.tris[i];
-                  const Vec3 p[3] = {r.a, r.b, r.c};
-                  met = separateTrianglesIntersect(p, q, triangleGeometry(r.a, r.b, r.c), gq);
-                });
-    if (met) return true;
+// A node's box as centre and half extents.
+struct CentredBox {
+  Vec3 c, h;
+};
+
+CentredBox centredBox(const BvhNode& n) {
+  return {0.5 * (n.min() + n.max()), 0.5 * (n.max() - n.min())};
+}
+
+// Whether a triangle of `b`, placed in `a`'s frame by `b_in_a`, meets one of `a`: both
+// hierarchies walked together, b's node boxes placed as the boxes that hold them.
+bool trianglesCross(const Bvh& a, const Bvh& b, const Eigen::Isometry3d& b_in_a) {
+  if (a.nodes.empty() || b.nodes.empty()) return false;
+  const Eigen::Matrix3d abs_r = b_in_a.linear().cwiseAbs();
+  std::vector<std::array<int32_t, 2>> todo{{0, 0}};
+  while (!todo.empty()) {
+    const auto [ia, ib] = todo.back();
+    todo.pop_back();
+    const BvhNode& na = a.nodes[ia];
+    const BvhNode& nb = b.nodes[ib];
+    const CentredBox ba = centredBox(na), bb = centredBox(nb);
+    const Vec3 c = b_in_a * bb.c, h = abs_r * bb.h;
+    if (((ba.c - c).cwiseAbs().array() > (ba.h + h).array()).any()) continue;
+    if (na.leaf() && nb.leaf()) {
+      for (int32_t j = nb.first; j < nb.first + nb.count; ++j) {
+        const TriRecord& t = b.tris[j];
+        const Vec3 q[3] = {b_in_a * t.a, b_in_a * t.b, b_in_a * t.c};
+        const TriangleGeometry gq = triangleGeometry(q[0], q[1], q[2]);
+        for (int32_t i = na.first; i < na.first + na.count; ++i) {
+          const TriRecord& r = a.tris[i];
+          const Vec3 p[3] = {r.a, r.b, r.c};
+          if (separateTrianglesIntersect(p, q, triangleGeometry(r.a, r.b, r.c), gq)) return true;
+        }
+      }
+    } else if (nb.leaf() || (!na.leaf() && ba.h.prod() >= bb.h.prod())) {
+      todo.push_back({na.first, ib});
+      todo.push_back({na.first + 1, ib});
+    } else {
+      todo.push_back({ia, nb.first});
+      todo.push_back({ia, nb.first + 1});
+    }
   }
   return false;
 }
@@ -65,9 +84,7 @@ bool partInside(const LinkBody& outer, const LinkBody& inner, const Eigen::Isome
 }
 
 bool meshesTouch(const LinkBody& a, const LinkBody& b, const Eigen::Isometry3d& b_in_a) {
-  const bool a_big = a.index->impl().bvh.tris.size() >= b.index->impl().bvh.tris.size();
-  const bool crossed = a_big ? trianglesCross(*a.index, *b.index, b_in_a)
-                             : trianglesCross(*b.index, *a.index, b_in_a.inverse());
+  const bool crossed = trianglesCross(a.index->impl().bvh, b.index->impl().bvh, b_in_a);
   // No crossing: each part of one is wholly inside or wholly outside the other.
   return crossed || partInside(a, b, b_in_a) || partInside(b, a, b_in_a.inverse());
 }

@@ -176,9 +176,10 @@ TEST(CollisionMatrix, MeshesDecideWhenAsked) {
   ASSERT_TRUE(meshes.ok());
   EXPECT_EQ(reasons(*meshes)["base_link/tool"], "Never");
   EXPECT_EQ(meshes->check, CollisionCheck::kMeshes);
-  // A box through which tool's box passes at the zero pose (its top face at z = 0.5 cuts it):
-  // triangles cross.
-  solids[0].mesh = test::makeBox(Vec3(0, -0.5, -0.5), Vec3(1, 0.5, 0.5));
+  // Two bars crossing like a plus sign at tool's origin at the zero pose, (0.5, 0, 0.5): tool's
+  // along x, base_link's along y; neither has a corner in the other, only triangles cross.
+  solids[1].mesh = test::makeBox(Vec3(-0.3, -0.01, -0.01), Vec3(0.3, 0.01, 0.01));
+  solids[0].mesh = test::makeBox(Vec3(0.49, -0.3, 0.49), Vec3(0.51, 0.3, 0.51));
   meshes = sampleSelfCollisions(robot, s, o, solids);
   ASSERT_TRUE(meshes.ok());
   EXPECT_EQ(reasons(*meshes)["base_link/tool"], "Default");
