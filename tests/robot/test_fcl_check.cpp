@@ -152,46 +152,57 @@ TEST(FclCheck, SrdfNeverPairsDoNotCollideAndAdjacentPairsAreJoined) {
   auto fit = fitRobot(robot, fo);
   ASSERT_TRUE(fit.ok()) << fit.error().message;
   std::vector<LinkSpheres> spheres;
-  for (const RobotLinkFit& lf : fit->links) spheres.push_back({lf.link, lf.spheres});
-  CollisionSamplingOptions co;
-  co.samples = 2000;
-  co.seed = 1;
-  auto matrix = sampleSelfCollisions(robot, spheres, co);
-  ASSERT_TRUE(matrix.ok()) << matrix.error().message;
-  const std::string srdf = formatSrdf(robot, *matrix);
-  const auto never = srdfPairsWith(srdf, "Never");
-  const auto adjacent = srdfPairsWith(srdf, "Adjacent");
-  ASSERT_FALSE(never.empty()) << srdf;
-  ASSERT_EQ(adjacent.size(), 3u) << srdf;
-
-  for (const auto& [a, b] : adjacent) {
-    bool joined = false;
-    for (const RobotJoint& j : robot.joints)
-      joined = joined || (j.parent == a && j.child == b) || (j.parent == b && j.child == a);
-    EXPECT_TRUE(joined) << a << " and " << b << " are not joined by a joint";
+  std::vector<CollisionSolid> solids;
+  for (const RobotLinkFit& lf : fit->links) {
+    spheres.push_back({lf.link, lf.spheres});
+    CollisionSolid s{lf.link, {}, {}};
+    if (lf.fitted) s.mesh = lf.repair.walls.triangles.empty() ? lf.repair.solid : lf.repair.walls;
+    for (const RobotLink& l : robot.links)
+      if (l.name == lf.link) s.primitives = linkSpheres(l);
+    solids.push_back(std::move(s));
   }
-
   std::map<std::string, std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>>> meshes;
   for (const RobotLink& l : robot.links) {
     auto mesh = linkMesh(l);
     ASSERT_TRUE(mesh.ok()) << mesh.error().message;
     if (!mesh->triangles.empty()) meshes[l.name] = fclMesh(*mesh);
   }
-  // Fresh configurations: another generator and seed than the sampling's.
-  std::mt19937 rng(20261202);
-  int64_t tested = 0;
-  for (int config = 0; config < 3000; ++config) {
-    auto poses = linkPoses(robot, randomConfiguration(robot, rng));
-    ASSERT_TRUE(poses.ok()) << poses.error().message;
-    for (const auto& [a, b] : never) {
-      ASSERT_TRUE(meshes.count(a) && meshes.count(b)) << a << ", " << b;
-      const fcl::CollisionObjectd oa(meshes[a], fcl::Transform3d(poses->at(a).matrix()));
-      const fcl::CollisionObjectd ob(meshes[b], fcl::Transform3d(poses->at(b).matrix()));
-      ++tested;
-      ASSERT_FALSE(touch(oa, ob)) << a << " and " << b << " (\"Never\") collide in FCL";
+
+  // On the spheres, then on the link solids.
+  for (const CollisionCheck check : {CollisionCheck::kSpheres, CollisionCheck::kMeshes}) {
+    CollisionSamplingOptions co;
+    co.samples = 2000;
+    co.seed = 1;
+    co.check = check;
+    auto matrix = sampleSelfCollisions(robot, spheres, co, solids);
+    ASSERT_TRUE(matrix.ok()) << matrix.error().message;
+    const std::string srdf = formatSrdf(robot, *matrix);
+    const auto never = srdfPairsWith(srdf, "Never");
+    const auto adjacent = srdfPairsWith(srdf, "Adjacent");
+    ASSERT_FALSE(never.empty()) << srdf;
+    ASSERT_EQ(adjacent.size(), 3u) << srdf;
+    for (const auto& [a, b] : adjacent) {
+      bool joined = false;
+      for (const RobotJoint& j : robot.joints)
+        joined = joined || (j.parent == a && j.child == b) || (j.parent == b && j.child == a);
+      EXPECT_TRUE(joined) << a << " and " << b << " are not joined by a joint";
     }
+    // Fresh configurations: another generator and seed than the sampling's.
+    std::mt19937 rng(20261202);
+    int64_t tested = 0;
+    for (int config = 0; config < 3000; ++config) {
+      auto poses = linkPoses(robot, randomConfiguration(robot, rng));
+      ASSERT_TRUE(poses.ok()) << poses.error().message;
+      for (const auto& [a, b] : never) {
+        ASSERT_TRUE(meshes.count(a) && meshes.count(b)) << a << ", " << b;
+        const fcl::CollisionObjectd oa(meshes[a], fcl::Transform3d(poses->at(a).matrix()));
+        const fcl::CollisionObjectd ob(meshes[b], fcl::Transform3d(poses->at(b).matrix()));
+        ++tested;
+        ASSERT_FALSE(touch(oa, ob)) << a << " and " << b << " (\"Never\") collide in FCL";
+      }
+    }
+    EXPECT_EQ(tested, 3000 * static_cast<int64_t>(never.size()));
   }
-  EXPECT_EQ(tested, 3000 * static_cast<int64_t>(never.size()));
 }
 
 }  // namespace
