@@ -73,6 +73,7 @@ __all__ = [
     "split_budget", "curve_volume", "Animation", "AnimateResult", "mean_value_coordinates",
     "mean_value_weights", "point_bone_weights", "skin_points", "load_animation", "animate",
     "RobotLinkFit", "RobotFitResult", "fit_robot", "robot_contacts", "trajectory_contacts",
+    "sample_self_collisions",
 ]
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -519,3 +520,28 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
                          float(wrap_offset), _size_text(fill_openings))
     d["links"] = [RobotLinkFit(**lf) for lf in d["links"]]
     return RobotFitResult(**d)
+
+
+def sample_self_collisions(robot: Robot, spheres: Any, *, collision_samples: int = 0,
+                           collision_seed: int = 1, always_fraction: float = 0.95,
+                           default_pose: Optional[Dict[str, float]] = None,
+                           collision_check: str = "spheres") -> Dict[str, Any]:
+    """The link pairs a planner may skip, found as MoveIt's setup assistant finds them and as
+    ``sphereset robot`` does (the same library call, options and defaults): ``collision_samples``
+    random configurations within the joint limits (0: 2000 per movable joint that is not a
+    mimic, from 1000 to 100000) seeded by ``collision_seed``; a pair gets the first reason that
+    applies: "Adjacent" (joined by a joint, or through links without spheres), "Default" (in
+    collision at ``default_pose`` {joint: value}, joints not given at 0), "Always" (in collision
+    in at least ``always_fraction`` of the samples), "Never" (in none). ``spheres`` is
+    {link: (N, 4)} in the link frames; ``collision_check`` "meshes" measures on the link
+    solids (each link's geometry made a solid as the robot command makes it) instead of the
+    spheres. Returns {"disabled": [(link1, link2, reason, collisions), ...], "samples",
+    "check", "pairs", "enabled", "adjacent", "default", "always", "never", "seconds"}.
+    Raises InvalidArgumentError for an option outside its row or an unknown joint.
+    """
+    # The keywords of the library's sampling table (robot_collision.hpp), checked there.
+    options = dict(collision_samples=collision_samples, collision_seed=collision_seed,
+                   always_fraction=always_fraction, default_pose=dict(default_pose or {}),
+                   collision_check=collision_check)
+    return _core._sample_self_collisions(robot, spheres, options)
+

@@ -1,11 +1,13 @@
 // Binding of the whole-robot fit (robot_fit.hpp: fitRobot), what `sphereset robot` runs: every
-// link of a URDF fitted, a budget split over the links, per-link certificates.
+// link of a URDF fitted, a budget split over the links, per-link certificates; and the
+// self-collision pairs by sampling the joint space (robot_collision.hpp: sampleSelfCollisions).
 #include <cmath>
 #include <map>
 #include <memory>
 
 #include "solid.hpp"
 #include "sphereset/robot.hpp"
+#include "sphereset/robot_collision.hpp"
 #include "sphereset/robot_fit.hpp"
 
 namespace sphereset::python {
@@ -16,6 +18,40 @@ py::dict linkDict(const RobotLinkFit& j) {
   d["spheres"] = spheresToArray(j.spheres);
   d["repair"] = j.fitted ? py::object(repairDict(j.repair)) : py::object(py::none());
   d["eval"] = j.fitted ? py::object(fieldsDict(evalResultFields(j.eval))) : py::object(py::none());
+  return d;
+}
+
+// The link solids the mesh check needs, made as the robot command makes them (the repair of
+// this build, default options); links of sphere primitives alone keep those.
+std::vector<CollisionSolid> robotSolids(const Robot& robot) {
+  const RepairOptions ro = repairOptions("auto", -1.0, true, 0.0, 0.0, "0");
+  std::vector<CollisionSolid> out;
+  for (const RobotLink& l : robot.links) {
+    if (l.geometry.empty()) continue;
+    CollisionSolid s{l.name, {}, linkSpheres(l)};
+    if (s.primitives.size() < l.geometry.size())
+      s.mesh = unwrap(linkSolid(l, ro, robot.name + ": link '" + l.name + "'")).repair.solid;
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+py::dict collisionDict(const CollisionMatrix& m) {
+  py::list disabled;
+  for (const DisabledPair& p : m.disabled)
+    disabled.append(py::make_tuple(text(p.link1), text(p.link2),
+                                   std::string(disableReasonName(p.reason)), p.collisions));
+  py::dict d;
+  d["samples"] = m.samples;
+  d["check"] = m.check == CollisionCheck::kMeshes ? "meshes" : "spheres";
+  d["pairs"] = m.pairs;
+  d["enabled"] = m.enabled;
+  d["adjacent"] = m.count(DisableReason::kAdjacent);
+  d["default"] = m.count(DisableReason::kDefault);
+  d["always"] = m.count(DisableReason::kAlways);
+  d["never"] = m.count(DisableReason::kNever);
+  d["seconds"] = m.seconds;
+  d["disabled"] = disabled;
   return d;
 }
 
@@ -74,6 +110,27 @@ void bindRobotFit(py::module_& m) {
       py::arg("fill_cavities"), py::arg("wrap_alpha"), py::arg("wrap_offset"),
       py::arg("fill_openings"));
   m.def("_robot_option_table", [] { return optionTable(robotFitOptionTable()); });
+  m.def(
+      "_sample_self_collisions",
+      [](const std::shared_ptr<Robot>& robot, const py::object& spheres, const py::dict& options) {
+        // The rows of the sampling table, parsed and checked by the library (its messages).
+        CollisionSamplingOptions co;
+        setOptions(options, [&](const std::string& name, const std::string& text) {
+          return setCollisionSamplingOption(&co, name, text);
+        });
+        const std::vector<LinkSpheres> links = linkSpheresFrom(spheres);
+        const std::vector<CollisionSolid> solids = co.check == CollisionCheck::kMeshes
+                                                       ? robotSolids(*robot)
+                                                       : std::vector<CollisionSolid>{};
+        Expected<CollisionMatrix> matrix = CollisionMatrix{};
+        {
+          py::gil_scoped_release release;
+          matrix = sampleSelfCollisions(*robot, links, co, solids);
+        }
+        return collisionDict(unwrap(std::move(matrix)));
+      },
+      py::arg("robot"), py::arg("spheres"), py::arg("options"));
+  m.def("_collision_option_table", [] { return optionTable(collisionSamplingOptionTable()); });
 }
 
 }  // namespace sphereset::python

@@ -168,6 +168,29 @@ def test_robot(tmp_path):
     assert sum(counts) == 6 and counts[0] > counts[1]
 
 
+def test_sample_self_collisions_same_pairs_as_cli(cli, tmp_path):
+    urdf = DATA / "robot" / "three_link.urdf"
+    out = tmp_path / "robot.json"
+    cli("robot", urdf, "--package-path", DATA / "robot", "--quality", "fast",
+        "--collision-samples", 500, "--collision-seed", 4, "-o", out, "-q")
+    ref = json.loads(out.read_text())
+    r = ss.load_robot(urdf, package_paths=[str(DATA / "robot")])
+    links = {lf["link"]: np.array(lf["spheres"]) for lf in ref["links"]}
+    got = ss.sample_self_collisions(r, links, collision_samples=500, collision_seed=4)
+    want = ref["self_collision"]
+    for key in ("samples", "check", "pairs", "enabled", "adjacent", "default", "always", "never"):
+        assert got[key] == want[key], key
+    assert got["disabled"] == [(p["link1"], p["link2"], p["reason"], p["collisions"])
+                               for p in want["disabled"]]
+    assert got["adjacent"] == 3 and got["samples"] == 500
+    meshes = ss.sample_self_collisions(r, links, collision_samples=500, collision_check="meshes")
+    assert meshes["check"] == "meshes" and meshes["adjacent"] == 3
+    with pytest.raises(ss.InvalidArgumentError, match="always_fraction '0.1'"):
+        ss.sample_self_collisions(r, links, always_fraction=0.1)
+    with pytest.raises(ss.InvalidArgumentError, match="default_pose: no joint 'elbow'"):
+        ss.sample_self_collisions(r, links, default_pose={"elbow": 0.1})
+
+
 def test_fit_robot_same_spheres_as_cli(cli, tmp_path):
     urdf = DATA / "robot" / "three_link.urdf"
     out = tmp_path / "robot.json"

@@ -18,6 +18,7 @@ DOORS = [
     (ss.fit_robot, core._fit_option_table,
      ("n", "points", "iterations", "restarts", "decimation", "padding", "optimizer", "init",
       "method")),
+    (ss.sample_self_collisions, core._collision_option_table, ()),
     (ss.animate, core._animate_option_table, ()),
     (ss.load_animation, core._skinned_load_option_table, ()),
 ]
