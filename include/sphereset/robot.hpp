@@ -116,12 +116,13 @@ Expected<std::map<std::string, Eigen::Isometry3d>> linkPoses(
     const Robot& robot, const std::map<std::string, double>& joint_values = {});
 
 // The pairs for `robot` with the spheres of its links (in each link's frame) placed by
-// linkPoses(robot, joint_values). Two links overlap when some sphere of one and some sphere of
-// the other have |ca - cb| < ra + rb (touching is not overlapping). Links without spheres, and
-// entries of `spheres` naming no link of the robot or a link the root does not reach, take no
-// part in overlaps; entries naming the same link twice count as one set. Adjacent pairs come
-// from every joint between two links of the robot, whatever their spheres.
-// Errors: those of jointState.
+// linkPoses(robot, joint_values): one pose (the pairs over the whole joint space, as planners'
+// setup tools find them, are sampleSelfCollisions', robot_collision.hpp). Two links overlap when
+// some sphere of one and some sphere of the other have |ca - cb| < ra + rb (touching is not
+// overlapping). Links without spheres, and entries of `spheres` naming no link of the robot or a
+// link the root does not reach, take no part in overlaps; entries naming the same link twice count
+// as one set. Adjacent pairs come from every joint between two links of the robot, whatever their
+// spheres. Errors: those of jointState.
 Expected<SelfCollisionPairs> selfCollisionPairs(
     const Robot& robot, const std::vector<LinkSpheres>& spheres,
     const std::map<std::string, double>& joint_values = {});
