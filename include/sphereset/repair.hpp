@@ -67,8 +67,10 @@ struct RepairOptions {
   // openings narrower than this length are closed and the hollow behind them counts as inside
   // (a wrap from outside whose carving ball is this wide). 0: off, the walls are the solid;
   // kAutomatic (options.hpp): the smallest extent of the walls' bounding box, so a casing or
-  // tube is closed and a shape wide open on a side is not. The original triangles and the walls
-  // stay in the result, for the certificate and for E_r against the walls.
+  // tube is closed and a shape wide open on a side is not; an envelope that then encloses no
+  // hollow (less than 1.5 times the walls' volume: it would only round concavities) is dropped
+  // and the walls stay the solid (RepairResult::fill_openings 0). The original triangles and the
+  // walls stay in the result, for the certificate and for E_r against the walls.
   double fill_openings = 0.0;
   // The union and the wrapping; when empty, meshes that need them are refused.
   SolidOperations operations;

@@ -31,6 +31,13 @@ namespace {
 // its ends are closed; a tray wide open on top keeps its opening), at least this fraction of
 // the diagonal (a thin plate's thickness would ask for a very fine wrap and closes nothing).
 constexpr double kEnvelopeMinSizeRel = 1.0 / 20.0;
+// With the automatic size, the envelope is kept only when it encloses a hollow: its volume at
+// least this many times the walls'. A casing's or a tube's envelope is 2 to 2.6 times its
+// walls (the Kinova Gen3's shoulder, half arm and forearm; a tube whose wall is a fifth of its
+// radius: 2.8), while one that only rounds the walls' concavities adds 5 to 35 % (its base,
+// wrists and second half arm), which a planner gains nothing from and the spheres would have to
+// cover; then the walls are the solid. A size the user gives is always applied.
+constexpr double kHollowVolumeRatio = 1.5;
 
 }  // namespace
 
@@ -62,13 +69,20 @@ Status closeOpenings(const RepairOptions& o, const std::string& name, RepairResu
   auto w = o.operations.wrap(walls, alpha, offset);
   if (!w) return Error{w.error().code, name + ": " + w.error().message};
   const double walls_volume = signedVolume(walls);
+  const double ratio = signedVolume(*w) / walls_volume;
+  if (automatic && ratio < kHollowVolumeRatio) {
+    res->notes.push_back("no hollow behind openings narrower than " + numberFormat("%.3g", size) +
+                         " (the bounding box's smallest extent): their envelope would be " +
+                         numberFormat("%.3g", ratio) + " times the walls' volume, below " +
+                         numberFormat("%.3g", kHollowVolumeRatio) + "; the walls are the solid");
+    return {};
+  }
   res->walls = std::move(res->solid);
   res->solid = canonicalOrder(std::move(w).value());
   res->fill_openings = size;
   res->notes.push_back("openings narrower than " + numberFormat("%.3g", size) +
                        (automatic ? " (the bounding box's smallest extent)" : "") +
-                       " closed: the envelope's volume is " +
-                       numberFormat("%.3g", signedVolume(res->solid) / walls_volume) +
+                       " closed: the envelope's volume is " + numberFormat("%.3g", ratio) +
                        " times the walls'");
   return {};
 }

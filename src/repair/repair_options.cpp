@@ -52,7 +52,8 @@ constexpr OptionSpec kRepairOptions[] = {
      {},
      "0",
      "Envelope: close openings narrower than this length and count the hollow behind them as "
-     "inside (auto: the smallest extent of the bounding box; 0: off, the walls as they are)",
+     "inside (auto: the smallest extent of the bounding box, kept only if it encloses a hollow; "
+     "0: off, the walls as they are)",
      nullptr,
      "auto"},
 };

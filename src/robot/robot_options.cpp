@@ -60,8 +60,8 @@ constexpr OptionSpec kRobotOptions[] = {
      "LINK"},
     {"link_solid", "--link-solid", OptionType::kChoice, 0, 0, kLinkSolids, "envelope",
      "envelope: each link's walls with the hollow behind openings up to fill_openings (auto: "
-     "the link's smallest extent) inside, what a planner treats as the link; walls: the walls "
-     "alone"},
+     "the link's smallest extent, where that encloses a hollow) inside, what a planner treats "
+     "as the link; walls: the walls alone"},
 };
 
 }  // namespace

@@ -188,10 +188,14 @@ cli_test(fit_cavity_kept 0 ARGS fit ${work}/cavity.off -n 6 -o ${work}/cavity.tx
 # with walls.
 if(SPHERESET_WITH_REPAIR)
   cli_test(fit_fill_openings 0 ARGS fit ${data}/open_box.off -n 4 -o ${work}/envelope.txt
-           --fill-openings auto --quality fast --json -q FILE ${work}/envelope.txt SPHERES 4
-           STDOUT "\"er_walls\":[0-9.]+.*\"fill_openings\":1.0.*\"solid\":\"envelope\"")
+           --fill-openings 0.5 --quality fast --json -q FILE ${work}/envelope.txt SPHERES 4
+           STDOUT "\"er_walls\":[0-9.]+.*\"fill_openings\":0.5.*\"solid\":\"envelope\"")
+  # The capped box encloses no hollow: the automatic size keeps the walls.
+  cli_test(fit_fill_openings_auto 0 ARGS fit ${data}/open_box.off -n 4 -o ${work}/envelope_auto.txt
+           --fill-openings auto --quality fast --json -q
+           STDOUT "\"fill_openings\":0.0.*no hollow behind openings narrower than 1.*\"solid\":\"walls\"")
   cli_test(eval_fill_openings 0 ARGS eval ${data}/open_box.off ${work}/envelope.txt
-           --fill-openings auto --samples 2000 --segments 10 --json
+           --fill-openings 0.5 --samples 2000 --segments 10 --json
            STDOUT "\"er_walls\":[0-9.]+.*\"original_covered\":true")
   set_tests_properties(cli.eval_fill_openings PROPERTIES DEPENDS cli.fit_fill_openings)
 endif()
@@ -279,7 +283,7 @@ set_tests_properties(cli.robot_render PROPERTIES DEPENDS cli.robot_budget)
 cli_test(robot_summary 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres base_link=2 --link-spheres link1=2 --link-spheres link2=3 --quality fast
          -o ${work}/three_summary.json
-         STDERR "link +triangles +repair +openings.*link2 +300 +none +0.152 +3 .*tool: no <collision> geometry, its <visual> geometry was used")
+         STDERR "link +triangles +repair +openings.*link2 +300 +none +0 +3 .*tool: no <collision> geometry, its <visual> geometry was used")
 # The same robot file on one thread and on two (links are prepared and fitted in parallel).
 cli_test(robot_one_thread 0 ARGS --threads 1 robot ${robot}/three_link.urdf --package-path
          ${robot} --budget 12 --quality fast -o ${work}/three_t1.yml -q FILE ${work}/three_t1.yml)

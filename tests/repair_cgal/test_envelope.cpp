@@ -134,7 +134,8 @@ TEST(Envelope, CasingWithAWindowIsFilled) {
 }
 
 TEST(Envelope, WideOpeningStaysOpenAndSmallSizeKeepsTheCup) {
-  // A tray 0.3 deep: the automatic size is its depth, and its 0.9-wide top stays open.
+  // A tray 0.3 deep: the automatic size is its depth, its 0.9-wide top stays open, and with no
+  // hollow enclosed the walls stay the solid.
   auto tray = repairMesh(boxes({{{0, 0, 0}, {1, 1, 0.05}},
                                 {{0, 0, 0}, {0.05, 1, 0.3}},
                                 {{0.95, 0, 0}, {1, 1, 0.3}},
@@ -142,12 +143,37 @@ TEST(Envelope, WideOpeningStaysOpenAndSmallSizeKeepsTheCup) {
                                 {{0, 0.95, 0}, {1, 1, 0.3}}}),
                          envelopeOptions(kAutomatic), "tray");
   ASSERT_TRUE(tray.ok()) << tray.error().message;
-  EXPECT_DOUBLE_EQ(tray->fill_openings, 0.3);
+  EXPECT_EQ(tray->fill_openings, 0.0);
   EXPECT_FALSE(inside(tray->solid, Vec3(0.5, 0.5, 0.2)));
+  auto tray_given = repairMesh(tray->original, envelopeOptions(0.3), "tray");
+  ASSERT_TRUE(tray_given.ok()) << tray_given.error().message;
+  EXPECT_EQ(tray_given->fill_openings, 0.3);
+  EXPECT_FALSE(inside(tray_given->solid, Vec3(0.5, 0.5, 0.2)));
   // The cup's 0.8-wide opening stays open for a size of 0.3.
   auto cup_open = repairMesh(cup(0.1), envelopeOptions(0.3), "cup");
   ASSERT_TRUE(cup_open.ok()) << cup_open.error().message;
   EXPECT_FALSE(inside(cup_open->solid, Vec3(0.5, 0.5, 0.5)));
+}
+
+TEST(Envelope, AutomaticSizeKeepsTheWallsWhenThereIsNoHollow) {
+  // An L-shaped solid: its envelope only rounds the inner corner (about 1.1 times its volume),
+  // so the automatic size keeps the walls; a size given is applied.
+  const Mesh ell = boxes({{{0, 0, 0}, {2, 1, 1}}, {{0, 0, 0}, {1, 2, 1}}});
+  auto walls = repairMesh(ell, envelopeOptions(kAutomatic), "ell");
+  ASSERT_TRUE(walls.ok()) << walls.error().message;
+  EXPECT_EQ(walls->fill_openings, 0.0);
+  EXPECT_TRUE(walls->walls.triangles.empty());
+  EXPECT_NEAR(signedVolume(walls->solid), 3.0, 1e-9);
+  EXPECT_EQ(envelopeWalls(*walls), nullptr);
+  ASSERT_FALSE(walls->notes.empty());
+  EXPECT_NE(walls->notes.back().find("no hollow behind openings narrower than 1"),
+            std::string::npos)
+      << walls->notes.back();
+  auto given = repairMesh(ell, envelopeOptions(1.0), "ell");
+  ASSERT_TRUE(given.ok()) << given.error().message;
+  EXPECT_EQ(given->fill_openings, 1.0);
+  EXPECT_GT(signedVolume(given->solid), 3.0);
+  EXPECT_LT(signedVolume(given->solid), 1.5 * 3.0);
 }
 
 TEST(Envelope, FitOfTheEnvelopeCoversTheOriginalAndReportsEAgainstTheWalls) {
