@@ -239,11 +239,40 @@ int runRobot(const RobotArgs& a) {
       co.check == CollisionCheck::kMeshes ? fitSolids(*robot, *fit) : std::vector<CollisionSolid>{};
   auto matrix = sampleSelfCollisions(*robot, out, co, solids);
   if (!matrix) return fail(matrix.error());
-  for (size_t i = 0; i < a.outputs.size(); ++i)
+  // All or nothing: every output written (and checked by its writer) beside its place under a
+  // temporary name (ending as it does: writers go by the ending), then each renamed into place; a
+  // refusal leaves none of them. (A rename in the folder just written to is not expected to fail;
+  // if one does, the outputs renamed before it stay.)
+  std::vector<std::string> parts;
+  auto dropParts = [&] {
+    std::error_code ec;
+    for (const std::string& p : parts) std::filesystem::remove(p, ec);
+  };
+  for (size_t i = 0; i < a.outputs.size(); ++i) {
+    const std::filesystem::path target(a.outputs[i]);
+    parts.push_back((target.parent_path() /
+                     ("." + target.filename().string() + ".partial" + target.extension().string()))
+                        .string());
     if (Status st =
-            writeRobotOutput(a, a.outputs[i], (*formats)[i], *robot, *fit, fo, out, *matrix, co);
-        !st)
-      return fail(st.error());
+            writeRobotOutput(a, parts.back(), (*formats)[i], *robot, *fit, fo, out, *matrix, co);
+        !st) {
+      dropParts();
+      // The writer names the temporary file; the user knows the output's name.
+      std::string message = st.error().message;
+      for (size_t at = message.find(parts.back()); at != std::string::npos;
+           at = message.find(parts.back(), at + a.outputs[i].size()))
+        message.replace(at, parts.back().size(), a.outputs[i]);
+      return fail(Error{st.error().code, message});
+    }
+  }
+  for (size_t i = 0; i < a.outputs.size(); ++i) {
+    std::error_code ec;
+    std::filesystem::rename(parts[i], a.outputs[i], ec);
+    if (ec) {
+      dropParts();
+      return fail(Error{ErrorCode::kWriteFailed, a.outputs[i] + ": cannot write: " + ec.message()});
+    }
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (a.json) std::cout << jsonText(robotJson(a, *robot, *fit, fo, *matrix)) << '\n';
