@@ -14,6 +14,7 @@
 #include "sphereset/evaluate.hpp"
 #include "sphereset/load.hpp"
 #include "sphereset/robot.hpp"
+#include "sphereset/robot_fit.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/sphere_tree.hpp"
@@ -26,6 +27,7 @@ struct EvalArgs {
   std::string spheres_path, link;
   std::vector<std::string> package_paths;  // MESH a URDF: where its package:// meshes are
   TableArgs eval;                          // the rows of evalOptionTable()
+  TableArgs robot;                         // the robot table's link_solid row
   bool json = false;
 };
 
@@ -87,7 +89,13 @@ int runEval(EvalArgs a) {
                         a.mesh.path + ": no link '" + a.link + "' in " + robot->name});
     auto repair = repairOptions(a.mesh);
     if (!repair) return fail(repair.error());
-    m = linkSolid(*link, *repair, a.mesh.path + ": link '" + a.link + "'");
+    // The link's solid as the robot command makes it: its --link-solid (the robot table's row).
+    RobotFitOptions ro;
+    for (const auto& [name, text] : a.robot.given())
+      if (Status st = setRobotFitOption(&ro, name, text); !st) return fail(st.error());
+    auto link_repair = linkRepairOptions(*repair, ro.link_solid);
+    if (!link_repair) return fail(link_repair.error());
+    m = linkSolid(*link, *link_repair, a.mesh.path + ": link '" + a.link + "'");
   } else {
     m = loadSolid(a.mesh);
   }
@@ -171,6 +179,9 @@ Command registerEval(CLI::App& app) {
                   "With a URDF as MESH: folder searched for package://NAME/ paths (repeatable)");
   cmd->add_flag("--json", a->json, "Print one JSON object");
   addTableOptions(cmd, &a->eval, evalOptionTable());
+  // With a URDF as MESH: the link's solid, as `sphereset robot` takes it.
+  addTableOptions(cmd, &a->robot, robotFitOptionTable(),
+                  {"budget", "default_link_spheres", "link_spheres", "padding", "link_padding"});
   return {cmd, [a] { return runEval(*a); }};
 }
 

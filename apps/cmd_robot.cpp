@@ -160,24 +160,6 @@ Expected<std::vector<RobotOutput>> checkOutputs(const RobotArgs& a) {
   return formats;
 }
 
-// The link solids of the fit for the mesh check: each fitted link's repaired mesh (its walls
-// when the fit closed its openings) and its exact sphere primitives; links of primitives alone
-// with those.
-std::vector<CollisionSolid> fitSolids(const Robot& robot, const RobotFitResult& fit) {
-  std::vector<CollisionSolid> out;
-  for (const RobotLinkFit& j : fit.links) {
-    if (j.skipped) continue;
-    CollisionSolid s;
-    s.link = j.link;
-    // The walls: the link's own solid, not the envelope that closes its openings.
-    if (j.fitted) s.mesh = j.repair.walls.triangles.empty() ? j.repair.solid : j.repair.walls;
-    for (const RobotLink& l : robot.links)
-      if (l.name == j.link) s.primitives = linkSpheres(l);
-    out.push_back(std::move(s));
-  }
-  return out;
-}
-
 Status writeRobotOutput(const RobotArgs& a, const std::string& path, RobotOutput format,
                         const Robot& robot, const RobotFitResult& fit, const RobotFitOptions& fo,
                         const std::vector<LinkSpheres>& spheres, const CollisionMatrix& matrix,
@@ -235,8 +217,9 @@ int runRobot(const RobotArgs& a) {
   std::vector<LinkSpheres> out;
   for (const RobotLinkFit& j : fit->links)
     if (!j.skipped) out.push_back({j.link, j.spheres});
-  const std::vector<CollisionSolid> solids =
-      co.check == CollisionCheck::kMeshes ? fitSolids(*robot, *fit) : std::vector<CollisionSolid>{};
+  const std::vector<CollisionSolid> solids = co.check == CollisionCheck::kMeshes
+                                                 ? fitCollisionSolids(*robot, *fit)
+                                                 : std::vector<CollisionSolid>{};
   auto matrix = sampleSelfCollisions(*robot, out, co, solids);
   if (!matrix) return fail(matrix.error());
   // All or nothing: every output written (and checked by its writer) beside its place under a

@@ -68,13 +68,9 @@ int main(int argc, char** argv) {
 #ifdef SPHERESET_BENCH_REPAIR
     ro.operations = cgalSolidOperations();
 #endif
-    for (const RobotLink& l : robot->links) {
-      if (l.geometry.empty()) continue;
-      CollisionSolid s{l.name, {}, linkSpheres(l)};
-      auto solid = linkSolid(l, ro, l.name);
-      if (solid) s.mesh = solid->repair.solid;
-      solids.push_back(std::move(s));
-    }
+    auto made = robotCollisionSolids(*robot, ro);
+    if (!made) return failed(made.error().message);
+    solids = std::move(made).value();
   }
   const double solids_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

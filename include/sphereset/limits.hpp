@@ -43,8 +43,12 @@ inline constexpr int kMaxInteriorDepth = 12;  // octree levels below the 8³ gri
 inline constexpr int64_t kMaxFrames = 1000000;
 inline constexpr int64_t kMaxBones = 100000;
 
-// Robots: nesting depth of a URDF's XML elements.
+// Robots: nesting depth of a URDF's XML elements; obstacles (points or spheres) of one posed
+// query, so that a hierarchy over them (branching 8, 7 levels below the root) stays within
+// SphereTree::kMaxSlots; waypoints of one trajectory.
 inline constexpr int kMaxXmlDepth = 256;
+inline constexpr int64_t kMaxObstacles = int64_t{1} << 21;
+inline constexpr int64_t kMaxWaypoints = 1000000;
 
 // kInvalidArgument "`what` must be from `lo` to `hi` (got `value`)" when value is outside
 // [lo, hi] or not a number; OK otherwise. The one wording of a range error.

@@ -14,7 +14,9 @@
 
 #include "sphereset/mesh.hpp"
 #include "sphereset/options.hpp"
+#include "sphereset/repair.hpp"
 #include "sphereset/robot.hpp"
+#include "sphereset/robot_fit.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/status.hpp"
 
@@ -70,6 +72,15 @@ struct CollisionSolid {
   Mesh mesh;
   std::vector<Sphere> primitives;
 };
+
+// The solids of every link with geometry: its walls (linkSolid with `repair`, whose
+// fill_openings is ignored: links collide where their walls meet, never their envelopes) and its
+// sphere primitives; a link of primitives alone has no mesh. Errors: those of linkSolid.
+Expected<std::vector<CollisionSolid>> robotCollisionSolids(const Robot& robot,
+                                                           const RepairOptions& repair);
+// The same from a robot fit, without repairing again: each link not skipped, its walls as the
+// fit made them (RepairResult::walls when its solid is an envelope, else ::solid).
+std::vector<CollisionSolid> fitCollisionSolids(const Robot& robot, const RobotFitResult& fit);
 
 // One pair left out of self-collision checking; link1 comes before link2 in the robot's order.
 struct DisabledPair {

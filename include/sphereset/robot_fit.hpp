@@ -104,6 +104,11 @@ struct RobotFitOptions {
 // entry); checkRobotFitOptions checks a struct against the rows with the same messages. (quality
 // and seed are the fit table's rows, fit.hpp; the repair's are repair.hpp's.)
 std::span<const OptionSpec> robotFitOptionTable();
+// The repair options a link's geometry is made a solid with under `solid`: kEnvelope with
+// repair.fill_openings 0 gives kAutomatic; kWalls refuses a fill_openings other than 0
+// (kInvalidArgument). fitRobot and `sphereset eval ROBOT.urdf --link` use it, so a link is
+// measured as the robot command fits it.
+Expected<RepairOptions> linkRepairOptions(const RepairOptions& repair, LinkSolid solid);
 Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std::string& text);
 Status checkRobotFitOptions(const RobotFitOptions& o);
 

@@ -23,10 +23,6 @@
 
 namespace sphereset {
 
-// Obstacles at most: a hierarchy over them (branching 8, 7 levels below the root) stays within
-// SphereTree::kMaxSlots.
-inline constexpr int64_t kMaxObstacles = int64_t{1} << 21;
-
 // Obstacles prepared for many queries: the spheres as given and a sphere tree over them, built
 // by median splits (fast for millions of points; parents are minimal enclosing balls).
 struct Obstacles {
@@ -36,8 +32,8 @@ struct Obstacles {
 };
 
 // Checks and prepares obstacle spheres / points (radius 0). `name` starts messages (a file
-// name). Errors (kInvalidData): none given, more than kMaxObstacles, a coordinate that is NaN,
-// infinite or beyond limits::kMaxCoordinate, a radius that is negative or not finite; the
+// name). Errors (kInvalidData): none given, more than limits::kMaxObstacles, a coordinate that is
+// NaN, infinite or beyond limits::kMaxCoordinate, a radius that is negative or not finite; the
 // message names the obstacle's position ("cloud.ply: point 17 (nan 0 0): ...").
 Expected<Obstacles> makeObstacles(std::vector<Sphere> spheres, const std::string& name);
 Expected<Obstacles> makeObstacles(const std::vector<Vec3>& points, const std::string& name);
@@ -128,8 +124,7 @@ Expected<TrajectoryContacts> trajectoryContacts(
 // Cells are trimmed of spaces; blank lines are skipped. Errors, naming the file and line
 // ("traj.csv:4: ..."): kUnreadable (missing), kInvalidData for an empty file, a header cell
 // that is empty, not a joint of the robot or repeated, a row with another number of cells than
-// the header, a cell that is not a finite number, no waypoints, more than kMaxWaypoints.
-inline constexpr int64_t kMaxWaypoints = 1000000;
+// the header, a cell that is not a finite number, no waypoints, more than limits::kMaxWaypoints.
 Expected<std::vector<std::map<std::string, double>>> readTrajectory(const std::string& path,
                                                                     const Robot& robot);
 

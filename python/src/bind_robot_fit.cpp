@@ -24,16 +24,7 @@ py::dict linkDict(const RobotLinkFit& j) {
 // The link solids the mesh check needs, made as the robot command makes them (the repair of
 // this build, default options); links of sphere primitives alone keep those.
 std::vector<CollisionSolid> robotSolids(const Robot& robot) {
-  const RepairOptions ro = repairOptions("auto", -1.0, true, 0.0, 0.0, "0");
-  std::vector<CollisionSolid> out;
-  for (const RobotLink& l : robot.links) {
-    if (l.geometry.empty()) continue;
-    CollisionSolid s{l.name, {}, linkSpheres(l)};
-    if (s.primitives.size() < l.geometry.size())
-      s.mesh = unwrap(linkSolid(l, ro, robot.name + ": link '" + l.name + "'")).repair.solid;
-    out.push_back(std::move(s));
-  }
-  return out;
+  return unwrap(robotCollisionSolids(robot, repairOptions("auto", -1.0, true, 0.0, 0.0, "0")));
 }
 
 py::dict collisionDict(const CollisionMatrix& m) {

@@ -108,8 +108,7 @@ Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& measured
     count[i] = fixed[i] >= 0 ? fixed[i] : 1;
     used += count[i];
   }
-  if (used > budget)
-    return budgetError(budget, used);
+  if (used > budget) return budgetError(budget, used);
   for (; used < budget; ++used) {
     size_t best = n;
     double best_gain = -1.0;
@@ -133,8 +132,7 @@ Expected<std::vector<int>> evenSplit(const std::vector<int>& fixed, int budget) 
     free_links += f < 0;
     used += f >= 0 ? f : 1;
   }
-  if (used > budget)
-    return budgetError(budget, used);
+  if (used > budget) return budgetError(budget, used);
   std::vector<int> count(fixed.size(), 0);
   const int spare = budget - (used - free_links);  // spheres for the free links
   int k = 0;

@@ -102,10 +102,8 @@ Expected<std::vector<Job>> prepareLinks(const RobotFitOptions& o, const Robot& r
     if (!fitted) return;  // sphere primitives only
     if (auto it = o.link_spheres.find(link.name); it != o.link_spheres.end() && it->second == 0)
       return;  // skipped: not worth repairing
-    RepairOptions ro = o.repair;
-    if (o.link_solid == LinkSolid::kEnvelope && ro.fill_openings == 0.0)
-      ro.fill_openings = kAutomatic;
-    auto solid = linkSolid(link, ro, name);
+    // The options were checked by fitRobot (checkRobotFitOptions).
+    auto solid = linkSolid(link, *linkRepairOptions(o.repair, o.link_solid), name);
     if (!solid) {
       status[i] = solid.error();
       return;

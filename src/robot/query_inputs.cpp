@@ -145,8 +145,8 @@ Expected<std::vector<std::map<std::string, double>>> readTrajectory(const std::s
     if (cells.size() != header.size())
       return bad(std::to_string(cells.size()) + " values, the header names " +
                  std::to_string(header.size()) + " joints");
-    if (static_cast<int64_t>(out.size()) >= kMaxWaypoints)
-      return bad("more than " + std::to_string(kMaxWaypoints) + " waypoints");
+    if (static_cast<int64_t>(out.size()) >= limits::kMaxWaypoints)
+      return bad("more than " + std::to_string(limits::kMaxWaypoints) + " waypoints");
     std::map<std::string, double> row;
     for (size_t k = 0; k < cells.size(); ++k) {
       double v = 0.0;

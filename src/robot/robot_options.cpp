@@ -96,13 +96,20 @@ Status checkRobotFitOptions(const RobotFitOptions& o) {
   for (const auto& [link, padding] : o.link_padding)
     if (Status st = checkTableValue(kRobotOptions, "robot", "link_padding", padding, link); !st)
       return st;
-  if (o.link_solid == LinkSolid::kWalls && o.repair.fill_openings != 0.0)
+  if (auto ro = linkRepairOptions(o.repair, o.link_solid); !ro) return ro.error();
+  return {};
+}
+
+Expected<RepairOptions> linkRepairOptions(const RepairOptions& repair, LinkSolid solid) {
+  RepairOptions out = repair;
+  if (solid == LinkSolid::kWalls && repair.fill_openings != 0.0)
     return Error{ErrorCode::kInvalidArgument,
                  "link_solid walls: fill_openings " +
-                     (o.repair.fill_openings == kAutomatic ? std::string("auto")
-                                                           : optionText(o.repair.fill_openings)) +
+                     (repair.fill_openings == kAutomatic ? std::string("auto")
+                                                         : optionText(repair.fill_openings)) +
                      " asks for an envelope; give link_solid envelope or no fill_openings"};
-  return {};
+  if (solid == LinkSolid::kEnvelope && repair.fill_openings == 0.0) out.fill_openings = kAutomatic;
+  return out;
 }
 
 }  // namespace sphereset

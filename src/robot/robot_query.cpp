@@ -58,9 +58,9 @@ Expected<PreparedLinks> checkedLinkTrees(const Robot& robot,
     for (size_t i = 0; i < ls.spheres.size(); ++i)
       if (Status st = checkSphereValues(what + " sphere " + std::to_string(i), ls.spheres[i]); !st)
         return st.error();
-    if (static_cast<int64_t>(ls.spheres.size()) > kMaxObstacles)
+    if (static_cast<int64_t>(ls.spheres.size()) > limits::kMaxObstacles)
       return Error{ErrorCode::kInvalidData,
-                   what + ": more than " + std::to_string(kMaxObstacles) + " spheres"};
+                   what + ": more than " + std::to_string(limits::kMaxObstacles) + " spheres"};
     out.names.push_back(ls.link);
     out.trees.push_back(ls.spheres.empty() ? detail::IndexedTree{}
                                            : detail::medianTree(ls.spheres));
@@ -128,10 +128,10 @@ Status checkPrepared(const Obstacles& o) {
 
 Expected<Obstacles> makeObstacles(std::vector<Sphere> spheres, const std::string& name) {
   if (spheres.empty()) return Error{ErrorCode::kInvalidData, name + ": no obstacles"};
-  if (static_cast<int64_t>(spheres.size()) > kMaxObstacles)
+  if (static_cast<int64_t>(spheres.size()) > limits::kMaxObstacles)
     return Error{ErrorCode::kInvalidData, name + ": " + std::to_string(spheres.size()) +
                                               " obstacles, at most " +
-                                              std::to_string(kMaxObstacles)};
+                                              std::to_string(limits::kMaxObstacles)};
   for (size_t i = 0; i < spheres.size(); ++i)
     if (Status st = checkSphereValues(name + ": sphere " + std::to_string(i), spheres[i]); !st)
       return st.error();
@@ -239,10 +239,10 @@ Expected<TrajectoryContacts> trajectoryContacts(
     const Robot& robot, const std::vector<LinkSpheres>& spheres, const Obstacles& obstacles,
     const std::vector<std::map<std::string, double>>& waypoints) {
   if (Status st = checkPrepared(obstacles); !st) return st.error();
-  if (static_cast<int64_t>(waypoints.size()) > kMaxWaypoints)
-    return Error{
-        ErrorCode::kInvalidArgument,
-        std::to_string(waypoints.size()) + " waypoints, at most " + std::to_string(kMaxWaypoints)};
+  if (static_cast<int64_t>(waypoints.size()) > limits::kMaxWaypoints)
+    return Error{ErrorCode::kInvalidArgument, std::to_string(waypoints.size()) +
+                                                  " waypoints, at most " +
+                                                  std::to_string(limits::kMaxWaypoints)};
   auto links = checkedLinkTrees(robot, spheres);
   if (!links) return links.error();
   std::vector<Expected<RobotContacts>> each(waypoints.size(), Error{ErrorCode::kInvalidData, ""});

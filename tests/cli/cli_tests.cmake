@@ -348,6 +348,9 @@ cli_test(robot_eval_urdf_link 0 ARGS eval ${robot}/three_link.urdf ${work}/three
 set_tests_properties(cli.robot_eval_urdf_link PROPERTIES DEPENDS cli.robot_budget)
 cli_test(robot_eval_urdf_needs_link 2 ARGS eval ${robot}/three_link.urdf ${work}/three.yml
          --package-path ${robot} STDERR "three_link.urdf: a URDF needs --link LINK")
+cli_test(robot_eval_urdf_walls_openings 2 ARGS eval ${robot}/three_link.urdf ${work}/three.yml
+         --link link2 --package-path ${robot} --link-solid walls --fill-openings 0.1
+         STDERR "link_solid walls: fill_openings 0.1 asks for an envelope")
 
 # The posed robot against obstacles. Spheres by hand: link2's sphere (0.45, 0, 0) r 0.05 is at
 # (0.45, 0, 0.5) at zero and at (0.45 cos q, 0, 0.5 - 0.45 sin q) at joint2 = q; the obstacle
