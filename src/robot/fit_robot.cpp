@@ -25,8 +25,9 @@ namespace {
 // and the exact pick (pickCandidates) chooses among all of them: a fit's outside volume is not
 // monotone in its count (a fit with more spheres can end in a worse local minimum: the Kinova's
 // base link envelope gives E_r 0.54 at 6 spheres and 0.74 at 8), so a link may do better with
-// fewer and leave its spheres to another.
-constexpr int kCandidateSpread = 2;
+// fewer and leave its spheres to another. On the Kinova at a budget of 60, 2 gave 2.7 % less
+// outside volume than 1 but took 1.23 times as long (docs/benchmarks.md).
+constexpr int kCandidateSpread = 1;
 // Sphere counts at which each free link is fitted to measure its curve for the budget split.
 constexpr int kCurveCounts[] = {1, 2, 4, 8, 16, 32};
 // The curve fits are quick ones: fewer points and rounds than the final fit.
