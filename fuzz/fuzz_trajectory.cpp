@@ -11,10 +11,17 @@ sphereset::Robot twoJoints() {
   r.name = "fuzz";
   r.root = "base";
   for (const char* l : {"base", "upper", "lower"}) r.links.push_back({l, {}, false});
-  sphereset::RobotJoint j1{"joint1", "base", "upper", sphereset::RobotJoint::Type::kRevolute};
+  sphereset::RobotJoint j1, j2;
+  j1.name = "joint1";
+  j1.parent = "base";
+  j1.child = "upper";
+  j1.type = sphereset::RobotJoint::Type::kRevolute;
   j1.lower = -1.0;
   j1.upper = 1.0;
-  sphereset::RobotJoint j2{"joint2", "upper", "lower", sphereset::RobotJoint::Type::kContinuous};
+  j2.name = "joint2";
+  j2.parent = "upper";
+  j2.child = "lower";
+  j2.type = sphereset::RobotJoint::Type::kContinuous;
   r.joints = {j1, j2};
   return r;
 }
