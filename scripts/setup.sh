@@ -37,6 +37,7 @@ test_packages=(
   pybind11-dev         # Python module: C++ bindings
   python3-numpy        # Python module: arrays in and out
   python3-pytest       # Python module: its tests (python/tests, run by CTest)
+  python3-yaml         # tests: an independent reader of the robot YAML files
   mypy                 # Python module: stubgen, the stubs of the extension (checked by a test)
   python3-distributed  # Python module: the batch on a Dask cluster (sphereset.batch)
   python3-venv         # Python module: `pip install .` into a virtual environment
