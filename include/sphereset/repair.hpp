@@ -125,6 +125,10 @@ const Mesh* originalTriangles(const RepairResult& r);
 // The walls when the solid is their envelope (EvalOptions::walls, for E_r against them), else
 // null. Points into `r`.
 const Mesh* envelopeWalls(const RepairResult& r);
+// "envelope" when the solid is the walls' envelope, else "walls": the result fields' `solid`.
+inline const char* solidName(const RepairResult& r) {
+  return envelopeWalls(r) ? "envelope" : "walls";
+}
 
 // Repairs `mesh` (as loadMesh returns it, welded exactly). `name` prefixes error messages.
 // Errors: kNotSolid when the mesh needs a repair that is disabled or unavailable,

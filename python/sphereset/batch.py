@@ -29,6 +29,7 @@ import time
 import uuid
 from typing import Any, Dict, List, Optional, Union
 
+from . import _size_text
 from . import _sphereset as _core
 
 __all__ = ["batch_options", "list_items", "process_item", "run_batch", "main"]
@@ -55,7 +56,7 @@ def batch_options(n: int = 32, *, quality: str = "default", seed: int = 1, paddi
         "weld_tolerance": -1.0 if weld_tolerance is None else float(weld_tolerance),
         "fill_cavities": bool(fill_cavities), "wrap_alpha": float(wrap_alpha),
         "wrap_offset": float(wrap_offset),
-        "fill_openings": fill_openings if isinstance(fill_openings, str) else repr(float(fill_openings)),
+        "fill_openings": _size_text(fill_openings),
         "format": format, "resume": bool(resume),
         "threads": int(threads),
     }

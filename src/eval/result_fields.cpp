@@ -90,7 +90,7 @@ std::vector<ResultField> repairResultFields(const RepairResult& r) {
       {"volume_ratio", r.volume_ratio, "the solid's volume over the input's (NaN: undefined)"},
       {"wrap_alpha", r.wrap_alpha, "the wrap's alpha (0 unless wrapped)"},
       {"wrap_offset", r.wrap_offset, "the wrap's offset (0 unless wrapped)"},
-      {"solid", std::string(r.fill_openings > 0.0 ? "envelope" : "walls"),
+      {"solid", std::string(solidName(r)),
        "what the solid is: the walls as repaired, or their envelope (openings closed)"},
       {"fill_openings", r.fill_openings, "the envelope's opening size (0: no envelope)"},
       {"walls_volume", r.fill_openings > 0.0 ? signedVolume(r.walls) : signedVolume(r.solid),

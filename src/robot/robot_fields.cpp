@@ -19,7 +19,7 @@ std::vector<ResultField> robotLinkFields(const RobotLinkFit& j) {
       {"skipped", j.skipped, "link_spheres set it to 0: no spheres"},
       {"fitted", j.fitted, "some spheres were fitted"},
       {"covered", j.covered, "the coverage certificates of the fitted spheres"},
-      {"solid", std::string(j.repair.fill_openings > 0.0 ? "envelope" : "walls"),
+      {"solid", std::string(solidName(j.repair)),
        "what was fitted: the link's walls or their envelope (openings closed)"},
       {"fill_openings", j.repair.fill_openings, "the envelope's opening size (0: walls)"},
       {"volume", j.fitted ? j.eval.mesh_volume : 0.0, "the fitted solid's volume"},

@@ -57,9 +57,9 @@ std::map<std::string, double> randomConfiguration(const Robot& robot, std::mt199
   return q;
 }
 
-TEST(FclCheck, EveryProbeTouchingALinkMeshTouchesItsSpheres) {
-  const Robot robot = test::threeLinkRobot();
-  ASSERT_FALSE(robot.links.empty());
+// The test robot fitted quickly, six spheres per link (each link's envelope where the wrap is
+// built in).
+Expected<RobotFitResult> fitForFcl(const Robot& robot) {
   RobotFitOptions fo;
   fo.quality = FitQuality::kFast;
   fo.default_link_spheres = 6;
@@ -67,7 +67,13 @@ TEST(FclCheck, EveryProbeTouchingALinkMeshTouchesItsSpheres) {
 #ifdef SPHERESET_TEST_REPAIR
   fo.repair.operations = cgalSolidOperations();
 #endif
-  auto fit = fitRobot(robot, fo);
+  return fitRobot(robot, fo);
+}
+
+TEST(FclCheck, EveryProbeTouchingALinkMeshTouchesItsSpheres) {
+  const Robot robot = test::threeLinkRobot();
+  ASSERT_FALSE(robot.links.empty());
+  auto fit = fitForFcl(robot);
   ASSERT_TRUE(fit.ok()) << fit.error().message;
   std::mt19937 rng(7);
   int64_t hits = 0, misses = 0, links_checked = 0;
@@ -142,25 +148,11 @@ std::vector<std::array<std::string, 2>> srdfPairsWith(const std::string& srdf,
 TEST(FclCheck, SrdfNeverPairsDoNotCollideAndAdjacentPairsAreJoined) {
   const Robot robot = test::threeLinkRobot();
   ASSERT_FALSE(robot.links.empty());
-  RobotFitOptions fo;
-  fo.quality = FitQuality::kFast;
-  fo.default_link_spheres = 6;
-  fo.name = "three_link";
-#ifdef SPHERESET_TEST_REPAIR
-  fo.repair.operations = cgalSolidOperations();
-#endif
-  auto fit = fitRobot(robot, fo);
+  auto fit = fitForFcl(robot);
   ASSERT_TRUE(fit.ok()) << fit.error().message;
   std::vector<LinkSpheres> spheres;
-  std::vector<CollisionSolid> solids;
-  for (const RobotLinkFit& lf : fit->links) {
-    spheres.push_back({lf.link, lf.spheres});
-    CollisionSolid s{lf.link, {}, {}};
-    if (lf.fitted) s.mesh = lf.repair.walls.triangles.empty() ? lf.repair.solid : lf.repair.walls;
-    for (const RobotLink& l : robot.links)
-      if (l.name == lf.link) s.primitives = linkSpheres(l);
-    solids.push_back(std::move(s));
-  }
+  for (const RobotLinkFit& lf : fit->links) spheres.push_back({lf.link, lf.spheres});
+  const std::vector<CollisionSolid> solids = fitCollisionSolids(robot, *fit);
   std::map<std::string, std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>>> meshes;
   for (const RobotLink& l : robot.links) {
     auto mesh = linkMesh(l);
