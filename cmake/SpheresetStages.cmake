@@ -7,12 +7,12 @@
 #
 # The stages form the library targets (src/CMakeLists.txt): util to tree are sphereset_core,
 # which needs only Eigen, TBB and NLopt; io, render, robot, animate and batch are one target
-# each; repair_cgal is sphereset_repair.
+# each; view (the interactive page's server) is sphereset_view; repair_cgal is sphereset_repair.
 
 cmake_minimum_required(VERSION 3.25)
 
 set(SPHERESET_STAGES
-  util index mesh repair cover fit eval tree io render robot animate batch repair_cgal)
+  util index mesh repair cover fit eval tree io render robot animate batch view repair_cgal)
 set(SPHERESET_CORE_STAGES util index mesh repair cover fit eval tree)
 
 # The stages each later stage may use besides its own (the targets form a tree, not a line):
@@ -22,6 +22,7 @@ set(SPHERESET_USES_render ${SPHERESET_CORE_STAGES} io)
 set(SPHERESET_USES_robot ${SPHERESET_CORE_STAGES} io)
 set(SPHERESET_USES_animate ${SPHERESET_CORE_STAGES} io)
 set(SPHERESET_USES_batch ${SPHERESET_CORE_STAGES} io)
+set(SPHERESET_USES_view ${SPHERESET_CORE_STAGES} io robot)
 set(SPHERESET_USES_repair_cgal ${SPHERESET_CORE_STAGES})
 
 # Libraries of other projects the core may not include (it links Eigen, TBB and NLopt only).
@@ -43,6 +44,7 @@ set(SPHERESET_PUBLIC_render render)
 set(SPHERESET_PUBLIC_robot robot robot_fit robot_query robot_collision)
 set(SPHERESET_PUBLIC_animate animate)
 set(SPHERESET_PUBLIC_batch batch)
+set(SPHERESET_PUBLIC_view view)
 set(SPHERESET_PUBLIC_repair_cgal repair_cgal)
 
 # The stages `stage` may use: itself, the core stages before it (core), or its list above.

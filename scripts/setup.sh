@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the dependencies of sphereset from Debian 12 packages. Idempotent: packages already
 # present are left as they are.
-#   bash scripts/setup.sh        everything: build, tests, Python module, benchmarks, fuzzing
+#   bash scripts/setup.sh        everything: build, tests, Python module, benchmarks, fuzzing,
+#                                the view's page (Node.js, npm) and its browser tests (Chromium)
 #   bash scripts/setup.sh demo   only what the command needs (scripts/demo.sh)
 set -euo pipefail
 
@@ -21,6 +22,7 @@ demo_packages=(
   libcgal-dev          # repair: corefinement and alpha wrapping, GPL, see README
   libgmp-dev           # exact arithmetic linked by CGAL's CMake target (CGAL::CGAL)
   libmpfr-dev          # exact arithmetic linked by CGAL's CMake target (CGAL::CGAL)
+  libcpp-httplib-dev   # the local server of `sphereset view`
 )
 # Tests, the Python module, benchmarks and fuzzing: what scripts/build_and_test.sh and CI add.
 test_packages=(
@@ -42,11 +44,21 @@ test_packages=(
   python3-distributed  # Python module: the batch on a Dask cluster (sphereset.batch)
   python3-venv         # Python module: `pip install .` into a virtual environment
   python3-pip          # Python module: `pip install .`
+  chromium             # tests: the view's page in a real browser, headless (tests/browser)
 )
+# The view's page is built with Node.js and npm (web/, three.js pinned by web/package-lock.json).
+# A machine that already has them keeps its own (Debian's npm conflicts with a Node.js installed
+# from elsewhere); Debian's are installed only where `node` or `npm` is missing.
+node_packages=(nodejs npm)
 
 case "${1:-all}" in
   demo) packages=("${demo_packages[@]}") ;;
-  all) packages=("${demo_packages[@]}" "${test_packages[@]}") ;;
+  all)
+    packages=("${demo_packages[@]}" "${test_packages[@]}")
+    if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+      packages+=("${node_packages[@]}")
+    fi
+    ;;
   *) echo "usage: bash scripts/setup.sh [demo]" >&2; exit 2 ;;
 esac
 
