@@ -1,0 +1,267 @@
+// The page's state and what its controls do. The scene JSON (docs/view.md) is the state; it
+// changes only by the server's answers, which are applied one at a time and in order, and an
+// answer older than the newest seen is dropped.
+import { base64ToArrayBuffer, decodeGeometry } from './geometry.js';
+import { History, differenceEdits, inverseEdits } from './history.js';
+import * as panels from './panels.js';
+import { Viewer } from './viewer.js';
+
+export class App {
+  // api: a ServerApi, or null for a static snapshot (staticScene then holds the scene).
+  constructor({ api, staticScene }) {
+    this.api = api;
+    this.staticScene = staticScene;
+    this.staticMode = !api;
+    this.scene = null;
+    this.viewer = null;
+    this.history = new History();
+    this.selection = null;  // { solid, index }
+    this.current = 0;       // the solid the certificate panel shows
+    this.newestVersion = -Infinity;
+    this.queue = Promise.resolve();
+    this.redCounts = [];
+    this.addMode = false;
+  }
+
+  async start(container) {
+    let scene;
+    let geometries;
+    if (this.staticMode) {
+      scene = this.staticScene;
+      geometries = scene.solids.map((s, k) => {
+        if (typeof s.geometry !== 'string') throw new Error(`solid ${k}: the snapshot has no geometry`);
+        const geometry = decodeGeometry(base64ToArrayBuffer(s.geometry));
+        delete s.geometry;  // decoded once; scene() stays small
+        return geometry;
+      });
+    } else {
+      scene = await this.api.scene();
+      geometries = await Promise.all(scene.solids.map((_, k) => this.api.geometry(k)));
+    }
+    this.scene = scene;
+    this.newestVersion = Number.isFinite(scene.version) ? scene.version : -Infinity;
+    this.viewer = new Viewer(container, { zUp: scene.kind === 'robot' });
+    this.viewer.build(geometries, scene.poses);
+    this.viewer.setGizmoEnabled(!this.staticMode);
+    panels.setMode({ title: scene.title, staticMode: this.staticMode });
+    panels.showSolidChoice(scene.solids, this.current, (k) => { this.current = k; this.refresh(); });
+    panels.buildJoints(scene.joints || [], (name, value) => this.dragJoint(name, value), this.staticMode);
+    this.redrawAll();
+    this.viewer.frame();
+    this.viewer.renderNow();
+  }
+
+  // Runs fn after every earlier request has been answered; a failure is shown and rethrown.
+  run(fn) {
+    const result = this.queue.then(fn);
+    this.queue = result.catch(() => {});
+    return result.catch((e) => {
+      panels.showMessage(e.message || String(e), 'error');
+      throw e;
+    });
+  }
+
+  requireServer() {
+    if (this.staticMode) throw new Error('static snapshot: editing is off');
+  }
+
+  // True when the answer is current; an older one is dropped.
+  accept(answer) {
+    if (!answer || !Number.isFinite(answer.version)) return true;
+    if (answer.version < this.newestVersion) return false;
+    this.newestVersion = answer.version;
+    this.scene.version = answer.version;
+    return true;
+  }
+
+  applySet(k, answer) {
+    if (!this.accept(answer)) return false;
+    const solid = this.scene.solids[k];
+    solid.spheres = answer.spheres;
+    solid.certificate = answer.certificate;
+    if (answer.levels !== undefined) solid.levels = answer.levels;
+    this.redrawAll();
+    return true;
+  }
+
+  // --- edits ------------------------------------------------------------------------------
+
+  edit(k, edits) {
+    return this.run(async () => {
+      this.requireServer();
+      const before = this.solid(k).spheres;
+      const answer = await this.api.edit(k, edits);
+      if (this.applySet(k, answer)) this.history.record(k, inverseEdits(before, edits));
+      panels.showMessage('');
+      this.refresh();
+      return answer;
+    });
+  }
+
+  setSphere(k, i, sphere) { return this.edit(k, [{ op: 'set', index: i, sphere }]); }
+  addSphere(k, sphere) { return this.edit(k, [{ op: 'add', sphere }]); }
+  deleteSphere(k, i) { return this.edit(k, [{ op: 'delete', index: i }]); }
+
+  undo() { return this.step(this.history.undoSteps, this.history.redoSteps, 'undo'); }
+  redo() { return this.step(this.history.redoSteps, this.history.undoSteps, 'redo'); }
+
+  // Applies the last step of `from` and files its opposite in `to`.
+  step(from, to, what) {
+    return this.run(async () => {
+      this.requireServer();
+      const step = from.pop();
+      if (!step) {
+        panels.showMessage(`nothing to ${what}`);
+        return null;
+      }
+      const before = this.solid(step.solid).spheres;
+      let answer;
+      try {
+        answer = await this.api.edit(step.solid, step.edits);
+      } catch (e) {
+        from.push(step);
+        throw e;
+      }
+      if (this.applySet(step.solid, answer)) {
+        to.push({ solid: step.solid, edits: inverseEdits(before, step.edits) });
+      }
+      panels.showMessage('');
+      this.refresh();
+      return answer;
+    });
+  }
+
+  bound(k) {
+    return this.run(async () => {
+      this.requireServer();
+      const before = this.solid(k).spheres;
+      const answer = await this.api.bound(k);
+      if (this.applySet(k, answer)) {
+        const back = differenceEdits(answer.spheres, before);
+        if (back) this.history.record(k, back);
+        else this.history.forget(k);
+      }
+      this.refresh();
+      panels.showMessage(`bound: ${answer.certificate && answer.certificate.covered ? 'covered' : 'not covered'}`);
+      return answer;
+    });
+  }
+
+  level(k, level) {
+    return this.run(async () => {
+      this.requireServer();
+      const answer = await this.api.level(k, level);
+      if (this.selection && this.selection.solid === k) this.select(null);
+      if (this.applySet(k, answer)) this.history.forget(k);
+      this.refresh();
+      return answer;
+    });
+  }
+
+  setJoints(joints) {
+    return this.run(() => this.pose(joints));
+  }
+
+  async pose(joints) {
+    this.requireServer();
+    const answer = await this.api.pose(joints);
+    if (this.accept(answer)) {
+      this.scene.poses = answer.poses;
+      this.scene.joints = answer.joints;
+      this.viewer.setPoses(answer.poses);
+      panels.showJoints(answer.joints);
+      this.viewer.renderNow();
+    }
+    return answer;
+  }
+
+  // A slider being dragged: one request at a time, with the latest values.
+  dragJoint(name, value) {
+    this.jointDraft = { ...this.jointDraft, [name]: value };
+    if (this.jointQueued) return;
+    this.jointQueued = true;
+    this.run(() => {
+      this.jointQueued = false;
+      const joints = this.jointDraft;
+      this.jointDraft = {};
+      return this.pose(joints);
+    }).catch(() => {});
+  }
+
+  save() {
+    return this.run(async () => {
+      this.requireServer();
+      const answer = await this.api.save();
+      panels.showMessage(`saved ${answer.path} (${answer.bytes} bytes)`, 'info');
+      return answer;
+    });
+  }
+
+  // --- selection --------------------------------------------------------------------------
+
+  select(selection) {
+    this.selection = selection;
+    if (selection) this.current = selection.solid;
+    this.showSelection();
+    this.refresh();
+  }
+
+  selectedSphere() {
+    const s = this.selection;
+    return s ? this.solid(s.solid).spheres[s.index] : null;
+  }
+
+  showSelection() {
+    const s = this.selection;
+    const sphere = this.selectedSphere();
+    if (s && !sphere) this.selection = null;  // deleted, or the set got shorter
+    if (!this.selection) {
+      this.viewer.select(null);
+      panels.showSelection(null, null);
+      return;
+    }
+    const outside = (this.solid(s.solid).certificate || {}).outside_volume || [];
+    this.viewer.select(s.solid, sphere);
+    panels.showSelection(s.index, sphere, outside[s.index]);
+  }
+
+  // --- drawing ----------------------------------------------------------------------------
+
+  solid(k) {
+    const solid = this.scene && this.scene.solids[k];
+    if (!solid) throw new Error(`no solid ${k}`);
+    return solid;
+  }
+
+  // Every solid's spheres on one colour scale, the red triangles, the panels.
+  redrawAll() {
+    const solids = this.scene.solids;
+    let scale = 0;
+    for (const s of solids) {
+      for (const v of (s.certificate && s.certificate.outside_volume) || []) {
+        if (Number.isFinite(v)) scale = Math.max(scale, v);
+      }
+    }
+    solids.forEach((s, k) => {
+      const c = s.certificate || {};
+      const layer = this.viewer.solids[k];
+      layer.spheres.update(s.spheres, c.outside_volume, scale);
+      this.redCounts[k] = layer.mesh.setUncovered(c.uncovered_triangles);
+    });
+    panels.showLegend(scale);
+    panels.showLevel(solids[this.current].levels, (l) => this.level(this.current, l).catch(() => {}));
+    this.showSelection();
+    this.refresh();
+  }
+
+  refresh() {
+    const solids = this.scene.solids;
+    panels.showStatus(solids);
+    panels.showCertificate(solids, this.current, this.redCounts);
+    panels.showLevel(solids[this.current].levels, (l) => this.level(this.current, l).catch(() => {}));
+    document.getElementById('solid').value = String(this.current);
+    document.getElementById('undo').disabled = !this.history.canUndo;
+    document.getElementById('redo').disabled = !this.history.canRedo;
+    this.viewer.renderNow();
+  }
+}

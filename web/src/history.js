@@ -1,0 +1,56 @@
+// Undo and redo on the page's side: each step is the list of edits (docs/view.md) that takes a
+// solid's set back, sent to the server like any edit. A step's opposite is worked out when it
+// is applied, against the set as it is then, because undoing a delete appends the sphere at the
+// end (the API has no insert) and the indices after it shift.
+
+// The edits that undo `edits` applied in order to `spheres`.
+export function inverseEdits(spheres, edits) {
+  const set = spheres.map((s) => s.slice());
+  const inverse = [];
+  for (const e of edits) {
+    if (e.op === 'set') {
+      inverse.unshift({ op: 'set', index: e.index, sphere: set[e.index] });
+      set[e.index] = e.sphere.slice();
+    } else if (e.op === 'add') {
+      set.push(e.sphere.slice());
+      inverse.unshift({ op: 'delete', index: set.length - 1 });
+    } else if (e.op === 'delete') {
+      const [removed] = set.splice(e.index, 1);
+      inverse.unshift({ op: 'add', sphere: removed });
+    }
+  }
+  return inverse;
+}
+
+// The edits that turn the set `before` into `after` when only radii or centres changed (a
+// bound), or null when the count changed.
+export function differenceEdits(before, after) {
+  if (before.length !== after.length) return null;
+  const edits = [];
+  after.forEach((s, i) => {
+    if (s.some((v, j) => v !== before[i][j])) edits.push({ op: 'set', index: i, sphere: s.slice() });
+  });
+  return edits;
+}
+
+export class History {
+  constructor() {
+    this.undoSteps = [];  // { solid, edits }: the edits that undo a change
+    this.redoSteps = [];
+  }
+
+  record(solid, undoEdits) {
+    if (!undoEdits || !undoEdits.length) return;
+    this.undoSteps.push({ solid, edits: undoEdits });
+    this.redoSteps = [];
+  }
+
+  // A solid's set was replaced (another tree level): its steps no longer apply.
+  forget(solid) {
+    this.undoSteps = this.undoSteps.filter((s) => s.solid !== solid);
+    this.redoSteps = this.redoSteps.filter((s) => s.solid !== solid);
+  }
+
+  get canUndo() { return this.undoSteps.length > 0; }
+  get canRedo() { return this.redoSteps.length > 0; }
+}

@@ -1,0 +1,150 @@
+// The side panel: status, certificate, selection, legend, sliders and the message line. Only
+// DOM here; what the controls do is app.js's business.
+import { rampGradient } from './colors.js';
+
+const $ = (id) => document.getElementById(id);
+
+export function element(id) { return $(id); }
+
+// One line, always visible: errors in red until the next message replaces them.
+export function showMessage(text, kind = 'info') {
+  const line = $('message');
+  line.textContent = text;
+  line.className = kind;
+}
+
+export function setMode({ title, staticMode }) {
+  $('title').textContent = title ? `sphereset view: ${title}` : 'sphereset view';
+  document.title = $('title').textContent;
+  $('mode').textContent = staticMode ? 'static snapshot (editing is off)' : '';
+  for (const id of ['edit-tools', 'save']) $(id).classList.toggle('hidden', staticMode);
+  for (const id of ['sel-x', 'sel-y', 'sel-z', 'sel-r']) $(id).disabled = staticMode;
+  $('legend-bar').style.background = rampGradient();
+}
+
+// The whole scene covers when every solid's set covers.
+export function showStatus(solids) {
+  const covered = solids.length > 0 && solids.every((s) => s.certificate && s.certificate.covered);
+  const status = $('status');
+  status.textContent = covered ? 'covered' : 'not covered';
+  status.className = covered ? 'covered' : 'not-covered';
+}
+
+const yesNo = (v) => (v === true ? 'yes' : v === false ? 'no' : 'n/a');
+const number = (v, digits = 6) => (Number.isFinite(v) ? Number(v.toPrecision(digits)).toString() : 'n/a');
+
+export function showCertificate(solids, current, redCounts) {
+  const solid = solids[current];
+  const c = solid.certificate || {};
+  const rows = [
+    ['solid', solid.link || solid.name || String(current)],
+    ['spheres', String(solid.spheres.length)],
+    ['E_r summed', number(c.er_sum)],
+    ['surface covered', yesNo(c.surface_covered)],
+    ['interior covered', yesNo(c.interior_covered)],
+    ['original covered', yesNo(c.original_covered)],
+    ['largest gap', Number.isFinite(c.max_gap) ? `${number(c.max_gap, 4)} of the diagonal` : 'n/a'],
+    ['red triangles', String(redCounts[current])],
+    ['covered', yesNo(c.covered)],
+  ];
+  if (solids.length > 1) {
+    const total = solids.reduce((sum, s) => sum + (s.certificate ? s.certificate.er_sum : 0), 0);
+    const coveredCount = solids.filter((s) => s.certificate && s.certificate.covered).length;
+    rows.push(['all solids', `${coveredCount} of ${solids.length} covered, E_r ${number(total)}`]);
+  }
+  const table = $('certificate');
+  table.replaceChildren(...rows.map(([name, value]) => {
+    const tr = document.createElement('tr');
+    for (const text of [name, value]) {
+      const td = document.createElement('td');
+      td.textContent = text;
+      tr.appendChild(td);
+    }
+    return tr;
+  }));
+}
+
+export function showLegend(scale) {
+  $('legend-max').textContent = number(scale, 3);
+}
+
+export function showSolidChoice(solids, current, onChange) {
+  const select = $('solid');
+  $('solid-row').classList.toggle('hidden', solids.length < 2);
+  select.replaceChildren(...solids.map((s, k) => {
+    const option = document.createElement('option');
+    option.value = String(k);
+    option.textContent = s.link || s.name || `solid ${k}`;
+    return option;
+  }));
+  select.value = String(current);
+  select.onchange = () => onChange(Number(select.value));
+}
+
+// sphere: [x,y,z,r] or null to hide the panel.
+export function showSelection(index, sphere, outside) {
+  $('selection').classList.toggle('hidden', !sphere);
+  if (!sphere) return;
+  $('sel-index').textContent = `#${index}`;
+  ['sel-x', 'sel-y', 'sel-z', 'sel-r'].forEach((id, j) => {
+    if (document.activeElement !== $(id)) $(id).value = number(sphere[j], 7);
+  });
+  $('sel-outside').textContent = number(outside);
+}
+
+export function readSelection() {
+  return ['sel-x', 'sel-y', 'sel-z', 'sel-r'].map((id) => Number($(id).value));
+}
+
+export function showLevel(levels, onChange) {
+  $('level-row').classList.toggle('hidden', !levels);
+  if (!levels) return;
+  const slider = $('level');
+  slider.max = String(Math.max(0, levels.count - 1));
+  slider.value = String(levels.current);
+  $('level-value').textContent = `${levels.current} of ${levels.count - 1}`;
+  slider.onchange = () => onChange(Number(slider.value));
+}
+
+// Sliders for the joints; onInput(name, value) while dragging.
+export function buildJoints(joints, onInput, disabled) {
+  $('joints-box').classList.toggle('hidden', !joints.length);
+  $('joints').replaceChildren(...joints.map((j) => {
+    const row = document.createElement('div');
+    row.className = 'row';
+    const label = document.createElement('label');
+    label.textContent = j.name;
+    const slider = document.createElement('input');
+    slider.type = 'range';
+    const [lower, upper] = jointRange(j);
+    slider.min = String(lower);
+    slider.max = String(upper);
+    slider.step = String((upper - lower) / 1000);
+    slider.value = String(j.value);
+    slider.dataset.joint = j.name;
+    slider.disabled = disabled;
+    const value = document.createElement('span');
+    value.textContent = number(j.value, 3);
+    slider.oninput = () => {
+      value.textContent = number(Number(slider.value), 3);
+      onInput(j.name, Number(slider.value));
+    };
+    row.append(label, slider, value);
+    return row;
+  }));
+}
+
+export function showJoints(joints) {
+  for (const j of joints) {
+    const slider = document.querySelector(`input[data-joint="${CSS.escape(j.name)}"]`);
+    if (!slider) continue;
+    if (document.activeElement !== slider) slider.value = String(j.value);
+    slider.nextSibling.textContent = number(j.value, 3);
+  }
+}
+
+// Continuous joints have no limits: one turn either way.
+function jointRange(j) {
+  const finite = Number.isFinite(j.lower) && Number.isFinite(j.upper) && j.upper > j.lower;
+  return finite ? [j.lower, j.upper] : [-Math.PI, Math.PI];
+}

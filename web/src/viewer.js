@@ -1,0 +1,176 @@
+// The three.js view: camera, lights, orbit controls, one group per solid placed by its pose,
+// the solid's mesh and spheres inside it, picking and the gizmo that drags a sphere's centre.
+import {
+  Box3, Color, DirectionalLight, Group, HemisphereLight, Matrix4, Mesh, MeshBasicMaterial,
+  Object3D, PerspectiveCamera, Raycaster, Scene, SphereGeometry, Vector2, Vector3, WebGLRenderer,
+} from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { TransformControls } from 'three/examples/jsm/controls/TransformControls.js';
+import { SolidMesh } from './solid_mesh.js';
+import { SphereLayer } from './sphere_layer.js';
+
+export class Viewer {
+  constructor(container, { zUp }) {
+    this.container = container;
+    // preserveDrawingBuffer: the canvas can be read (PNG button, screenshots) at any time.
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
+    container.appendChild(this.renderer.domElement);
+    this.scene = new Scene();
+    this.scene.background = new Color(0xf4f4f2);
+    this.camera = new PerspectiveCamera(45, 1, 0.01, 1000);
+    if (zUp) this.camera.up.set(0, 0, 1);
+    this.scene.add(new HemisphereLight(0xffffff, 0x888877, 1.6));
+    const key = new DirectionalLight(0xffffff, 1.4);
+    key.position.set(1, 2, 3);
+    this.camera.add(key);  // the key light follows the camera: the side in view is lit
+    this.scene.add(this.camera);
+
+    this.orbit = new OrbitControls(this.camera, this.renderer.domElement);
+    this.orbit.addEventListener('change', () => this.requestRender());
+
+    this.gizmo = new TransformControls(this.camera, this.renderer.domElement);
+    this.gizmo.addEventListener('change', () => this.requestRender());
+    this.gizmo.addEventListener('dragging-changed', (e) => { this.orbit.enabled = !e.value; });
+    this.scene.add(this.gizmo.getHelper());
+    this.handle = new Object3D();  // what the gizmo moves: the selected sphere's centre
+    this.outline = new Mesh(new SphereGeometry(1, 24, 12),
+      new MeshBasicMaterial({ color: 0x111111, wireframe: true, transparent: true, opacity: 0.35 }));
+    this.handle.add(this.outline);
+
+    this.solids = [];  // { group, mesh: SolidMesh, spheres: SphereLayer }
+    this.raycaster = new Raycaster();
+    this.renderPending = false;
+    new ResizeObserver(() => this.resize()).observe(container);
+    this.resize();
+  }
+
+  build(geometries, poses) {
+    geometries.forEach((geometry, k) => {
+      const group = new Group();
+      group.matrixAutoUpdate = false;
+      const mesh = new SolidMesh(geometry);
+      mesh.mesh.userData.solid = k;
+      group.add(mesh.mesh);
+      const spheres = new SphereLayer(group, k);
+      this.scene.add(group);
+      this.solids.push({ group, mesh, spheres });
+    });
+    this.setPoses(poses);
+  }
+
+  // poses: per solid, 16 numbers, row-major 4x4, solid frame to world.
+  setPoses(poses) {
+    this.solids.forEach(({ group }, k) => {
+      const p = poses && poses[k];
+      if (p && p.length === 16) group.matrix.set(...p);
+      else group.matrix.identity();
+      group.matrixWorldNeedsUpdate = true;
+    });
+    this.scene.updateMatrixWorld(true);
+    this.requestRender();
+  }
+
+  worldOrigin(k) {
+    const group = this.solids[k].group;
+    group.updateMatrixWorld(true);
+    return new Vector3().setFromMatrixPosition(group.matrixWorld).toArray();
+  }
+
+  // Fits the camera to every mesh and sphere.
+  frame() {
+    const box = new Box3();
+    const bounds = new Box3();
+    for (const { group, mesh, spheres } of this.solids) {
+      group.updateMatrixWorld(true);
+      bounds.copy(mesh.geometry.boundingBox).applyMatrix4(group.matrixWorld);
+      box.union(bounds);
+      for (const [x, y, z, r] of spheres.spheres) {
+        const c = new Vector3(x, y, z).applyMatrix4(group.matrixWorld);
+        box.expandByPoint(c.clone().addScalar(r)).expandByPoint(c.clone().addScalar(-r));
+      }
+    }
+    if (box.isEmpty()) box.set(new Vector3(-1, -1, -1), new Vector3(1, 1, 1));
+    const center = box.getCenter(new Vector3());
+    const radius = Math.max(box.getSize(new Vector3()).length() / 2, 1e-6);
+    const distance = radius / Math.sin((this.camera.fov * Math.PI) / 360) * 1.05;
+    const direction = this.camera.up.z === 1 ? new Vector3(1.2, -1.6, 0.9) : new Vector3(1.2, 0.9, 1.6);
+    this.camera.position.copy(center).addScaledVector(direction.normalize(), distance);
+    this.camera.near = distance / 100;
+    this.camera.far = distance * 100;
+    this.camera.updateProjectionMatrix();
+    this.orbit.target.copy(center);
+    this.orbit.update();
+    this.requestRender();
+  }
+
+  // What is under the pointer: the smallest sphere hit (so small spheres inside large ones can be
+  // picked), or, with surfaceOnly, the nearest point of a solid's surface in the solid's frame.
+  pick(clientX, clientY, { surfaceOnly = false } = {}) {
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    const ndc = new Vector2(((clientX - rect.left) / rect.width) * 2 - 1,
+      -((clientY - rect.top) / rect.height) * 2 + 1);
+    this.raycaster.setFromCamera(ndc, this.camera);
+    if (surfaceOnly) {
+      const hits = this.raycaster.intersectObjects(this.solids.map((s) => s.mesh.mesh), false);
+      if (!hits.length) return null;
+      const solid = hits[0].object.userData.solid;
+      const inverse = new Matrix4().copy(this.solids[solid].group.matrixWorld).invert();
+      return { solid, point: hits[0].point.clone().applyMatrix4(inverse).toArray() };
+    }
+    const layers = this.solids.map((s) => s.spheres.mesh).filter((m) => m && m.count > 0);
+    let best = null;
+    for (const hit of this.raycaster.intersectObjects(layers, false)) {
+      const solid = hit.object.userData.solid;
+      const r = this.solids[solid].spheres.spheres[hit.instanceId][3];
+      if (!best || r < best.r) best = { solid, index: hit.instanceId, r };
+    }
+    return best;
+  }
+
+  // Shows the gizmo on sphere [x,y,z,r] of solid k (null: none).
+  select(k, sphere) {
+    if (k === null || !sphere) {
+      this.gizmo.detach();
+      this.handle.removeFromParent();
+    } else {
+      this.solids[k].group.add(this.handle);
+      this.placeHandle(sphere);
+      this.gizmo.attach(this.handle);
+    }
+    this.requestRender();
+  }
+
+  placeHandle([x, y, z, r]) {
+    this.handle.position.set(x, y, z);
+    this.outline.scale.setScalar(Math.max(r, 1e-9) * 1.001);
+    this.handle.updateMatrixWorld(true);
+  }
+
+  setGizmoEnabled(enabled) { this.gizmo.enabled = enabled; }
+
+  resize() {
+    const w = Math.max(1, this.container.clientWidth);
+    const h = Math.max(1, this.container.clientHeight);
+    this.renderer.setSize(w, h, false);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+    this.renderNow();
+  }
+
+  requestRender() {
+    if (this.renderPending) return;
+    this.renderPending = true;
+    requestAnimationFrame(() => this.renderNow());
+  }
+
+  renderNow() {
+    this.renderPending = false;
+    this.renderer.render(this.scene, this.camera);
+  }
+
+  pngDataUrl() {
+    this.renderNow();
+    return this.renderer.domElement.toDataURL('image/png');
+  }
+}
