@@ -119,7 +119,7 @@ export function buildJoints(joints, onInput, disabled) {
     const [lower, upper] = jointRange(j);
     slider.min = String(lower);
     slider.max = String(upper);
-    slider.step = String((upper - lower) / 1000);
+    slider.step = 'any';  // a joint is continuous
     slider.value = String(j.value);
     slider.dataset.joint = j.name;
     slider.disabled = disabled;
