@@ -5,7 +5,11 @@ import {
 } from 'three';
 import { rampColor } from './colors.js';
 
-const unitSphere = new SphereGeometry(1, 32, 16);
+// Fewer triangles per sphere when there are many: a few thousand spheres stay interactive even
+// with software rendering.
+const detailedSphere = new SphereGeometry(1, 32, 16);
+const coarseSphere = new SphereGeometry(1, 16, 10);
+const manySpheres = 1024;
 
 export class SphereLayer {
   constructor(parent, solidIndex) {
@@ -58,7 +62,8 @@ export class SphereLayer {
       this.parent.remove(this.mesh);
       this.mesh.dispose();
     }
-    this.mesh = new InstancedMesh(unitSphere, this.material, capacity);
+    const geometry = capacity > manySpheres ? coarseSphere : detailedSphere;
+    this.mesh = new InstancedMesh(geometry, this.material, capacity);
     this.mesh.userData.solid = this.solidIndex;
     this.mesh.renderOrder = 1;  // after the opaque solid, so the solid shows through
     // The colour buffer must exist before the first draw for the shader to use it.
