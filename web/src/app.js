@@ -152,7 +152,12 @@ export class App {
       this.requireServer();
       const answer = await this.api.level(k, level);
       if (this.selection && this.selection.solid === k) this.select(null);
-      if (this.applySet(k, answer)) this.history.forget(k);
+      if (this.applySet(k, answer)) {
+        this.history.forget(k);
+        // The answer is the level's set; which level it is, the page knows from its request.
+        const levels = this.solid(k).levels;
+        if (levels && answer.levels === undefined) levels.current = level;
+      }
       this.refresh();
       return answer;
     });
@@ -249,7 +254,6 @@ export class App {
       this.redCounts[k] = layer.mesh.setUncovered(c.uncovered_triangles);
     });
     panels.showLegend(scale);
-    panels.showLevel(solids[this.current].levels, (l) => this.level(this.current, l).catch(() => {}));
     this.showSelection();
     this.refresh();
   }
