@@ -4,8 +4,8 @@ import { writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 
 // A box of half sizes (0.5, 0.3, 0.2), each face cut into a 4x4 grid, so that moving a sphere
-// leaves some triangles covered and turns others red. Outward triangles.
-export function writeBox(dir) {
+// leaves some triangles covered and turns others red. Outward triangles, vertices from 0.
+export function boxMesh() {
   const half = [0.5, 0.3, 0.2];
   const n = 4;
   const vertices = [];
@@ -13,12 +13,12 @@ export function writeBox(dir) {
   const vertex = (p) => {
     const key = p.map((v) => v.toFixed(6)).join(' ');
     if (!ids.has(key)) {
-      ids.set(key, vertices.length + 1);
-      vertices.push(key);
+      ids.set(key, vertices.length);
+      vertices.push(p);
     }
     return ids.get(key);
   };
-  const faces = [];
+  const triangles = [];
   for (const axis of [0, 1, 2]) {
     const u = (axis + 1) % 3;
     const v = (axis + 2) % 3;
@@ -33,15 +33,21 @@ export function writeBox(dir) {
             return vertex(p);
           };
           const [p00, p10, p11, p01] = [at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)];
-          if (side > 0) faces.push([p00, p10, p11], [p00, p11, p01]);
-          else faces.push([p00, p11, p10], [p00, p01, p11]);
+          if (side > 0) triangles.push([p00, p10, p11], [p00, p11, p01]);
+          else triangles.push([p00, p11, p10], [p00, p01, p11]);
         }
       }
     }
   }
+  return { vertices, triangles, half, diagonal: 2 * Math.hypot(...half) };
+}
+
+export function writeBox(dir) {
+  const { vertices, triangles, diagonal } = boxMesh();
   const path = join(dir, 'box.obj');
-  writeFileSync(path, `${vertices.map((v) => `v ${v}`).join('\n')}\n${faces.map((f) => `f ${f.join(' ')}`).join('\n')}\n`);
-  return { path, triangles: faces.length, diagonal: 2 * Math.hypot(...half) };
+  writeFileSync(path, `${vertices.map((p) => `v ${p.join(' ')}`).join('\n')}\n` +
+    `${triangles.map((t) => `f ${t.map((i) => i + 1).join(' ')}`).join('\n')}\n`);
+  return { path, triangles: triangles.length, diagonal };
 }
 
 // One sphere around the whole box (it covers) and two small ones inside it.

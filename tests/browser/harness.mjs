@@ -1,20 +1,24 @@
 // What the browser tests share: their arguments, the headless Chromium, the `sphereset view`
 // server they start, console errors they collect, and the pixels of a screenshot.
-//   node TEST.mjs --cli SPHERESET --chromium CHROMIUM --node-modules DIR --work DIR
+//   node TEST.mjs --node-modules DIR --work DIR [--chromium CHROMIUM] [--cli SPHERESET] [--page PAGE]
+// (--cli for the tests of the command, --page for the page alone)
 import { spawn, execFileSync } from 'node:child_process';
 import { mkdirSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { join } from 'node:path';
 
 export function parseArgs() {
-  const args = { cli: null, chromium: '/usr/bin/chromium', nodeModules: null, work: null };
+  const args = { cli: null, chromium: '/usr/bin/chromium', nodeModules: null, work: null, page: null };
   const argv = process.argv.slice(2);
   for (let i = 0; i < argv.length; i += 2) {
-    const key = { '--cli': 'cli', '--chromium': 'chromium', '--node-modules': 'nodeModules', '--work': 'work' }[argv[i]];
+    const key = {
+      '--cli': 'cli', '--chromium': 'chromium', '--node-modules': 'nodeModules', '--work': 'work',
+      '--page': 'page',
+    }[argv[i]];
     if (!key || argv[i + 1] === undefined) fail(`bad argument ${argv[i]}`);
     args[key] = argv[i + 1];
   }
-  for (const key of ['cli', 'nodeModules', 'work']) if (!args[key]) fail(`--${key} is required`);
+  for (const key of ['nodeModules', 'work']) if (!args[key]) fail(`--${key} is required`);
   mkdirSync(args.work, { recursive: true });
   return args;
 }
@@ -61,6 +65,7 @@ export async function openPage(browser, url) {
 // Starts `sphereset view ARGS --no-open --port 0` and resolves with its URL once it has printed
 // it; the server is stopped when this process exits.
 export function startView(args, viewArgs) {
+  if (!args.cli) throw new Error('--cli SPHERESET is required');
   const child = spawn(args.cli, ['view', ...viewArgs, '--no-open', '--port', '0'],
     { stdio: ['ignore', 'pipe', 'pipe'] });
   process.on('exit', () => child.kill());
@@ -85,6 +90,7 @@ export function startView(args, viewArgs) {
 }
 
 export function runCli(args, cliArgs) {
+  if (!args.cli) throw new Error('--cli SPHERESET is required');
   return execFileSync(args.cli, cliArgs, { encoding: 'utf8' });
 }
 
