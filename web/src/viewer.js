@@ -136,7 +136,7 @@ export class Viewer {
     } else {
       this.solids[k].group.add(this.handle);
       this.placeHandle(sphere);
-      this.gizmo.attach(this.handle);
+      if (this.gizmo.enabled) this.gizmo.attach(this.handle);  // no gizmo on a static page
     }
     this.requestRender();
   }
