@@ -1,7 +1,7 @@
 // Undo and redo on the page's side: each step is the list of edits (docs/view.md) that takes a
-// solid's set back, sent to the server like any edit. A step's opposite is worked out when it
-// is applied, against the set as it is then, because undoing a delete appends the sphere at the
-// end (the API has no insert) and the indices after it shift.
+// solid's set back exactly, order included, sent to the server like any edit. Order matters: the
+// steps before it address spheres by index. The API has no insert, so a deleted sphere comes
+// back as an add at the end followed by sets that shift the spheres after it back into place.
 
 // The edits that undo `edits` applied in order to `spheres`.
 export function inverseEdits(spheres, edits) {
@@ -15,8 +15,10 @@ export function inverseEdits(spheres, edits) {
       set.push(e.sphere.slice());
       inverse.unshift({ op: 'delete', index: set.length - 1 });
     } else if (e.op === 'delete') {
-      const [removed] = set.splice(e.index, 1);
-      inverse.unshift({ op: 'add', sphere: removed });
+      const back = [{ op: 'add', sphere: set[set.length - 1] }];
+      for (let j = e.index; j < set.length - 1; j++) back.push({ op: 'set', index: j, sphere: set[j] });
+      set.splice(e.index, 1);
+      inverse.unshift(...back);
     }
   }
   return inverse;
