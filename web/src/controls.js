@@ -23,6 +23,7 @@ function wireButtons(app, viewer) {
   $('redo').onclick = () => quiet(app.redo());
   $('delete').onclick = () => deleteSelected(app);
   $('add').onclick = () => setAddMode(app, !app.addMode);
+  $('frame').onclick = () => viewer.frame();
   $('png').onclick = () => {
     const link = document.createElement('a');
     link.href = viewer.pngDataUrl();
@@ -134,6 +135,8 @@ function wireKeys(app) {
     } else if (ctrl && (key === 'y' || (key === 'z' && e.shiftKey))) {
       e.preventDefault();
       quiet(app.redo());
+    } else if (key === 'f' && !ctrl) {
+      app.viewer.frame();
     } else if (e.key === 'Escape') {
       setAddMode(app, false);
       app.select(null);
