@@ -84,7 +84,7 @@ Expected<ViewScene> loadMeshScene(const std::string& mesh_path, const std::strin
                    spheres_path + ": level " + std::to_string(o.level) +
                        " (the tree has levels 0 to " + std::to_string(tree->depth) + ")"};
   } else {
-    if (o.level > 0)
+    if (o.level >= 0)
       return Error{ErrorCode::kInvalidArgument,
                    spheres_path + ": a sphere set has no levels (--level is for trees)"};
     sets.push_back(std::move(plain).value());
@@ -130,7 +130,7 @@ Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& s
   scene.urdf_path = urdf;
   auto links = robotSphereFile(spheres_path, lo);
   if (!links) return links.error();
-  if (o.level > 0)
+  if (o.level >= 0)
     return Error{ErrorCode::kInvalidArgument,
                  spheres_path + ": a robot's sets have no levels (--level is for trees)"};
   auto link_repair = linkRepairOptions(o.repair, o.link_solid);

@@ -1,0 +1,25 @@
+# `sphereset view MESH SPHERES --html OUT`: with the page in the build, exit 0 and OUT holds the
+# data element with the scene; without it, exit 9 and one line saying so, and no OUT.
+#   -DCLI=prog -DMESH=path -DSPHERES=path -DOUT=path
+file(REMOVE "${OUT}")
+execute_process(COMMAND ${CLI} view ${MESH} ${SPHERES} --html ${OUT} RESULT_VARIABLE rc
+                OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
+if(rc STREQUAL "9")
+  if(NOT err MATCHES "^sphereset: view: this build has no page[^\n]*\n$")
+    message(FATAL_ERROR "exit 9 without the one-line message: ${err}")
+  endif()
+  if(EXISTS "${OUT}")
+    message(FATAL_ERROR "${OUT} written by a build without the page")
+  endif()
+  return()
+endif()
+if(NOT rc STREQUAL "0")
+  message(FATAL_ERROR "exit ${rc}\nstdout: ${out}\nstderr: ${err}")
+endif()
+file(READ "${OUT}" page)
+if(NOT page MATCHES "<script id=\"sphereset-data\" type=\"application/json\">{[^<]*\"solids\":[^<]*\"geometry\":\"[A-Za-z0-9+/=]+\"")
+  message(FATAL_ERROR "${OUT} has no data element with the scene")
+endif()
+if(page MATCHES "<!--SPHERESET_DATA-->")
+  message(FATAL_ERROR "${OUT} still holds the marker")
+endif()
