@@ -111,9 +111,16 @@ Expected<std::vector<LinkSpheres>> robotSphereFile(const std::string& path,
   if (lowerExtension(path) != ".urdf") return readLinkSpheres(path);
   auto with_spheres = loadRobot(path, lo);
   if (!with_spheres) return with_spheres.error();
+  // The links whose collisions are all spheres: those `sphereset robot` wrote (a link of
+  // other geometry keeps it, and a save must not replace it with nothing).
   std::vector<LinkSpheres> links;
-  for (const RobotLink& l : with_spheres->links)
-    if (!l.geometry.empty()) links.push_back({l.name, linkSpheres(l)});
+  for (const RobotLink& l : with_spheres->links) {
+    const bool spheres_only =
+        !l.geometry.empty() && !l.from_visual &&
+        std::all_of(l.geometry.begin(), l.geometry.end(),
+                    [](const LinkGeometry& g) { return g.kind == LinkGeometry::Kind::kSphere; });
+    if (spheres_only) links.push_back({l.name, linkSpheres(l)});
+  }
   return links;
 }
 

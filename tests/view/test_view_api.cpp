@@ -218,6 +218,63 @@ TEST_F(ViewTest, RobotPosesFollowTheJoints) {
   expectSameSpheres((*saved)[1].spheres, scene.solids[1].spheres());
 }
 
+TEST_F(ViewTest, ARobotsSphereUrdfIsSavedAsAUrdf) {
+  const std::string file = path("spheres.urdf");
+  ASSERT_TRUE(writeSphereUrdf(
+                  threeLinkUrdf(), file,
+                  {{"link1", {{Vec3(0, 0, 0.2), 0.25}}}, {"link2", {{Vec3(0.1, -0.2, 0.3), 0.4}}}})
+                  .ok());
+  ViewLoadOptions o;
+  o.package_paths = {robotDir()};
+  o.use_ros_package_path = false;
+  o.link_solid = LinkSolid::kWalls;
+  auto loaded = loadViewScene(threeLinkUrdf(), file, o);
+  ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+  ViewScene& scene = *loaded;
+  ASSERT_EQ(scene.solids.size(), 2u);
+  EXPECT_EQ(scene.solids[1].link, "link2");
+  nlohmann::json j = call(&scene, request("GET", "/api/scene"));
+  EXPECT_EQ(j["save"]["format"], "urdf");
+  call(&scene, post("/api/edit",
+                    {{"solid", 1}, {"edits", {{{"op", "add"}, {"sphere", {0, 0, 0, 0.01}}}}}}));
+  call(&scene, post("/api/save", nlohmann::json::object()));
+  RobotLoadOptions lo;
+  lo.package_paths = {robotDir()};
+  lo.use_ros_package_path = false;
+  auto saved = loadRobot(file, lo);
+  ASSERT_TRUE(saved.ok()) << saved.error().message;
+  for (const RobotLink& l : saved->links) {
+    if (l.name == "link2") expectSameSpheres(linkSpheres(l), scene.solids[1].spheres());
+    // A link the file did not give spheres keeps its own collision.
+    if (l.name == "base_link") {
+      ASSERT_EQ(l.geometry.size(), 1u);
+      EXPECT_EQ(l.geometry[0].kind, LinkGeometry::Kind::kBox);
+    }
+  }
+}
+
+TEST_F(ViewTest, ARepairedMeshShowsAndCertifiesItsOriginalTriangles) {
+  // The unit cube with one triangle flipped: reoriented by the repair.
+  const std::string mesh = write(
+      "flipped.off",
+      "OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n3 0 2 3\n3 0 3 1\n"
+      "3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 4 5\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n"
+      "3 1 7 5\n");
+  const std::string spheres = path("ball.txt");
+  ASSERT_TRUE(writeSpheres(spheres, {kBoxBall}).ok());
+  auto scene = loadViewScene(mesh, spheres);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  const ViewSolid& s = scene->solids[0];
+  ASSERT_NE(originalTriangles(s.input->repair), nullptr);
+  EXPECT_EQ(&s.displayed(), originalTriangles(s.input->repair));
+  EXPECT_TRUE(s.certificate.original_covered);
+  EXPECT_TRUE(s.certificate.covered);
+  // Shrunk to miss the corners: the original triangles are not covered any more either.
+  ASSERT_TRUE(applyViewEdits(&*scene, 0, {{ViewEdit::Op::kSet, 0, {kBoxBall.center, 0.6}}}).ok());
+  EXPECT_FALSE(scene->solids[0].certificate.original_covered);
+  EXPECT_FALSE(scene->solids[0].certificate.covered);
+}
+
 TEST_F(ViewTest, BadRequestsChangeNothing) {
   ViewScene scene = boxScene();
   const std::string before = viewSceneJson(scene);
