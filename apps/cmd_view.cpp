@@ -80,9 +80,8 @@ int runView(const ViewArgs& a) {
   auto scene = loadViewScene(a.mesh.path, a.spheres_path, lo);
   if (!scene) return fail(scene.error());
   // Checked after the inputs, so that a bad input gets its own message and exit code.
-  if (!viewPageAvailable()) {
-    std::cerr << "sphereset: view: this build has no page (web/ was not built: Node.js and npm "
-                 "were missing when it was configured)\n";
+  if (Status st = checkViewPage(); !st) {
+    fail(st.error());
     return kNoPage;
   }
   if (!a.html.empty()) {

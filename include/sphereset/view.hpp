@@ -134,8 +134,10 @@ Expected<int64_t> saveViewScene(const ViewScene& scene);
 std::string viewSceneJson(const ViewScene& scene);
 std::string viewGeometry(const ViewSolid& solid);
 
-// Whether this build has the page (web/ was built); the page's HTML otherwise.
+// Whether this build has the page (web/ was built), and the one message for when it has not
+// (kInvalidData).
 bool viewPageAvailable();
+Status checkViewPage();
 // `html` with the scene's data element at its marker (docs/view.md, "Static pages").
 // kInvalidData when `html` has no marker.
 Expected<std::string> inlineViewData(std::string_view html, const ViewScene& scene);

@@ -223,8 +223,7 @@ ViewResponse post(ViewScene* scene, const std::string& path, const nlohmann::jso
 
 ViewResponse get(const ViewScene& scene, const ViewRequest& r) {
   if (r.path == "/") {
-    if (view_page::html().empty())
-      return refuse(kHttpServerError, viewStaticPage(scene).error().message);
+    if (Status st = checkViewPage(); !st) return refuse(kHttpServerError, st.error().message);
     return {kHttpOk, "text/html; charset=utf-8", std::string(view_page::html())};
   }
   if (r.path == "/api/scene") return {kHttpOk, "application/json", viewSceneJson(scene)};

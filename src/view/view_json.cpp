@@ -215,11 +215,15 @@ Expected<std::string> inlineViewData(std::string_view html, const ViewScene& sce
   return out;
 }
 
+Status checkViewPage() {
+  if (viewPageAvailable()) return {};
+  return Error{ErrorCode::kInvalidData,
+               "this build has no view page (web/ was not built: Node.js and npm were missing "
+               "when it was configured)"};
+}
+
 Expected<std::string> viewStaticPage(const ViewScene& scene) {
-  if (!viewPageAvailable())
-    return Error{ErrorCode::kInvalidData,
-                 "this build of sphereset has no view page (web/ was not built: Node.js and npm "
-                 "were missing when it was configured)"};
+  if (Status st = checkViewPage(); !st) return st.error();
   return inlineViewData(view_page::html(), scene);
 }
 

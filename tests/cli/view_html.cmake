@@ -5,7 +5,7 @@ file(REMOVE "${OUT}")
 execute_process(COMMAND ${CLI} view ${MESH} ${SPHERES} --html ${OUT} RESULT_VARIABLE rc
                 OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
 if(rc STREQUAL "9")
-  if(NOT err MATCHES "^sphereset: view: this build has no page[^\n]*\n$")
+  if(NOT err MATCHES "^sphereset: this build has no view page[^\n]*\n$")
     message(FATAL_ERROR "exit 9 without the one-line message: ${err}")
   endif()
   if(EXISTS "${OUT}")

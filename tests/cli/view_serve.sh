@@ -16,7 +16,7 @@ done
 if ! kill -0 "$pid" 2>/dev/null; then
   wait "$pid"
   rc=$?
-  if [ "$rc" = 9 ] && grep -q '^sphereset: view: this build has no page' "$err"; then exit 0; fi
+  if [ "$rc" = 9 ] && grep -q '^sphereset: this build has no view page' "$err"; then exit 0; fi
   echo "exited $rc before serving: $(cat "$err")"
   exit 1
 fi
