@@ -94,6 +94,10 @@ int runView(const ViewArgs& a) {
   if (!loopback(a.host))
     std::cerr << "sphereset view: warning: listening on " << a.host
               << ": anyone who can reach this address and learns the token can edit and save\n";
+  // Interrupted while loading: nothing to serve.
+  sigset_t pending;
+  sigpending(&pending);
+  if (sigismember(&pending, SIGINT) || sigismember(&pending, SIGTERM)) return kOk;
   auto server = ViewServer::start(std::move(scene).value(), a.host, a.port);
   if (!server) return fail(server.error());
   const std::string url = (*server)->url();

@@ -23,3 +23,9 @@ add_test(NAME cli.view_html
            -DOUT=${work}/view.html -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)
 add_test(NAME cli.view_serves_until_sigterm
          COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/view_serve.sh ${cli} ${link} ${work}/bound.txt)
+file(WRITE ${work}/view_robot.yml "collision_spheres:\n  link1:\n    - center: [0, 0, 0.2]\n      radius: 0.25\n  link2:\n    - center: [0.1, -0.2, 0.3]\n      radius: 0.4\n")
+add_test(NAME cli.view_html_robot
+         COMMAND ${CMAKE_COMMAND} -DCLI=${cli} -DMESH=${data}/robot/three_link.urdf
+           -DSPHERES=${work}/view_robot.yml -DOUT=${work}/view_robot.html
+           "-DEXTRA=--package-path|${data}/robot|--link-solid|walls" -DSOLIDS=2
+           -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)

@@ -1,8 +1,9 @@
 # `sphereset view MESH SPHERES --html OUT`: with the page in the build, exit 0 and OUT holds the
 # data element with the scene; without it, exit 9 and one line saying so, and no OUT.
-#   -DCLI=prog -DMESH=path -DSPHERES=path -DOUT=path
+#   -DCLI=prog -DMESH=path -DSPHERES=path -DOUT=path [-DEXTRA="arg|arg..."] [-DSOLIDS=n]
+string(REPLACE "|" ";" EXTRA "${EXTRA}")
 file(REMOVE "${OUT}")
-execute_process(COMMAND ${CLI} view ${MESH} ${SPHERES} --html ${OUT} RESULT_VARIABLE rc
+execute_process(COMMAND ${CLI} view ${MESH} ${SPHERES} --html ${OUT} ${EXTRA} RESULT_VARIABLE rc
                 OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
 if(rc STREQUAL "9")
   if(NOT err MATCHES "^sphereset: this build has no view page[^\n]*\n$")
@@ -22,4 +23,11 @@ if(NOT page MATCHES "<script id=\"sphereset-data\" type=\"application/json\">{[^
 endif()
 if(page MATCHES "<!--SPHERESET_DATA-->")
   message(FATAL_ERROR "${OUT} still holds the marker")
+endif()
+if(DEFINED SOLIDS)
+  string(REGEX MATCHALL "\"geometry\":" found "${page}")
+  list(LENGTH found count)
+  if(NOT count EQUAL SOLIDS)
+    message(FATAL_ERROR "${OUT} holds ${count} solids, expected ${SOLIDS}")
+  endif()
 endif()
