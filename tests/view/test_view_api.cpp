@@ -378,6 +378,23 @@ TEST_F(ViewTest, BadRequestsChangeNothing) {
   EXPECT_EQ(scene.version, 0);
 }
 
+TEST_F(ViewTest, TheServersOwnNamesAreAccepted) {
+  ViewScene scene = boxScene();
+  for (const std::string host : {"127.0.0.1:8765", "localhost:8765"}) {
+    ViewRequest r = request("GET", "/api/scene");
+    r.headers = {
+        {"host", host}, {"origin", "http://" + host}, {"x-sphereset-token", kAccess.token}};
+    call(&scene, r, 200);
+  }
+  // The page itself: the token in the query.
+  ViewRequest page = request("GET", "/");
+  page.headers = {{"host", "localhost:8765"}};
+  page.query["token"] = kAccess.token;
+  EXPECT_EQ(handleViewRequest(&scene, kAccess, page).status, viewPageAvailable() ? 200 : 500);
+  page.query["token"] = "x";
+  EXPECT_EQ(handleViewRequest(&scene, kAccess, page).status, 401);
+}
+
 TEST_F(ViewTest, TheStaticPageInlinesTheScene) {
   ViewScene scene = boxScene();
   scene.title = "a</script><b>";
