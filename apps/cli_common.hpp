@@ -40,6 +40,7 @@ enum Exit {
   kWrite = 6,
   kUncovered = 7,    // fit, tree: the result failed its own coverage check (the file is written)
   kItemsFailed = 8,  // batch: some items failed (each is reported; the others are written)
+  kNoPage = 9,       // view: this build has no page (web/ was not built)
 };
 
 // The footer of --help.
@@ -47,7 +48,8 @@ inline constexpr const char* kExitCodesHelp =
     "Exit codes: 0 success, 1 internal error, 2 bad options, 3 unreadable input,\n"
     "4 invalid data, 5 mesh is not a closed solid, 6 output could not be written,\n"
     "7 the result failed its own coverage check (fit, tree: the file is still written),\n"
-    "8 some items of a batch failed (batch: the others are written; see report.jsonl).";
+    "8 some items of a batch failed (batch: the others are written; see report.jsonl),\n"
+    "9 this build has no page for `view` (web/ was not built).";
 
 // The exit code for a library error.
 int exitFor(const Error& e);

@@ -23,5 +23,6 @@ Command registerQuery(CLI::App& app);    // cmd_query.cpp
 Command registerRobot(CLI::App& app);    // cmd_robot.cpp
 Command registerBatch(CLI::App& app);    // cmd_batch.cpp
 Command registerAnimate(CLI::App& app);  // cmd_animate.cpp
+Command registerView(CLI::App& app);     // cmd_view.cpp
 
 }  // namespace sphereset::cli

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sphereset/cover.hpp"
 #include "sphereset/options.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere.hpp"
@@ -176,6 +177,31 @@ const char* fitMethodName(FitMethod method);
 Expected<FitInit> fitInitFromName(const std::string& name);
 Expected<SphereOptimizer> sphereOptimizerFromName(const std::string& name);
 Expected<FitMethod> fitMethodFromName(const std::string& name);
+
+// Growing the radii of a given set minimally until it covers the solid: the fit's guaranteed
+// bound (surface pieces, then interior cells, then the original triangles) started from the set
+// as it is, centres fixed. `sphereset animate --rebound` and the view's bound use it.
+struct BoundOptions {
+  // Surface pieces are split down to about this length (absolute). 0: half the spacing of a
+  // default fit's surface samples for this many spheres (kBoundSamplesPerSphere, at least
+  // kBoundMinSamples samples over the surface).
+  double min_edge = 0.0;
+  // Octree depth of the interior passes, as EvalOptions::interior_max_depth.
+  int interior_max_depth = kInteriorSplitDepth;
+  // The triangles of the input a repaired solid was made from (repair.hpp), covered too; not
+  // owned, may be null.
+  const Mesh* original = nullptr;
+};
+inline constexpr double kBoundSamplesPerSphere = 50.0;
+inline constexpr double kBoundMinSamples = 2500.0;
+// Interior passes at most (each grows radii for the cells still uncovered).
+inline constexpr int kBoundInteriorPasses = 4;
+
+// The set with radii grown (never shrunk) so that the surface, the interior cells and the
+// original triangles are covered. Errors (kInvalidArgument): no spheres, more than
+// limits::kMaxSpheres, a sphere with a NaN, infinite or negative value, options out of range.
+Expected<std::vector<Sphere>> boundSpheres(const SolidIndex& index, std::vector<Sphere> spheres,
+                                           const BoundOptions& options = {});
 
 // Fits options.num_spheres spheres to the closed solid behind `index`. Errors:
 // kInvalidArgument (n < 1, n larger than the points, bad options), kNotSolid (zero volume).

@@ -50,6 +50,9 @@ inline constexpr int kMaxXmlDepth = 256;
 inline constexpr int64_t kMaxObstacles = int64_t{1} << 21;
 inline constexpr int64_t kMaxWaypoints = 1000000;
 
+// The view's server (`sphereset view`): bytes of one request's body.
+inline constexpr int64_t kMaxViewRequestBytes = int64_t{4} * 1024 * 1024;  // 4 MiB
+
 // kInvalidArgument "`what` must be from `lo` to `hi` (got `value`)" when value is outside
 // [lo, hi] or not a number; OK otherwise. The one wording of a range error.
 Status checkRange(const std::string& what, double value, double lo, double hi);

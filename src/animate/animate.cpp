@@ -3,7 +3,7 @@
 // Ju et al. 2005, see mean_value.cpp), or by linear blend skinning with the bone weights of the
 // surface near each centre. Radii stay fixed, as the paper proposes; beyond it, every frame is
 // certified by the evaluation's coverage certificate, and "rebound" grows radii minimally
-// with the fit's guaranteed bound (src/fit/bound.hpp), started from the moved set.
+// with the fit's guaranteed bound (boundSpheres, fit.hpp), started from the moved set.
 #include "sphereset/animate.hpp"
 
 #include <tbb/blocked_range.h>
@@ -16,7 +16,6 @@
 #include <string>
 #include <utility>
 
-#include "fit/bound.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/mesh_defects.hpp"
 #include "sphereset/solid_index.hpp"
@@ -32,13 +31,6 @@ double since(Clock::time_point t0) {
 // A neighbour closer than this fraction of the diagonal counts as at this distance, so that a
 // centre on a vertex does not divide by zero.
 constexpr double kNearestFloorRel = 1e-9;
-// The rebound splits triangles down to pieces of about half the spacing a default fit's
-// surface samples would have (FitOptions::target_points, half of them on the surface).
-constexpr double kReboundSamplesPerSphere = 50.0;
-constexpr double kReboundMinSamples = 2500.0;
-// Interior passes of the rebound (each grows radii for the cells still uncovered).
-constexpr int kReboundInteriorPasses = 4;
-
 struct Certificate {
   double er = 0.0;
   bool surface = false, interior = false;
@@ -258,14 +250,13 @@ Expected<AnimateResult> animateSpheres(const Mesh& rest, const std::vector<Spher
 
     if (options.rebound) {
       const auto tr = Clock::now();
-      std::vector<Sphere> grown = moved;
-      const double samples =
-          std::max(kReboundMinSamples, kReboundSamplesPerSphere * static_cast<double>(n));
-      const double min_edge = 0.5 * std::sqrt(surfaceArea(deformed) / samples);
-      detail::boundSurface(index, &grown, min_edge);
-      for (int pass = 0; pass < kReboundInteriorPasses; ++pass)
-        if (detail::boundInterior(index, &grown, options.eval.interior_max_depth).enlarged == 0)
-          break;
+      BoundOptions bo;
+      bo.interior_max_depth = options.eval.interior_max_depth;
+      auto bounded = boundSpheres(index, moved, bo);
+      if (!bounded)
+        return Error{bounded.error().code,
+                     "frame " + std::to_string(f) + ": " + bounded.error().message};
+      std::vector<Sphere> grown = std::move(bounded).value();
       double sum_r = 0.0, sum_dr = 0.0;
       for (size_t i = 0; i < grown.size(); ++i) {
         const double dr = grown[i].radius - moved[i].radius;

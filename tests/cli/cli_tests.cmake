@@ -211,6 +211,7 @@ if(SPHERESET_WITH_REPAIR)
 endif()
 
 include(${CMAKE_CURRENT_LIST_DIR}/robot_cli_tests.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/view_cli_tests.cmake)
 
 # Batch: a folder (recursively) or a manifest, one sphere file per mesh, failed items reported,
 # up-to-date items skipped on the next run.

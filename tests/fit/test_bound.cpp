@@ -6,6 +6,7 @@
 
 #include "fit/bound.hpp"
 #include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
 #include "test_meshes.hpp"
 #include "test_support.hpp"
 
@@ -36,6 +37,41 @@ TEST(Bound, TheCertificateAcceptsWhatTheBoundProvesAtItsDeepestSplit) {
   EXPECT_TRUE(e.surface_covered);
   EXPECT_EQ(e.surface_uncertified_area, 0.0);
   EXPECT_EQ(e.uncovered_triangles, 0);
+}
+
+// boundSpheres (fit.hpp) grows a given set until the certificate confirms it: centres stay,
+// radii only grow, the original triangles given are covered too; bad sets are refused.
+TEST(Bound, BoundSpheresCoversFromAnySetWithoutMovingCentres) {
+  const SolidIndex idx(test::makeBox(Vec3::Zero(), Vec3(2.0, 1.0, 1.0)));
+  const std::vector<Sphere> before = {{Vec3(0.5, 0.5, 0.5), 0.2}, {Vec3(1.5, 0.5, 0.5), 0.0}};
+  EXPECT_FALSE(coverageOnly(idx, before).surface_covered);
+  auto bounded = boundSpheres(idx, before);
+  ASSERT_TRUE(bounded.ok()) << bounded.error().message;
+  ASSERT_EQ(bounded->size(), before.size());
+  for (size_t i = 0; i < before.size(); ++i) {
+    EXPECT_EQ((*bounded)[i].center, before[i].center);
+    EXPECT_GE((*bounded)[i].radius, before[i].radius);
+  }
+  test::expectCovers(idx, *bounded);
+  // Triangles beyond the solid (an original input's) are held too when given.
+  const Mesh outside = test::makeBox(Vec3(2.0, 0.0, 0.0), Vec3(2.5, 1.0, 1.0));
+  BoundOptions o;
+  o.original = &outside;
+  auto with_original = boundSpheres(idx, before, o);
+  ASSERT_TRUE(with_original.ok());
+  EvalOptions eo;
+  eo.union_samples = 0;
+  eo.proximity_segments = 0;
+  eo.shadow_resolution = 0;
+  eo.original = &outside;
+  EXPECT_TRUE(evaluateSpheres(idx, *with_original, eo)->original_covered);
+  EXPECT_FALSE(evaluateSpheres(idx, *bounded, eo)->original_covered);
+  // Refused: no spheres, a NaN, a negative radius, a depth beyond the limit.
+  EXPECT_EQ(boundSpheres(idx, {}).error().code, ErrorCode::kInvalidArgument);
+  EXPECT_FALSE(boundSpheres(idx, {{Vec3(NAN, 0, 0), 1.0}}).ok());
+  EXPECT_FALSE(boundSpheres(idx, {{Vec3::Zero(), -1.0}}).ok());
+  o.interior_max_depth = 99;
+  EXPECT_FALSE(boundSpheres(idx, before, o).ok());
 }
 
 }  // namespace

@@ -1,0 +1,141 @@
+// sphereset view: serves the interactive page (docs/view.md) for a mesh and its spheres, or a
+// robot and its links' spheres, on this machine until interrupted; or, with --html, writes the
+// page with the scene inlined and exits. The scene, the API and the server are the library's
+// (view.hpp); this file translates the command line and waits for SIGINT/SIGTERM.
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "sphereset/robot_fit.hpp"
+#include "sphereset/sphere_io.hpp"
+#include "sphereset/view.hpp"
+
+extern char** environ;
+
+namespace sphereset::cli {
+namespace {
+
+struct ViewArgs {
+  MeshArgs mesh;  // MESH or ROBOT.urdf, and the repair options
+  std::string spheres_path, host = "127.0.0.1", output, html;
+  std::vector<std::string> package_paths;
+  TableArgs robot;  // the robot table's link_solid row
+  int port = 0;
+  int level = -1;
+  bool no_open = false;
+};
+
+// Opens `url` in the desktop's browser when xdg-open is there; whatever happens is ignored
+// (a machine without a desktop just shows the printed address).
+void openBrowser(const std::string& url) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  std::string program = "xdg-open", address = url;
+  char* argv[] = {program.data(), address.data(), nullptr};
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, "xdg-open", &actions, nullptr, argv, environ) == 0)
+    std::thread([pid] { waitpid(pid, nullptr, 0); }).detach();
+  posix_spawn_file_actions_destroy(&actions);
+}
+
+bool loopback(const std::string& host) {
+  return host == "127.0.0.1" || host == "localhost" || host == "::1";
+}
+
+int runView(const ViewArgs& a) {
+  // SIGINT and SIGTERM are taken by sigwait below: blocked before any thread starts (the
+  // loading's and the server's threads inherit the mask), so none of them ends the process.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  ViewLoadOptions lo;
+  auto repair = repairOptions(a.mesh);
+  if (!repair) return fail(repair.error());
+  lo.repair = *repair;
+  RobotFitOptions ro;
+  for (const auto& [name, text] : a.robot.given())
+    if (Status st = setRobotFitOption(&ro, name, text); !st) return fail(st.error());
+  lo.link_solid = ro.link_solid;
+  lo.package_paths = a.package_paths;
+  lo.level = a.level;
+  lo.output = a.output;
+  if (!a.html.empty())
+    if (Status st = checkOutputPath(a.html, {a.mesh.path, a.spheres_path}); !st)
+      return fail(st.error());
+  auto scene = loadViewScene(a.mesh.path, a.spheres_path, lo);
+  if (!scene) return fail(scene.error());
+  // Checked after the inputs, so that a bad input gets its own message and exit code.
+  if (Status st = checkViewPage(); !st) {
+    fail(st.error());
+    return kNoPage;
+  }
+  if (!a.html.empty()) {
+    auto page = viewStaticPage(*scene);
+    if (!page) return fail(page.error());
+    if (Status st = writeTextFile(a.html, *page); !st) return fail(st.error());
+    std::cerr << "sphereset view: wrote " << a.html << '\n';
+    return kOk;
+  }
+  if (!loopback(a.host))
+    std::cerr << "sphereset view: warning: listening on " << a.host
+              << ": anyone who can reach this address and learns the token can edit and save\n";
+  // Interrupted while loading: nothing to serve.
+  sigset_t pending;
+  sigpending(&pending);
+  if (sigismember(&pending, SIGINT) || sigismember(&pending, SIGTERM)) return kOk;
+  auto server = ViewServer::start(std::move(scene).value(), a.host, a.port);
+  if (!server) return fail(server.error());
+  const std::string url = (*server)->url();
+  std::cout << "sphereset view: " << url << std::endl;  // flushed: scripts wait for this line
+  if (!a.no_open) openBrowser(url);
+  int signal_number = 0;
+  sigwait(&stop_signals, &signal_number);
+  (*server)->stop();
+  return kOk;
+}
+
+}  // namespace
+
+Command registerView(CLI::App& app) {
+  auto a = std::make_shared<ViewArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "view", "Serve an interactive page of a mesh (or robot) and its spheres, certified live");
+  cmd->add_option("mesh", a->mesh.path, "Mesh file, or a robot's URDF")->required();
+  cmd->add_option("spheres", a->spheres_path,
+                  "Sphere set or tree (.txt, .json, .sph, .yaml); for a URDF the links' spheres "
+                  "(.yml from `robot`, or a URDF with sphere collisions)")
+      ->required();
+  addRepairArgs(cmd, &a->mesh);
+  addTableOptions(cmd, &a->robot, robotFitOptionTable(),
+                  {"budget", "default_link_spheres", "link_spheres", "padding", "link_padding"});
+  cmd->add_option("--package-path", a->package_paths,
+                  "With a URDF: folder searched for package://NAME/ paths (repeatable)");
+  cmd->add_option("--port", a->port, "Port to listen on (default 0: any free port)")
+      ->check(CLI::Range(0, 65535));
+  cmd->add_option("--host", a->host, "Address to listen on (default 127.0.0.1: this machine only)");
+  cmd->add_flag("--no-open", a->no_open, "Do not open the page in a browser");
+  cmd->add_option("--output", a->output,
+                  "Where Save writes (default: the sphere file itself), in its extension's format");
+  cmd->add_option("--html", a->html,
+                  "Write a static page with the scene inlined to this file and exit (no server)");
+  cmd->add_option("--level", a->level, "A tree's level shown first (default: the leaves)")
+      ->check(CLI::Range(0, 26));
+  return {cmd, [a] { return runView(*a); }};
+}
+
+}  // namespace sphereset::cli

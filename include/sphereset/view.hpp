@@ -1,0 +1,201 @@
+// `sphereset view` (docs/view.md, the contract): a scene of solids with their sphere sets, the
+// edits a page makes to it, the certificate after each, and the HTTP API as a pure function of
+// the scene and a request, so that it is tested without sockets. ViewServer binds it to a port.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "sphereset/load.hpp"
+#include "sphereset/repair.hpp"
+#include "sphereset/robot.hpp"
+#include "sphereset/robot_fit.hpp"
+#include "sphereset/solid_index.hpp"
+#include "sphereset/sphere.hpp"
+#include "sphereset/sphere_io.hpp"
+#include "sphereset/sphere_tree.hpp"
+#include "sphereset/status.hpp"
+
+namespace sphereset {
+
+// One solid's certificate (the CERTIFICATE object of docs/view.md).
+struct ViewCertificate {
+  int64_t spheres = 0;
+  double er_sum = 0.0;
+  std::vector<double> outside_volume;  // per sphere, exact
+  double volume = 0.0;                 // of the solid
+  bool surface_covered = false, interior_covered = false, original_covered = false;
+  bool covered = false;  // all three
+  // Largest gap (surface, original or interior) over the bounding-box diagonal; unknown (no
+  // value) for an empty set.
+  std::optional<double> max_gap;
+  std::vector<int64_t> uncovered_triangles;  // indices into the displayed mesh
+  double seconds = 0.0;
+};
+
+// One solid of a scene and its set.
+struct ViewSolid {
+  std::string name;
+  std::string link;  // the robot's link, empty for a mesh
+  // The solid and the triangles it was made from (load.hpp), shared so that scenes copy cheaply.
+  std::shared_ptr<const SolidInput> input;
+  std::shared_ptr<const SolidIndex> index;
+  // The sets of a tree's levels, root first, or one set; `level` is the one shown and edited.
+  std::vector<std::vector<Sphere>> sets;
+  int level = 0;
+  std::optional<SphereTree> tree;  // the tree file's layout, for trees
+  ViewCertificate certificate;
+  const std::vector<Sphere>& spheres() const { return sets[static_cast<size_t>(level)]; }
+  // The mesh the page draws: the original triangles when the repair changed them, else the
+  // solid.
+  const Mesh& displayed() const;
+};
+
+enum class ViewKind { kMesh, kRobot };
+// How a save writes: a sphere set, a tree (its levels back in their slots), a robot's links as
+// cuRobo's YAML, or the URDF with sphere collisions.
+enum class ViewSaveFormat { kSet, kTree, kRobotYaml, kRobotUrdf };
+
+struct ViewScene {
+  ViewKind kind = ViewKind::kMesh;
+  std::string title;
+  int64_t version = 0;  // grows by one with every change
+  std::vector<ViewSolid> solids;
+  // Robots: the robot, the joint values a user set (jointState completes them), every joint's
+  // value, and the links of the sphere file in its order (saved with the solids' sets).
+  std::shared_ptr<const Robot> robot;
+  std::string urdf_path;
+  std::map<std::string, double> joint_input;
+  std::map<std::string, double> joint_values;
+  std::vector<LinkSpheres> file_links;
+  std::vector<Eigen::Isometry3d> poses;  // per solid: solid frame -> world
+  // Where and how a save writes, fixed when the scene is loaded.
+  std::string save_path;
+  ViewSaveFormat save_format = ViewSaveFormat::kSet;
+  SphereFileMeta save_meta;
+};
+
+struct ViewLoadOptions {
+  RepairOptions repair;                         // how a mesh (or a link's geometry) is made a solid
+  LinkSolid link_solid = LinkSolid::kEnvelope;  // a link's solid, as the robot command fits it
+  std::vector<std::string> package_paths;       // a URDF's package:// folders
+  bool use_ros_package_path = true;
+  int level = -1;      // a tree's level shown first; -1: the leaves
+  std::string output;  // where saves go; empty: the sphere file itself
+};
+
+// A scene from a mesh and a sphere set or tree file, or a URDF and its links' spheres (a
+// cuRobo/Lula YAML, or a URDF with sphere collisions). Errors: those of loadSolid, readSpheres,
+// readSphereTree, readLinkSpheres, loadRobot and linkSolid; kInvalidArgument for a level out of
+// range, a save path of a format that cannot hold the scene, or one that is an input
+// (checkOutputPath); kInvalidData for a sphere file naming a link the robot lacks or with no
+// solid to show.
+Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::string& spheres,
+                                  const ViewLoadOptions& options = {});
+
+// The certificate of one solid's set: the evaluation's coverage certificates and exact E_r,
+// with the original triangles when the repair changed them.
+ViewCertificate certifyViewSolid(const ViewSolid& solid);
+
+// One edit of a set (docs/view.md): set sphere `index`, add a sphere, delete sphere `index`.
+struct ViewEdit {
+  enum class Op { kSet, kAdd, kDelete };
+  Op op = Op::kSet;
+  int64_t index = 0;
+  Sphere sphere;
+};
+
+// The edits applied in order to solid `solid`'s shown set, each checked against the set as the
+// edits before it left it; all or nothing. Errors (kInvalidArgument, nothing changes): an
+// unknown solid, an index out of range, a NaN, infinite, out-of-range (limits::kMaxCoordinate)
+// or negative value, more than limits::kMaxSpheres spheres.
+Status applyViewEdits(ViewScene* scene, int64_t solid, const std::vector<ViewEdit>& edits);
+// The shown set of `solid` grown until it covers (boundSpheres, fit.hpp).
+Status boundViewSolid(ViewScene* scene, int64_t solid);
+// Shows level `level` of a tree. kInvalidArgument: not a tree, a level out of range.
+Status setViewLevel(ViewScene* scene, int64_t solid, int64_t level);
+// Sets the given joints (the others keep their values), clamped to their limits (jointState's
+// errors: kInvalidArgument for an unknown joint or a value that is not finite).
+Status setViewJoints(ViewScene* scene, const std::map<std::string, double>& joints);
+// Writes every set to the scene's save path in its format, atomically. Returns the bytes
+// written. Errors: those of the writers; kInvalidArgument when a tree's level no longer fits its
+// layout (spheres added or deleted).
+Expected<int64_t> saveViewScene(const ViewScene& scene);
+
+// The scene as JSON text (GET /api/scene), and one solid's displayed mesh as the binary of
+// GET /api/geometry (uint32 V, uint32 T, float32 xyz × V, uint32 abc × T, little-endian).
+std::string viewSceneJson(const ViewScene& scene);
+std::string viewGeometry(const ViewSolid& solid);
+
+// Whether this build has the page (web/ was built), and the one message for when it has not
+// (kInvalidData).
+bool viewPageAvailable();
+Status checkViewPage();
+// `html` with the scene's data element at its marker (docs/view.md, "Static pages").
+// kInvalidData when `html` has no marker.
+Expected<std::string> inlineViewData(std::string_view html, const ViewScene& scene);
+// The page of this build with the scene inlined; kInvalidData when the build has no page.
+Expected<std::string> viewStaticPage(const ViewScene& scene);
+
+// A request to the API: header names in lower case, each as often as it was sent.
+struct ViewRequest {
+  std::string method;  // "GET", "POST", ...
+  std::string path;    // without the query
+  std::map<std::string, std::string> query;
+  std::vector<std::pair<std::string, std::string>> headers;
+  std::string body;
+};
+
+struct ViewResponse {
+  int status = 200;
+  std::string content_type = "application/json";
+  std::string body;
+};
+
+// Who may talk to the server: its token and the address it listens on.
+struct ViewAccess {
+  std::string token;
+  std::string host = "127.0.0.1";
+  int port = 0;
+};
+
+// 128 random bits (std::random_device) as 32 hexadecimal digits.
+std::string randomViewToken();
+
+// The API (docs/view.md): checks the request (size, Host, Origin, token, path, method, body)
+// and answers it, changing `scene` only for a request that is right in every field.
+ViewResponse handleViewRequest(ViewScene* scene, const ViewAccess& access,
+                               const ViewRequest& request);
+
+// The API on a socket (cpp-httplib), one request at a time on the scene.
+class ViewServer {
+ public:
+  // Binds `host`:`port` (0: any free port) with a fresh token and serves in a thread of its
+  // own. kInvalidArgument when the address cannot be bound.
+  static Expected<std::unique_ptr<ViewServer>> start(ViewScene scene, const std::string& host,
+                                                     int port);
+  ~ViewServer();
+  ViewServer(const ViewServer&) = delete;
+  ViewServer& operator=(const ViewServer&) = delete;
+  const ViewAccess& access() const;
+  // http://HOST:PORT/?token=TOKEN
+  std::string url() const;
+  // The scene as it is now (a copy, taken under the server's lock).
+  ViewScene scene() const;
+  // Stops serving and joins the thread (also done by the destructor).
+  void stop();
+
+ private:
+  struct Impl;
+  explicit ViewServer(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sphereset

@@ -1,0 +1,289 @@
+// The view's HTTP API as a pure function (docs/view.md): a request checked in order (size, Host
+// and Origin, token, path, method, body: every field typed, finite and in range) and answered;
+// the scene changes only through the library's functions, which check again and change nothing
+// on an error.
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "sphereset/limits.hpp"
+#include "sphereset/view.hpp"
+#include "view/view_json.hpp"
+#include "view/view_page.hpp"
+
+namespace sphereset {
+namespace {
+
+// HTTP statuses of the contract.
+constexpr int kHttpOk = 200;
+constexpr int kHttpBadRequest = 400;
+constexpr int kHttpUnauthorized = 401;
+constexpr int kHttpForbidden = 403;
+constexpr int kHttpNotFound = 404;
+constexpr int kHttpBadMethod = 405;
+constexpr int kHttpTooLarge = 413;
+constexpr int kHttpServerError = 500;
+
+constexpr const char* kTokenHeader = "x-sphereset-token";
+
+std::string jsonText(const nlohmann::json& j) {
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+ViewResponse answer(const nlohmann::json& j) { return {kHttpOk, "application/json", jsonText(j)}; }
+
+ViewResponse refuse(int status, const std::string& message) {
+  return {status, "application/json", jsonText({{"error", message}})};
+}
+
+// A library error as an answer: a write that failed is the server's, anything else the request's.
+ViewResponse refuse(const Error& e) {
+  return refuse(e.code == ErrorCode::kWriteFailed ? kHttpServerError : kHttpBadRequest, e.message);
+}
+
+// The values of header `name` (lower case), as often as it was sent.
+std::vector<std::string> headerValues(const ViewRequest& r, const std::string& name) {
+  std::vector<std::string> v;
+  for (const auto& [k, value] : r.headers)
+    if (k == name) v.push_back(value);
+  return v;
+}
+
+// The Host values that name this server: its address, localhost and 127.0.0.1, with its port.
+std::set<std::string> ownHosts(const ViewAccess& a) {
+  const std::string port = ":" + std::to_string(a.port);
+  const bool v6 = a.host.find(':') != std::string::npos;
+  return {(v6 ? "[" + a.host + "]" : a.host) + port, "localhost" + port, "127.0.0.1" + port};
+}
+
+bool sameToken(const std::string& given, const std::string& token) {
+  if (given.size() != token.size() || token.empty()) return false;
+  unsigned char diff = 0;  // every byte compared, whatever the first difference
+  for (size_t i = 0; i < token.size(); ++i) diff |= static_cast<unsigned char>(given[i] ^ token[i]);
+  return diff == 0;
+}
+
+// 0 when the request may go on; else the status that refuses it, with `why`.
+int checkAccess(const ViewAccess& a, const ViewRequest& r, std::string* why) {
+  const std::set<std::string> hosts = ownHosts(a);
+  const std::vector<std::string> host = headerValues(r, "host");
+  if (host.size() != 1 || !hosts.count(host[0])) {
+    *why = "Host is not this server's address";
+    return kHttpForbidden;
+  }
+  // A browser sends Origin with every cross-site POST: only this server's own page may edit.
+  const std::vector<std::string> origin = headerValues(r, "origin");
+  const std::string scheme = "http://";
+  if (origin.size() > 1 ||
+      (origin.size() == 1 &&
+       (origin[0].rfind(scheme, 0) != 0 || !hosts.count(origin[0].substr(scheme.size()))))) {
+    *why = "Origin is not this server's page";
+    return kHttpForbidden;
+  }
+  std::vector<std::string> tokens = headerValues(r, kTokenHeader);
+  if (r.path == "/" && tokens.empty()) {
+    const auto q = r.query.find("token");
+    if (q != r.query.end()) tokens.push_back(q->second);
+  }
+  if (tokens.size() != 1 || !sameToken(tokens[0], a.token)) {
+    *why = tokens.empty() ? "no token" : "wrong token";
+    return kHttpUnauthorized;
+  }
+  return 0;
+}
+
+// Reading a request's body: every field checked, one message for the first that is wrong.
+struct BodyError {
+  std::string message;
+};
+
+void onlyFields(const nlohmann::json& j, const std::set<std::string>& allowed,
+                const std::string& where) {
+  if (!j.is_object()) throw BodyError{where + " must be a JSON object"};
+  for (const auto& [key, value] : j.items())
+    if (!allowed.count(key)) throw BodyError{where + ": unknown field '" + key + "'"};
+}
+
+const nlohmann::json& field(const nlohmann::json& j, const std::string& key,
+                            const std::string& where) {
+  const auto it = j.find(key);
+  if (it == j.end()) throw BodyError{where + ": missing field '" + key + "'"};
+  return *it;
+}
+
+int64_t integerField(const nlohmann::json& j, const std::string& key, const std::string& where) {
+  const nlohmann::json& v = field(j, key, where);
+  if (v.is_number_unsigned()) {
+    if (v.get<uint64_t>() > static_cast<uint64_t>(std::numeric_limits<int64_t>::max()))
+      throw BodyError{where + ": '" + key + "' is out of range"};
+    return static_cast<int64_t>(v.get<uint64_t>());
+  }
+  if (!v.is_number_integer()) throw BodyError{where + ": '" + key + "' must be an integer"};
+  return v.get<int64_t>();
+}
+
+double number(const nlohmann::json& v, const std::string& what) {
+  if (!v.is_number()) throw BodyError{what + " must be a number"};
+  const double d = v.get<double>();
+  if (!std::isfinite(d)) throw BodyError{what + " must be finite"};
+  return d;
+}
+
+Sphere sphereField(const nlohmann::json& j, const std::string& where) {
+  const nlohmann::json& v = field(j, "sphere", where);
+  if (!v.is_array() || v.size() != 4) throw BodyError{where + ": 'sphere' must be [x, y, z, r]"};
+  Sphere s;
+  for (int k = 0; k < 3; ++k) s.center[k] = number(v[static_cast<size_t>(k)], where + ": sphere");
+  s.radius = number(v[3], where + ": sphere radius");
+  return s;
+}
+
+std::vector<ViewEdit> editsOf(const nlohmann::json& body) {
+  const nlohmann::json& list = field(body, "edits", "body");
+  if (!list.is_array()) throw BodyError{"body: 'edits' must be a list"};
+  std::vector<ViewEdit> edits;
+  for (size_t e = 0; e < list.size(); ++e) {
+    const std::string where = "edit " + std::to_string(e);
+    const nlohmann::json& j = list[e];
+    onlyFields(j, {"op", "index", "sphere"}, where);
+    const nlohmann::json& op = field(j, "op", where);
+    ViewEdit edit;
+    if (op == "set") {
+      onlyFields(j, {"op", "index", "sphere"}, where);
+      edit.op = ViewEdit::Op::kSet;
+      edit.index = integerField(j, "index", where);
+      edit.sphere = sphereField(j, where);
+    } else if (op == "add") {
+      onlyFields(j, {"op", "sphere"}, where);
+      edit.op = ViewEdit::Op::kAdd;
+      edit.sphere = sphereField(j, where);
+    } else if (op == "delete") {
+      onlyFields(j, {"op", "index"}, where);
+      edit.op = ViewEdit::Op::kDelete;
+      edit.index = integerField(j, "index", where);
+    } else {
+      throw BodyError{where + ": 'op' must be \"set\", \"add\" or \"delete\""};
+    }
+    edits.push_back(edit);
+  }
+  return edits;
+}
+
+nlohmann::json setAnswer(const ViewScene& scene, int64_t solid) {
+  const ViewSolid& s = scene.solids[static_cast<size_t>(solid)];
+  return {{"version", scene.version},
+          {"spheres", view_json::spheres(s.spheres())},
+          {"certificate", view_json::certificate(s.certificate)}};
+}
+
+// The POST endpoints, on a parsed body.
+ViewResponse post(ViewScene* scene, const std::string& path, const nlohmann::json& body) {
+  if (path == "/api/edit") {
+    onlyFields(body, {"solid", "edits"}, "body");
+    const int64_t solid = integerField(body, "solid", "body");
+    if (Status st = applyViewEdits(scene, solid, editsOf(body)); !st) return refuse(st.error());
+    return answer(setAnswer(*scene, solid));
+  }
+  if (path == "/api/bound") {
+    onlyFields(body, {"solid"}, "body");
+    const int64_t solid = integerField(body, "solid", "body");
+    if (Status st = boundViewSolid(scene, solid); !st) return refuse(st.error());
+    return answer(setAnswer(*scene, solid));
+  }
+  if (path == "/api/level") {
+    onlyFields(body, {"solid", "level"}, "body");
+    const int64_t solid = integerField(body, "solid", "body");
+    const int64_t level = integerField(body, "level", "body");
+    if (Status st = setViewLevel(scene, solid, level); !st) return refuse(st.error());
+    return answer(setAnswer(*scene, solid));
+  }
+  if (path == "/api/pose") {
+    onlyFields(body, {"joints"}, "body");
+    const nlohmann::json& j = field(body, "joints", "body");
+    if (!j.is_object()) throw BodyError{"body: 'joints' must be an object"};
+    std::map<std::string, double> values;
+    for (const auto& [name, v] : j.items()) values[name] = number(v, "joint '" + name + "'");
+    if (Status st = setViewJoints(scene, values); !st) return refuse(st.error());
+    return answer({{"version", scene->version},
+                   {"poses", view_json::poses(*scene)},
+                   {"joints", view_json::joints(*scene)}});
+  }
+  // /api/save: the path is the scene's, fixed when it was loaded; the body names nothing.
+  onlyFields(body, {}, "body");
+  auto bytes = saveViewScene(*scene);
+  if (!bytes) return refuse(bytes.error());
+  return answer({{"path", scene->save_path}, {"bytes", *bytes}});
+}
+
+ViewResponse get(const ViewScene& scene, const ViewRequest& r) {
+  if (r.path == "/") {
+    if (Status st = checkViewPage(); !st) return refuse(kHttpServerError, st.error().message);
+    return {kHttpOk, "text/html; charset=utf-8", std::string(view_page::html())};
+  }
+  if (r.path == "/api/scene") return {kHttpOk, "application/json", viewSceneJson(scene)};
+  // /api/geometry?solid=K, K a decimal index.
+  const auto q = r.query.find("solid");
+  const std::string k = q == r.query.end() ? "" : q->second;
+  constexpr size_t kMaxIndexDigits = 9;
+  if (k.empty() || k.size() > kMaxIndexDigits ||
+      k.find_first_not_of("0123456789") != std::string::npos)
+    return refuse(kHttpBadRequest, "geometry: 'solid' must be a solid's index");
+  const auto solid = std::stoll(k);
+  if (solid >= static_cast<int64_t>(scene.solids.size()))
+    return refuse(kHttpBadRequest,
+                  "no solid " + k + " (the scene has " + std::to_string(scene.solids.size()) + ")");
+  return {kHttpOk, "application/octet-stream",
+          viewGeometry(scene.solids[static_cast<size_t>(solid)])};
+}
+
+}  // namespace
+
+std::string randomViewToken() {
+  std::random_device rd;
+  constexpr int kTokenWords = 4;  // 4 × 32 = 128 bits
+  std::string out;
+  for (int w = 0; w < kTokenWords; ++w) {
+    const uint32_t v = rd();
+    static constexpr char kHex[] = "0123456789abcdef";
+    for (int d = 7; d >= 0; --d) out.push_back(kHex[(v >> (4 * d)) & 0xfu]);
+  }
+  return out;
+}
+
+ViewResponse handleViewRequest(ViewScene* scene, const ViewAccess& access,
+                               const ViewRequest& request) {
+  if (request.body.size() > static_cast<size_t>(limits::kMaxViewRequestBytes))
+    return refuse(kHttpTooLarge,
+                  "the body is over " + std::to_string(limits::kMaxViewRequestBytes) + " bytes");
+  std::string why;
+  if (const int status = checkAccess(access, request, &why); status != 0)
+    return refuse(status, why);
+  static const std::set<std::string> kGets = {"/", "/api/scene", "/api/geometry"};
+  static const std::set<std::string> kPosts = {"/api/edit", "/api/bound", "/api/level", "/api/pose",
+                                               "/api/save"};
+  const bool is_get = kGets.count(request.path) > 0, is_post = kPosts.count(request.path) > 0;
+  if (!is_get && !is_post) return refuse(kHttpNotFound, "no such path: " + request.path);
+  const bool reads = request.method == "GET" || request.method == "HEAD";
+  if (is_get != reads || (is_post && request.method != "POST"))
+    return refuse(kHttpBadMethod, request.method + " is not allowed on " + request.path);
+  if (is_get) return get(*scene, request);
+  const std::vector<std::string> type = headerValues(request, "content-type");
+  if (type.size() != 1 || type[0].rfind("application/json", 0) != 0)
+    return refuse(kHttpBadRequest, "the body must be JSON (Content-Type: application/json)");
+  try {
+    const nlohmann::json body = nlohmann::json::parse(request.body);
+    return post(scene, request.path, body);
+  } catch (const nlohmann::json::exception& e) {
+    return refuse(kHttpBadRequest, std::string("bad JSON: ") + e.what());
+  } catch (const BodyError& e) {
+    return refuse(kHttpBadRequest, e.message);
+  }
+}
+
+}  // namespace sphereset

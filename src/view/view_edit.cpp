@@ -1,0 +1,183 @@
+// The changes a page makes to a view's scene (view.hpp): edits of a set, the bound, a tree's
+// level, a robot's joints, and the save. Each checks everything first and changes nothing on
+// an error; each change recertifies what it touched and counts one version.
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "sphereset/fit.hpp"
+#include "sphereset/limits.hpp"
+#include "sphereset/robot.hpp"
+#include "sphereset/sphere_io.hpp"
+#include "sphereset/view.hpp"
+
+namespace sphereset {
+namespace {
+
+Error invalid(const std::string& message) { return Error{ErrorCode::kInvalidArgument, message}; }
+
+Expected<ViewSolid*> solidAt(ViewScene* scene, int64_t solid) {
+  if (solid < 0 || solid >= static_cast<int64_t>(scene->solids.size()))
+    return invalid("no solid " + std::to_string(solid) + " (the scene has " +
+                   std::to_string(scene->solids.size()) + ")");
+  return &scene->solids[static_cast<size_t>(solid)];
+}
+
+Status checkEditSphere(const std::string& what, const Sphere& s) {
+  const std::array<double, 4> v = {s.center.x(), s.center.y(), s.center.z(), s.radius};
+  if (Status st = limits::checkCoordinates(what, v); !st) return st;
+  if (s.radius < 0.0) return invalid(what + ": negative radius");
+  return {};
+}
+
+// The shown set replaced by `spheres`, recertified, one version more.
+void storeSet(ViewScene* scene, ViewSolid* solid, std::vector<Sphere> spheres) {
+  solid->sets[static_cast<size_t>(solid->level)] = std::move(spheres);
+  solid->certificate = certifyViewSolid(*solid);
+  ++scene->version;
+}
+
+// Each solid's pose from the joint values: its link's frame in the root's; a link the root does
+// not reach stays at the identity.
+void updatePoses(ViewScene* scene, const std::map<std::string, Eigen::Isometry3d>& links) {
+  scene->poses.assign(scene->solids.size(), Eigen::Isometry3d::Identity());
+  for (size_t i = 0; i < scene->solids.size(); ++i) {
+    const auto it = links.find(scene->solids[i].link);
+    if (it != links.end()) scene->poses[i] = it->second;
+  }
+}
+
+// A tree's levels back in their slots, each level's set in the order of its used slots.
+Expected<SphereTree> editedTree(const ViewSolid& solid) {
+  SphereTree t = *solid.tree;
+  for (int l = 0; l <= t.depth; ++l) {
+    const std::vector<Sphere>& set = solid.sets[static_cast<size_t>(l)];
+    size_t k = 0;
+    for (int64_t slot = t.levelBegin(l); slot < t.levelBegin(l) + t.levelSize(l); ++slot)
+      if (t.used(slot)) {
+        if (k < set.size()) t.nodes[static_cast<size_t>(slot)] = set[k];
+        ++k;
+      }
+    if (k != set.size())
+      return invalid("level " + std::to_string(l) + " holds " + std::to_string(set.size()) +
+                     " spheres, its layout " + std::to_string(k) +
+                     ": a tree keeps its layout (save a set with --output SET.txt)");
+  }
+  return t;
+}
+
+}  // namespace
+
+Status applyViewEdits(ViewScene* scene, int64_t solid, const std::vector<ViewEdit>& edits) {
+  auto s = solidAt(scene, solid);
+  if (!s) return s.error();
+  std::vector<Sphere> set = (*s)->spheres();
+  for (size_t e = 0; e < edits.size(); ++e) {
+    const ViewEdit& edit = edits[e];
+    const std::string what = "edit " + std::to_string(e);
+    if (edit.op != ViewEdit::Op::kAdd &&
+        (edit.index < 0 || edit.index >= static_cast<int64_t>(set.size())))
+      return invalid(what + ": no sphere " + std::to_string(edit.index) + " (the set has " +
+                     std::to_string(set.size()) + ")");
+    if (edit.op != ViewEdit::Op::kDelete)
+      if (Status st = checkEditSphere(what, edit.sphere); !st) return st;
+    switch (edit.op) {
+      case ViewEdit::Op::kSet:
+        set[static_cast<size_t>(edit.index)] = edit.sphere;
+        break;
+      case ViewEdit::Op::kAdd:
+        if (set.size() >= static_cast<size_t>(limits::kMaxSpheres))
+          return invalid(what + ": more than " + std::to_string(limits::kMaxSpheres) + " spheres");
+        set.push_back(edit.sphere);
+        break;
+      case ViewEdit::Op::kDelete:
+        set.erase(set.begin() + edit.index);
+        break;
+    }
+  }
+  storeSet(scene, *s, std::move(set));
+  return {};
+}
+
+Status boundViewSolid(ViewScene* scene, int64_t solid) {
+  auto s = solidAt(scene, solid);
+  if (!s) return s.error();
+  BoundOptions bo;
+  bo.original = (*s)->input->original();
+  auto bounded = boundSpheres(*(*s)->index, (*s)->spheres(), bo);
+  if (!bounded) return bounded.error();
+  storeSet(scene, *s, std::move(bounded).value());
+  return {};
+}
+
+Status setViewLevel(ViewScene* scene, int64_t solid, int64_t level) {
+  auto s = solidAt(scene, solid);
+  if (!s) return s.error();
+  if (!(*s)->tree) return invalid("solid " + std::to_string(solid) + " is a set, not a tree");
+  const auto levels = static_cast<int64_t>((*s)->sets.size());
+  if (level < 0 || level >= levels)
+    return invalid("no level " + std::to_string(level) + " (the tree has levels 0 to " +
+                   std::to_string(levels - 1) + ")");
+  (*s)->level = static_cast<int>(level);
+  (*s)->certificate = certifyViewSolid(**s);
+  ++scene->version;
+  return {};
+}
+
+Status setViewJoints(ViewScene* scene, const std::map<std::string, double>& joints) {
+  if (!scene->robot) {
+    if (joints.empty()) return {};
+    return invalid("no joint '" + joints.begin()->first + "' (the scene is a mesh)");
+  }
+  std::map<std::string, double> input = scene->joint_input;
+  for (const auto& [name, value] : joints) input[name] = value;
+  auto state = jointState(*scene->robot, input);
+  if (!state) return state.error();
+  auto poses = linkPoses(*scene->robot, state->values);
+  if (!poses) return poses.error();
+  // What the user set, clamped as jointState clamped it (so that a slider shows the limit).
+  for (auto& [name, value] : input) value = state->values.at(name);
+  scene->joint_input = std::move(input);
+  scene->joint_values = std::move(state->values);
+  updatePoses(scene, *poses);
+  ++scene->version;
+  return {};
+}
+
+Expected<int64_t> saveViewScene(const ViewScene& scene) {
+  Status st;
+  switch (scene.save_format) {
+    case ViewSaveFormat::kSet:
+      st = writeSpheres(scene.save_path, scene.solids.at(0).spheres(), scene.save_meta);
+      break;
+    case ViewSaveFormat::kTree: {
+      auto tree = editedTree(scene.solids.at(0));
+      if (!tree) return tree.error();
+      st = writeSphereTree(scene.save_path, *tree, scene.save_meta);
+      break;
+    }
+    case ViewSaveFormat::kRobotYaml:
+    case ViewSaveFormat::kRobotUrdf: {
+      std::vector<LinkSpheres> links = scene.file_links;
+      for (LinkSpheres& l : links)
+        for (const ViewSolid& s : scene.solids)
+          if (s.link == l.link) l.spheres = s.spheres();
+      st = scene.save_format == ViewSaveFormat::kRobotYaml
+               ? writeRobotSpheres(scene.save_path, links, nullptr, scene.save_meta)
+               : writeSphereUrdf(scene.urdf_path, scene.save_path, links);
+      break;
+    }
+  }
+  if (!st) return st.error();
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(scene.save_path, ec);
+  if (ec) return Error{ErrorCode::kWriteFailed, scene.save_path + ": " + ec.message()};
+  return static_cast<int64_t>(bytes);
+}
+
+}  // namespace sphereset

@@ -1,0 +1,230 @@
+// The view's JSON and binary answers (docs/view.md), and the static page that inlines them.
+#include "view/view_json.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <numbers>
+#include <string>
+
+#include "view/view_page.hpp"
+
+namespace sphereset {
+namespace view_json {
+namespace {
+
+const char* jointTypeName(RobotJoint::Type t) {
+  switch (t) {
+    case RobotJoint::Type::kFixed:
+      return "fixed";
+    case RobotJoint::Type::kRevolute:
+      return "revolute";
+    case RobotJoint::Type::kContinuous:
+      return "continuous";
+    case RobotJoint::Type::kPrismatic:
+      return "prismatic";
+    case RobotJoint::Type::kOther:
+      break;
+  }
+  return "other";
+}
+
+const char* saveFormatName(const ViewScene& scene) {
+  switch (scene.save_format) {
+    case ViewSaveFormat::kRobotYaml:
+      return "yaml";
+    case ViewSaveFormat::kRobotUrdf:
+      return "urdf";
+    case ViewSaveFormat::kSet:
+    case ViewSaveFormat::kTree:
+      break;
+  }
+  auto f = sphereFormatFromPath(scene.save_path);
+  if (!f) return "text";
+  switch (*f) {
+    case SphereFormat::kJson:
+      return "json";
+    case SphereFormat::kSph:
+      return "sph";
+    case SphereFormat::kYaml:
+      return "yaml";
+    case SphereFormat::kText:
+      break;
+  }
+  return "text";
+}
+
+}  // namespace
+
+nlohmann::json spheres(const std::vector<Sphere>& set) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const Sphere& s : set) a.push_back({s.center.x(), s.center.y(), s.center.z(), s.radius});
+  return a;
+}
+
+nlohmann::json certificate(const ViewCertificate& c) {
+  return {{"spheres", c.spheres},
+          {"er_sum", c.er_sum},
+          {"outside_volume", c.outside_volume},
+          {"volume", c.volume},
+          {"surface_covered", c.surface_covered},
+          {"interior_covered", c.interior_covered},
+          {"original_covered", c.original_covered},
+          {"covered", c.covered},
+          {"max_gap", c.max_gap ? nlohmann::json(*c.max_gap) : nlohmann::json()},
+          {"uncovered_triangles", c.uncovered_triangles},
+          {"seconds", c.seconds}};
+}
+
+nlohmann::json solid(const ViewSolid& s) {
+  const Mesh& shown = s.displayed();
+  const Aabb box = boundingBox(shown);
+  nlohmann::json levels;
+  if (s.tree) levels = {{"count", s.sets.size()}, {"current", s.level}};
+  return {{"name", s.name},
+          {"link", s.link.empty() ? nlohmann::json() : nlohmann::json(s.link)},
+          {"triangles", shown.triangles.size()},
+          {"vertices", shown.vertices.size()},
+          {"bounds",
+           {{box.min.x(), box.min.y(), box.min.z()}, {box.max.x(), box.max.y(), box.max.z()}}},
+          {"diagonal", box.diagonal()},
+          {"spheres", spheres(s.spheres())},
+          {"levels", levels},
+          {"certificate", certificate(s.certificate)}};
+}
+
+nlohmann::json joints(const ViewScene& scene) {
+  nlohmann::json a = nlohmann::json::array();
+  if (!scene.robot) return a;
+  // The joints a user moves: revolute, continuous and prismatic, not mimics (they follow).
+  for (const RobotJoint& j : scene.robot->joints) {
+    const bool movable = j.type == RobotJoint::Type::kRevolute ||
+                         j.type == RobotJoint::Type::kContinuous ||
+                         j.type == RobotJoint::Type::kPrismatic;
+    if (!movable || j.mimic) continue;
+    const bool turns = j.type == RobotJoint::Type::kContinuous;
+    const auto v = scene.joint_values.find(j.name);
+    a.push_back({{"name", j.name},
+                 {"type", jointTypeName(j.type)},
+                 {"lower", turns ? -std::numbers::pi : j.lower},
+                 {"upper", turns ? std::numbers::pi : j.upper},
+                 {"value", v == scene.joint_values.end() ? 0.0 : v->second}});
+  }
+  return a;
+}
+
+nlohmann::json poses(const ViewScene& scene) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const Eigen::Isometry3d& p : scene.poses) {
+    nlohmann::json m = nlohmann::json::array();
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) m.push_back(p.matrix()(r, c));
+    a.push_back(m);
+  }
+  return a;
+}
+
+nlohmann::json scene(const ViewScene& sc) {
+  nlohmann::json solids = nlohmann::json::array();
+  for (const ViewSolid& s : sc.solids) solids.push_back(solid(s));
+  return {{"kind", sc.kind == ViewKind::kRobot ? "robot" : "mesh"},
+          {"title", sc.title},
+          {"version", sc.version},
+          {"solids", solids},
+          {"joints", joints(sc)},
+          {"poses", poses(sc)},
+          {"save", {{"path", sc.save_path}, {"format", saveFormatName(sc)}}}};
+}
+
+}  // namespace view_json
+
+namespace {
+
+void putU32(std::string* out, uint32_t v) {
+  for (int b = 0; b < 4; ++b) out->push_back(static_cast<char>((v >> (8 * b)) & 0xffu));
+}
+
+void putF32(std::string* out, double v) {
+  const auto f = static_cast<float>(v);
+  uint32_t bits = 0;
+  std::memcpy(&bits, &f, sizeof bits);
+  putU32(out, bits);
+}
+
+std::string base64(const std::string& bytes) {
+  static constexpr char kDigits[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  for (size_t i = 0; i < bytes.size(); i += 3) {
+    uint32_t v = static_cast<uint32_t>(static_cast<unsigned char>(bytes[i])) << 16;
+    if (i + 1 < bytes.size())
+      v |= static_cast<uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8;
+    if (i + 2 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 2]);
+    out.push_back(kDigits[(v >> 18) & 63]);
+    out.push_back(kDigits[(v >> 12) & 63]);
+    out.push_back(i + 1 < bytes.size() ? kDigits[(v >> 6) & 63] : '=');
+    out.push_back(i + 2 < bytes.size() ? kDigits[v & 63] : '=');
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string viewSceneJson(const ViewScene& scene) {
+  return view_json::scene(scene).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string viewGeometry(const ViewSolid& solid) {
+  const Mesh& m = solid.displayed();
+  std::string out;
+  constexpr size_t kHeaderBytes = 8, kVertexBytes = 12, kTriangleBytes = 12;
+  out.reserve(kHeaderBytes + kVertexBytes * m.vertices.size() +
+              kTriangleBytes * m.triangles.size());
+  putU32(&out, static_cast<uint32_t>(m.vertices.size()));
+  putU32(&out, static_cast<uint32_t>(m.triangles.size()));
+  for (const Vec3& v : m.vertices)
+    for (int k = 0; k < 3; ++k) putF32(&out, v[k]);
+  for (const Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k) putU32(&out, static_cast<uint32_t>(t[static_cast<size_t>(k)]));
+  return out;
+}
+
+bool viewPageAvailable() { return !view_page::html().empty(); }
+
+Expected<std::string> inlineViewData(std::string_view html, const ViewScene& scene) {
+  const size_t at = html.find(view_page::kDataMarker);
+  if (at == std::string_view::npos)
+    return Error{ErrorCode::kInvalidData,
+                 "the page has no data marker " + std::string(view_page::kDataMarker)};
+  nlohmann::json data = view_json::scene(scene);
+  for (size_t i = 0; i < scene.solids.size(); ++i)
+    data["solids"][i]["geometry"] = base64(viewGeometry(scene.solids[i]));
+  // '<' only occurs inside JSON strings, where \u003c means the same: the text can then never
+  // close the script element.
+  std::string text;
+  for (const char c : data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)) {
+    if (c == '<')
+      text += "\\u003c";
+    else
+      text += c;
+  }
+  std::string out(html.substr(0, at));
+  out += "<script id=\"sphereset-data\" type=\"application/json\">" + text + "</script>";
+  out += html.substr(at + view_page::kDataMarker.size());
+  return out;
+}
+
+Status checkViewPage() {
+  if (viewPageAvailable()) return {};
+  return Error{ErrorCode::kInvalidData,
+               "this build has no view page (web/ was not built: Node.js and npm were missing "
+               "when it was configured)"};
+}
+
+Expected<std::string> viewStaticPage(const ViewScene& scene) {
+  if (Status st = checkViewPage(); !st) return st.error();
+  return inlineViewData(view_page::html(), scene);
+}
+
+}  // namespace sphereset

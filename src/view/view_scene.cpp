@@ -1,0 +1,228 @@
+// The view's scene (view.hpp): a mesh and its set or tree, or a robot's links and their sets,
+// each solid made as `sphereset fit` (or `sphereset robot`) makes it, and its certificate.
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sphereset/evaluate.hpp"
+#include "sphereset/load.hpp"
+#include "sphereset/robot.hpp"
+#include "sphereset/robot_fit.hpp"
+#include "sphereset/sphere_io.hpp"
+#include "sphereset/view.hpp"
+
+namespace sphereset {
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+bool endsWithLower(const std::string& path, const std::string& tail) {
+  std::string name = path;
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return name.size() >= tail.size() &&
+         name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// A solid from a loaded input: its index and the certificate of its set.
+ViewSolid makeViewSolid(std::string name, std::string link, SolidInput input,
+                        std::vector<std::vector<Sphere>> sets, int level) {
+  ViewSolid s;
+  s.name = std::move(name);
+  s.link = std::move(link);
+  auto shared = std::make_shared<const SolidInput>(std::move(input));
+  s.index = std::make_shared<const SolidIndex>(shared->repair.solid);
+  s.input = std::move(shared);
+  s.sets = std::move(sets);
+  s.level = level;
+  s.certificate = certifyViewSolid(s);
+  return s;
+}
+
+// The save path and format of a mesh's scene: a tree goes back as a tree when the path is a
+// tree file (.sph, .json), anything else as the shown level's set.
+Status setMeshSave(ViewScene* scene, const std::string& spheres_path, bool is_tree,
+                   const std::string& output) {
+  const std::string path = output.empty() ? spheres_path : output;
+  auto format = sphereFormatFromPath(path);
+  if (!format) return format.error();
+  scene->save_path = std::filesystem::absolute(path).lexically_normal().string();
+  const bool tree_file = *format == SphereFormat::kSph || *format == SphereFormat::kJson;
+  scene->save_format = is_tree && tree_file ? ViewSaveFormat::kTree : ViewSaveFormat::kSet;
+  return {};
+}
+
+Expected<ViewScene> loadMeshScene(const std::string& mesh_path, const std::string& spheres_path,
+                                  const ViewLoadOptions& o) {
+  ViewScene scene;
+  scene.kind = ViewKind::kMesh;
+  scene.title = std::filesystem::path(mesh_path).stem().string();
+  auto solid = loadSolid(mesh_path, o.repair);
+  if (!solid) return solid.error();
+  auto tree = readSphereTree(spheres_path);
+  if (!tree) return tree.error();
+  // Plain sets read as two-level trees; a JSON tree file does not read as a plain set (as
+  // `sphereset eval` tells them apart).
+  auto plain = readSpheres(spheres_path);
+  const bool is_tree = tree->depth >= 2 || !plain.ok();
+  std::vector<std::vector<Sphere>> sets;
+  int level = 0;
+  if (is_tree) {
+    for (int l = 0; l <= tree->depth; ++l) sets.push_back(tree->level(l));
+    level = o.level < 0 ? tree->depth : o.level;
+    if (level > tree->depth)
+      return Error{ErrorCode::kInvalidArgument,
+                   spheres_path + ": level " + std::to_string(o.level) +
+                       " (the tree has levels 0 to " + std::to_string(tree->depth) + ")"};
+  } else {
+    if (o.level >= 0)
+      return Error{ErrorCode::kInvalidArgument,
+                   spheres_path + ": a sphere set has no levels (--level is for trees)"};
+    sets.push_back(std::move(plain).value());
+  }
+  if (lowerExtension(spheres_path) == ".yaml" || lowerExtension(spheres_path) == ".yml") {
+    // A one-link YAML keeps its link's name when saved.
+    auto links = readLinkSpheres(spheres_path);
+    if (links && links->size() == 1) scene.save_meta.name = (*links)[0].link;
+  }
+  scene.save_meta.source_mesh = mesh_path;
+  if (Status st = setMeshSave(&scene, spheres_path, is_tree, o.output); !st) return st.error();
+  if (Status st = checkOutputPath(scene.save_path, {mesh_path}); !st) return st.error();
+  ViewSolid s = makeViewSolid(scene.title, "", std::move(solid).value(), std::move(sets), level);
+  if (is_tree) s.tree = std::move(tree).value();
+  scene.solids.push_back(std::move(s));
+  scene.poses.assign(1, Eigen::Isometry3d::Identity());
+  return scene;
+}
+
+// The links' spheres of a robot's sphere file: a YAML (cuRobo, Lula) or a URDF with sphere
+// collisions (each link's sphere primitives).
+Expected<std::vector<LinkSpheres>> robotSphereFile(const std::string& path,
+                                                   const RobotLoadOptions& lo) {
+  if (lowerExtension(path) != ".urdf") return readLinkSpheres(path);
+  auto with_spheres = loadRobot(path, lo);
+  if (!with_spheres) return with_spheres.error();
+  // The links whose collisions are all spheres: those `sphereset robot` wrote (a link of
+  // other geometry keeps it, and a save must not replace it with nothing).
+  std::vector<LinkSpheres> links;
+  for (const RobotLink& l : with_spheres->links) {
+    const bool spheres_only =
+        !l.geometry.empty() && !l.from_visual &&
+        std::all_of(l.geometry.begin(), l.geometry.end(),
+                    [](const LinkGeometry& g) { return g.kind == LinkGeometry::Kind::kSphere; });
+    if (spheres_only) links.push_back({l.name, linkSpheres(l)});
+  }
+  return links;
+}
+
+Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& spheres_path,
+                                   const ViewLoadOptions& o) {
+  ViewScene scene;
+  scene.kind = ViewKind::kRobot;
+  RobotLoadOptions lo;
+  lo.package_paths = o.package_paths;
+  lo.use_ros_package_path = o.use_ros_package_path;
+  auto robot = loadRobot(urdf, lo);
+  if (!robot) return robot.error();
+  scene.title = robot->name;
+  scene.urdf_path = urdf;
+  auto links = robotSphereFile(spheres_path, lo);
+  if (!links) return links.error();
+  if (o.level >= 0)
+    return Error{ErrorCode::kInvalidArgument,
+                 spheres_path + ": a robot's sets have no levels (--level is for trees)"};
+  auto link_repair = linkRepairOptions(o.repair, o.link_solid);
+  if (!link_repair) return link_repair.error();
+  for (const LinkSpheres& ls : *links) {
+    const auto it = std::find_if(robot->links.begin(), robot->links.end(),
+                                 [&](const RobotLink& l) { return l.name == ls.link; });
+    if (it == robot->links.end())
+      return Error{ErrorCode::kInvalidData,
+                   spheres_path + ": link '" + ls.link + "' is not a link of " + robot->name};
+    // A link drawn needs geometry other than sphere primitives (those are spheres already).
+    const bool has_solid = std::any_of(it->geometry.begin(), it->geometry.end(), [](const auto& g) {
+      return g.kind != LinkGeometry::Kind::kSphere;
+    });
+    if (!has_solid || ls.spheres.empty()) continue;
+    auto solid = linkSolid(*it, *link_repair, urdf + ": link '" + ls.link + "'");
+    if (!solid) return solid.error();
+    scene.solids.push_back(
+        makeViewSolid(ls.link, ls.link, std::move(solid).value(), {ls.spheres}, 0));
+  }
+  if (scene.solids.empty())
+    return Error{ErrorCode::kInvalidData,
+                 spheres_path + ": no link with both geometry and spheres in " + robot->name};
+  scene.file_links = std::move(links).value();
+  scene.robot = std::make_shared<const Robot>(std::move(robot).value());
+  const std::string path = o.output.empty() ? spheres_path : o.output;
+  if (endsWithLower(path, ".urdf")) {
+    scene.save_format = ViewSaveFormat::kRobotUrdf;
+  } else if (endsWithLower(path, ".yml") || endsWithLower(path, ".yaml")) {
+    if (endsWithLower(path, ".lula.yml") || endsWithLower(path, ".lula.yaml"))
+      return Error{ErrorCode::kInvalidArgument,
+                   path + ": saves write cuRobo's YAML; give --output ROBOT.yml"};
+    scene.save_format = ViewSaveFormat::kRobotYaml;
+  } else {
+    return Error{ErrorCode::kInvalidArgument,
+                 path + ": a robot's spheres are saved as .yml/.yaml (cuRobo) or .urdf"};
+  }
+  scene.save_path = std::filesystem::absolute(path).lexically_normal().string();
+  if (Status st = checkOutputPath(scene.save_path, {urdf}); !st) return st.error();
+  if (Status st = setViewJoints(&scene, {}); !st) return st.error();
+  scene.version = 0;
+  return scene;
+}
+
+}  // namespace
+
+const Mesh& ViewSolid::displayed() const {
+  const Mesh* original = originalTriangles(input->repair);
+  return original ? *original : input->repair.solid;
+}
+
+ViewCertificate certifyViewSolid(const ViewSolid& solid) {
+  ViewCertificate c;
+  const std::vector<Sphere>& spheres = solid.spheres();
+  c.spheres = static_cast<int64_t>(spheres.size());
+  c.volume = signedVolume(solid.input->repair.solid);
+  if (spheres.empty()) return c;  // nothing covered; no gap to measure
+  // The certificates and the exact E_r only: no Monte Carlo, proximity or shadows. The triangle
+  // ids of the gaps come with the incremental certificate (certificate.hpp); the evaluation
+  // counts them only, so uncovered_triangles stays empty here.
+  EvalOptions eo;
+  eo.union_samples = 0;
+  eo.proximity_segments = 0;
+  eo.shadow_resolution = 0;
+  eo.original = solid.input->original();
+  eo.walls = solid.input->walls();
+  auto e = evaluateSpheres(*solid.index, spheres, eo);
+  if (!e) return c;  // the sets are checked before they are stored: not reached
+  c.er_sum = e->er_sum;
+  c.outside_volume = e->outside_volume;
+  c.volume = e->mesh_volume;
+  c.surface_covered = e->surface_covered;
+  c.interior_covered = e->interior_covered;
+  c.original_covered = e->original_covered;
+  c.covered = c.surface_covered && c.interior_covered && c.original_covered;
+  c.max_gap = std::max({e->max_surface_gap, e->max_original_gap, e->max_interior_gap});
+  c.seconds = e->seconds;
+  return c;
+}
+
+Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::string& spheres,
+                                  const ViewLoadOptions& options) {
+  if (lowerExtension(mesh_or_urdf) == ".urdf")
+    return loadRobotScene(mesh_or_urdf, spheres, options);
+  return loadMeshScene(mesh_or_urdf, spheres, options);
+}
+
+}  // namespace sphereset

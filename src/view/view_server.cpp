@@ -1,0 +1,124 @@
+// The view's API on a socket (cpp-httplib): every request, whatever its method and path, goes to
+// handleViewRequest under one lock, so the scene sees one request at a time.
+#include <httplib.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <utility>
+
+#include "sphereset/limits.hpp"
+#include "sphereset/view.hpp"
+
+namespace sphereset {
+
+struct ViewServer::Impl {
+  ViewScene scene;
+  ViewAccess access;
+  mutable std::mutex lock;
+  httplib::Server http;
+  std::thread thread;
+};
+
+namespace {
+
+// The request as the API sees it: header names in lower case, the query's first values.
+ViewRequest viewRequest(const httplib::Request& req) {
+  ViewRequest r;
+  r.method = req.method;
+  r.path = req.path;
+  for (const auto& [k, v] : req.params) r.query.emplace(k, v);
+  for (const auto& [k, v] : req.headers) {
+    std::string name = k;
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    // httplib adds these itself; they are not the client's.
+    if (name == "remote_addr" || name == "remote_port" || name == "local_addr" ||
+        name == "local_port")
+      continue;
+    r.headers.emplace_back(std::move(name), v);
+  }
+  r.body = req.body;
+  return r;
+}
+
+}  // namespace
+
+ViewServer::ViewServer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+ViewServer::~ViewServer() { stop(); }
+
+Expected<std::unique_ptr<ViewServer>> ViewServer::start(ViewScene scene, const std::string& host,
+                                                        int port) {
+  auto impl = std::make_unique<Impl>();
+  impl->scene = std::move(scene);
+  impl->access.token = randomViewToken();
+  impl->access.host = host;
+  Impl* self = impl.get();
+  const auto handler = [self](const httplib::Request& req, httplib::Response& res) {
+    const ViewRequest r = viewRequest(req);
+    ViewResponse answer;
+    {
+      std::lock_guard<std::mutex> guard(self->lock);
+      answer = handleViewRequest(&self->scene, self->access, r);
+    }
+    res.status = answer.status;
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(std::move(answer.body), answer.content_type.c_str());
+  };
+  const std::string any = ".*";
+  self->http.Get(any, handler);
+  self->http.Post(any, handler);
+  self->http.Put(any, handler);
+  self->http.Patch(any, handler);
+  self->http.Delete(any, handler);
+  self->http.Options(any, handler);
+  // httplib answers a body over the cap itself (413) before any handler runs.
+  self->http.set_payload_max_length(static_cast<size_t>(limits::kMaxViewRequestBytes));
+  self->http.set_error_handler([](const httplib::Request&, httplib::Response& res) {
+    if (res.body.empty())
+      res.set_content("{\"error\": \"HTTP " + std::to_string(res.status) + "\"}",
+                      "application/json");
+  });
+  const int bound = port == 0 ? self->http.bind_to_any_port(host)
+                              : (self->http.bind_to_port(host, port) ? port : -1);
+  if (bound <= 0)
+    return Error{ErrorCode::kInvalidArgument, "cannot listen on " + host + ":" +
+                                                  std::to_string(port) +
+                                                  " (address in use or not this machine's)"};
+  self->access.port = bound;
+  self->thread = std::thread([self] { self->http.listen_after_bind(); });
+  // stop() only stops a server that has begun listening: wait for that here.
+  constexpr auto kStartPoll = std::chrono::milliseconds(1);
+  while (!self->http.is_running()) std::this_thread::sleep_for(kStartPoll);
+  return std::unique_ptr<ViewServer>(new ViewServer(std::move(impl)));
+}
+
+const ViewAccess& ViewServer::access() const { return impl_->access; }
+
+std::string ViewServer::url() const {
+  // Listening on every address (0.0.0.0, ::): the local one is one of them.
+  const std::string& h = impl_->access.host;
+  const bool any = h == "0.0.0.0" || h == "::";
+  const bool v6 = h.find(':') != std::string::npos;
+  const std::string host = any ? "127.0.0.1" : v6 ? "[" + h + "]" : h;
+  return "http://" + host + ":" + std::to_string(impl_->access.port) +
+         "/?token=" + impl_->access.token;
+}
+
+ViewScene ViewServer::scene() const {
+  std::lock_guard<std::mutex> guard(impl_->lock);
+  return impl_->scene;
+}
+
+void ViewServer::stop() {
+  if (!impl_) return;
+  impl_->http.stop();
+  if (impl_->thread.joinable()) impl_->thread.join();
+}
+
+}  // namespace sphereset

@@ -1,0 +1,31 @@
+# Command-line behaviour of `sphereset view` (included by cli_tests.cmake, whose cli_test, `cli`,
+# `work`, `link` and `data` it uses): bad inputs refused with their one-line messages and exit
+# codes before anything is served; --html writes the page with the scene inlined (or, in a
+# build without the page, says so with exit 9); the server prints its address and stops
+# cleanly on SIGTERM.
+cli_test(view_missing_mesh 3 ARGS view ${work}/missing.off ${work}/bound.txt --html ${work}/never70.html
+         STDERR "missing.off: no such file" FORBID ${work}/never70.html)
+cli_test(view_bad_spheres 4 ARGS view ${link} ${work}/bad.txt --html ${work}/never71.html
+         STDERR "bad.txt:1: expected four numbers" FORBID ${work}/never71.html)
+cli_test(view_level_of_a_set 2 ARGS view ${link} ${work}/bound.txt --level 1 --no-open
+         STDERR "bound.txt: a sphere set has no levels")
+cli_test(view_bad_port 2 ARGS view ${link} ${work}/bound.txt --port 70000 --no-open)
+cli_test(view_html_over_input 2 ARGS view ${link} ${work}/bound.txt --html ${work}/bound.txt
+         STDERR "bound.txt")
+cli_test(view_open_mesh 5 ARGS view ${work}/open.off ${work}/bound.txt --repair off --no-open
+         STDERR "open.off: not a closed solid")
+cli_test(view_robot_unknown_link 4 ARGS view ${data}/robot/three_link.urdf ${work}/view_elbow.yml
+         --package-path ${data}/robot --link-solid walls --no-open
+         STDERR "link 'elbow' is not a link of three_link")
+file(WRITE ${work}/view_elbow.yml "collision_spheres:\n  elbow:\n    - center: [0, 0, 0]\n      radius: 0.1\n")
+add_test(NAME cli.view_html
+         COMMAND ${CMAKE_COMMAND} -DCLI=${cli} -DMESH=${link} -DSPHERES=${work}/bound.txt
+           -DOUT=${work}/view.html -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)
+add_test(NAME cli.view_serves_until_sigterm
+         COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/view_serve.sh ${cli} ${link} ${work}/bound.txt)
+file(WRITE ${work}/view_robot.yml "collision_spheres:\n  link1:\n    - center: [0, 0, 0.2]\n      radius: 0.25\n  link2:\n    - center: [0.1, -0.2, 0.3]\n      radius: 0.4\n")
+add_test(NAME cli.view_html_robot
+         COMMAND ${CMAKE_COMMAND} -DCLI=${cli} -DMESH=${data}/robot/three_link.urdf
+           -DSPHERES=${work}/view_robot.yml -DOUT=${work}/view_robot.html
+           "-DEXTRA=--package-path|${data}/robot|--link-solid|walls" -DSOLIDS=2
+           -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)

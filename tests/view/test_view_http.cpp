@@ -1,0 +1,143 @@
+// The view's API over real HTTP: a ViewServer on a free port of 127.0.0.1 and cpp-httplib's
+// client, as a page or a hostile page would talk to it.
+#include <gtest/gtest.h>
+#include <httplib.h>
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "sphereset/limits.hpp"
+#include "view/view_fixture.hpp"
+
+namespace sphereset::test {
+namespace {
+
+class ViewHttpTest : public ViewTest {
+ public:
+  void SetUp() override {
+    ViewTest::SetUp();
+    auto server = ViewServer::start(boxScene(), "127.0.0.1", 0);
+    ASSERT_TRUE(server.ok()) << server.error().message;
+    server_ = std::move(server).value();
+    client_ = std::make_unique<httplib::Client>("127.0.0.1", server_->access().port);
+  }
+  void TearDown() override {
+    client_.reset();
+    server_.reset();
+    ViewTest::TearDown();
+  }
+  httplib::Headers token() const { return {{"X-Sphereset-Token", server_->access().token}}; }
+  httplib::Result postJson(const std::string& path, const nlohmann::json& body,
+                           httplib::Headers headers) {
+    return client_->Post(path.c_str(), headers, body.dump(), "application/json");
+  }
+  int64_t version() const { return server_->scene().version; }
+
+  std::unique_ptr<ViewServer> server_;
+  std::unique_ptr<httplib::Client> client_;
+};
+
+TEST_F(ViewHttpTest, ServesTheSceneAndTheGeometry) {
+  EXPECT_EQ(server_->url(), "http://127.0.0.1:" + std::to_string(server_->access().port) +
+                                "/?token=" + server_->access().token);
+  auto res = client_->Get("/api/scene", token());
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  const nlohmann::json j = nlohmann::json::parse(res->body);
+  EXPECT_EQ(j["solids"][0]["triangles"], 12);
+  EXPECT_TRUE(j["solids"][0]["certificate"]["covered"].get<bool>());
+  res = client_->Get("/api/geometry?solid=0", token());
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_EQ(res->body.size(), 8u + 12u * 8u + 12u * 12u);
+  EXPECT_EQ(res->get_header_value("Content-Type"), "application/octet-stream");
+  // The page: served with the token in the query when this build has it.
+  res = client_->Get(("/?token=" + server_->access().token).c_str());
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, viewPageAvailable() ? 200 : 500);
+  res = client_->Get("/");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 401);
+}
+
+TEST_F(ViewHttpTest, EditBoundAndSave) {
+  auto res = postJson(
+      "/api/edit",
+      {{"solid", 0}, {"edits", {{{"op", "set"}, {"index", 0}, {"sphere", {3, 0.5, 0.5, 0.2}}}}}},
+      token());
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  EXPECT_FALSE(nlohmann::json::parse(res->body)["certificate"]["covered"].get<bool>());
+  res = postJson("/api/bound", {{"solid", 0}}, token());
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  const nlohmann::json bound = nlohmann::json::parse(res->body);
+  EXPECT_TRUE(bound["certificate"]["covered"].get<bool>());
+  EXPECT_EQ(bound["version"], 2);
+  res = postJson("/api/save", nlohmann::json::object(), token());
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  auto saved = readSpheres(path("box.txt"));
+  ASSERT_TRUE(saved.ok());
+  expectSameSpheres(*saved, spheresOf(bound["spheres"]));
+  // The saved file, evaluated on its own, agrees with the certificate.
+  const ViewScene scene = server_->scene();
+  const EvalResult e = coverageOnly(*scene.solids[0].index, *saved);
+  EXPECT_TRUE(e.surface_covered && e.interior_covered);
+}
+
+TEST_F(ViewHttpTest, RefusesWhatIsNotThePage) {
+  const nlohmann::json edit = {
+      {"solid", 0}, {"edits", {{{"op", "set"}, {"index", 0}, {"sphere", {0, 0, 0, 1}}}}}};
+  auto res = postJson("/api/edit", edit, {});
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 401);
+  res = postJson("/api/edit", edit, {{"X-Sphereset-Token", "ffffffffffffffffffffffffffffffff"}});
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 401);
+  httplib::Headers h = token();
+  h.emplace("Host", "attacker.example:" + std::to_string(server_->access().port));
+  res = postJson("/api/edit", edit, h);
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 403);
+  h = token();
+  h.emplace("Origin", "http://attacker.example");
+  res = postJson("/api/edit", edit, h);
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 403);
+  res = client_->Post("/api/edit", token(), "{\"solid\":", "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 400);
+  const std::string big(static_cast<size_t>(limits::kMaxViewRequestBytes) + 1, ' ');
+  res = client_->Post("/api/edit", token(), big, "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 413);
+  res = client_->Get("/api/nothing", token());
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 404);
+  res = client_->Put("/api/edit", token(), edit.dump(), "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 405);
+  res = postJson("/api/save", {{"path", path("other.txt")}}, token());
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 400);
+  EXPECT_FALSE(std::filesystem::exists(path("other.txt")));
+  EXPECT_EQ(version(), 0);
+  // The page's own Origin passes.
+  h = token();
+  h.emplace("Origin", "http://127.0.0.1:" + std::to_string(server_->access().port));
+  res = postJson("/api/edit", edit, h);
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200) << res->body;
+  EXPECT_EQ(version(), 1);
+}
+
+TEST_F(ViewHttpTest, StopsCleanly) {
+  server_->stop();
+  auto res = client_->Get("/api/scene", token());
+  EXPECT_FALSE(res);  // nobody listens any more
+}
+
+}  // namespace
+}  // namespace sphereset::test
