@@ -28,9 +28,16 @@ export function fail(message) {
   process.exit(1);
 }
 
+// A failed check is reported and the test goes on, so one run shows every check that fails;
+// the test fails at the end.
+const failures = [];
 export function check(condition, message) {
-  if (!condition) throw new Error(message);
-  console.log(`ok: ${message}`);
+  if (!condition) {
+    failures.push(message);
+    console.log(`not ok: ${message}`);
+  } else {
+    console.log(`ok: ${message}`);
+  }
 }
 
 export function near(a, b, relative) {
@@ -154,7 +161,12 @@ export async function runTest(body) {
   const browser = await launchBrowser(args);
   try {
     await body(args, browser);
-    console.log('PASS');
+    if (failures.length) {
+      console.error(`FAIL: ${failures.length} checks failed:\n  ${failures.join('\n  ')}`);
+      process.exitCode = 1;
+    } else {
+      console.log('PASS');
+    }
   } catch (e) {
     console.error(`FAIL: ${e.stack || e.message}`);
     process.exitCode = 1;
