@@ -1,0 +1,68 @@
+// The page driven by the mouse and keyboard, as a user drives it, against `sphereset view` of a
+// box: a click selects a sphere, Shift + wheel grows its radius, Add then a click on the surface
+// adds a sphere of 5% of the diagonal there, the Delete key removes the selected sphere, Ctrl+Z
+// brings it back and Ctrl+Y removes it again; every change is the server's set afterwards.
+import { writeBox, writeBoxSpheres } from './fixtures.mjs';
+import { check, checkNoErrors, near, openPage, runTest, startView } from './harness.mjs';
+
+await runTest(async (args, browser) => {
+  const mesh = writeBox(args.work);
+  const spheres = writeBoxSpheres(args.work);
+  const { url } = await startView(args, [mesh.path, spheres.path]);
+  const { page, errors } = await openPage(browser, url);
+  const serverSet = () => page.evaluate(() => window.sphereset.scene().solids[0].spheres);
+  const canvas = await (await page.$('#viewport canvas')).boundingBox();
+  const centre = { x: canvas.x + canvas.width / 2, y: canvas.y + canvas.height / 2 };
+  const settle = (predicate, ...rest) => page.waitForFunction(predicate, { timeout: 20000 }, ...rest);
+
+  // The middle of the view is inside the spheres: a click there selects one.
+  await page.mouse.click(centre.x, centre.y);
+  const index = await page.$eval('#sel-index', (e) => Number(e.textContent.replace('#', '')));
+  check(await page.$eval('#selection', (e) => !e.classList.contains('hidden')) && index >= 0,
+    `a click selects sphere ${index}`);
+
+  // Three notches of Shift + wheel: the radius times 1.05^3, sent when the wheel rests.
+  const radius = (await serverSet())[index][3];
+  await page.keyboard.down('Shift');
+  for (let i = 0; i < 3; i++) await page.mouse.wheel({ deltaY: -100 });
+  await page.keyboard.up('Shift');
+  await settle((i, r) => window.sphereset.scene().solids[0].spheres[i][3] !== r, index, radius);
+  const grown = (await serverSet())[index][3];
+  check(near(grown, radius * 1.05 ** 3, 1e-9), `Shift + wheel: radius ${radius} -> ${grown}`);
+
+  // Add, then a click on the box's surface.
+  await page.click('#add');
+  await page.mouse.click(centre.x, centre.y);
+  await settle((n) => window.sphereset.sphereCount(0) === n, spheres.count + 1);
+  const added = (await serverSet())[spheres.count];
+  check(near(added[3], 0.05 * mesh.diagonal, 1e-6), `Add: a sphere of radius ${added[3]} (5% of the diagonal)`);
+  const onSurface = added.slice(0, 3).some((v, axis) => near(Math.abs(v), [0.5, 0.3, 0.2][axis], 1e-4));
+  check(onSurface, `Add: its centre ${added.slice(0, 3)} is on the box's surface`);
+
+  // The new sphere is selected: Delete removes it, Ctrl+Z brings it back, Ctrl+Y removes it.
+  await page.keyboard.press('Delete');
+  await settle((n) => window.sphereset.sphereCount(0) === n, spheres.count);
+  check(true, 'the Delete key removes the selected sphere');
+  await page.keyboard.down('Control');
+  await page.keyboard.press('z');
+  await page.keyboard.up('Control');
+  await settle((n) => window.sphereset.sphereCount(0) === n, spheres.count + 1);
+  const back = (await serverSet())[spheres.count];
+  check(back.every((v, j) => v === added[j]), 'Ctrl+Z brings the same sphere back');
+  await page.keyboard.down('Control');
+  await page.keyboard.press('y');
+  await page.keyboard.up('Control');
+  await settle((n) => window.sphereset.sphereCount(0) === n, spheres.count);
+  check(true, 'Ctrl+Y removes it again');
+
+  // The radius field of the selection panel.
+  await page.mouse.click(centre.x, centre.y);
+  const selected = await page.$eval('#sel-index', (e) => Number(e.textContent.replace('#', '')));
+  await page.$eval('#sel-r', (input) => {
+    input.value = '0.7';
+    input.dispatchEvent(new Event('change', { bubbles: true }));
+  });
+  await settle((i) => window.sphereset.scene().solids[0].spheres[i][3] === 0.7, selected);
+  check(true, `the radius field sets sphere ${selected}'s radius`);
+  checkNoErrors(errors, 'while using the mouse and keys');
+});
