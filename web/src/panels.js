@@ -17,7 +17,7 @@ export function setMode({ title, staticMode }) {
   $('title').textContent = title ? `sphereset view: ${title}` : 'sphereset view';
   document.title = $('title').textContent;
   $('mode').textContent = staticMode ? 'static snapshot (editing is off)' : '';
-  for (const id of ['edit-tools', 'save']) $(id).classList.toggle('hidden', staticMode);
+  for (const id of ['edit-tools', 'save', 'sel-hint']) $(id).classList.toggle('hidden', staticMode);
   for (const id of ['sel-x', 'sel-y', 'sel-z', 'sel-r']) $(id).disabled = staticMode;
   $('legend-bar').style.background = rampGradient();
 }
