@@ -13,6 +13,7 @@
 #ifdef SPHERESET_WITH_REPAIR
 #include "sphereset/load.hpp"
 #include "sphereset/repair_cgal.hpp"
+#include "sphereset/view.hpp"
 #endif
 
 namespace sphereset::cli {
@@ -36,6 +37,14 @@ int exitFor(const Error& e) {
 int fail(const Error& e) {
   std::cerr << "sphereset: " << e.message << '\n';
   return exitFor(e);
+}
+
+int requirePage() {
+  if (Status st = checkViewPage(); !st) {
+    fail(st.error());
+    return kNoPage;
+  }
+  return kOk;
 }
 
 nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }

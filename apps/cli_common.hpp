@@ -57,6 +57,9 @@ int exitFor(const Error& e);
 // Prints the error as one line on stderr and returns its exit code.
 int fail(const Error& e);
 
+// kOk when this build has the view's page; else its one-line message and kNoPage.
+int requirePage();
+
 nlohmann::json vec(const Vec3& v);
 
 // A result's fields (result_fields.hpp) as a JSON object; "group.name" nests.

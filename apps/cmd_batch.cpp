@@ -8,6 +8,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -18,6 +19,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "sphereset/batch.hpp"
+#include "sphereset/view.hpp"
 
 namespace sphereset::cli {
 namespace {
@@ -26,8 +28,27 @@ struct BatchArgs {
   FitArgs fit;  // the fit options (mesh.path is the input, out_path the output folder)
   std::string format = "json";
   int jobs = 1;
-  bool force = false, dry_run = false;
+  bool force = false, dry_run = false, html = false;
 };
+
+// With --html, the view's static page of an item written beside its sphere file
+// (OUT/a/b.json -> OUT/a/b.html): its solid made as the batch made it, its spheres and their
+// certificate. An item skipped as up to date keeps a page it has.
+Status writeItemPage(const BatchItem& item, const BatchItemReport& r, const std::string& out,
+                     const RepairOptions& repair) {
+  if (r.status == BatchStatus::kError) return {};
+  const std::filesystem::path spheres = std::filesystem::path(out) / item.output;
+  std::filesystem::path page = spheres;
+  page.replace_extension(".html");
+  if (r.status == BatchStatus::kSkipped && std::filesystem::exists(page)) return {};
+  ViewLoadOptions lo;
+  lo.repair = repair;
+  auto scene = loadViewScene(item.mesh, spheres.string(), lo);
+  if (!scene) return scene.error();
+  auto text = viewStaticPage(*scene);
+  if (!text) return text.error();
+  return writeTextFile(page.string(), *text);
+}
 
 // "1 h 05 min", "4 min 10 s", "12 s".
 std::string duration(double s) {
@@ -118,6 +139,8 @@ int runBatch(const BatchArgs& c) {
                   batchItemDone(it, out, options) ? "up to date" : "to fit");
     return kOk;
   }
+  if (c.html)
+    if (int code = requirePage(); code != kOk) return code;
   auto report = BatchReport::start(out);  // locks the folder for this run
   if (!report) return fail(report.error());
   if (items->empty()) {
@@ -134,6 +157,7 @@ int runBatch(const BatchArgs& c) {
   std::atomic<size_t> next{0};
   size_t written = 0;
   std::optional<Error> write_error;
+  std::vector<Error> page_errors;  // --html pages that could not be written
   Progress progress(n, a.quiet);
   const auto work = [&] {
     while (true) {
@@ -144,7 +168,9 @@ int runBatch(const BatchArgs& c) {
       const size_t i = next.fetch_add(1);
       if (i >= n) return;
       BatchItemReport r = processBatchItem((*items)[i], out, options);
+      const Status page = c.html ? writeItemPage((*items)[i], r, out, options.repair) : Status{};
       std::lock_guard<std::mutex> lock(mutex);
+      if (!page) page_errors.push_back(page.error());
       reports[i] = std::move(r);
       while (written < n && reports[written] && !write_error) {
         if (Status st = report->append(*reports[written]); !st) write_error = st.error();
@@ -165,6 +191,12 @@ int runBatch(const BatchArgs& c) {
     std::fprintf(stderr, "batch: %zu items: %zu fitted, %zu skipped, %zu failed in %s -> %s\n", n,
                  n - progress.skipped() - progress.failed(), progress.skipped(), progress.failed(),
                  duration(progress.seconds()).c_str(), batchReportPath(out).c_str());
+  if (!page_errors.empty()) {
+    for (const Error& e : page_errors) fail(e);
+    std::fprintf(stderr, "sphereset: %s: %zu of %zu pages could not be written\n",
+                 a.mesh.path.c_str(), page_errors.size(), n);
+    return kWrite;
+  }
   if (progress.failed() > 0) {
     std::fprintf(stderr, "sphereset: %s: %zu of %zu items failed (see %s)\n", a.mesh.path.c_str(),
                  progress.failed(), n, batchReportPath(out).c_str());
@@ -208,6 +240,9 @@ Command registerBatch(CLI::App& app) {
                   "small meshes)")
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
+  cmd->add_flag("--html", c->html,
+                "Also write each item's page beside its sphere file (OUT/a/b.html): its solid, "
+                "spheres and certificate, as `sphereset view --html` writes it");
   cmd->add_flag("--force", c->force, "Fit every item again, even those up to date");
   cmd->add_flag("--dry-run", c->dry_run,
                 "List the items (mesh -> output, n, up to date or not) on stdout and stop");

@@ -26,6 +26,7 @@
 #include "sphereset/robot_fit.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"
+#include "sphereset/view.hpp"
 
 namespace sphereset::cli {
 namespace {
@@ -41,14 +42,14 @@ struct RobotArgs {
   bool quiet = false, json = false;
 };
 
-enum class RobotOutput { kCurobo, kLula, kSrdf, kUrdf, kJson };
+enum class RobotOutput { kCurobo, kLula, kSrdf, kUrdf, kJson, kHtml };
 
 bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
 // The format of an output by its name's ending (letter case ignored): .lula.yml/.lula.yaml
-// (Lula), .yml/.yaml (cuRobo), .srdf, .urdf, .json.
+// (Lula), .yml/.yaml (cuRobo), .srdf, .urdf, .json, .html (the view's page, static).
 Expected<RobotOutput> robotOutput(const std::string& path) {
   std::string name = path;
   for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -57,10 +58,11 @@ Expected<RobotOutput> robotOutput(const std::string& path) {
   if (endsWith(name, ".srdf")) return RobotOutput::kSrdf;
   if (endsWith(name, ".urdf")) return RobotOutput::kUrdf;
   if (endsWith(name, ".json")) return RobotOutput::kJson;
+  if (endsWith(name, ".html")) return RobotOutput::kHtml;
   return Error{ErrorCode::kInvalidArgument,
                path +
                    ": robot output is .yml/.yaml (cuRobo), .lula.yml/.lula.yaml (Lula), "
-                   ".srdf, .urdf or .json"};
+                   ".srdf, .urdf, .json or .html"};
 }
 
 nlohmann::json collisionJson(const CollisionMatrix& m) {
@@ -173,6 +175,17 @@ Status writeRobotOutput(const RobotArgs& a, const std::string& path, RobotOutput
       return writeSrdf(path, robot, matrix);
     case RobotOutput::kLula:
       return writeLulaDescription(path, robot, spheres, co.default_pose);
+    case RobotOutput::kHtml: {
+      // The view's page of the fit, static: each link's spheres on the solid it was fitted to.
+      ViewLoadOptions vo;
+      vo.repair = fo.repair;
+      vo.link_solid = fo.link_solid;
+      auto scene = robotViewScene(robot, a.urdf, spheres, vo);
+      if (!scene) return scene.error();
+      auto page = viewStaticPage(*scene);
+      if (!page) return page.error();
+      return writeTextFile(path, *page);
+    }
     case RobotOutput::kCurobo: {
       // cuRobo's self_collision_ignore: every pair the sampling disabled.
       const SelfCollisionPairs pairs = ignoredPairs(matrix);
@@ -204,6 +217,8 @@ int runRobot(const RobotArgs& a) {
   if (Status st = checkRobotFitOptions(fo); !st) return fail(st.error());
   auto formats = checkOutputs(a);
   if (!formats) return fail(formats.error());
+  if (std::find(formats->begin(), formats->end(), RobotOutput::kHtml) != formats->end())
+    if (int code = requirePage(); code != kOk) return code;
   RobotLoadOptions lo;
   lo.package_paths = a.package_paths;
   auto robot = loadRobot(a.urdf, lo);
@@ -282,8 +297,9 @@ Command registerRobot(CLI::App& app) {
                   "Output, repeatable (one fit, several files), by the name's ending: "
                   ".yml/.yaml (cuRobo collision_spheres and self_collision_ignore), "
                   ".lula.yml/.lula.yaml (Lula robot description), .srdf (MoveIt: chain group "
-                  "and disable_collisions), .urdf (the input with sphere collisions) or .json "
-                  "(per link, and the self-collision pairs)")
+                  "and disable_collisions), .urdf (the input with sphere collisions), .json "
+                  "(per link, and the self-collision pairs) or .html (a page of the robot and "
+                  "its spheres with their certificates, as `sphereset view --html` writes it)")
       ->required()
       ->allow_extra_args(false);
   cmd->add_option("--joint-positions", a->joint_positions,

@@ -80,10 +80,7 @@ int runView(const ViewArgs& a) {
   auto scene = loadViewScene(a.mesh.path, a.spheres_path, lo);
   if (!scene) return fail(scene.error());
   // Checked after the inputs, so that a bad input gets its own message and exit code.
-  if (Status st = checkViewPage(); !st) {
-    fail(st.error());
-    return kNoPage;
-  }
+  if (int code = requirePage(); code != kOk) return code;
   if (!a.html.empty()) {
     auto page = viewStaticPage(*scene);
     if (!page) return fail(page.error());

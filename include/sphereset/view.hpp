@@ -100,6 +100,13 @@ struct ViewLoadOptions {
 Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::string& spheres,
                                   const ViewLoadOptions& options = {});
 
+// The scene of a robot loaded already and its links' spheres in memory (the fit of `sphereset
+// robot`), for a static page: loadViewScene's robot scene without a save path (a save is
+// refused). Errors: those of loadViewScene for a robot.
+Expected<ViewScene> robotViewScene(const Robot& robot, const std::string& urdf,
+                                   std::vector<LinkSpheres> links,
+                                   const ViewLoadOptions& options = {});
+
 // The certificate of one solid's set: the evaluation's coverage certificates and exact E_r,
 // with the original triangles when the repair changed them.
 ViewCertificate certifyViewSolid(const ViewSolid& solid);

@@ -124,30 +124,26 @@ Expected<std::vector<LinkSpheres>> robotSphereFile(const std::string& path,
   return links;
 }
 
-Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& spheres_path,
-                                   const ViewLoadOptions& o) {
+// A robot's scene without its save: one solid per link with geometry and spheres, posed at the
+// robot's zero (or clamped) joint values. `source` names the sphere file in messages.
+Expected<ViewScene> robotSceneOf(Robot robot, const std::string& urdf,
+                                 std::vector<LinkSpheres> links, const std::string& source,
+                                 const ViewLoadOptions& o) {
   ViewScene scene;
   scene.kind = ViewKind::kRobot;
-  RobotLoadOptions lo;
-  lo.package_paths = o.package_paths;
-  lo.use_ros_package_path = o.use_ros_package_path;
-  auto robot = loadRobot(urdf, lo);
-  if (!robot) return robot.error();
-  scene.title = robot->name;
+  scene.title = robot.name;
   scene.urdf_path = urdf;
-  auto links = robotSphereFile(spheres_path, lo);
-  if (!links) return links.error();
   if (o.level >= 0)
     return Error{ErrorCode::kInvalidArgument,
-                 spheres_path + ": a robot's sets have no levels (--level is for trees)"};
+                 source + ": a robot's sets have no levels (--level is for trees)"};
   auto link_repair = linkRepairOptions(o.repair, o.link_solid);
   if (!link_repair) return link_repair.error();
-  for (const LinkSpheres& ls : *links) {
-    const auto it = std::find_if(robot->links.begin(), robot->links.end(),
+  for (const LinkSpheres& ls : links) {
+    const auto it = std::find_if(robot.links.begin(), robot.links.end(),
                                  [&](const RobotLink& l) { return l.name == ls.link; });
-    if (it == robot->links.end())
+    if (it == robot.links.end())
       return Error{ErrorCode::kInvalidData,
-                   spheres_path + ": link '" + ls.link + "' is not a link of " + robot->name};
+                   source + ": link '" + ls.link + "' is not a link of " + robot.name};
     // A link drawn needs geometry other than sphere primitives (those are spheres already).
     const bool has_solid = std::any_of(it->geometry.begin(), it->geometry.end(), [](const auto& g) {
       return g.kind != LinkGeometry::Kind::kSphere;
@@ -160,25 +156,40 @@ Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& s
   }
   if (scene.solids.empty())
     return Error{ErrorCode::kInvalidData,
-                 spheres_path + ": no link with both geometry and spheres in " + robot->name};
-  scene.file_links = std::move(links).value();
-  scene.robot = std::make_shared<const Robot>(std::move(robot).value());
+                 source + ": no link with both geometry and spheres in " + robot.name};
+  scene.file_links = std::move(links);
+  scene.robot = std::make_shared<const Robot>(std::move(robot));
+  if (Status st = setViewJoints(&scene, {}); !st) return st.error();
+  scene.version = 0;
+  return scene;
+}
+
+Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& spheres_path,
+                                   const ViewLoadOptions& o) {
+  RobotLoadOptions lo;
+  lo.package_paths = o.package_paths;
+  lo.use_ros_package_path = o.use_ros_package_path;
+  auto robot = loadRobot(urdf, lo);
+  if (!robot) return robot.error();
+  auto links = robotSphereFile(spheres_path, lo);
+  if (!links) return links.error();
+  auto scene =
+      robotSceneOf(std::move(robot).value(), urdf, std::move(links).value(), spheres_path, o);
+  if (!scene) return scene.error();
   const std::string path = o.output.empty() ? spheres_path : o.output;
   if (endsWithLower(path, ".urdf")) {
-    scene.save_format = ViewSaveFormat::kRobotUrdf;
+    scene->save_format = ViewSaveFormat::kRobotUrdf;
   } else if (endsWithLower(path, ".yml") || endsWithLower(path, ".yaml")) {
     if (endsWithLower(path, ".lula.yml") || endsWithLower(path, ".lula.yaml"))
       return Error{ErrorCode::kInvalidArgument,
                    path + ": saves write cuRobo's YAML; give --output ROBOT.yml"};
-    scene.save_format = ViewSaveFormat::kRobotYaml;
+    scene->save_format = ViewSaveFormat::kRobotYaml;
   } else {
     return Error{ErrorCode::kInvalidArgument,
                  path + ": a robot's spheres are saved as .yml/.yaml (cuRobo) or .urdf"};
   }
-  scene.save_path = std::filesystem::absolute(path).lexically_normal().string();
-  if (Status st = checkOutputPath(scene.save_path, {urdf}); !st) return st.error();
-  if (Status st = setViewJoints(&scene, {}); !st) return st.error();
-  scene.version = 0;
+  scene->save_path = std::filesystem::absolute(path).lexically_normal().string();
+  if (Status st = checkOutputPath(scene->save_path, {urdf}); !st) return st.error();
   return scene;
 }
 
@@ -216,6 +227,11 @@ ViewCertificate certifyViewSolid(const ViewSolid& solid) {
   c.max_gap = std::max({e->max_surface_gap, e->max_original_gap, e->max_interior_gap});
   c.seconds = e->seconds;
   return c;
+}
+
+Expected<ViewScene> robotViewScene(const Robot& robot, const std::string& urdf,
+                                   std::vector<LinkSpheres> links, const ViewLoadOptions& options) {
+  return robotSceneOf(robot, urdf, std::move(links), urdf, options);
 }
 
 Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::string& spheres,

@@ -29,3 +29,15 @@ add_test(NAME cli.view_html_robot
            -DSPHERES=${work}/view_robot.yml -DOUT=${work}/view_robot.html
            "-DEXTRA=--package-path|${data}/robot|--link-solid|walls" -DSOLIDS=2
            -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)
+# The pages of `sphereset robot -o ROBOT.html` (a static page of the fit, one solid per link with
+# spheres) and of `sphereset batch --html` (one beside each item's sphere file).
+add_test(NAME cli.robot_html
+         COMMAND ${CMAKE_COMMAND} -DCLI=${cli} -DOUT=${work}/robot_page.html -DSOLIDS=3
+           "-DARGS=robot|${data}/robot/three_link.urdf|--package-path|${data}/robot|--budget|8|--quality|fast|-q|-o|${work}/robot_page.yml|-o|${work}/robot_page.html"
+           -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)
+file(COPY ${link} DESTINATION ${work}/batch_pages)
+add_test(NAME cli.batch_html
+         COMMAND ${CMAKE_COMMAND} -DCLI=${cli} -DOUT=${work}/batch_pages_out/fr3_link1_collision.html
+           -DSOLIDS=1
+           "-DARGS=batch|${work}/batch_pages|-o|${work}/batch_pages_out|-n|4|--quality|fast|-q|--html"
+           -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)

@@ -1,9 +1,15 @@
-# `sphereset view MESH SPHERES --html OUT`: with the page in the build, exit 0 and OUT holds the
-# data element with the scene; without it, exit 9 and one line saying so, and no OUT.
+# `sphereset view MESH SPHERES --html OUT` (or another command writing a page, ARGS): with the
+# page in the build, exit 0 and OUT holds the data element with the scene; without it, exit 9
+# and one line saying so, and no OUT.
 #   -DCLI=prog -DMESH=path -DSPHERES=path -DOUT=path [-DEXTRA="arg|arg..."] [-DSOLIDS=n]
+#   -DCLI=prog -DARGS="arg|arg..." -DOUT=path [-DSOLIDS=n]   (ARGS: the whole command line)
 string(REPLACE "|" ";" EXTRA "${EXTRA}")
+string(REPLACE "|" ";" ARGS "${ARGS}")
+if(NOT ARGS)
+  set(ARGS view ${MESH} ${SPHERES} --html ${OUT} ${EXTRA})
+endif()
 file(REMOVE "${OUT}")
-execute_process(COMMAND ${CLI} view ${MESH} ${SPHERES} --html ${OUT} ${EXTRA} RESULT_VARIABLE rc
+execute_process(COMMAND ${CLI} ${ARGS} RESULT_VARIABLE rc
                 OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
 if(rc STREQUAL "9")
   if(NOT err MATCHES "^sphereset: this build has no view page[^\n]*\n$")
