@@ -12,6 +12,7 @@
 #include <string>
 
 #include "sphereset/certificate.hpp"
+#include "sphereset/cover.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/limits.hpp"
 #include "test_meshes.hpp"
@@ -257,6 +258,68 @@ TEST(IncrementalCertificate, SmallEditRechecksLittle) {
   EXPECT_LT(after.cells_rechecked * 8, after.cells);
   EXPECT_GE(after.seconds, 0.0);
   expectSameAsFull(idx, *cert, CertificateOptions{}, "small move");
+}
+
+// The surface certificate's rule written plainly, every test over every sphere (the spheres
+// already grown): a triangle held by one sphere is certified, else its vertices' and centroid's
+// distance to the union gives a gap, and it is split in four (to half the depth once refuted).
+void plainCover(const std::vector<Sphere>& sp, const Vec3& a, const Vec3& b, const Vec3& c,
+                int depth, int max_depth, double* gap, double* area) {
+  for (const Sphere& s : sp)
+    if (s.contains(a) && s.contains(b) && s.contains(c)) return;
+  double g = 0.0;
+  for (const Vec3& p : {a, b, c, Vec3((a + b + c) / 3.0)}) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const Sphere& s : sp) best = std::min(best, (p - s.center).norm() - s.radius);
+    g = std::max(g, best);
+  }
+  *gap = std::max(*gap, g);
+  if (g > 0.0 && depth >= max_depth / 2) return;
+  if (depth >= max_depth) {
+    *area += 0.5 * (b - a).cross(c - a).norm();
+    return;
+  }
+  const Vec3 ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
+  plainCover(sp, a, ab, ca, depth + 1, max_depth, gap, area);
+  plainCover(sp, ab, b, bc, depth + 1, max_depth, gap, area);
+  plainCover(sp, ca, bc, c, depth + 1, max_depth, gap, area);
+  plainCover(sp, ab, bc, ca, depth + 1, max_depth, gap, area);
+}
+
+TEST(IncrementalCertificate, SurfaceCertificateIsThePlainRule) {
+  // The certificate's shortcuts (the sphere grid, the spheres near each triangle, each point's
+  // distance computed once) change nothing: the same gaps, areas and triangles as the plain rule.
+  const Mesh mesh = test::makeTorus(1.0, 0.35, 20, 10);
+  const SolidIndex idx(mesh);
+  const double diag = idx.bounds().diagonal();
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int uncovered_sets = 0;
+  for (int trial = 0; trial < 6; ++trial) {
+    std::vector<Sphere> set = coveringGrid(idx.bounds(), 4);
+    for (Sphere& s : set) s.radius *= 0.7 + 0.4 * u(rng);
+    CertificateOptions co = shallow();
+    auto cert = makeCoverageCertificate(idx, set, co);
+    ASSERT_TRUE(cert.ok());
+    std::vector<Sphere> grown = set;
+    for (Sphere& s : grown) s.radius += kCoverageToleranceRel * diag;
+    double max_gap = 0.0, area = 0.0;
+    std::vector<int64_t> uncovered;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+      double gap = 0.0, a = 0.0;
+      const auto& tri = mesh.triangles[t];
+      plainCover(grown, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], 0,
+                 co.surface_max_depth, &gap, &a);
+      max_gap = std::max(max_gap, gap);
+      area += a;
+      if (gap > 0.0 || a > 0.0) uncovered.push_back(static_cast<int64_t>(t));
+    }
+    EXPECT_EQ(cert->summary().max_surface_gap, max_gap / diag);
+    EXPECT_EQ(cert->summary().surface_uncertified_area, area);
+    EXPECT_EQ(cert->summary().uncovered_triangles, uncovered);
+    uncovered_sets += uncovered.empty() ? 0 : 1;
+  }
+  EXPECT_GT(uncovered_sets, 0);
 }
 
 TEST(IncrementalCertificate, RefusesBadInputsAndChangesNothing) {
