@@ -61,6 +61,8 @@ struct CertificateSummary {
   int64_t cells = 0;  // cells of the octree walk as it stands
 };
 
+// One set's certificate under edits. Not for use from several threads at once (each call runs
+// its loops in parallel itself).
 class CoverageCertificate {
  public:
   CoverageCertificate(CoverageCertificate&&) noexcept;

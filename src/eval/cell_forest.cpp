@@ -30,7 +30,9 @@ bool ballNearBox(const Sphere& b, const Vec3& lo, const Vec3& hi, double reach) 
   const double margin =
       kNearMarginRel * (magnitude + b.center.cwiseAbs().maxCoeff() + b.radius + reach);
   const Vec3 nearest = b.center.cwiseMax(lo).cwiseMin(hi);
-  return (b.center - nearest).norm() - b.radius <= reach + margin;
+  const double distance = (b.center - nearest).norm();
+  // A distance that overflows says nothing: near, to be safe.
+  return !std::isfinite(distance) || !(distance - b.radius > reach + margin);
 }
 
 struct CellForest::Walk {

@@ -90,7 +90,9 @@ Nearby nearbySpheres(const SphereGrid& grid, const Vec3& a, const Vec3& b, const
     const Sphere& s = grid.spheres()[i];
     const double margin =
         kNearbyMarginRel * (magnitude + s.center.cwiseAbs().maxCoeff() + s.radius);
-    if ((a - s.center).norm() - s.radius <= reach + margin) near.ids.push_back(i);
+    const double distance = (a - s.center).norm();
+    // Kept unless surely too far (a distance that overflows says nothing).
+    if (!std::isfinite(distance) || !(distance - s.radius > reach + margin)) near.ids.push_back(i);
   });
   return near;
 }
