@@ -23,6 +23,11 @@ namespace {
 // far below any geometric scale, so it only makes the test conservative.
 constexpr double kNearMarginRel = 1e-9;
 
+// A tree is compacted once its nodes outnumber the cubes of its walk by this factor (and this
+// many nodes): the memory of a long run of edits stays within a few times the walk's.
+constexpr int64_t kCompactRatio = 2;
+constexpr int64_t kCompactMinNodes = 64;
+
 }  // namespace
 
 bool ballNearBox(const Sphere& b, const Vec3& lo, const Vec3& hi, double reach) {
@@ -91,6 +96,26 @@ void CellForest::walk(Tree* tree, int32_t node, const Vec3& mn, double size, int
   m.cells = cells;
 }
 
+void CellForest::compact(Tree* tree) {
+  const int64_t cells = tree->nodes[0].cells;
+  if (static_cast<int64_t>(tree->nodes.size()) <= std::max(kCompactRatio * cells, kCompactMinNodes))
+    return;
+  // The nodes of the walk, in the same layout: each split cube's eight children in a row.
+  Tree out;
+  out.nodes.reserve(static_cast<size_t>(cells));
+  out.nodes[0] = tree->nodes[0];
+  for (size_t i = 0; i < out.nodes.size(); ++i) {
+    const int32_t old = out.nodes[i].children;
+    if (out.nodes[i].verdict != CellVerdict::kSplit || old < 0) {
+      out.nodes[i].children = -1;  // the figures below a cube that does not split are stale
+      continue;
+    }
+    out.nodes[i].children = static_cast<int32_t>(out.nodes.size());
+    for (int k = 0; k < 8; ++k) out.nodes.push_back(tree->nodes[old + k]);
+  }
+  *tree = std::move(out);
+}
+
 int64_t CellForest::certifyAll(const SphereGrid& grown) {
   std::vector<int64_t> judged(kRootCells, 0);
   tbb::parallel_for(0, kRootCells, [&](int k) {
@@ -98,6 +123,7 @@ int64_t CellForest::certifyAll(const SphereGrid& grown) {
     double size = 0.0;
     const Vec3 mn = rootCell(index_->bounds(), k, &size);
     walk(&trees_[k], 0, mn, size, 0, true, &w);
+    compact(&trees_[k]);
     judged[k] = w.judged;
   });
   int64_t total = 0;
@@ -125,6 +151,7 @@ int64_t CellForest::update(const SphereGrid& grown, std::span<const Sphere> chan
     double size = 0.0;
     const Vec3 mn = rootCell(index_->bounds(), k, &size);
     walk(&trees_[k], 0, mn, size, 0, false, &w);
+    compact(&trees_[k]);
     judged[i] = w.judged;
   });
   int64_t total = 0;

@@ -39,14 +39,16 @@ class CellForest {
     CellVerdict verdict = CellVerdict::kSplit;
     CellGeometry geometry;
   };
-  // One root cube's nodes, the root first, children eight in a row. Nodes are never dropped:
-  // the children of a cube that stops splitting keep their geometry for when it splits again.
+  // One root cube's nodes, the root first, children eight in a row. The children of a cube
+  // that stops splitting stay, with their geometry, for when it splits again, until they
+  // outnumber the cubes of the walk (then compact drops them).
   struct Tree {
     std::vector<Node> nodes = std::vector<Node>(1);
   };
   struct Walk;
   void walk(Tree* tree, int32_t node, const Vec3& mn, double size, int depth, bool force,
             Walk* w) const;
+  static void compact(Tree* tree);
 
   const SolidIndex* index_;
   int max_depth_;
