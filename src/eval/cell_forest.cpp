@@ -49,7 +49,7 @@ struct CellForest::Walk {
 CellForest::CellForest(const SolidIndex& index, int max_depth)
     : index_(&index), max_depth_(max_depth), trees_(kRootCells) {}
 
-void CellForest::walk(Tree* tree, int32_t node, const Vec3& mn, double size, int depth, bool force,
+void CellForest::walk(Tree* tree, int64_t node, const Vec3& mn, double size, int depth, bool force,
                       Walk* w) const {
   if (!force) {
     const Vec3 mx = mn + Vec3::Constant(size);
@@ -76,10 +76,10 @@ void CellForest::walk(Tree* tree, int32_t node, const Vec3& mn, double size, int
   // then too (and they were current: not forced from above).
   const bool force_children = force || before != CellVerdict::kSplit || n.children < 0;
   if (n.children < 0) {
-    n.children = static_cast<int32_t>(tree->nodes.size());
+    n.children = static_cast<int64_t>(tree->nodes.size());
     tree->nodes.resize(tree->nodes.size() + 8);  // invalidates n
   }
-  const int32_t first = tree->nodes[node].children;
+  const int64_t first = tree->nodes[node].children;
   const double h = 0.5 * size;
   double g = 0.0;
   int64_t undecided = 0, cells = 1;
@@ -105,12 +105,12 @@ void CellForest::compact(Tree* tree) {
   out.nodes.reserve(static_cast<size_t>(cells));
   out.nodes[0] = tree->nodes[0];
   for (size_t i = 0; i < out.nodes.size(); ++i) {
-    const int32_t old = out.nodes[i].children;
+    const int64_t old = out.nodes[i].children;
     if (out.nodes[i].verdict != CellVerdict::kSplit || old < 0) {
       out.nodes[i].children = -1;  // the figures below a cube that does not split are stale
       continue;
     }
-    out.nodes[i].children = static_cast<int32_t>(out.nodes.size());
+    out.nodes[i].children = static_cast<int64_t>(out.nodes.size());
     for (int k = 0; k < 8; ++k) out.nodes.push_back(tree->nodes[old + k]);
   }
   *tree = std::move(out);

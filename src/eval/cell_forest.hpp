@@ -35,7 +35,7 @@ class CellForest {
     double gap = 0.0;       // largest gap below (a length), 0 when none
     int64_t undecided = 0;  // undecided finest cubes below
     int64_t cells = 1;      // cubes of the walk below, this one included
-    int32_t children = -1;  // the first of its eight children in the tree; -1 before any split
+    int64_t children = -1;  // the first of its eight children in the tree; -1 before any split
     CellVerdict verdict = CellVerdict::kSplit;
     CellGeometry geometry;
   };
@@ -46,7 +46,7 @@ class CellForest {
     std::vector<Node> nodes = std::vector<Node>(1);
   };
   struct Walk;
-  void walk(Tree* tree, int32_t node, const Vec3& mn, double size, int depth, bool force,
+  void walk(Tree* tree, int64_t node, const Vec3& mn, double size, int depth, bool force,
             Walk* w) const;
   static void compact(Tree* tree);
 
