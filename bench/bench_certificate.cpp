@@ -11,6 +11,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
+#include <vector>
 
 #include "sphereset/certificate.hpp"
 #include "sphereset/evaluate.hpp"

@@ -12,6 +12,7 @@
 //   certificate_table --header | --edit-header
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
