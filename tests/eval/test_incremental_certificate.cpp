@@ -193,6 +193,17 @@ TEST(IncrementalCertificate, RobotLinkEqualsFullEvaluationAfterEveryEdit) {
   EXPECT_GT(seen.covered + seen.uncovered, 0);
 }
 
+TEST(IncrementalCertificate, FarFromTheOriginEqualsFullEvaluation) {
+  // Coordinates in the ten thousands and a small solid: the rounding margins of the proximity
+  // tests scale with the coordinates, and the verdicts stay the full evaluation's.
+  const Mesh far = test::transformed(test::makeTorus(1.0, 0.35, 24, 12),
+                                     Eigen::Matrix3d::Identity(), Vec3(1.2e4, -3.1e3, 5.0e3), 0.5);
+  const SolidIndex idx(far);
+  const Seen seen = randomEdits(idx, coveringGrid(idx.bounds(), 4), shallow(), 30, 29);
+  EXPECT_GT(seen.covered, 0);
+  EXPECT_GT(seen.uncovered, 0);
+}
+
 TEST(IncrementalCertificate, OriginalTrianglesEqualFullEvaluation) {
   // The solid a repair would have made, and "original" triangles that differ from it: a finer
   // sphere slightly larger than the solid, so that covering the solid does not cover them.
