@@ -14,7 +14,7 @@ root=$PWD
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 seconds=${FUZZ_SECONDS:-6}
 seed=${FUZZ_SEED:-1}
-targets=${FUZZ_TARGETS:-"off ply stl obj spheres_txt spheres_json spheres_sph spheres_yaml tree repair urdf animation trajectory point_cloud"}
+targets=${FUZZ_TARGETS:-"off ply stl obj spheres_txt spheres_json spheres_sph spheres_yaml tree repair urdf animation trajectory point_cloud view_request"}
 
 launcher=()
 if command -v ccache > /dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi

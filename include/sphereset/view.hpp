@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "sphereset/certificate.hpp"
 #include "sphereset/load.hpp"
 #include "sphereset/repair.hpp"
 #include "sphereset/robot.hpp"
@@ -52,6 +53,10 @@ struct ViewSolid {
   int level = 0;
   std::optional<SphereTree> tree;  // the tree file's layout, for trees
   ViewCertificate certificate;
+  // The incremental certificate of the shown set (certificate.hpp), which an edit updates where
+  // the changed spheres reach; null for an empty set. Copies of a scene share it until one of
+  // them changes its set, which then certifies a fresh one in full (copy on write).
+  std::shared_ptr<CoverageCertificate> engine;
   const std::vector<Sphere>& spheres() const { return sets[static_cast<size_t>(level)]; }
   // The mesh the page draws: the original triangles when the repair changed them, else the
   // solid.
@@ -107,9 +112,13 @@ Expected<ViewScene> robotViewScene(const Robot& robot, const std::string& urdf,
                                    std::vector<LinkSpheres> links,
                                    const ViewLoadOptions& options = {});
 
-// The certificate of one solid's set: the evaluation's coverage certificates and exact E_r,
-// with the original triangles when the repair changed them.
-ViewCertificate certifyViewSolid(const ViewSolid& solid);
+// The certificate of one solid's shown set, in full: the evaluation's coverage certificates and
+// exact E_r, with the original triangles when the repair changed them (a fresh incremental
+// certificate, certificate.hpp, stored in `solid->engine`).
+void certifyViewSolid(ViewSolid* solid);
+// The CERTIFICATE of docs/view.md from the solid's incremental certificate (empty for an empty
+// set); the uncovered triangles are ids into the displayed mesh.
+ViewCertificate viewCertificate(const ViewSolid& solid);
 
 // One edit of a set (docs/view.md): set sphere `index`, add a sphere, delete sphere `index`.
 struct ViewEdit {

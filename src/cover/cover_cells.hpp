@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -11,36 +12,76 @@
 
 namespace sphereset::detail {
 
-// The interior coverage walk: cubes of an octree below an 8³ grid over `bounds`. A cube is
-// settled when one sphere holds its eight corners (covered) or when it holds no surface and
-// its centre is outside the solid (empty). Otherwise, if its centre is inside the solid but
-// in no sphere, on_gap(min, size, depth, gap) is called and the walk descends only if it
-// returns true; cubes still unsettled at max_depth go to on_undecided(min, size).
+// What a cube's verdict needs of the solid: whether the surface may pass through it (the
+// distance from its centre to the surface is at most its half diagonal) and where its centre
+// lies. It depends on the cube alone, not on the spheres, so a caller that meets the same cube
+// again (the incremental certificate) may keep it.
+struct CellGeometry {
+  bool known = false;
+  bool has_surface = false;
+  Containment where = Containment::kOutside;
+};
+
+// The verdict on one cube of the interior walk, the one rule both walks below follow:
+// - kHeld: one sphere holds its eight corners (then the whole cube: convexity);
+// - kEmpty: no surface in it and its centre outside the solid;
+// - kGap: its centre is in the solid (or on its boundary) but in no sphere, at distance *gap
+//   from the union;
+// - kUndecided: none of these at max_depth;
+// - kSplit: none of these above max_depth: its eight children decide.
+enum class CellVerdict : uint8_t { kHeld, kEmpty, kGap, kUndecided, kSplit };
+
+inline CellVerdict cellVerdict(const SolidIndex& index, const SphereGrid& spheres, const Vec3& mn,
+                               double size, int depth, int max_depth, CellGeometry* geometry,
+                               double* gap) {
+  Vec3 corners[8];
+  for (int k = 0; k < 8; ++k)
+    corners[k] = mn + size * Vec3((k & 1) ? 1 : 0, (k & 2) ? 1 : 0, (k & 4) ? 1 : 0);
+  if (oneSphereHolds(spheres, corners, 8)) return CellVerdict::kHeld;
+  const Vec3 center = mn + Vec3::Constant(0.5 * size);
+  if (!geometry->known) {
+    const double half_diag = 0.5 * std::sqrt(3.0) * size;
+    geometry->has_surface = index.distance(center) <= half_diag;
+    geometry->where = index.classify(center);
+    geometry->known = true;
+  }
+  if (!geometry->has_surface && geometry->where == Containment::kOutside)
+    return CellVerdict::kEmpty;
+  if (geometry->where != Containment::kOutside) {
+    *gap = gapToUnion(spheres, center);
+    if (*gap > 0.0) return CellVerdict::kGap;
+  }
+  return depth >= max_depth ? CellVerdict::kUndecided : CellVerdict::kSplit;
+}
+
+// The k-th of the eight children (half side h) of the cube with lowest corner mn.
+inline Vec3 childCell(const Vec3& mn, double h, int k) {
+  return mn + h * Vec3((k & 1) ? 1 : 0, (k & 2) ? 1 : 0, (k & 4) ? 1 : 0);
+}
+
+// The interior coverage walk: cubes of an octree below an 8³ grid over `bounds`, judged by
+// cellVerdict. Held and empty cubes are settled. On a gap, on_gap(min, size, depth, gap) is
+// called and the walk goes on as for an undecided cube only if it returns true (the fit's bound
+// grows a sphere and looks deeper; the certificate stops: the cube is refuted). Cubes still
+// unsettled at max_depth go to on_undecided(min, size).
 template <class OnGap, class OnUndecided>
 void walkSolidCells(const SolidIndex& index, const SphereGrid& spheres, const Vec3& mn, double size,
                     int depth, int max_depth, OnGap&& on_gap, OnUndecided&& on_undecided) {
   pollCancel();
-  Vec3 corners[8];
-  for (int k = 0; k < 8; ++k)
-    corners[k] = mn + size * Vec3((k & 1) ? 1 : 0, (k & 2) ? 1 : 0, (k & 4) ? 1 : 0);
-  if (oneSphereHolds(spheres, corners, 8)) return;
-  const Vec3 center = mn + Vec3::Constant(0.5 * size);
-  const double half_diag = 0.5 * std::sqrt(3.0) * size;
-  const bool has_surface = index.distance(center) <= half_diag;
-  const Containment where = index.classify(center);
-  if (!has_surface && where == Containment::kOutside) return;
-  if (where != Containment::kOutside) {
-    const double gap = gapToUnion(spheres, center);
-    if (gap > 0.0 && !on_gap(mn, size, depth, gap)) return;
-  }
+  CellGeometry geometry;
+  double gap = 0.0;
+  const CellVerdict verdict =
+      cellVerdict(index, spheres, mn, size, depth, max_depth, &geometry, &gap);
+  if (verdict == CellVerdict::kHeld || verdict == CellVerdict::kEmpty) return;
+  if (verdict == CellVerdict::kGap && !on_gap(mn, size, depth, gap)) return;
   if (depth >= max_depth) {
-    if (where != Containment::kOutside || has_surface) on_undecided(mn, size);
+    on_undecided(mn, size);
     return;
   }
   const double h = 0.5 * size;
   for (int k = 0; k < 8; ++k)
-    walkSolidCells(index, spheres, mn + h * Vec3((k & 1) ? 1 : 0, (k & 2) ? 1 : 0, (k & 4) ? 1 : 0),
-                   h, depth + 1, max_depth, on_gap, on_undecided);
+    walkSolidCells(index, spheres, childCell(mn, h, k), h, depth + 1, max_depth, on_gap,
+                   on_undecided);
 }
 
 // The root cubes of the walk: an 8³ grid of cubes of side max extent / 8 from bounds.min.

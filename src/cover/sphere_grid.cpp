@@ -139,7 +139,11 @@ int holders(const SphereGrid& grid, const Vec3* pts, int n, int32_t* holder) {
 }
 
 double gapToUnion(const SphereGrid& grid, const Vec3& p) {
-  // Inside a sphere near p: no gap. Otherwise the exact distance over all spheres.
+  // Inside a sphere near p: no gap. Otherwise the exact distance over all spheres: the least
+  // of |p - c| - r over the spheres met within a growing reach of p. A sphere at distance d
+  // from p has its box within d of p, so once the least distance found is at most the reach
+  // (or the reach holds the whole grid), no sphere left out can be nearer; the minimum is the
+  // one a scan over all spheres gives, to the last bit.
   bool inside = false;
   grid.forEachNear(p, [&](int32_t i) {
     const Sphere& s = grid.spheres()[i];
@@ -147,7 +151,14 @@ double gapToUnion(const SphereGrid& grid, const Vec3& p) {
   });
   if (inside) return 0.0;
   double best = std::numeric_limits<double>::infinity();
-  for (const Sphere& s : grid.spheres()) best = std::min(best, (p - s.center).norm() - s.radius);
+  if (grid.spheres().empty()) return best;
+  for (double reach = grid.cell();; reach *= 2.0) {
+    grid.forEachWithin(p, reach, [&](int32_t i) {
+      const Sphere& s = grid.spheres()[i];
+      best = std::min(best, (p - s.center).norm() - s.radius);
+    });
+    if (best <= reach || grid.coveredBy(p, reach)) break;
+  }
   return std::max(best, 0.0);
 }
 

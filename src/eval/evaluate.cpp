@@ -6,9 +6,10 @@
 //   point) is unbiased for the union's outside volume and samples only where spheres are.
 // - Surface coverage: each triangle is certified when it lies in one sphere (convexity: its
 //   three vertices do), otherwise split in four, down to a depth limit. Any vertex or centroid
-//   found outside every sphere refutes coverage and gives a gap.
+//   found outside every sphere refutes coverage and gives a gap (eval/coverage_pieces.hpp, the
+//   rule the incremental certificate of certificate.hpp shares).
 // - Interior coverage: the same on octree cells: a cell is certified when its corners share a
-//   sphere or it is free of surface and outside the solid.
+//   sphere or it is free of surface and outside the solid (cover/cover_cells.hpp).
 // - Proximity (paper Sec. 7, Fig. 14): outside length of random surface-to-surface segments
 //   against the mesh and against the union of spheres. The paper draws segments between two
 //   copies of the model; we draw both end points on the one mesh.
@@ -27,7 +28,7 @@
 
 #include "cover/cover_cells.hpp"
 #include "cover/segment_cover.hpp"
-#include "sphereset/limits.hpp"
+#include "eval/coverage_pieces.hpp"
 #include "util/poll.hpp"
 #include "util/sampling.hpp"
 
@@ -36,31 +37,6 @@ namespace {
 
 using detail::mixSeed;
 using detail::uniform01;
-
-struct CoverStats {
-  double gap = 0.0;
-  double uncertified = 0.0;  // area (surface) or count (interior) left undecided
-};
-
-void coverTriangle(const detail::SphereGrid& spheres, const Vec3& a, const Vec3& b, const Vec3& c,
-                   int depth, int max_depth, CoverStats* st) {
-  const Vec3 pts[3] = {a, b, c};
-  if (detail::oneSphereHolds(spheres, pts, 3)) return;
-  const Vec3 g = (a + b + c) / 3.0;
-  double gap = 0.0;
-  for (const Vec3& p : {a, b, c, g}) gap = std::max(gap, detail::gapToUnion(spheres, p));
-  st->gap = std::max(st->gap, gap);
-  if (gap > 0.0 && depth >= max_depth / 2) return;  // refuted; refine the gap a little only
-  if (depth >= max_depth) {
-    st->uncertified += 0.5 * (b - a).cross(c - a).norm();
-    return;
-  }
-  const Vec3 ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
-  coverTriangle(spheres, a, ab, ca, depth + 1, max_depth, st);
-  coverTriangle(spheres, ab, b, bc, depth + 1, max_depth, st);
-  coverTriangle(spheres, ca, bc, c, depth + 1, max_depth, st);
-  coverTriangle(spheres, ab, bc, ca, depth + 1, max_depth, st);
-}
 
 // E_r of the union by Monte Carlo: sets er_union and its standard error.
 void unionOutsideVolume(const SolidIndex& index, const std::vector<Sphere>& spheres,
@@ -114,38 +90,21 @@ void unionOutsideVolume(const SolidIndex& index, const std::vector<Sphere>& sphe
 }
 
 // Surface coverage of a mesh's triangles, certified per triangle.
-struct SurfaceCover {
-  bool covered = false;
-  double max_gap = 0.0;  // / diag
-  double uncertified = 0.0;
-  int64_t uncovered = 0;
-};
-
-SurfaceCover surfaceCoverage(const Mesh& mesh, const detail::SphereGrid& grown_grid, size_t n,
-                             const EvalOptions& options, double diag) {
-  const size_t nt = mesh.triangles.size();
-  std::vector<CoverStats> st(nt);
-  tbb::parallel_for(size_t{0}, nt, [&](size_t t) {
+detail::SurfaceCover surfaceCoverage(const Mesh& mesh, const detail::SphereGrid& grown_grid,
+                                     size_t n, const EvalOptions& options, double diag) {
+  std::vector<detail::PieceCover> st(mesh.triangles.size());
+  tbb::parallel_for(size_t{0}, st.size(), [&](size_t t) {
     detail::pollCancel();
-    const auto& tri = mesh.triangles[t];
-    coverTriangle(grown_grid, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]],
-                  0, options.surface_max_depth, &st[t]);
+    st[t] = detail::certifyTriangle(grown_grid, mesh, t, options.surface_max_depth);
   });
-  SurfaceCover c;
-  for (const CoverStats& s : st) {
-    c.max_gap = std::max(c.max_gap, s.gap);
-    c.uncertified += s.uncertified;
-    if (s.gap > 0.0 || s.uncertified > 0.0) ++c.uncovered;
-  }
-  c.max_gap /= diag;
-  c.covered = n > 0 && c.uncovered == 0;
-  return c;
+  return detail::summarizeSurface(st, n, diag);
 }
 
-// Interior coverage on an octree below an 8³ grid of cubes covering the bounds.
+// Interior coverage on an octree below an 8³ grid of cubes covering the bounds: the walk
+// stops at a gap (the cube is refuted).
 void interiorCoverage(const SolidIndex& index, const detail::SphereGrid& grown_grid, size_t n,
                       const EvalOptions& options, double diag, EvalResult* res) {
-  std::vector<CoverStats> st(detail::kRootCells);
+  std::vector<detail::PieceCover> st(detail::kRootCells);
   tbb::parallel_for(0, detail::kRootCells, [&](int k) {
     double size = 0.0;
     const Vec3 mn = detail::rootCell(index.bounds(), k, &size);
@@ -157,14 +116,10 @@ void interiorCoverage(const SolidIndex& index, const detail::SphereGrid& grown_g
         },
         [&](const Vec3&, double) { st[k].uncertified += 1.0; });
   });
-  double gap = 0.0, unc = 0.0;
-  for (const CoverStats& s : st) {
-    gap = std::max(gap, s.gap);
-    unc += s.uncertified;
-  }
-  res->max_interior_gap = gap / diag;
-  res->interior_uncertified_cells = static_cast<int64_t>(unc);
-  res->interior_covered = n > 0 && gap == 0.0 && res->surface_covered;
+  const detail::InteriorCover c = detail::summarizeInterior(st, n, diag, res->surface_covered);
+  res->max_interior_gap = c.max_gap;
+  res->interior_uncertified_cells = c.uncertified_cells;
+  res->interior_covered = c.covered;
 }
 
 // Mean proximity error over random surface-to-surface segments, / diag.
@@ -192,17 +147,7 @@ Expected<EvalResult> evaluateSpheres(const SolidIndex& index, const std::vector<
   if (Status st = checkEvalOptions(options); !st) return st.error();
   // Cancellation from inside the long loops (util/poll.hpp).
   const detail::PollScope poll(options.poll, options.poll_interval);
-  if (spheres.empty()) return Error{ErrorCode::kInvalidArgument, "no spheres to evaluate"};
-  if (Status st = limits::checkRange("spheres", static_cast<double>(spheres.size()), 1,
-                                     limits::kMaxSpheres);
-      !st)
-    return st.error();
-  for (size_t i = 0; i < spheres.size(); ++i) {
-    const Sphere& s = spheres[i];
-    if (!s.center.allFinite() || !(s.radius >= 0.0) || !std::isfinite(s.radius))
-      return Error{ErrorCode::kInvalidArgument,
-                   "sphere " + std::to_string(i) + " has a NaN, infinite or negative value"};
-  }
+  if (Status st = detail::checkSpheres(spheres); !st) return st.error();
   EvalResult res;
   const Mesh& mesh = index.mesh();
   res.mesh_volume = signedVolume(mesh);
@@ -240,16 +185,16 @@ Expected<EvalResult> evaluateSpheres(const SolidIndex& index, const std::vector<
   unionOutsideVolume(index, spheres, options, vol, &res);
 
   // Coverage: spheres grown by the rounding tolerance.
-  std::vector<Sphere> grown = spheres;
-  for (Sphere& s : grown) s.radius += kCoverageToleranceRel * diag;
+  const std::vector<Sphere> grown = detail::grownSpheres(spheres, diag);
   const detail::SphereGrid grown_grid(grown);
-  const SurfaceCover sc = surfaceCoverage(mesh, grown_grid, n, options, diag);
+  const detail::SurfaceCover sc = surfaceCoverage(mesh, grown_grid, n, options, diag);
   res.surface_covered = sc.covered;
   res.max_surface_gap = sc.max_gap;
   res.surface_uncertified_area = sc.uncertified;
   res.uncovered_triangles = sc.uncovered;
   if (options.original) {
-    const SurfaceCover oc = surfaceCoverage(*options.original, grown_grid, n, options, diag);
+    const detail::SurfaceCover oc =
+        surfaceCoverage(*options.original, grown_grid, n, options, diag);
     res.original_covered = oc.covered;
     res.max_original_gap = oc.max_gap;
     res.original_uncovered_triangles = oc.uncovered;

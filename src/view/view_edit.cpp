@@ -35,11 +35,40 @@ Status checkEditSphere(const std::string& what, const Sphere& s) {
   return {};
 }
 
-// The shown set replaced by `spheres`, recertified, one version more.
+// The shown set replaced by `spheres`, certified in full, one version more.
 void storeSet(ViewScene* scene, ViewSolid* solid, std::vector<Sphere> spheres) {
   solid->sets[static_cast<size_t>(solid->level)] = std::move(spheres);
-  solid->certificate = certifyViewSolid(*solid);
+  certifyViewSolid(solid);
   ++scene->version;
+}
+
+// The certificate after `edits` (checked, and applied already to the stored set): the solid's
+// incremental certificate takes them one by one, each re-judging only what its old and new
+// spheres reach. A certificate shared with a copy of the scene, none (the set was empty), or
+// one that refuses an edit (the last sphere deleted) is replaced by a full one of the set.
+void certifyEdits(ViewSolid* solid, const std::vector<ViewEdit>& edits) {
+  CoverageCertificate* engine = solid->engine.use_count() == 1 ? solid->engine.get() : nullptr;
+  for (const ViewEdit& e : edits) {
+    if (engine == nullptr) break;
+    const int index = static_cast<int>(e.index);
+    Status st;
+    switch (e.op) {
+      case ViewEdit::Op::kSet:
+        st = engine->setSphere(index, e.sphere);
+        break;
+      case ViewEdit::Op::kAdd:
+        st = engine->addSphere(e.sphere);
+        break;
+      case ViewEdit::Op::kDelete:
+        st = engine->removeSphere(index);
+        break;
+    }
+    if (!st) engine = nullptr;
+  }
+  if (engine == nullptr)
+    certifyViewSolid(solid);
+  else
+    solid->certificate = viewCertificate(*solid);
 }
 
 // Each solid's pose from the joint values: its link's frame in the root's; a link the root does
@@ -100,7 +129,9 @@ Status applyViewEdits(ViewScene* scene, int64_t solid, const std::vector<ViewEdi
         break;
     }
   }
-  storeSet(scene, *s, std::move(set));
+  (*s)->sets[static_cast<size_t>((*s)->level)] = std::move(set);
+  certifyEdits(*s, edits);
+  ++scene->version;
   return {};
 }
 
@@ -124,7 +155,7 @@ Status setViewLevel(ViewScene* scene, int64_t solid, int64_t level) {
     return invalid("no level " + std::to_string(level) + " (the tree has levels 0 to " +
                    std::to_string(levels - 1) + ")");
   (*s)->level = static_cast<int>(level);
-  (*s)->certificate = certifyViewSolid(**s);
+  certifyViewSolid(*s);
   ++scene->version;
   return {};
 }

@@ -44,7 +44,7 @@ ViewSolid makeViewSolid(std::string name, std::string link, SolidInput input,
   s.input = std::move(shared);
   s.sets = std::move(sets);
   s.level = level;
-  s.certificate = certifyViewSolid(s);
+  certifyViewSolid(&s);
   return s;
 }
 
@@ -200,32 +200,37 @@ const Mesh& ViewSolid::displayed() const {
   return original ? *original : input->repair.solid;
 }
 
-ViewCertificate certifyViewSolid(const ViewSolid& solid) {
+void certifyViewSolid(ViewSolid* solid) {
+  solid->engine.reset();
+  if (!solid->spheres().empty()) {
+    CertificateOptions co;
+    co.original = solid->input->original();
+    auto engine = makeCoverageCertificate(*solid->index, solid->spheres(), co);
+    // The sets are checked before they are stored, so the certificate takes them; were one
+    // refused, the solid would show as uncovered with no gap known.
+    if (engine) solid->engine = std::make_shared<CoverageCertificate>(std::move(engine).value());
+  }
+  solid->certificate = viewCertificate(*solid);
+}
+
+ViewCertificate viewCertificate(const ViewSolid& solid) {
   ViewCertificate c;
-  const std::vector<Sphere>& spheres = solid.spheres();
-  c.spheres = static_cast<int64_t>(spheres.size());
+  c.spheres = static_cast<int64_t>(solid.spheres().size());
   c.volume = signedVolume(solid.input->repair.solid);
-  if (spheres.empty()) return c;  // nothing covered; no gap to measure
-  // The certificates and the exact E_r only: no Monte Carlo, proximity or shadows. The triangle
-  // ids of the gaps come with the incremental certificate (certificate.hpp); the evaluation
-  // counts them only, so uncovered_triangles stays empty here.
-  EvalOptions eo;
-  eo.union_samples = 0;
-  eo.proximity_segments = 0;
-  eo.shadow_resolution = 0;
-  eo.original = solid.input->original();
-  eo.walls = solid.input->walls();
-  auto e = evaluateSpheres(*solid.index, spheres, eo);
-  if (!e) return c;  // the sets are checked before they are stored: not reached
-  c.er_sum = e->er_sum;
-  c.outside_volume = e->outside_volume;
-  c.volume = e->mesh_volume;
-  c.surface_covered = e->surface_covered;
-  c.interior_covered = e->interior_covered;
-  c.original_covered = e->original_covered;
-  c.covered = c.surface_covered && c.interior_covered && c.original_covered;
-  c.max_gap = std::max({e->max_surface_gap, e->max_original_gap, e->max_interior_gap});
-  c.seconds = e->seconds;
+  if (!solid.engine) return c;  // an empty set: nothing covered, no gap to measure
+  const CertificateSummary& e = solid.engine->summary();
+  c.er_sum = e.er_sum;
+  c.outside_volume = e.outside_volume;
+  c.volume = e.volume;
+  c.surface_covered = e.surface_covered;
+  c.interior_covered = e.interior_covered;
+  c.original_covered = e.original_covered;
+  c.covered = e.covered;
+  c.max_gap = e.max_gap;
+  // The page draws the original triangles when the repair changed them (displayed()).
+  c.uncovered_triangles =
+      solid.input->original() ? e.original_uncovered_triangles : e.uncovered_triangles;
+  c.seconds = e.seconds;
   return c;
 }
 

@@ -1,7 +1,5 @@
 // The view's API on a socket (cpp-httplib): every request, whatever its method and path, goes to
 // handleViewRequest under one lock, so the scene sees one request at a time.
-#include <httplib.h>
-
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -13,6 +11,10 @@
 
 #include "sphereset/limits.hpp"
 #include "sphereset/view.hpp"
+
+// After Eigen (through view.hpp): clang refuses Eigen's product kernels when the system headers
+// httplib.h pulls in come first.
+#include <httplib.h>
 
 namespace sphereset {
 

@@ -103,6 +103,41 @@ TEST_F(ViewTest, EditUncoversAndBoundCoversAgain) {
   EXPECT_EQ(j["spheres"][1][3], 0.05);
 }
 
+// The certificate after a run of edits (taken incrementally) is the one a full certification of
+// the same set gives, with the uncovered triangles listed; a copy of the scene taken before the
+// edits keeps its own certificate.
+TEST_F(ViewTest, EditedCertificateEqualsAFullOneAndListsTheGaps) {
+  ViewScene scene = boxScene();
+  const ViewScene before = scene;
+  const nlohmann::json edits[] = {
+      {{"op", "set"}, {"index", 0}, {"sphere", {0.5, 0.5, 1.3, 0.6}}},
+      {{"op", "add"}, {"sphere", {0.0, 0.0, 0.0, 0.4}}},
+      {{"op", "set"}, {"index", 1}, {"sphere", {0.5, 0.5, 0.3, 0.7}}},
+      {{"op", "delete"}, {"index", 2}},
+  };
+  nlohmann::json j;
+  for (const nlohmann::json& e : edits)
+    j = call(&scene, post("/api/edit", {{"solid", 0}, {"edits", {e}}}));
+  ViewSolid full = scene.solids[0];
+  certifyViewSolid(&full);
+  const ViewCertificate& c = scene.solids[0].certificate;
+  EXPECT_FALSE(c.covered);
+  EXPECT_FALSE(c.uncovered_triangles.empty());
+  EXPECT_EQ(c.uncovered_triangles, full.certificate.uncovered_triangles);
+  EXPECT_EQ(c.er_sum, full.certificate.er_sum);
+  EXPECT_EQ(c.max_gap, full.certificate.max_gap);
+  EXPECT_EQ(c.surface_covered, full.certificate.surface_covered);
+  EXPECT_EQ(c.interior_covered, full.certificate.interior_covered);
+  EXPECT_EQ(j["certificate"]["uncovered_triangles"].size(), c.uncovered_triangles.size());
+  // The count agrees with the evaluation's.
+  const EvalResult e = coverageOnly(*scene.solids[0].index, scene.solids[0].spheres());
+  EXPECT_EQ(static_cast<int64_t>(c.uncovered_triangles.size()), e.uncovered_triangles);
+  // The copy taken first is as it was.
+  EXPECT_TRUE(before.solids[0].certificate.covered);
+  EXPECT_TRUE(before.solids[0].certificate.uncovered_triangles.empty());
+  EXPECT_EQ(before.solids[0].spheres().size(), 2u);
+}
+
 TEST_F(ViewTest, DeletingEverySphereLeavesAnUncoveredSet) {
   ViewScene scene = boxScene();
   const nlohmann::json j =

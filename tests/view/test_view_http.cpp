@@ -1,7 +1,6 @@
 // The view's API over real HTTP: a ViewServer on a free port of 127.0.0.1 and cpp-httplib's
 // client, as a page or a hostile page would talk to it.
 #include <gtest/gtest.h>
-#include <httplib.h>
 
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -9,6 +8,10 @@
 
 #include "sphereset/limits.hpp"
 #include "view/view_fixture.hpp"
+
+// After Eigen (through the fixture): clang refuses Eigen's product kernels when the system
+// headers httplib.h pulls in come first.
+#include <httplib.h>
 
 namespace sphereset::test {
 namespace {
