@@ -4,6 +4,15 @@
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 [ -x build/apps/sphereset ] || cmake --build build --target sphereset_cli
 mkdir -p bench/results
+# skip_without_shared NAME: `shared` (SHARED, default ../shared), or exit 0 saying NAME was
+# skipped when it has no meshes (the benchmarks on ../shared's meshes run only where it is).
+skip_without_shared() {
+  shared=${SHARED:-../shared}
+  if [ ! -d "$shared/meshes" ]; then
+    echo "$1: skipped, $shared/meshes is absent" >&2
+    exit 0
+  fi
+}
 bench_meshes() {
   if [ ${#args[@]} -gt 0 ]; then meshes=("${args[@]}"); else meshes=("$@"); fi
 }

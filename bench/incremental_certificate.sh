@@ -10,13 +10,9 @@
 #   bash bench/incremental_certificate.sh          (N=64 EDITS=30 SHARED=../shared OUT=...)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-shared=${SHARED:-../shared}
-if [ ! -d "$shared/meshes" ]; then
-  echo "incremental_certificate.sh: skipped, $shared/meshes is absent" >&2
-  exit 0
-fi
 args=()
 source bench/common.sh
+skip_without_shared incremental_certificate.sh
 [ -x build/bench/certificate_table ] || cmake --build build --target certificate_table
 n=${N:-64}
 edits=${EDITS:-30}

@@ -22,6 +22,7 @@ echo "== fuzz: configure and build ($build, clang)"
 mkdir -p "$build"
 CC=clang CXX=clang++ cmake -S . -B "$build" -DSPHERESET_BUILD_FUZZERS=ON \
   -DSPHERESET_BUILD_TESTS=OFF -DSPHERESET_BUILD_BENCH=OFF -DSPHERESET_UNITY=OFF \
+  -DSPHERESET_VIEW_PAGE=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" "${launcher[@]}" > "$build/configure.log" 2>&1 ||
   { cat "$build/configure.log"; exit 1; }

@@ -7,8 +7,9 @@ bash scripts/setup.sh
 build=${BUILD_DIR:-build}
 # Tests, benchmarks and the Python module on (a build folder configured by the demo has them
 # off); the Python module's default depends on the sanitizer options, so its cached value is
-# dropped and recomputed. Later arguments ("$@") override these.
+# dropped and recomputed. The view's page is required (its browser tests run here). Later
+# arguments ("$@") override these.
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DSPHERESET_BUILD_TESTS=ON \
-  -DSPHERESET_BUILD_BENCH=ON -USPHERESET_BUILD_PYTHON "$@"
+  -DSPHERESET_BUILD_BENCH=ON -DSPHERESET_VIEW_PAGE=ON -USPHERESET_BUILD_PYTHON "$@"
 cmake --build "$build" -j "$(nproc)"
 ctest --test-dir "$build" -j "$(nproc)" --output-on-failure

@@ -18,3 +18,4 @@ echo "For comparison, one sphere around the bounding box:"
 ./build/apps/sphereset export out/spot_32.json -o out/spot_32_spheres.ply
 ./build/apps/sphereset render examples/spot.obj out/spot_32.json -o out/spot_32.png
 echo "Picture: out/spot_32.png (front, side, top, three-quarter); spheres as a mesh: out/spot_32_spheres.ply"
+echo "To check and edit the set in the browser: ./build/apps/sphereset view examples/spot.obj out/spot_32.json"
