@@ -70,6 +70,14 @@ Status writeLinkSpheres(const std::string& path, const std::vector<LinkSpheres>&
 std::string formatLinkSpheres(const std::vector<LinkSpheres>& links,
                               const SphereFileMeta& meta = {});
 
+// The YAML file `source` (cuRobo's or Lula's, as readLinkSpheres reads it) written to `path`
+// with its collision spheres replaced by `links`, in the same place and layout, every other key
+// kept (cuRobo's self_collision_ignore and buffer, Lula's robot description); comments are not
+// kept. How an edited set goes back into the file it came from. Errors: readLinkSpheres' for the
+// source, writeLinkSpheres' for the links and the path. Written atomically.
+Status rewriteLinkSpheres(const std::string& source, const std::string& path,
+                          const std::vector<LinkSpheres>& links);
+
 // Writes any text atomically, as the sphere files are written (e.g. a command's JSON report).
 Status writeTextFile(const std::string& path, const std::string& text);
 

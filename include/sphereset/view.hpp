@@ -84,6 +84,9 @@ struct ViewScene {
   // Where and how a save writes, fixed when the scene is loaded.
   std::string save_path;
   ViewSaveFormat save_format = ViewSaveFormat::kSet;
+  // A robot's YAML sphere file read at the start, whose layout and other keys (cuRobo's
+  // self_collision_ignore, Lula's description) a YAML save keeps; empty: written afresh.
+  std::string save_source;
   SphereFileMeta save_meta;
 };
 

@@ -25,6 +25,11 @@ Expected<SphereTree> parseSphereTree(SphereFormat format, const std::string& tex
 // cuRobo's YAML (yaml_spheres.cpp): every link of the collision_spheres mapping, in file order,
 // found at the top level or under robot_cfg: kinematics: (or kinematics:).
 Expected<std::vector<LinkSpheres>> parseYamlLinks(const std::string& text, const std::string& name);
+// The YAML document `text` (the file `name`, as parseYamlLinks reads it) with its
+// collision_spheres replaced by `links`, in the same place and layout (cuRobo's mapping or
+// Lula's list), every other key kept; comments are not kept.
+Expected<std::string> replaceYamlLinks(const std::string& text, const std::string& name,
+                                       const std::vector<LinkSpheres>& links);
 // Several links in the layout the single-link YAML writer uses; an empty link as "[]".
 std::string formatYamlLinks(const std::vector<LinkSpheres>& links, const SphereFileMeta& meta);
 // cuRobo's self_collision_ignore and self_collision_buffer mappings for these links and pairs

@@ -203,6 +203,21 @@ Status writeLinkSpheres(const std::string& path, const std::vector<LinkSpheres>&
   return writeFileAtomically(path, formatLinkSpheres(links, meta));
 }
 
+Status rewriteLinkSpheres(const std::string& source, const std::string& path,
+                          const std::vector<LinkSpheres>& links) {
+  if (Status st = checkLinkSpheres(path, links); !st) return st;
+  if (Status st = checkLinkSpheres(source, {}); !st) return st;
+  auto text = readFileText(source);
+  if (!text) return text.error();
+  auto out = detail::replaceYamlLinks(*text, source, links);
+  if (!out) return out.error();
+  // What is written reads back as the links given.
+  auto back = detail::parseYamlLinks(*out, path);
+  if (!back || back->size() != links.size())
+    return Error{ErrorCode::kInvalidData, source + ": the spheres did not read back from the copy"};
+  return writeFileAtomically(path, *out);
+}
+
 std::string formatRobotSpheres(const std::vector<LinkSpheres>& links,
                                const SelfCollisionPairs* pairs, const SphereFileMeta& meta) {
   std::string out = detail::formatYamlLinks(links, meta);

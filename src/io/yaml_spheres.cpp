@@ -164,6 +164,62 @@ Expected<std::vector<LinkSpheres>> parseLinks(const std::string& text, const std
 
 }  // namespace
 
+namespace {
+
+// One link's spheres as YAML nodes ({center: [x, y, z], radius: r}, the centre in flow style),
+// numbers written as the file writers write them.
+YAML::Node sphereListNode(const std::vector<Sphere>& spheres) {
+  YAML::Node list(YAML::NodeType::Sequence);
+  for (const Sphere& s : spheres) {
+    YAML::Node centre(YAML::NodeType::Sequence);
+    for (int k = 0; k < 3; ++k) centre.push_back(formatNumber(s.center[k]));
+    centre.SetStyle(YAML::EmitterStyle::Flow);
+    YAML::Node sphere(YAML::NodeType::Map);
+    sphere["center"] = centre;
+    sphere["radius"] = formatNumber(s.radius);
+    list.push_back(sphere);
+  }
+  return list;
+}
+
+}  // namespace
+
+Expected<std::string> replaceYamlLinks(const std::string& text, const std::string& name,
+                                       const std::vector<LinkSpheres>& links) {
+  try {
+    if (auto read = parseLinks(text, name); !read) return read.error();  // a file we read
+    YAML::Node root = YAML::Load(text);
+    std::string key_path;
+    const YAML::Node old = findCollisionSpheres(root, &key_path);
+    // cuRobo's mapping, or Lula's list of one-link mappings when the file has that.
+    YAML::Node spheres(old.IsSequence() ? YAML::NodeType::Sequence : YAML::NodeType::Map);
+    for (const LinkSpheres& l : links) {
+      if (old.IsSequence()) {
+        YAML::Node entry(YAML::NodeType::Map);
+        entry[l.link] = sphereListNode(l.spheres);
+        spheres.push_back(entry);
+      } else {
+        spheres[l.link] = sphereListNode(l.spheres);
+      }
+    }
+    // The same place as before: assigning through operator[] replaces the node in the tree.
+    if (key_path == "collision_spheres")
+      root["collision_spheres"] = spheres;
+    else if (key_path == "kinematics: collision_spheres")
+      root["kinematics"]["collision_spheres"] = spheres;
+    else
+      root["robot_cfg"]["kinematics"]["collision_spheres"] = spheres;
+    YAML::Emitter out;
+    out << root;
+    if (!out.good())
+      return Error{ErrorCode::kInvalidData,
+                   name + ": cannot write YAML (" + out.GetLastError() + ")"};
+    return std::string(out.c_str()) + "\n";
+  } catch (const YAML::Exception& e) {
+    return Error{ErrorCode::kUnreadable, oneLine(name + ": invalid YAML (" + e.msg + ")")};
+  }
+}
+
 Expected<std::vector<LinkSpheres>> parseYamlLinks(const std::string& text,
                                                   const std::string& name) {
   try {

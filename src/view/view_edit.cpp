@@ -200,9 +200,12 @@ Expected<int64_t> saveViewScene(const ViewScene& scene) {
       for (LinkSpheres& l : links)
         for (const ViewSolid& s : scene.solids)
           if (s.link == l.link) l.spheres = s.spheres();
-      st = scene.save_format == ViewSaveFormat::kRobotYaml
-               ? writeRobotSpheres(scene.save_path, links, nullptr, scene.save_meta)
-               : writeSphereUrdf(scene.urdf_path, scene.save_path, links);
+      if (scene.save_format == ViewSaveFormat::kRobotUrdf)
+        st = writeSphereUrdf(scene.urdf_path, scene.save_path, links);
+      else if (!scene.save_source.empty())
+        st = rewriteLinkSpheres(scene.save_source, scene.save_path, links);
+      else
+        st = writeRobotSpheres(scene.save_path, links, nullptr, scene.save_meta);
       break;
     }
   }

@@ -180,10 +180,18 @@ Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& s
   if (endsWithLower(path, ".urdf")) {
     scene->save_format = ViewSaveFormat::kRobotUrdf;
   } else if (endsWithLower(path, ".yml") || endsWithLower(path, ".yaml")) {
-    if (endsWithLower(path, ".lula.yml") || endsWithLower(path, ".lula.yaml"))
+    // A save keeps the YAML file's own layout and other keys (rewriteLinkSpheres); Lula's file
+    // comes only from a Lula file.
+    const auto lula = [](const std::string& p) {
+      return endsWithLower(p, ".lula.yml") || endsWithLower(p, ".lula.yaml");
+    };
+    if (lula(path) && !lula(spheres_path))
       return Error{ErrorCode::kInvalidArgument,
-                   path + ": saves write cuRobo's YAML; give --output ROBOT.yml"};
+                   path + ": a Lula robot description is saved from one (" + spheres_path +
+                       " is not); give --output ROBOT.yml"};
     scene->save_format = ViewSaveFormat::kRobotYaml;
+    if (lowerExtension(spheres_path) != ".urdf")
+      scene->save_source = std::filesystem::absolute(spheres_path).lexically_normal().string();
   } else {
     return Error{ErrorCode::kInvalidArgument,
                  path + ": a robot's spheres are saved as .yml/.yaml (cuRobo) or .urdf"};

@@ -182,6 +182,63 @@ TEST_F(YamlSpheres, BadFilesGiveOneLineErrorsNamingFileLinkAndSphere) {
 
 using test::kRoundTripSet;
 
+// An edited robot's spheres written back into the file they came from: the spheres replaced in
+// place and layout, every other key as it was.
+TEST_F(YamlSpheres, RewriteKeepsTheFileAroundTheSpheres) {
+  const std::vector<LinkSpheres> edited = {{"base", {{Vec3(0.1, 0.2, 0.3), 0.25}}},
+                                           {"arm", {{Vec3(-1, 0, 2.5), 0.5}, {Vec3(0, 0, 0), 1}}}};
+  const auto readBack = [&](const std::string& file) {
+    auto back = readLinkSpheres(file);
+    EXPECT_TRUE(back.ok()) << back.error().message;
+    if (!back.ok()) return;
+    ASSERT_EQ(back->size(), 2u);
+    for (size_t l = 0; l < 2; ++l) {
+      EXPECT_EQ((*back)[l].link, edited[l].link);
+      ASSERT_EQ((*back)[l].spheres.size(), edited[l].spheres.size());
+      for (size_t k = 0; k < edited[l].spheres.size(); ++k) {
+        EXPECT_EQ((*back)[l].spheres[k].center, edited[l].spheres[k].center);
+        EXPECT_EQ((*back)[l].spheres[k].radius, edited[l].spheres[k].radius);
+      }
+    }
+  };
+  // cuRobo: the ignore list and the buffer stay.
+  const std::string curobo = path("curobo.yml");
+  std::ofstream(curobo) << "collision_spheres:\n  base:\n    - center: [0, 0, 0]\n      radius: 1\n"
+                           "  arm:\n    - center: [0, 0, 1]\n      radius: 0.3\n"
+                           "self_collision_ignore:\n  base: [arm]\n"
+                           "self_collision_buffer:\n  base: 0.01\n";
+  ASSERT_TRUE(rewriteLinkSpheres(curobo, path("curobo_out.yml"), edited).ok());
+  readBack(path("curobo_out.yml"));
+  const std::string text = test::readFile(path("curobo_out.yml"));
+  EXPECT_NE(text.find("self_collision_ignore"), std::string::npos) << text;
+  EXPECT_NE(text.find("self_collision_buffer"), std::string::npos) << text;
+  EXPECT_NE(text.find("0.01"), std::string::npos) << text;
+  // Lula: the list of one-link mappings stays a list, the description's other keys stay.
+  const std::string lula = path("robot.lula.yml");
+  std::ofstream(lula) << "api_version: 1.0\ncspace:\n  - joint1\n"
+                         "collision_spheres:\n  - base:\n      - center: [0, 0, 0]\n"
+                         "        radius: 1\n  - arm: []\n";
+  ASSERT_TRUE(rewriteLinkSpheres(lula, path("robot_out.lula.yml"), edited).ok());
+  readBack(path("robot_out.lula.yml"));
+  const std::string lula_text = test::readFile(path("robot_out.lula.yml"));
+  EXPECT_NE(lula_text.find("cspace"), std::string::npos) << lula_text;
+  EXPECT_NE(lula_text.find("- base:"), std::string::npos) << lula_text;
+  // Nested in a robot configuration: written back there.
+  const std::string nested = path("nested.yml");
+  std::ofstream(nested) << "robot_cfg:\n  kinematics:\n    urdf_path: robot.urdf\n"
+                           "    collision_spheres:\n      base: []\n";
+  ASSERT_TRUE(rewriteLinkSpheres(nested, path("nested_out.yml"), edited).ok());
+  readBack(path("nested_out.yml"));
+  EXPECT_NE(test::readFile(path("nested_out.yml")).find("urdf_path: robot.urdf"),
+            std::string::npos);
+  // A source that is no sphere file, or a target that is not YAML: refused, nothing written.
+  std::ofstream(path("plain.yml")) << "a: 1\n";
+  EXPECT_FALSE(rewriteLinkSpheres(path("plain.yml"), path("never.yml"), edited).ok());
+  EXPECT_FALSE(rewriteLinkSpheres(curobo, path("never.txt"), edited).ok());
+  EXPECT_FALSE(fs::exists(path("never.yml")));
+  EXPECT_FALSE(fs::exists(path("never.txt")));
+}
+
 TEST_F(YamlSpheres, SingleLinkOutputIsUnchanged) {
   // The layout existing fits are compared against, byte for byte.
   SphereFileMeta meta;

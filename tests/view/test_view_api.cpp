@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -251,6 +252,23 @@ TEST_F(ViewTest, RobotPosesFollowTheJoints) {
   ASSERT_EQ(saved->size(), 2u);
   EXPECT_EQ((*saved)[1].link, "link2");
   expectSameSpheres((*saved)[1].spheres, scene.solids[1].spheres());
+}
+
+// A robot's YAML keeps what else it holds (cuRobo's ignore list) when the view saves into it.
+TEST_F(ViewTest, ARobotsYamlSaveKeepsItsOtherKeys) {
+  ViewScene scene = robotScene();
+  {
+    std::ofstream(path("robot.yml"), std::ios::app) << "self_collision_ignore:\n  link1: [link2]\n";
+  }
+  call(&scene, post("/api/edit",
+                    {{"solid", 0}, {"edits", {{{"op", "add"}, {"sphere", {0, 0, 0.1, 0.02}}}}}}));
+  call(&scene, post("/api/save", nlohmann::json::object()));
+  auto saved = readLinkSpheres(path("robot.yml"));
+  ASSERT_TRUE(saved.ok()) << saved.error().message;
+  ASSERT_EQ(saved->size(), 2u);
+  expectSameSpheres((*saved)[0].spheres, scene.solids[0].spheres());
+  const std::string text = test::readFile(path("robot.yml"));
+  EXPECT_NE(text.find("self_collision_ignore"), std::string::npos) << text;
 }
 
 TEST_F(ViewTest, ARobotsSphereUrdfIsSavedAsAUrdf) {
