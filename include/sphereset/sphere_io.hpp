@@ -47,7 +47,9 @@ struct LinkSpheres {
 // kinematics: collision_spheres:), or Lula's list of one-link mappings
 // (collision_spheres: [{link: [spheres]}, ...], robot_collision.hpp). A link
 // with an empty entry has no spheres. Any other format holds one set, returned as one link
-// named after the file's stem. Errors: kUnreadable (not YAML), kInvalidData (no
+// named after the file's stem, but for the JSON report of `sphereset robot -o ROBOT.json`
+// ({"links": [{"link": NAME, "spheres": [[x, y, z, r], ...]}, ...]}), read as its links.
+// Errors: kUnreadable (not YAML), kInvalidData (no
 // collision_spheres, a link that is not a list, a sphere without center or radius, a value
 // that is not a number, NaN, negative radius; the message names the file, line, link and
 // sphere index).

@@ -20,6 +20,7 @@
 #include "io/atomic_write.hpp"
 #include "io/json_text.hpp"
 #include "io/sphere_formats.hpp"
+#include "sphereset/limits.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_tree.hpp"
 #include "util/read_file.hpp"
@@ -327,9 +328,65 @@ Expected<std::vector<Sphere>> parseSpheres(SphereFormat format, const std::strin
   return out;
 }
 
+namespace {
+
+// The report of `sphereset robot -o ROBOT.json`: {"links": [{"link": NAME, "spheres": [[x, y, z,
+// r], ...]}, ...]}, each link's spheres in its frame. Links that were skipped have none.
+Expected<std::vector<LinkSpheres>> parseRobotReport(const nlohmann::json& j,
+                                                    const std::string& path) {
+  const nlohmann::json& links = j["links"];
+  if (!links.is_array())
+    return Error{ErrorCode::kInvalidData, path + ": \"links\" is not an array"};
+  std::vector<LinkSpheres> out;
+  size_t total = 0;
+  for (size_t l = 0; l < links.size(); ++l) {
+    const nlohmann::json& e = links[l];
+    const std::string where = path + ": link " + std::to_string(l);
+    if (!e.is_object() || !e.contains("link") || !e["link"].is_string() ||
+        e["link"].get<std::string>().empty())
+      return Error{ErrorCode::kInvalidData, where + ": needs a \"link\" name"};
+    LinkSpheres ls{e["link"].get<std::string>(), {}};
+    for (const LinkSpheres& seen : out)
+      if (seen.link == ls.link)
+        return Error{ErrorCode::kInvalidData, where + ": '" + ls.link + "' appears twice"};
+    const nlohmann::json spheres = e.value("spheres", nlohmann::json::array());
+    if (!spheres.is_array())
+      return Error{ErrorCode::kInvalidData, where + ": \"spheres\" is not an array"};
+    for (size_t i = 0; i < spheres.size(); ++i) {
+      const nlohmann::json& v = spheres[i];
+      const std::string at = where + " ('" + ls.link + "') sphere " + std::to_string(i);
+      if (!v.is_array() || v.size() != 4)
+        return Error{ErrorCode::kInvalidData, at + ": expected [x, y, z, r]"};
+      Sphere s;
+      for (int k = 0; k < 4; ++k)
+        if (!v[k].is_number())
+          return Error{ErrorCode::kInvalidData, at + ": expected four numbers"};
+      s.center = Vec3(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+      s.radius = v[3].get<double>();
+      if (Status st = checkSphere(at, s); !st) return st.error();
+      ls.spheres.push_back(s);
+      if (++total > static_cast<size_t>(limits::kMaxSpheres))
+        return Error{ErrorCode::kInvalidData,
+                     path + ": more than " + std::to_string(limits::kMaxSpheres) + " spheres"};
+    }
+    out.push_back(std::move(ls));
+  }
+  return out;
+}
+
+}  // namespace
+
 Expected<std::vector<LinkSpheres>> parseLinkSpheres(SphereFormat format, const std::string& text,
                                                     const std::string& path) {
   if (format == SphereFormat::kYaml) return parseYamlLinks(text, path);
+  if (format == SphereFormat::kJson) {
+    // A robot's report (per link) reads as its links; any other JSON as one set.
+    std::istringstream in(text);
+    auto parsed = parseJson(in, path);
+    if (!parsed) return parsed.error();
+    if (parsed->is_object() && parsed->contains("links") && !parsed->contains("spheres"))
+      return parseRobotReport(*parsed, path);
+  }
   // Other formats hold one set: one link, named after the file.
   auto spheres = parseSpheres(format, text, path);
   if (!spheres) return spheres.error();

@@ -182,7 +182,10 @@ Status setViewJoints(ViewScene* scene, const std::map<std::string, double>& join
 
 Expected<int64_t> saveViewScene(const ViewScene& scene) {
   if (scene.save_path.empty())
-    return Error{ErrorCode::kInvalidArgument, scene.title + ": this scene has no file to save to"};
+    return Error{ErrorCode::kInvalidArgument,
+                 scene.title +
+                     ": this scene has no file to save to (start sphereset view with "
+                     "--output FILE)"};
   Status st;
   switch (scene.save_format) {
     case ViewSaveFormat::kSet:

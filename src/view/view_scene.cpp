@@ -176,6 +176,9 @@ Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& s
   auto scene =
       robotSceneOf(std::move(robot).value(), urdf, std::move(links).value(), spheres_path, o);
   if (!scene) return scene.error();
+  // A robot's JSON report is read, not written: without --output its scene has nothing to
+  // save to (a save says so).
+  if (o.output.empty() && lowerExtension(spheres_path) == ".json") return scene;
   const std::string path = o.output.empty() ? spheres_path : o.output;
   if (endsWithLower(path, ".urdf")) {
     scene->save_format = ViewSaveFormat::kRobotUrdf;

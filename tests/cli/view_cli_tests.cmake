@@ -33,7 +33,7 @@ add_test(NAME cli.view_html_robot
 # spheres) and of `sphereset batch --html` (one beside each item's sphere file).
 add_test(NAME cli.robot_html
          COMMAND ${CMAKE_COMMAND} -DCLI=${cli} -DOUT=${work}/robot_page.html -DSOLIDS=3
-           "-DARGS=robot|${data}/robot/three_link.urdf|--package-path|${data}/robot|--budget|8|--quality|fast|-q|-o|${work}/robot_page.yml|-o|${work}/robot_page.html"
+           "-DARGS=robot|${data}/robot/three_link.urdf|--package-path|${data}/robot|--budget|8|--quality|fast|-q|-o|${work}/robot_page.yml|-o|${work}/robot_page.json|-o|${work}/robot_page.html"
            -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)
 file(COPY ${link} DESTINATION ${work}/batch_pages)
 add_test(NAME cli.batch_html
@@ -41,3 +41,10 @@ add_test(NAME cli.batch_html
            -DSOLIDS=1
            "-DARGS=batch|${work}/batch_pages|-o|${work}/batch_pages_out|-n|4|--quality|fast|-q|--html"
            -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)
+# The robot's JSON report as the spheres of a view (read per link).
+add_test(NAME cli.view_html_robot_report
+         COMMAND ${CMAKE_COMMAND} -DCLI=${cli} -DMESH=${data}/robot/three_link.urdf
+           -DSPHERES=${work}/robot_page.json -DOUT=${work}/robot_report.html
+           "-DEXTRA=--package-path|${data}/robot" -DSOLIDS=3
+           -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)
+set_tests_properties(cli.view_html_robot_report PROPERTIES DEPENDS cli.robot_html)

@@ -239,6 +239,38 @@ TEST_F(YamlSpheres, RewriteKeepsTheFileAroundTheSpheres) {
   EXPECT_FALSE(fs::exists(path("never.txt")));
 }
 
+// The JSON report of `sphereset robot` reads as its links (the view takes it as a robot's
+// spheres); a bad sphere in it is named.
+TEST_F(YamlSpheres, ARobotsJsonReportReadsAsItsLinks) {
+  const std::string report = write(
+      "robot.json",
+      R"({"robot": "r", "links": [{"link": "base", "spheres": [[0, 0, 0.5, 0.25]], "count": 1},
+          {"link": "tool", "skipped": true},
+          {"link": "arm", "spheres": [[1, 2, 3, 0.5], [0, 0, 0, 1]]}]})");
+  auto links = readLinkSpheres(report);
+  ASSERT_TRUE(links.ok()) << links.error().message;
+  ASSERT_EQ(links->size(), 3u);
+  EXPECT_EQ((*links)[0].link, "base");
+  ASSERT_EQ((*links)[0].spheres.size(), 1u);
+  expectSphere((*links)[0].spheres[0], 0, 0, 0.5, 0.25);
+  EXPECT_TRUE((*links)[1].spheres.empty());
+  ASSERT_EQ((*links)[2].spheres.size(), 2u);
+  expectSphere((*links)[2].spheres[1], 0, 0, 0, 1);
+  const std::string bad =
+      write("bad.json", R"({"links": [{"link": "base", "spheres": [[0, 0, 0, -1]]}]})");
+  auto refused = readLinkSpheres(bad);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().code, ErrorCode::kInvalidData);
+  EXPECT_NE(refused.error().message.find("'base') sphere 0"), std::string::npos)
+      << refused.error().message;
+  // A plain set in JSON is still one link named after the file.
+  const std::string set = write("set.json", R"({"spheres": [{"center": [0, 0, 0], "radius": 1}]})");
+  auto one = readLinkSpheres(set);
+  ASSERT_TRUE(one.ok()) << one.error().message;
+  ASSERT_EQ(one->size(), 1u);
+  EXPECT_EQ((*one)[0].link, "set");
+}
+
 TEST_F(YamlSpheres, SingleLinkOutputIsUnchanged) {
   // The layout existing fits are compared against, byte for byte.
   SphereFileMeta meta;
