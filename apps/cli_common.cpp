@@ -10,10 +10,10 @@
 #include <iostream>
 #include <map>
 
+#include "sphereset/view.hpp"
 #ifdef SPHERESET_WITH_REPAIR
 #include "sphereset/load.hpp"
 #include "sphereset/repair_cgal.hpp"
-#include "sphereset/view.hpp"
 #endif
 
 namespace sphereset::cli {

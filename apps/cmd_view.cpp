@@ -7,9 +7,12 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -51,18 +54,51 @@ void openBrowser(const std::string& url) {
 }
 
 bool loopback(const std::string& host) {
-  return host == "127.0.0.1" || host == "localhost" || host == "::1";
+  return host.rfind("127.", 0) == 0 || host == "localhost" || host == "::1";
 }
 
-int runView(const ViewArgs& a) {
-  // SIGINT and SIGTERM are taken by sigwait below: blocked before any thread starts (the
-  // loading's and the server's threads inherit the mask), so none of them ends the process.
-  sigset_t stop_signals;
-  sigemptyset(&stop_signals);
-  sigaddset(&stop_signals, SIGINT);
-  sigaddset(&stop_signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+// SIGINT and SIGTERM, taken by one thread of their own (blocked in every other thread, which
+// inherit the mask from the main thread): while the scene loads or a page is written, a signal
+// ends the command at once (nothing is written but atomically, so nothing is left half done);
+// once the server runs, it stops the server and the command ends with 0.
+class StopSignals {
+ public:
+  StopSignals() {
+    sigemptyset(&set_);
+    sigaddset(&set_, SIGINT);
+    sigaddset(&set_, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &set_, nullptr);
+    std::thread([this] {
+      int number = 0;
+      sigwait(&set_, &number);
+      std::unique_lock<std::mutex> lock(mutex_);
+      if (!serving_) {
+        std::fprintf(stderr, "sphereset view: interrupted\n");
+        std::_Exit(128 + number);
+      }
+      stopped_ = true;
+      changed_.notify_all();
+    }).detach();
+  }
+  // From now on a signal stops the server instead of the command.
+  void serving() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    serving_ = true;
+  }
+  void wait() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [this] { return stopped_; });
+  }
 
+ private:
+  sigset_t set_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  bool serving_ = false, stopped_ = false;
+};
+
+int runView(const ViewArgs& a) {
+  StopSignals signals;  // before any other thread starts
   ViewLoadOptions lo;
   auto repair = repairOptions(a.mesh);
   if (!repair) return fail(repair.error());
@@ -74,6 +110,7 @@ int runView(const ViewArgs& a) {
   lo.package_paths = a.package_paths;
   lo.level = a.level;
   lo.output = a.output;
+  lo.page_file = !a.html.empty();
   if (!a.html.empty())
     if (Status st = checkOutputPath(a.html, {a.mesh.path, a.spheres_path}); !st)
       return fail(st.error());
@@ -91,17 +128,13 @@ int runView(const ViewArgs& a) {
   if (!loopback(a.host))
     std::cerr << "sphereset view: warning: listening on " << a.host
               << ": anyone who can reach this address and learns the token can edit and save\n";
-  // Interrupted while loading: nothing to serve.
-  sigset_t pending;
-  sigpending(&pending);
-  if (sigismember(&pending, SIGINT) || sigismember(&pending, SIGTERM)) return kOk;
   auto server = ViewServer::start(std::move(scene).value(), a.host, a.port);
   if (!server) return fail(server.error());
+  signals.serving();
   const std::string url = (*server)->url();
   std::cout << "sphereset view: " << url << std::endl;  // flushed: scripts wait for this line
   if (!a.no_open) openBrowser(url);
-  int signal_number = 0;
-  sigwait(&stop_signals, &signal_number);
+  signals.wait();
   (*server)->stop();
   return kOk;
 }
@@ -131,7 +164,7 @@ Command registerView(CLI::App& app) {
   cmd->add_option("--html", a->html,
                   "Write a static page with the scene inlined to this file and exit (no server)");
   cmd->add_option("--level", a->level, "A tree's level shown first (default: the leaves)")
-      ->check(CLI::Range(0, 26));
+      ->check(CLI::NonNegativeNumber);
   return {cmd, [a] { return runView(*a); }};
 }
 

@@ -97,6 +97,8 @@ struct ViewLoadOptions {
   bool use_ros_package_path = true;
   int level = -1;      // a tree's level shown first; -1: the leaves
   std::string output;  // where saves go; empty: the sphere file itself
+  // For a page file (--html): no save path is set up or checked (a save is refused).
+  bool page_file = false;
 };
 
 // A scene from a mesh and a sphere set or tree file, or a URDF and its links' spheres (a

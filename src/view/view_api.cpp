@@ -38,13 +38,23 @@ std::string jsonText(const nlohmann::json& j) {
 
 ViewResponse answer(const nlohmann::json& j) { return {kHttpOk, "application/json", jsonText(j)}; }
 
+// Longest error message sent back: it may quote what the request held.
+constexpr size_t kMaxMessageChars = 400;
+
+// An error answer: one line (a control character of a quoted field or path becomes a space),
+// at most kMaxMessageChars characters.
 ViewResponse refuse(int status, const std::string& message) {
-  return {status, "application/json", jsonText({{"error", message}})};
+  std::string line = message.substr(0, kMaxMessageChars);
+  for (char& c : line)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  return {status, "application/json", jsonText({{"error", line}})};
 }
 
-// A library error as an answer: a write that failed is the server's, anything else the request's.
+// A library error as an answer: a file that could not be written or read (the save's) is the
+// server's trouble, anything else the request's.
 ViewResponse refuse(const Error& e) {
-  return refuse(e.code == ErrorCode::kWriteFailed ? kHttpServerError : kHttpBadRequest, e.message);
+  const bool server = e.code == ErrorCode::kWriteFailed || e.code == ErrorCode::kUnreadable;
+  return refuse(server ? kHttpServerError : kHttpBadRequest, e.message);
 }
 
 // The values of header `name` (lower case), as often as it was sent.
@@ -69,20 +79,44 @@ bool sameToken(const std::string& given, const std::string& token) {
   return diff == 0;
 }
 
+// Whether `value` is "ADDRESS:PORT" with ADDRESS a numeric IPv4 address or a bracketed IPv6
+// one: what a browser sends to a server reached by its address. A name, which DNS could point
+// anywhere (rebinding), is not one.
+bool addressHost(const std::string& value, int port) {
+  const std::string tail = ":" + std::to_string(port);
+  if (value.size() <= tail.size() || value.compare(value.size() - tail.size(), tail.size(), tail))
+    return false;
+  const std::string address = value.substr(0, value.size() - tail.size());
+  if (address.size() > 2 && address.front() == '[' && address.back() == ']')
+    return address.find_first_not_of("0123456789abcdefABCDEF:.", 1) == address.size() - 1;
+  int dots = 0;
+  for (const char c : address) {
+    if (c == '.')
+      ++dots;
+    else if (c < '0' || c > '9')
+      return false;
+  }
+  return dots == 3;
+}
+
 // 0 when the request may go on; else the status that refuses it, with `why`.
 int checkAccess(const ViewAccess& a, const ViewRequest& r, std::string* why) {
   const std::set<std::string> hosts = ownHosts(a);
   const std::vector<std::string> host = headerValues(r, "host");
-  if (host.size() != 1 || !hosts.count(host[0])) {
+  // On every address (--host 0.0.0.0 or ::) the server is reached by any of its addresses.
+  const bool any = a.host == "0.0.0.0" || a.host == "::";
+  const auto own = [&](const std::string& h) {
+    return hosts.count(h) > 0 || (any && addressHost(h, a.port));
+  };
+  if (host.size() != 1 || !own(host[0])) {
     *why = "Host is not this server's address";
     return kHttpForbidden;
   }
   // A browser sends Origin with every cross-site POST: only this server's own page may edit.
   const std::vector<std::string> origin = headerValues(r, "origin");
   const std::string scheme = "http://";
-  if (origin.size() > 1 ||
-      (origin.size() == 1 &&
-       (origin[0].rfind(scheme, 0) != 0 || !hosts.count(origin[0].substr(scheme.size()))))) {
+  if (origin.size() > 1 || (origin.size() == 1 && (origin[0].rfind(scheme, 0) != 0 ||
+                                                   !own(origin[0].substr(scheme.size()))))) {
     *why = "Origin is not this server's page";
     return kHttpForbidden;
   }
@@ -155,7 +189,6 @@ std::vector<ViewEdit> editsOf(const nlohmann::json& body) {
     const nlohmann::json& op = field(j, "op", where);
     ViewEdit edit;
     if (op == "set") {
-      onlyFields(j, {"op", "index", "sphere"}, where);
       edit.op = ViewEdit::Op::kSet;
       edit.index = integerField(j, "index", where);
       edit.sphere = sphereField(j, where);

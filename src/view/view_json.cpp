@@ -133,7 +133,9 @@ nlohmann::json scene(const ViewScene& sc) {
           {"solids", solids},
           {"joints", joints(sc)},
           {"poses", poses(sc)},
-          {"save", {{"path", sc.save_path}, {"format", saveFormatName(sc)}}}};
+          {"save", sc.save_path.empty()
+                       ? nlohmann::json()
+                       : nlohmann::json{{"path", sc.save_path}, {"format", saveFormatName(sc)}}}};
 }
 
 }  // namespace view_json
@@ -198,8 +200,13 @@ Expected<std::string> inlineViewData(std::string_view html, const ViewScene& sce
     return Error{ErrorCode::kInvalidData,
                  "the page has no data marker " + std::string(view_page::kDataMarker)};
   nlohmann::json data = view_json::scene(scene);
-  for (size_t i = 0; i < scene.solids.size(); ++i)
+  // A page file is the same bytes for the same inputs: no timings, and no save path of the
+  // machine that wrote it (it cannot save).
+  data["save"] = nullptr;
+  for (size_t i = 0; i < scene.solids.size(); ++i) {
     data["solids"][i]["geometry"] = base64(viewGeometry(scene.solids[i]));
+    data["solids"][i]["certificate"]["seconds"] = 0.0;
+  }
   // '<' only occurs inside JSON strings, where \u003c means the same: the text can then never
   // close the script element.
   std::string text;

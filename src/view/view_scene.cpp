@@ -95,8 +95,10 @@ Expected<ViewScene> loadMeshScene(const std::string& mesh_path, const std::strin
     if (links && links->size() == 1) scene.save_meta.name = (*links)[0].link;
   }
   scene.save_meta.source_mesh = mesh_path;
-  if (Status st = setMeshSave(&scene, spheres_path, is_tree, o.output); !st) return st.error();
-  if (Status st = checkOutputPath(scene.save_path, {mesh_path}); !st) return st.error();
+  if (!o.page_file) {  // a page file cannot save
+    if (Status st = setMeshSave(&scene, spheres_path, is_tree, o.output); !st) return st.error();
+    if (Status st = checkOutputPath(scene.save_path, {mesh_path}); !st) return st.error();
+  }
   ViewSolid s = makeViewSolid(scene.title, "", std::move(solid).value(), std::move(sets), level);
   if (is_tree) s.tree = std::move(tree).value();
   scene.solids.push_back(std::move(s));
@@ -178,7 +180,7 @@ Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& s
   if (!scene) return scene.error();
   // A robot's JSON report is read, not written: without --output its scene has nothing to
   // save to (a save says so).
-  if (o.output.empty() && lowerExtension(spheres_path) == ".json") return scene;
+  if (o.page_file || (o.output.empty() && lowerExtension(spheres_path) == ".json")) return scene;
   const std::string path = o.output.empty() ? spheres_path : o.output;
   if (endsWithLower(path, ".urdf")) {
     scene->save_format = ViewSaveFormat::kRobotUrdf;
@@ -193,7 +195,8 @@ Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& s
                    path + ": a Lula robot description is saved from one (" + spheres_path +
                        " is not); give --output ROBOT.yml"};
     scene->save_format = ViewSaveFormat::kRobotYaml;
-    if (lowerExtension(spheres_path) != ".urdf")
+    const std::string in = lowerExtension(spheres_path);
+    if (in == ".yml" || in == ".yaml")
       scene->save_source = std::filesystem::absolute(spheres_path).lexically_normal().string();
   } else {
     return Error{ErrorCode::kInvalidArgument,

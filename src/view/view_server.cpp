@@ -1,6 +1,7 @@
 // The view's API on a socket (cpp-httplib): every request, whatever its method and path, goes to
 // handleViewRequest under one lock, so the scene sees one request at a time.
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <chrono>
 #include <memory>
@@ -24,9 +25,13 @@ struct ViewServer::Impl {
   mutable std::mutex lock;
   httplib::Server http;
   std::thread thread;
+  std::atomic<bool> ended{false};  // listen_after_bind returned
 };
 
 namespace {
+
+// HTTP 411: a body without a Content-Length (docs/view.md).
+constexpr int kLengthRequired = 411;
 
 // The request as the API sees it: header names in lower case, the query's first values.
 ViewRequest viewRequest(const httplib::Request& req) {
@@ -79,8 +84,18 @@ Expected<std::unique_ptr<ViewServer>> ViewServer::start(ViewScene scene, const s
   self->http.Patch(any, handler);
   self->http.Delete(any, handler);
   self->http.Options(any, handler);
-  // httplib answers a body over the cap itself (413) before any handler runs.
+  // httplib answers a Content-Length over the cap itself (413) before reading the body. A body
+  // without one (chunked, or read until the connection closes) has no size to check before it
+  // is read: such requests are refused (411) before httplib reads anything.
   self->http.set_payload_max_length(static_cast<size_t>(limits::kMaxViewRequestBytes));
+  self->http.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
+    const bool has_body = req.method != "GET" && req.method != "HEAD" && req.method != "OPTIONS";
+    if (!req.has_header("Transfer-Encoding") && (!has_body || req.has_header("Content-Length")))
+      return httplib::Server::HandlerResponse::Unhandled;
+    res.status = kLengthRequired;
+    res.set_content("{\"error\": \"a request body needs a Content-Length\"}", "application/json");
+    return httplib::Server::HandlerResponse::Handled;
+  });
   self->http.set_error_handler([](const httplib::Request&, httplib::Response& res) {
     if (res.body.empty())
       res.set_content("{\"error\": \"HTTP " + std::to_string(res.status) + "\"}",
@@ -93,10 +108,19 @@ Expected<std::unique_ptr<ViewServer>> ViewServer::start(ViewScene scene, const s
                                                   std::to_string(port) +
                                                   " (address in use or not this machine's)"};
   self->access.port = bound;
-  self->thread = std::thread([self] { self->http.listen_after_bind(); });
-  // stop() only stops a server that has begun listening: wait for that here.
+  self->thread = std::thread([self] {
+    self->http.listen_after_bind();
+    self->ended = true;
+  });
+  // stop() only stops a server that has begun listening: wait for that here (or for the
+  // listening to have ended at once, which is a failure to serve).
   constexpr auto kStartPoll = std::chrono::milliseconds(1);
-  while (!self->http.is_running()) std::this_thread::sleep_for(kStartPoll);
+  while (!self->http.is_running() && !self->ended) std::this_thread::sleep_for(kStartPoll);
+  if (!self->http.is_running()) {
+    self->thread.join();
+    return Error{ErrorCode::kInvalidArgument,
+                 "cannot serve on " + host + ":" + std::to_string(self->access.port)};
+  }
   return std::unique_ptr<ViewServer>(new ViewServer(std::move(impl)));
 }
 

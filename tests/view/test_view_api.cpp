@@ -466,6 +466,25 @@ TEST_F(ViewTest, TheStaticPageInlinesTheScene) {
   EXPECT_FALSE(inlineViewData("<html></html>", scene).ok());
   auto built = viewStaticPage(scene);
   EXPECT_EQ(built.ok(), viewPageAvailable());
+  // A page file holds no timing and no save path: the same inputs give the same bytes.
+  EXPECT_TRUE(j["save"].is_null());
+  EXPECT_EQ(j["solids"][0]["certificate"]["seconds"], 0.0);
+}
+
+// A scene loaded for a page file sets up no save (nothing is written beside the sphere file),
+// and two loads give the same page.
+TEST_F(ViewTest, APageFilesSceneHasNoSaveAndIsTheSameEachTime) {
+  boxScene();  // writes the box and its set
+  ViewLoadOptions o;
+  o.page_file = true;
+  auto a = loadViewScene(path("box.off"), path("box.txt"), o);
+  auto b = loadViewScene(path("box.off"), path("box.txt"), o);
+  ASSERT_TRUE(a.ok() && b.ok());
+  EXPECT_TRUE(a->save_path.empty());
+  EXPECT_FALSE(saveViewScene(*a).ok());
+  EXPECT_EQ(a->solids.size(), 1u);
+  const std::string marker = "<!--SPHERESET_DATA-->";
+  EXPECT_EQ(*inlineViewData(marker, *a), *inlineViewData(marker, *b));
 }
 
 TEST_F(ViewTest, TokensAreFreshAndLongEnough) {

@@ -116,6 +116,21 @@ TEST_F(ViewHttpTest, RefusesWhatIsNotThePage) {
   res = client_->Post("/api/edit", token(), big, "application/json");
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 413);
+  // A chunked body has no length to check before it is read: refused before it is read, even
+  // with the token (so a body of any size cannot fill the memory).
+  size_t chunks_sent = 0;
+  res = client_->Post(
+      "/api/edit", token(),
+      [&](size_t, httplib::DataSink& sink) {
+        const std::string chunk(1 << 16, ' ');
+        if (++chunks_sent > 256) {  // 16 MiB at most, four times the cap
+          sink.done();
+          return true;
+        }
+        return sink.write(chunk.data(), chunk.size());
+      },
+      "application/json");
+  if (res) EXPECT_EQ(res->status, 411) << res->body;  // or the connection was closed
   res = client_->Get("/api/nothing", token());
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 404);
