@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "cli_common.hpp"
@@ -157,7 +158,7 @@ int runBatch(const BatchArgs& c) {
   std::atomic<size_t> next{0};
   size_t written = 0;
   std::optional<Error> write_error;
-  std::vector<Error> page_errors;  // --html pages that could not be written
+  std::vector<std::pair<size_t, Error>> page_errors;  // --html pages not written, by item
   Progress progress(n, a.quiet);
   const auto work = [&] {
     while (true) {
@@ -170,7 +171,7 @@ int runBatch(const BatchArgs& c) {
       BatchItemReport r = processBatchItem((*items)[i], out, options);
       const Status page = c.html ? writeItemPage((*items)[i], r, out, options.repair) : Status{};
       std::lock_guard<std::mutex> lock(mutex);
-      if (!page) page_errors.push_back(page.error());
+      if (!page) page_errors.emplace_back(i, page.error());
       reports[i] = std::move(r);
       while (written < n && reports[written] && !write_error) {
         if (Status st = report->append(*reports[written]); !st) write_error = st.error();
@@ -192,7 +193,10 @@ int runBatch(const BatchArgs& c) {
                  n - progress.skipped() - progress.failed(), progress.skipped(), progress.failed(),
                  duration(progress.seconds()).c_str(), batchReportPath(out).c_str());
   if (!page_errors.empty()) {
-    for (const Error& e : page_errors) fail(e);
+    // In item order, whatever the order the workers finished in.
+    std::sort(page_errors.begin(), page_errors.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (const auto& [item, e] : page_errors) fail(e);
     std::fprintf(stderr, "sphereset: %s: %zu of %zu pages could not be written\n",
                  a.mesh.path.c_str(), page_errors.size(), n);
     return kWrite;

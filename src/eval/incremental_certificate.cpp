@@ -187,6 +187,9 @@ class EditGuard {
     if (!done_) {
       undo_();
       state_->needs_full = true;
+      // One entry per sphere again (a cancelled full pass may have sized it for the new set);
+      // the next update recomputes every entry.
+      state_->outside.resize(state_->spheres.size(), 0.0);
     }
   }
   EditGuard(const EditGuard&) = delete;

@@ -1,7 +1,7 @@
 // `sphereset view` on the bundled spot (examples/spot.obj, 5856 triangles) with 16 spheres the
 // command fits first: the page draws them, covered; the three largest shrunk by a quarter leave
-// gaps that the page draws in red as the certificate lists them; Bound covers again, and
-// `sphereset eval` of the saved set agrees with the page's figures.
+// gaps that the page draws in red as the certificate lists them; the Bound button covers again,
+// and `sphereset eval` of what the Save button wrote agrees with the page's figures.
 import { join } from 'node:path';
 import {
   canvasShot, check, checkNoErrors, near, openPage, pageStatus, pixelStats, runCli, runTest,
@@ -40,10 +40,19 @@ await runTest(async (args, browser) => {
   const after = await canvasShot(page);
   check((await pixelStats(browser, before, after)).differing > 100, 'the picture changes');
 
-  await hooks(() => window.sphereset.bound(0));
-  check(await pageStatus(page) === 'covered', 'Bound: covered again');
+  // The page's own buttons: Bound, then Save.
+  const version = async () => (await hooks(() => window.sphereset.scene())).version;
+  const waitForVersion = (v) => page.waitForFunction((n) => window.sphereset.scene().version > n,
+    { timeout: 60000 }, v);
+  const beforeBound = await version();
+  await page.click('#bound');
+  await waitForVersion(beforeBound);
+  check(await pageStatus(page) === 'covered', 'the Bound button: covered again');
   check(await hooks(() => window.sphereset.redTriangles(0)) === 0, 'Bound: no red triangles');
-  await hooks(() => window.sphereset.save());
+  await page.click('#save');
+  await page.waitForFunction(() => /saved /.test(document.getElementById('message').textContent),
+    { timeout: 60000 });
+  check(true, 'the Save button: saved');
   const pageEr = (await hooks(() => window.sphereset.certificate(0))).er_sum;
   const evaluated = JSON.parse(runCli(args, ['eval', spot, saved, '--json']));
   check(near(evaluated.er_sum, pageEr, 1e-9), `eval's E_r ${evaluated.er_sum}, the page's ${pageEr}`);

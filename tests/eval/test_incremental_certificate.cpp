@@ -405,6 +405,11 @@ TEST(IncrementalCertificate, CancelledEditLeavesTheSetAsBefore) {
   cancel = true;
   EXPECT_THROW((void)cert->setSphere(mid, {set[mid].center, 0.1}), std::runtime_error);
   EXPECT_THROW((void)cert->removeSphere(2), std::runtime_error);
+  // A new set of another size, cancelled: the old set stays, one outside volume per sphere.
+  std::vector<Sphere> more = set;
+  more.push_back({set[0].center, 0.05});
+  more.push_back({set[1].center, 0.05});
+  EXPECT_THROW((void)cert->setSpheres(more), std::runtime_error);
   cancel = false;
   ASSERT_EQ(cert->spheres().size(), set.size());
   EXPECT_EQ(cert->spheres()[mid].radius, set[mid].radius);
