@@ -1,6 +1,8 @@
 // One solid's displayed mesh: grey, with the triangles the certificate finds uncovered drawn
-// red. The triangles are reordered into two index groups (covered, then uncovered) so each
-// group has one material and a shared vertex cannot smear red onto its covered neighbours.
+// red on top. The red triangles are a mesh of their own (a child of the grey one) that shares
+// the grey mesh's vertex buffers and has only their indices: an edit replaces that small index,
+// never the whole mesh's, which on a mesh of a million triangles took seconds to upload and
+// redraw. A vertex shared with a covered neighbour cannot smear red onto it.
 import { BufferAttribute, BufferGeometry, DoubleSide, Mesh, MeshStandardMaterial } from 'three';
 
 export class SolidMesh {
@@ -16,40 +18,51 @@ export class SolidMesh {
     const covered = new MeshStandardMaterial({
       color: 0xb8b8b0, roughness: 0.8, metalness: 0.0, side: DoubleSide, flatShading: true,
     });
+    this.mesh = new Mesh(this.geometry, covered);
+    // Drawn over the grey triangles they coincide with (pulled towards the camera in depth).
     const uncovered = new MeshStandardMaterial({
       color: 0xe01010, emissive: 0x500000, roughness: 0.8, side: DoubleSide, flatShading: true,
+      polygonOffset: true, polygonOffsetFactor: -1, polygonOffsetUnits: -1,
     });
-    this.mesh = new Mesh(this.geometry, [covered, uncovered]);
+    this.redGeometry = new BufferGeometry();
+    this.redGeometry.setAttribute('position', this.geometry.getAttribute('position'));
+    this.redGeometry.setAttribute('normal', this.geometry.getAttribute('normal'));
+    this.redGeometry.boundingBox = this.geometry.boundingBox;
+    this.redGeometry.boundingSphere = this.geometry.boundingSphere;
+    this.red = new Mesh(this.redGeometry, uncovered);
+    this.red.raycast = () => {};  // picking goes to the solid itself
+    this.mesh.add(this.red);
     this.redCount = 0;
     this.setUncovered([]);
   }
 
   // Returns how many distinct triangles are drawn red.
   setUncovered(triangleList) {
-    const red = new Uint8Array(this.triangles);
-    let redCount = 0;
+    const seen = new Set();
     for (const t of triangleList || []) {
-      if (Number.isInteger(t) && t >= 0 && t < this.triangles && !red[t]) {
-        red[t] = 1;
-        redCount++;
-      }
+      if (Number.isInteger(t) && t >= 0 && t < this.triangles) seen.add(t);
     }
-    const ordered = new Uint32Array(this.indices.length);
-    let coveredAt = 0;
-    let redAt = 3 * (this.triangles - redCount);
-    for (let t = 0; t < this.triangles; t++) {
-      const at = red[t] ? redAt : coveredAt;
-      ordered[at] = this.indices[3 * t];
-      ordered[at + 1] = this.indices[3 * t + 1];
-      ordered[at + 2] = this.indices[3 * t + 2];
-      if (red[t]) redAt += 3;
-      else coveredAt += 3;
+    // The red index grows by doubling (a replaced index keeps its GL buffer until the page
+    // closes: a few times over a session, not once per edit); an edit rewrites the part in use.
+    const needed = 3 * seen.size;
+    let index = this.redGeometry.getIndex();
+    if (!index || index.array.length < needed) {
+      const capacity = Math.max(needed, 2 * (index ? index.array.length : 3 * 1024));
+      index = new BufferAttribute(new Uint32Array(capacity), 1);
+      this.redGeometry.setIndex(index);
     }
-    this.geometry.setIndex(new BufferAttribute(ordered, 1));
-    this.geometry.clearGroups();
-    this.geometry.addGroup(0, 3 * (this.triangles - redCount), 0);
-    this.geometry.addGroup(3 * (this.triangles - redCount), 3 * redCount, 1);
-    this.redCount = redCount;
-    return redCount;
+    let at = 0;
+    for (const t of seen) {
+      index.array[at++] = this.indices[3 * t];
+      index.array[at++] = this.indices[3 * t + 1];
+      index.array[at++] = this.indices[3 * t + 2];
+    }
+    index.clearUpdateRanges();
+    if (needed > 0) index.addUpdateRange(0, needed);
+    index.needsUpdate = true;
+    this.redGeometry.setDrawRange(0, needed);
+    this.red.visible = seen.size > 0;
+    this.redCount = seen.size;
+    return this.redCount;
   }
 }
