@@ -12,23 +12,13 @@
 
 namespace sphereset::detail {
 
-Status checkSphereCount(size_t count) {
-  if (count == 0) return Error{ErrorCode::kInvalidArgument, "no spheres to evaluate"};
-  return limits::checkRange("spheres", static_cast<double>(count), 1, limits::kMaxSpheres);
-}
+// The evaluation's words for the one rule of sphere.hpp.
+Status checkSphereCount(size_t count) { return sphereset::checkSphereCount(count, "evaluate"); }
 
-Status checkSphere(const Sphere& s, size_t index) {
-  if (!s.center.allFinite() || !(s.radius >= 0.0) || !std::isfinite(s.radius))
-    return Error{ErrorCode::kInvalidArgument,
-                 "sphere " + std::to_string(index) + " has a NaN, infinite or negative value"};
-  return {};
-}
+Status checkSphere(const Sphere& s, size_t index) { return checkSphereValues(s, index); }
 
 Status checkSpheres(const std::vector<Sphere>& spheres) {
-  if (Status st = checkSphereCount(spheres.size()); !st) return st;
-  for (size_t i = 0; i < spheres.size(); ++i)
-    if (Status st = checkSphere(spheres[i], i); !st) return st;
-  return {};
+  return checkSphereSet(spheres, "evaluate");
 }
 
 Sphere grownSphere(const Sphere& sphere, double diag) {

@@ -14,17 +14,7 @@ namespace sphereset {
 
 Expected<std::vector<Sphere>> boundSpheres(const SolidIndex& index, std::vector<Sphere> spheres,
                                            const BoundOptions& options) {
-  if (spheres.empty()) return Error{ErrorCode::kInvalidArgument, "no spheres to bound"};
-  if (spheres.size() > static_cast<size_t>(limits::kMaxSpheres))
-    return Error{ErrorCode::kInvalidArgument, std::to_string(spheres.size()) +
-                                                  " spheres (the limit is " +
-                                                  std::to_string(limits::kMaxSpheres) + ")"};
-  for (size_t i = 0; i < spheres.size(); ++i) {
-    const Sphere& s = spheres[i];
-    if (!s.center.allFinite() || !std::isfinite(s.radius) || s.radius < 0.0)
-      return Error{ErrorCode::kInvalidArgument,
-                   "sphere " + std::to_string(i) + ": NaN, infinite or negative value"};
-  }
+  if (Status st = checkSphereSet(spheres, "bound"); !st) return st.error();
   if (Status st = limits::checkRange("min_edge", options.min_edge, 0.0, limits::kMaxCoordinate);
       !st)
     return st.error();
