@@ -72,6 +72,10 @@ struct Robot {
   std::vector<RobotJoint> joints;  // in file order
 };
 
+// A joint type as the URDF spells it ("fixed", "revolute", "continuous", "prismatic"; "other" for
+// the rest), for every front door that names joints.
+const char* jointTypeName(RobotJoint::Type type);
+
 // Reads a URDF file and resolves every mesh path (relative to the URDF's folder, absolute,
 // file://, package://NAME/... through the package search folders). Errors (one line): the
 // file missing or unreadable (kUnreadable), not a valid URDF (kInvalidData), a mesh file not

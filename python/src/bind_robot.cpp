@@ -25,22 +25,6 @@ const char* geometryKind(LinkGeometry::Kind k) {
   return "mesh";
 }
 
-const char* jointType(RobotJoint::Type t) {
-  switch (t) {
-    case RobotJoint::Type::kFixed:
-      return "fixed";
-    case RobotJoint::Type::kRevolute:
-      return "revolute";
-    case RobotJoint::Type::kContinuous:
-      return "continuous";
-    case RobotJoint::Type::kPrismatic:
-      return "prismatic";
-    case RobotJoint::Type::kOther:
-      return "other";
-  }
-  return "other";
-}
-
 const RobotLink& findLink(const Robot& r, const std::string& name) {
   for (const RobotLink& l : r.links)
     if (l.name == name) return l;
@@ -118,7 +102,7 @@ geometry when a link has none), joints, forward kinematics.)doc")
               d["name"] = j.name;
               d["parent"] = j.parent;
               d["child"] = j.child;
-              d["type"] = jointType(j.type);
+              d["type"] = jointTypeName(j.type);
               d["origin"] = isometryToArray(j.origin);
               d["axis"] = py::make_tuple(j.axis.x(), j.axis.y(), j.axis.z());
               d["lower"] = j.lower;

@@ -411,4 +411,20 @@ Expected<Robot> loadRobot(const std::string& urdf_path, const RobotLoadOptions& 
   return robot;
 }
 
+const char* jointTypeName(RobotJoint::Type type) {
+  switch (type) {
+    case RobotJoint::Type::kFixed:
+      return "fixed";
+    case RobotJoint::Type::kRevolute:
+      return "revolute";
+    case RobotJoint::Type::kContinuous:
+      return "continuous";
+    case RobotJoint::Type::kPrismatic:
+      return "prismatic";
+    case RobotJoint::Type::kOther:
+      break;
+  }
+  return "other";
+}
+
 }  // namespace sphereset

@@ -13,22 +13,6 @@ namespace sphereset {
 namespace view_json {
 namespace {
 
-const char* jointTypeName(RobotJoint::Type t) {
-  switch (t) {
-    case RobotJoint::Type::kFixed:
-      return "fixed";
-    case RobotJoint::Type::kRevolute:
-      return "revolute";
-    case RobotJoint::Type::kContinuous:
-      return "continuous";
-    case RobotJoint::Type::kPrismatic:
-      return "prismatic";
-    case RobotJoint::Type::kOther:
-      break;
-  }
-  return "other";
-}
-
 const char* saveFormatName(const ViewScene& scene) {
   switch (scene.save_format) {
     case ViewSaveFormat::kRobotYaml:

@@ -130,7 +130,9 @@ TEST_F(ViewHttpTest, RefusesWhatIsNotThePage) {
         return sink.write(chunk.data(), chunk.size());
       },
       "application/json");
-  if (res) EXPECT_EQ(res->status, 411) << res->body;  // or the connection was closed
+  if (res) {  // or the connection was closed
+    EXPECT_EQ(res->status, 411) << res->body;
+  }
   res = client_->Get("/api/nothing", token());
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 404);
