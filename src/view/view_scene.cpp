@@ -14,16 +14,12 @@
 #include "sphereset/robot_fit.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/view.hpp"
+#include "util/read_file.hpp"
 
 namespace sphereset {
 namespace {
 
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
+using detail::extensionOf;
 
 bool endsWithLower(const std::string& path, const std::string& tail) {
   std::string name = path;
@@ -89,7 +85,7 @@ Expected<ViewScene> loadMeshScene(const std::string& mesh_path, const std::strin
                    spheres_path + ": a sphere set has no levels (--level is for trees)"};
     sets.push_back(std::move(plain).value());
   }
-  if (lowerExtension(spheres_path) == ".yaml" || lowerExtension(spheres_path) == ".yml") {
+  if (extensionOf(spheres_path) == ".yaml" || extensionOf(spheres_path) == ".yml") {
     // A one-link YAML keeps its link's name when saved.
     auto links = readLinkSpheres(spheres_path);
     if (links && links->size() == 1) scene.save_meta.name = (*links)[0].link;
@@ -110,7 +106,7 @@ Expected<ViewScene> loadMeshScene(const std::string& mesh_path, const std::strin
 // collisions (each link's sphere primitives).
 Expected<std::vector<LinkSpheres>> robotSphereFile(const std::string& path,
                                                    const RobotLoadOptions& lo) {
-  if (lowerExtension(path) != ".urdf") return readLinkSpheres(path);
+  if (extensionOf(path) != ".urdf") return readLinkSpheres(path);
   auto with_spheres = loadRobot(path, lo);
   if (!with_spheres) return with_spheres.error();
   // The links whose collisions are all spheres: those `sphereset robot` wrote (a link of
@@ -180,7 +176,7 @@ Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& s
   if (!scene) return scene.error();
   // A robot's JSON report is read, not written: without --output its scene has nothing to
   // save to (a save says so).
-  if (o.page_file || (o.output.empty() && lowerExtension(spheres_path) == ".json")) return scene;
+  if (o.page_file || (o.output.empty() && extensionOf(spheres_path) == ".json")) return scene;
   const std::string path = o.output.empty() ? spheres_path : o.output;
   if (endsWithLower(path, ".urdf")) {
     scene->save_format = ViewSaveFormat::kRobotUrdf;
@@ -195,7 +191,7 @@ Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& s
                    path + ": a Lula robot description is saved from one (" + spheres_path +
                        " is not); give --output ROBOT.yml"};
     scene->save_format = ViewSaveFormat::kRobotYaml;
-    const std::string in = lowerExtension(spheres_path);
+    const std::string in = extensionOf(spheres_path);
     if (in == ".yml" || in == ".yaml")
       scene->save_source = std::filesystem::absolute(spheres_path).lexically_normal().string();
   } else {
@@ -255,8 +251,7 @@ Expected<ViewScene> robotViewScene(const Robot& robot, const std::string& urdf,
 
 Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::string& spheres,
                                   const ViewLoadOptions& options) {
-  if (lowerExtension(mesh_or_urdf) == ".urdf")
-    return loadRobotScene(mesh_or_urdf, spheres, options);
+  if (extensionOf(mesh_or_urdf) == ".urdf") return loadRobotScene(mesh_or_urdf, spheres, options);
   return loadMeshScene(mesh_or_urdf, spheres, options);
 }
 
