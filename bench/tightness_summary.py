@@ -1,0 +1,60 @@
+"""Summary of bench/tightness.sh's CSV: for each variant against `base:default` (the baseline's
+default quality), per mesh and over everything, the geometric means of the E_r ratio and of the
+wall-time ratio over the cells (n, seed) both ran, and each variant's bound overhead (E_r after
+the bound over the clustering's own E_r; geometric mean and largest per mesh).
+
+    /usr/bin/python3 bench/tightness_summary.py bench/results/tightness.csv
+"""
+import collections
+import csv
+import math
+import sys
+
+BASELINE = "base:default"
+
+
+def geomean(values):
+    values = list(values)
+    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
+
+
+def main(path):
+    rows = list(csv.DictReader(open(path)))
+    cell = {(r["mesh"], r["n"], r["seed"], r["variant"]): r for r in rows}
+    variants = list(dict.fromkeys(r["variant"] for r in rows))
+    meshes = list(dict.fromkeys(r["mesh"] for r in rows))
+    others = [v for v in variants if v != BASELINE]
+    print("E_r and time ratios against %s (geometric means over n and seeds); bound overhead "
+          "= E_r after the bound / E_r of the clustering (geometric mean, largest)" % BASELINE)
+    header = "%-28s" % "mesh" + "".join("%26s" % (v + " er/time") for v in others)
+    header += "".join("%22s" % (v + " overhead") for v in variants)
+    print(header)
+    everything = collections.defaultdict(lambda: ([], []))
+    for mesh in meshes:
+        line = "%-28s" % mesh
+        for v in others:
+            er, t = [], []
+            for (m, n, seed, var), r in cell.items():
+                b = cell.get((m, n, seed, BASELINE))
+                if m != mesh or var != v or b is None:
+                    continue
+                er.append(float(r["er_sum"]) / float(b["er_sum"]))
+                t.append(max(float(r["wall_s"]), 0.01) / max(float(b["wall_s"]), 0.01))
+            everything[v][0].extend(er)
+            everything[v][1].extend(t)
+            line += "%26s" % ("%.3f / %.3f" % (geomean(er), geomean(t)))
+        for v in variants:
+            over = [float(r["er_sum"]) / float(r["er_before_bounding"])
+                    for (m, _, _, var), r in cell.items()
+                    if m == mesh and var == v and float(r["er_before_bounding"]) > 0]
+            line += "%22s" % ("%.3f, %.3f" % (geomean(over), max(over, default=float("nan"))))
+        print(line)
+    line = "%-28s" % "all"
+    for v in others:
+        er, t = everything[v]
+        line += "%26s" % ("%.3f / %.3f" % (geomean(er), geomean(t)))
+    print(line)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "bench/results/tightness.csv")
