@@ -59,6 +59,10 @@ struct FitOptions {
   // After bounding, passes that refit each sphere around what it alone covers (variational
   // method only); they stop when a pass gains less than `tolerance`.
   int shrink_passes = 10;
+  // After the shrinking passes, the coverage-aware refinement (variational method only): all
+  // spheres move at once to lower the outside volume of a set covering a dense set of points,
+  // then are bounded exactly; kept only if it lowers the total outside volume.
+  bool refine = true;
   // Decimation (variational method only): the clustering starts with round(decimation * n)
   // extra spheres and removes the cheapest to remove (upper bound of the outside-volume
   // change when its points join their neighbours) in a few batches, clustering again after
@@ -105,6 +109,7 @@ struct FitResult {
   int64_t bounding_queries = 0;         // outside-volume evaluations of the bounding step
   int64_t bounding_interior_cells = 0;  // interior cubes that made a sphere grow
   int shrink_passes = 0;                // shrinking passes kept
+  int64_t refine_points = 0;  // points kept covered by the refinement (0: not run or not kept)
   int decimated = 0;                    // spheres removed by the decimation
   int idle_teleports = 0;  // spheres that covered nothing alone, moved to split another
   int restart = 0;         // which restart won (0: the one with options.seed)

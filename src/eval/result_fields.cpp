@@ -30,6 +30,8 @@ std::vector<ResultField> fitResultFields(const FitResult& r, double mesh_volume)
       {"bounding_interior_cells", r.bounding_interior_cells,
        "interior cubes that made a sphere grow"},
       {"shrink_passes", int64_t{r.shrink_passes}, "shrinking passes kept"},
+      {"refine_points", r.refine_points,
+       "points kept covered by the refinement (0: not run or not kept)"},
       {"decimated", int64_t{r.decimated}, "spheres removed by the decimation"},
       {"idle_teleports", int64_t{r.idle_teleports},
        "spheres that covered nothing alone, moved to split another"},
@@ -39,7 +41,7 @@ std::vector<ResultField> fitResultFields(const FitResult& r, double mesh_volume)
       {"seconds.assignment", r.seconds.assignment, "seconds assigning points to spheres"},
       {"seconds.update", r.seconds.update, "seconds refitting spheres"},
       {"seconds.teleport", r.seconds.teleport, "seconds teleporting"},
-      {"seconds.bounding", r.seconds.bounding, "seconds in the bound"},
+      {"seconds.bounding", r.seconds.bounding, "seconds in the bound, its shrinking passes and refinement"},
   };
 }
 

@@ -21,8 +21,6 @@
 namespace sphereset::detail {
 namespace {
 
-// The evaluation's certificate splits as deep, so it confirms what this step proves.
-constexpr int kMaxDepth = kSurfaceSplitDepth;
 constexpr int kCandidates = 3;  // spheres whose outside-volume growth is compared per piece
 // Radii get this fraction of the bounding-box diagonal on top of the exact requirement, so
 // that the containment of vertices survives rounding.
@@ -77,36 +75,6 @@ void growTo(std::vector<Sphere>* sp, const std::vector<double>& radius, BoundSta
       (*sp)[i].radius = radius[i];
       ++st->enlarged;
     }
-}
-
-// Splits triangle (a, b, c) in four, recursively, until settled(piece) says a piece needs no
-// more work; a piece still unsettled when its longest edge is at most min_edge (or after
-// kMaxDepth splits) goes to small(piece).
-template <class Settled, class Small>
-void splitPieces(const Vec3& a, const Vec3& b, const Vec3& c, double min_edge, Settled&& settled,
-                 Small&& small) {
-  struct Piece {
-    std::array<Vec3, 3> v;
-    int depth;
-  };
-  std::vector<Piece> todo{{{a, b, c}, 0}};
-  while (!todo.empty()) {
-    pollCancel();
-    const Piece pc = todo.back();
-    todo.pop_back();
-    if (settled(pc.v)) continue;
-    const auto& [p, q, r] = pc.v;
-    const double edge = std::max({(q - p).norm(), (r - q).norm(), (p - r).norm()});
-    if (edge <= min_edge || pc.depth >= kMaxDepth) {
-      small(pc.v);
-      continue;
-    }
-    const Vec3 pq = 0.5 * (p + q), qr = 0.5 * (q + r), rp = 0.5 * (r + p);
-    todo.push_back({{p, pq, rp}, pc.depth + 1});
-    todo.push_back({{pq, q, qr}, pc.depth + 1});
-    todo.push_back({{rp, qr, r}, pc.depth + 1});
-    todo.push_back({{pq, qr, rp}, pc.depth + 1});
-  }
 }
 
 }  // namespace

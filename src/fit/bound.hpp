@@ -1,10 +1,14 @@
 // Private: the guaranteed-bounding step of the fit.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
+#include "sphereset/cover.hpp"
 #include "sphereset/solid_index.hpp"
+#include "util/poll.hpp"
 
 namespace sphereset::detail {
 
@@ -14,12 +18,44 @@ struct BoundStats {
   int64_t queries = 0;   // outside-volume evaluations
 };
 
+// Splits triangle (a, b, c) in four, recursively, until settled(piece) says a piece needs no
+// more work; a piece still unsettled when its longest edge is at most min_edge (or after
+// kSurfaceSplitDepth splits) goes to small(piece).
+template <class Settled, class Small>
+void splitPieces(const Vec3& a, const Vec3& b, const Vec3& c, double min_edge, Settled&& settled,
+                 Small&& small) {
+  struct Piece {
+    std::array<Vec3, 3> v;
+    int depth;
+  };
+  std::vector<Piece> todo{{{a, b, c}, 0}};
+  while (!todo.empty()) {
+    pollCancel();
+    const Piece pc = todo.back();
+    todo.pop_back();
+    if (settled(pc.v)) continue;
+    const auto& [p, q, r] = pc.v;
+    const double edge = std::max({(q - p).norm(), (r - q).norm(), (p - r).norm()});
+    if (edge <= min_edge || pc.depth >= kSurfaceSplitDepth) {
+      small(pc.v);
+      continue;
+    }
+    const Vec3 pq = 0.5 * (p + q), qr = 0.5 * (q + r), rp = 0.5 * (r + p);
+    todo.push_back({{p, pq, rp}, pc.depth + 1});
+    todo.push_back({{pq, q, qr}, pc.depth + 1});
+    todo.push_back({{rp, qr, r}, pc.depth + 1});
+    todo.push_back({{pq, qr, rp}, pc.depth + 1});
+  }
+}
+
 // Enlarges spheres until every point of every triangle lies in some sphere: each triangle is
 // split in four until each piece has its three vertices in one sphere (then the piece is
 // inside it, by convexity) or is shorter than `min_edge`; such a small piece is given to the
 // sphere whose outside volume grows least when enlarged to hold its vertices.
 // If `held` is given, (*held)[i] receives the vertices of the pieces sphere i was enlarged for.
 // The triangles are those of `surface`, or of the index's mesh when it is null.
+// The evaluation's certificate splits as deep (kSurfaceSplitDepth), so it confirms what the
+// bound proves.
 BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, double min_edge,
                         std::vector<std::vector<Vec3>>* held = nullptr,
                         const Mesh* surface = nullptr);

@@ -31,6 +31,7 @@
 #include "fit/bound_refit.hpp"
 #include "fit/decimate.hpp"
 #include "fit/fit_common.hpp"
+#include "fit/refine.hpp"
 #include "fit/restarts.hpp"
 #include "fit/samples.hpp"
 #include "fit/seeding.hpp"
@@ -135,6 +136,14 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
       detail::boundWithRefits(index, &best.spheres, &best.members, min_edge, variational, o, &res);
   if (variational && o.shrink_passes > 0)
     detail::shrinkPasses(index, ps, min_edge, o, &best.spheres, &bs, &res);
+  if (variational && o.refine) {
+    const std::vector<Vec3> interior(ps.points.begin(), ps.points.begin() + ps.interior);
+    const detail::RefineStats rs =
+        detail::refineCoverage(index, interior, detail::kRefineSpacing * surface_spacing, min_edge,
+                               res.points, &best.spheres);
+    res.bounding_queries += rs.queries;
+    if (rs.kept) res.refine_points = rs.points;
+  }
   res.bounding_enlarged = bs.enlarged;
   detail::boundInteriorPasses(index, &best.spheres, &res);
   if (o.original) {
