@@ -28,6 +28,11 @@
 // grazes an edge is detected and the next direction is used. Cost: proportional to the
 // triangles crossing the sphere, plus one short ray query. Meshes without neighbour
 // information (not closed) sum every triangle's solid angle instead.
+//
+// Repeated balls (beyond the paper): the fit asks for many balls again (a sphere update that
+// retraces the last one, a teleport's split, the bound); the index keeps recent answers by
+// the exact bits of the ball (sov_memo.hpp), so a repeat costs a hash lookup and returns
+// the same bits.
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -278,7 +283,11 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
 }  // namespace
 
 OutsideVolume SolidIndex::outsideVolume(const Sphere& ball) const {
-  return evaluate<false>(*this, *impl_, ball.center, ball.radius, 0);
+  OutsideVolume out;
+  if (impl_->sov_memo.find(ball, &out)) return out;
+  out = evaluate<false>(*this, *impl_, ball.center, ball.radius, 0);
+  impl_->sov_memo.store(ball, out);
+  return out;
 }
 
 OutsideVolume outsideVolumeBruteForce(const SolidIndex& index, const Sphere& ball) {

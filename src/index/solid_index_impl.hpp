@@ -2,6 +2,7 @@
 #pragma once
 
 #include "index/bvh.hpp"
+#include "index/sov_memo.hpp"
 #include "sphereset/solid_index.hpp"
 
 namespace sphereset {
@@ -10,7 +11,8 @@ struct SolidIndex::Impl {
   Mesh mesh;
   detail::Bvh bvh;
   Aabb bounds;
-  double tolerance = 0.0;  // boundary tolerance, absolute units
+  double tolerance = 0.0;    // boundary tolerance, absolute units
+  detail::SovMemo sov_memo;  // recent outside-volume answers (sov_memo.hpp)
 };
 
 }  // namespace sphereset
