@@ -32,7 +32,8 @@
 // Repeated balls (beyond the paper): the fit asks for many balls again (a sphere update that
 // retraces the last one, a teleport's split, the bound); the index keeps recent answers by
 // the exact bits of the ball (sov_memo.hpp), so a repeat costs a hash lookup and returns
-// the same bits.
+// the same bits; and the containment of recent centres, which the many radii the point
+// assignment asks for about one centre share.
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -248,7 +249,11 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
     }
     acc.boundary.swap(boundary_buffer);
   }
-  Containment where = acc.center_on_surface ? Containment::kBoundary : index.classify(o);
+  Containment where = Containment::kBoundary;
+  if (!acc.center_on_surface && !im.centre_memo.find(detail::bitsOf(o), &where)) {
+    where = index.classify(o);
+    im.centre_memo.store(detail::bitsOf(o), where);
+  }
   if (where == Containment::kBoundary && depth == 0) {
     const double delta =
         std::max(kNudgeRel * std::min(r, im.bounds.diagonal()), 100.0 * im.tolerance);
@@ -284,9 +289,10 @@ OutsideVolume evaluate(const SolidIndex& index, const SolidIndex::Impl& im, cons
 
 OutsideVolume SolidIndex::outsideVolume(const Sphere& ball) const {
   OutsideVolume out;
-  if (impl_->sov_memo.find(ball, &out)) return out;
+  const auto key = detail::bitsOf(ball);
+  if (impl_->sov_memo.find(key, &out)) return out;
   out = evaluate<false>(*this, *impl_, ball.center, ball.radius, 0);
-  impl_->sov_memo.store(ball, out);
+  impl_->sov_memo.store(key, out);
   return out;
 }
 

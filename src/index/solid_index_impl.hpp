@@ -11,8 +11,9 @@ struct SolidIndex::Impl {
   Mesh mesh;
   detail::Bvh bvh;
   Aabb bounds;
-  double tolerance = 0.0;    // boundary tolerance, absolute units
-  detail::SovMemo sov_memo;  // recent outside-volume answers (sov_memo.hpp)
+  double tolerance = 0.0;          // boundary tolerance, absolute units
+  detail::SovMemo sov_memo;        // recent outside-volume answers (sov_memo.hpp)
+  detail::CentreMemo centre_memo;  // containment of recent centres (sov_memo.hpp)
 };
 
 }  // namespace sphereset

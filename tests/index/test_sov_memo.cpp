@@ -25,29 +25,30 @@ bool sameBits(const OutsideVolume& a, const OutsideVolume& b) {
 
 TEST(SovMemo, AnswersOnlyTheBallItWasGivenEvenAfterEvictions) {
   auto memo = std::make_unique<detail::SovMemo>();
-  const int count = static_cast<int>(4 * detail::SovMemo::kSlots);
+  const int count = static_cast<int>(4 * detail::SovMemo::kSlotCount);
   auto ballOf = [](int i) { return Sphere{Vec3(i, -i, 0.5 * i), 1.0 + i}; };
   for (int i = 0; i < count; ++i) {
     OutsideVolume v;
     v.volume = i;
-    memo->store(ballOf(i), v);
+    memo->store(detail::bitsOf(ballOf(i)), v);
   }
   int found = 0;
   for (int i = 0; i < count; ++i) {
     OutsideVolume v;
-    if (!memo->find(ballOf(i), &v)) continue;
+    if (!memo->find(detail::bitsOf(ballOf(i)), &v)) continue;
     ++found;
     EXPECT_EQ(v.volume, i);
   }
   EXPECT_GT(found, 0);
-  EXPECT_LE(found, static_cast<int>(detail::SovMemo::kSlots));
+  EXPECT_LE(found, static_cast<int>(detail::SovMemo::kSlotCount));
   // The key is the exact bits: -0 is not +0, and a radius one ulp away is another ball.
   OutsideVolume v;
   v.volume = 7.0;
-  memo->store({Vec3(0.0, 1.0, 2.0), 1.0}, v);
-  EXPECT_TRUE(memo->find({Vec3(0.0, 1.0, 2.0), 1.0}, &v));
-  EXPECT_FALSE(memo->find({Vec3(-0.0, 1.0, 2.0), 1.0}, &v));
-  EXPECT_FALSE(memo->find({Vec3(0.0, 1.0, 2.0), std::nextafter(1.0, 2.0)}, &v));
+  memo->store(detail::bitsOf(Sphere{Vec3(0.0, 1.0, 2.0), 1.0}), v);
+  EXPECT_TRUE(memo->find(detail::bitsOf(Sphere{Vec3(0.0, 1.0, 2.0), 1.0}), &v));
+  EXPECT_FALSE(memo->find(detail::bitsOf(Sphere{Vec3(-0.0, 1.0, 2.0), 1.0}), &v));
+  EXPECT_FALSE(
+      memo->find(detail::bitsOf(Sphere{Vec3(0.0, 1.0, 2.0), std::nextafter(1.0, 2.0)}), &v));
 }
 
 TEST(SovMemo, RepeatedQueriesFromManyThreadsEqualAFreshIndex) {
