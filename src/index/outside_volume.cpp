@@ -106,7 +106,7 @@ struct Accumulator {
     }
     const double s = h > 0.0 ? 1.0 : (h < 0.0 ? -1.0 : 0.0);
     const TriangleBallTerms k =
-        detail::triangleBallTermsSplit(t.a, t.b, t.c, t.n, o, r, &half_omega, s);
+        detail::triangleBallTermsKnown(t.a, t.b, t.c, t.n, o, r, {h, dx, dy, dz}, &half_omega, s);
     if (k.center_on_triangle) center_on_surface = true;
     if (k.area > 0.0) {
       omega += s * k.solid_angle;

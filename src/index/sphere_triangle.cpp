@@ -85,13 +85,23 @@ double triangleSolidAngle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec
 TriangleBallTerms detail::triangleBallTermsSplit(const Vec3& a, const Vec3& b, const Vec3& c,
                                                  const Vec3& n, const Vec3& o, double r,
                                                  AngleSum* half_omega, double sign) {
+  return triangleBallTermsKnown(
+      a, b, c, n, o, r,
+      {n.dot(a - o), (a - o).squaredNorm(), (b - o).squaredNorm(), (c - o).squaredNorm()},
+      half_omega, sign);
+}
+
+TriangleBallTerms detail::triangleBallTermsKnown(const Vec3& a, const Vec3& b, const Vec3& c,
+                                                 const Vec3& n, const Vec3& o, double r,
+                                                 const TriangleFromCentre& known,
+                                                 AngleSum* half_omega, double sign) {
   TriangleBallTerms out;
-  out.h = n.dot(a - o);
+  out.h = known.h;
   const double abs_h = std::abs(out.h);
   if (!(r > 0.0) || abs_h >= r) return out;  // the plane misses the ball
 
   const double r2 = r * r;
-  const double da = (a - o).squaredNorm(), db = (b - o).squaredNorm(), dc = (c - o).squaredNorm();
+  const double da = known.da, db = known.db, dc = known.dc;
   const bool on_plane = abs_h <= kOnPlaneRelTol * r;
 
   // Case (a) of the paper: the whole triangle is inside the ball.

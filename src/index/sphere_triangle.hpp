@@ -30,5 +30,17 @@ TriangleBallTerms triangleBallTermsSplit(const Vec3& a, const Vec3& b, const Vec
                                          const Vec3& o, double r, AngleSum* half_omega,
                                          double sign);
 
+// What a caller summing triangles has already computed for triangle (a, b, c) and centre o:
+// h = n · (a - o) and the squared distances of a, b and c from o.
+struct TriangleFromCentre {
+  double h, da, db, dc;
+};
+
+// As triangleBallTermsSplit, from those values (computed by the same expressions, so the
+// terms are the same bits).
+TriangleBallTerms triangleBallTermsKnown(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n,
+                                         const Vec3& o, double r, const TriangleFromCentre& known,
+                                         AngleSum* half_omega, double sign);
+
 }  // namespace detail
 }  // namespace sphereset
