@@ -75,6 +75,8 @@ class FitResult:
     """interior cubes that made a sphere grow"""
     shrink_passes: int
     """shrinking passes kept"""
+    refine_points: int
+    """points kept covered by the refinement (0: not run or not kept)"""
     decimated: int
     """spheres removed by the decimation"""
     idle_teleports: int
@@ -82,7 +84,7 @@ class FitResult:
     restart: int
     """which restart won (0: the one with the seed given)"""
     seconds: Dict[str, float]
-    """total: seconds in all; sampling: seconds sampling points; assignment: seconds assigning points to spheres; update: seconds refitting spheres; teleport: seconds teleporting; bounding: seconds in the bound"""
+    """total: seconds in all; sampling: seconds sampling points; assignment: seconds assigning points to spheres; update: seconds refitting spheres; teleport: seconds teleporting; bounding: seconds in the bound, its shrinking passes and refinement"""
     options: Dict[str, Any]
     """the options the fit ran with"""
     repair: Dict[str, Any]

@@ -41,10 +41,14 @@ add_test(NAME cli.batch_html
            -DSOLIDS=1
            "-DARGS=batch|${work}/batch_pages|-o|${work}/batch_pages_out|-n|4|--quality|fast|-q|--html"
            -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)
-# The robot's JSON report as the spheres of a view (read per link).
+# The robot's JSON report as the spheres of a view (read per link); written without a page, so
+# that a build without the page (where `robot -o X.html` stops with exit 9) has it too.
+cli_test(robot_report_for_view 0 ARGS robot ${data}/robot/three_link.urdf --package-path
+         ${data}/robot --budget 8 --quality fast -q -o ${work}/robot_for_view.json
+         FILE ${work}/robot_for_view.json)
 add_test(NAME cli.view_html_robot_report
          COMMAND ${CMAKE_COMMAND} -DCLI=${cli} -DMESH=${data}/robot/three_link.urdf
-           -DSPHERES=${work}/robot_page.json -DOUT=${work}/robot_report.html
+           -DSPHERES=${work}/robot_for_view.json -DOUT=${work}/robot_report.html
            "-DEXTRA=--package-path|${data}/robot" -DSOLIDS=3
            -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)
-set_tests_properties(cli.view_html_robot_report PROPERTIES DEPENDS cli.robot_html)
+set_tests_properties(cli.view_html_robot_report PROPERTIES DEPENDS cli.robot_report_for_view)
