@@ -83,6 +83,8 @@ double pieceCount(const Mesh& mesh, double spacing) {
 PointList coveragePoints(const SolidIndex& index, const PointList& interior, double spacing,
                          double max_pieces) {
   const Mesh& mesh = index.mesh();
+  // Unsplit triangles are the fewest pieces there can be.
+  max_pieces = std::max(max_pieces, static_cast<double>(mesh.triangles.size()));
   while (pieceCount(mesh, spacing) > max_pieces) spacing *= 2.0;
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
   std::vector<PointList> per(nt);

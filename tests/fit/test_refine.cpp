@@ -85,6 +85,22 @@ TEST(Refine, LowersTheOutsideVolumeOfATorusFit) {
   EXPECT_LT(totalSov(idx, r.after), 0.97 * totalSov(idx, r.before));
 }
 
+TEST(Refine, AMeshFinerThanItsPointBudgetIsRefinedAtItsVertices) {
+  // 20 480 triangles against a budget of 10 pieces per clustered point (8 000 here): the
+  // triangles are left whole instead of split, and the result still covers the surface.
+  const Mesh m = test::makeIcosphere(1.0, 5);
+  ASSERT_GT(m.triangles.size(), 20000u);
+  const SolidIndex idx(m);
+  std::vector<Sphere> sp = {{Vec3(0.5, 0, 0), 1.2}, {Vec3(-0.5, 0, 0), 1.2}};
+  ASSERT_EQ(uncoveredSurfacePoints(m, sp, 2), 0);
+  const double before = totalSov(idx, sp);
+  const detail::RefineStats st = detail::refineCoverage(idx, {}, 0.01, 0.005, 800, &sp);
+  // The vertices only: no splitting, and no room left for the densification's points.
+  EXPECT_EQ(st.points, static_cast<int64_t>(m.vertices.size()));
+  EXPECT_EQ(uncoveredSurfacePoints(m, sp, 2), 0);
+  EXPECT_LE(totalSov(idx, sp), before);
+}
+
 TEST(Refine, SameSpheresWhateverTheThreads) {
   const SolidIndex idx(test::robotLink());
   std::vector<Sphere> one, two;
