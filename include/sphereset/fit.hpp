@@ -72,6 +72,11 @@ struct FitOptions {
   // with the lowest final outside volume is returned. The clustering's local minima vary a lot
   // with the seed, so this buys quality for time.
   int restarts = 1;
+  // With restarts > 1: instead of keeping the best restart, choose n of all the restarts'
+  // spheres by a weighted set cover of the surface pieces and interior points at least total
+  // outside volume (src/fit/select.cpp), then bound and shrink them as a fit ends; the chosen
+  // set is kept if it beats the best restart.
+  bool select_among_restarts = false;
   // The triangles of the input a repaired solid was made from (repair.hpp): the bound covers
   // them too, exactly, after everything else (a last pass of the surface bound over them).
   // Not owned; may be null.

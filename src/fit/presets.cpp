@@ -17,11 +17,13 @@ namespace {
 
 // One preset: the factor on the default points max(5000, 100 n), assignment/update rounds,
 // optimiser evaluations per sphere and round, failed teleports before stopping, restarts,
-// decimation.
+// decimation, and whether the restarts' spheres are selected among (FitOptions::
+// select_among_restarts) instead of the best restart kept.
 struct Preset {
   double points_factor;
   int rounds, evaluations, failed_teleports, restarts;
   double decimation;
+  bool select = false;
 };
 
 constexpr int64_t kMinDefaultPoints = 5000;
@@ -32,7 +34,7 @@ Preset presetOf(FitQuality q) {
     case FitQuality::kFast:
       return {0.4, 30, 30, 2, 1, 0.0};
     case FitQuality::kBest:
-      return {1.0, 100, 60, 6, 4, 0.5};
+      return {1.0, 100, 60, 6, 4, 0.5, true};
     case FitQuality::kDefault:
       break;
   }
@@ -206,6 +208,7 @@ FitOptions fitPreset(int num_spheres, FitQuality quality) {
   fo.max_failed_teleports = p.failed_teleports;
   fo.restarts = p.restarts;
   fo.decimation = p.decimation;
+  fo.select_among_restarts = p.select;
   fo.target_points = static_cast<int64_t>(
       p.points_factor * static_cast<double>(std::max<int64_t>(
                             kMinDefaultPoints, kDefaultPointsPerSphere * int64_t{num_spheres})));
