@@ -126,7 +126,7 @@ struct FitResult {
 enum class FitQuality {
   kFast,     // 0.4 of the default points, 30 rounds, 30 optimiser evaluations, 2 failed teleports
   kDefault,  // max(5000, 100 n) points, 100 rounds, 60 evaluations, 6 failed teleports
-  kBest,     // the default's, with 4 restarts and decimation 0.5
+  kBest,     // the default's, with 4 restarts (their spheres selected among) and decimation 0.5
 };
 
 // "fast", "default", "best".

@@ -29,6 +29,9 @@ namespace {
 // A swap must lower the cost by this fraction of the largest candidate cost to count (so that
 // rounding cannot make the search cycle).
 constexpr double kSwapGainRel = 1e-12;
+// The greedy divides by cost plus this fraction of the largest cost (a candidate entirely
+// inside the solid costs nothing).
+constexpr double kCostFloorRel = 1e-12;
 // Rows at which the ILP is not attempted (the swap search's answer stands).
 constexpr size_t kMaxIlpClasses = 200000;
 // An ILP variable above this is taken as chosen.
@@ -129,7 +132,7 @@ bool coversAll(const CoverProblem& p, const std::vector<int32_t>& chosen) {
 std::vector<int32_t> greedyCover(const CoverProblem& p, const std::vector<std::vector<int32_t>>& of,
                                  int n) {
   const int m = static_cast<int>(p.cost.size());
-  const double tiny = 1e-300;
+  const double cost_floor = kCostFloorRel * *std::max_element(p.cost.begin(), p.cost.end());
   std::vector<char> covered(p.classes.size(), 0), in(m, 0);
   size_t left = p.classes.size();
   std::vector<int32_t> chosen;
@@ -140,7 +143,7 @@ std::vector<int32_t> greedyCover(const CoverProblem& p, const std::vector<std::v
       if (in[c]) continue;
       int64_t fresh = 0;
       for (int32_t k : of[c]) fresh += covered[k] ? 0 : 1;
-      const double ratio = static_cast<double>(fresh) / (p.cost[c] + tiny);
+      const double ratio = static_cast<double>(fresh) / (p.cost[c] + cost_floor);
       if (fresh > 0 && ratio > best_ratio) best_ratio = ratio, best = c;
     }
     if (best < 0) break;

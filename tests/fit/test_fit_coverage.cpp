@@ -92,6 +92,18 @@ TEST(FitCoverage, LongBoxByBruteForce) {
   expectFitCovers(test::makeBox(Vec3::Zero(), Vec3(20.0, 1.0, 0.5)), o, 50);
 }
 
+// The best preset's selection among its restarts' spheres (select.cpp), then its end passes.
+TEST(FitCoverage, SelectionAmongRestartsByBruteForce) {
+  FitOptions o = fitPreset(8, FitQuality::kBest);
+  o.target_points = 2000;
+  o.restarts = 3;
+  expectFitCovers(test::robotLink(), o, 200);
+  FitOptions t = fitPreset(10, FitQuality::kBest);
+  t.target_points = 2000;
+  t.restarts = 2;
+  expectFitCovers(test::makeTorus(1.0, 0.35, 48, 24), t, 200);
+}
+
 TEST(FitCoverage, BaselinesByBruteForce) {
   for (FitMethod method : {FitMethod::kKMeans, FitMethod::kOctree}) {
     FitOptions o;
