@@ -50,10 +50,13 @@ if(BUILD_SHARED_LIBS)
   set(SPHERESET_STATIC_DEPENDENCIES "")
   set(SPHERESET_STATIC_REPAIR_DEPENDENCIES "")
 else()
-  # Per component: what its static library needs at the consumer's link (the core: TBB, NLopt).
+  # Per component: what its static library needs at the consumer's link (the core: TBB, NLopt,
+  # CBC through pkg-config).
   set(SPHERESET_STATIC_DEPENDENCIES [[
 find_dependency(TBB)
 find_dependency(NLopt)
+find_dependency(PkgConfig)
+pkg_check_modules(CBC REQUIRED IMPORTED_TARGET cbc)
 if(NOT sphereset_FIND_COMPONENTS OR "io" IN_LIST _sphereset_wanted)
   find_dependency(assimp)
   find_dependency(nlohmann_json 3.10)
@@ -76,7 +79,7 @@ install(FILES ${PROJECT_BINARY_DIR}/spheresetConfig.cmake
 
 # pkg-config: a static library's dependencies are part of `pkg-config --libs sphereset`; a shared
 # one's are private.
-set(SPHERESET_PC_DEPENDENCIES "tbb assimp nlopt libpng yaml-cpp urdfdom tinyxml")
+set(SPHERESET_PC_DEPENDENCIES "tbb assimp nlopt cbc libpng yaml-cpp urdfdom tinyxml")
 # Later stages first, as a static link needs them.
 set(SPHERESET_PC_LIBRARIES
   "-lsphereset_batch -lsphereset_animate -lsphereset_robot -lsphereset_render -lsphereset_io -lsphereset_core")

@@ -18,6 +18,7 @@ demo_packages=(
   liburdfdom-dev       # robot descriptions (URDF parser)
   libtinyxml-dev       # URDF elements read and rewritten (the XML library urdfdom uses)
   libnlopt-cxx-dev     # derivative-free and gradient optimisers
+  coinor-libcbc-dev    # integer programs: the best preset's selection among its restarts' spheres
   libpng-dev           # PNG pictures
   libcgal-dev          # repair: corefinement and alpha wrapping, GPL, see README
   libgmp-dev           # exact arithmetic linked by CGAL's CMake target (CGAL::CGAL)
