@@ -41,7 +41,7 @@ const DisabledPair* findPair(const CollisionMatrix& m, const std::string& a, con
 
 // At the zero pose (see test_self_collision.cpp): base-link2 and base-tool overlap, link2-tool
 // are joined. link1's sphere is 0.2 from joint2's centre and tool's 0.5: never closer than 0.3.
-std::vector<LinkSpheres> handSpheres() {
+std::vector<LinkSpheres> matrixHandSpheres() {
   return {{"base_link", {Sphere{Vec3(0.5, 0, 0.5), 0.1}}},
           {"link1", {Sphere{Vec3(0, 0, 0.2), 0.05}}},
           {"link2", {Sphere{Vec3(0.45, 0, 0), 0.05}}},
@@ -64,7 +64,7 @@ TEST(CollisionMatrix, ReasonsAtTheZeroPose) {
   const Robot robot = test::threeLinkRobot();
   CollisionSamplingOptions o;
   o.samples = 2000;
-  auto m = sampleSelfCollisions(robot, handSpheres(), o);
+  auto m = sampleSelfCollisions(robot, matrixHandSpheres(), o);
   ASSERT_TRUE(m.ok()) << m.error().message;
   EXPECT_EQ(reasons(*m), (Reasons{{"base_link/link1", "Adjacent"},
                                   {"link1/link2", "Adjacent"},
@@ -136,7 +136,7 @@ TEST(CollisionMatrix, SameOnAnyThreadCountAndSeedMatters) {
 TEST(CollisionMatrix, DefaultSampleCountFromTheMovableJoints) {
   const Robot robot = test::threeLinkRobot();
   EXPECT_EQ(defaultSampleCount(robot), 4000);  // two revolute joints
-  auto m = sampleSelfCollisions(robot, handSpheres(), {});
+  auto m = sampleSelfCollisions(robot, matrixHandSpheres(), {});
   ASSERT_TRUE(m.ok());
   EXPECT_EQ(m->samples, 4000);
   Robot fixed = robot;
@@ -146,7 +146,7 @@ TEST(CollisionMatrix, DefaultSampleCountFromTheMovableJoints) {
 
 TEST(CollisionMatrix, LinksWithoutGeometryJoinTheirNeighbours) {
   const Robot robot = test::threeLinkRobot();
-  std::vector<LinkSpheres> s = handSpheres();
+  std::vector<LinkSpheres> s = matrixHandSpheres();
   s[1].spheres.clear();  // link1 has none: base_link and link2 become adjacent
   s.push_back({"no_such_link", {Sphere{Vec3(0, 0, 0), 1.0}}});
   auto m = sampleSelfCollisions(robot, s, withSamples(500));
@@ -161,7 +161,7 @@ TEST(CollisionMatrix, MeshesDecideWhenAsked) {
   const Robot robot = test::threeLinkRobot();
   // base_link's sphere reaches tool's at the zero pose, but its solid, a box below the reach of
   // tool (whose origin is never below z = 0), never meets tool's box.
-  std::vector<LinkSpheres> s = handSpheres();
+  std::vector<LinkSpheres> s = matrixHandSpheres();
   s[0].spheres = {Sphere{Vec3(0.25, 0, 0), 0.8}};
   std::vector<CollisionSolid> solids = {
       {"base_link", test::makeBox(Vec3(-0.1, -0.1, -0.6), Vec3(0.1, 0.1, -0.4)), {}},
@@ -194,17 +194,17 @@ TEST(CollisionMatrix, BadOptionsAndPoseAreRefused) {
   const Robot robot = test::threeLinkRobot();
   CollisionSamplingOptions o;
   o.always_fraction = 0.3;
-  auto m = sampleSelfCollisions(robot, handSpheres(), o);
+  auto m = sampleSelfCollisions(robot, matrixHandSpheres(), o);
   ASSERT_FALSE(m.ok());
   EXPECT_EQ(m.error().code, ErrorCode::kInvalidArgument);
   EXPECT_NE(m.error().message.find("always_fraction '0.3'"), std::string::npos)
       << m.error().message;
   o = {};
   o.samples = -1;
-  EXPECT_FALSE(sampleSelfCollisions(robot, handSpheres(), o).ok());
+  EXPECT_FALSE(sampleSelfCollisions(robot, matrixHandSpheres(), o).ok());
   o = {};
   o.default_pose = {{"joint9", 1.0}};
-  m = sampleSelfCollisions(robot, handSpheres(), o);
+  m = sampleSelfCollisions(robot, matrixHandSpheres(), o);
   ASSERT_FALSE(m.ok());
   EXPECT_NE(m.error().message.find("default_pose: no joint 'joint9'"), std::string::npos)
       << m.error().message;
@@ -232,7 +232,7 @@ TEST(CollisionMatrix, OptionTableSetsEveryRow) {
 
 TEST(CollisionMatrix, CuroboIgnoresEveryDisabledPair) {
   const Robot robot = test::threeLinkRobot();
-  auto m = sampleSelfCollisions(robot, handSpheres(), withSamples(500));
+  auto m = sampleSelfCollisions(robot, matrixHandSpheres(), withSamples(500));
   ASSERT_TRUE(m.ok());
   const SelfCollisionPairs p = ignoredPairs(*m);
   using Pairs = std::vector<std::array<std::string, 2>>;

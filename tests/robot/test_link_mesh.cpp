@@ -14,7 +14,7 @@
 namespace sphereset {
 namespace {
 
-constexpr double kTol = 1e-12;
+constexpr double kLinkMeshTol = 1e-12;
 
 const RobotLink& link(const Robot& r, const std::string& name) {
   for (const RobotLink& l : r.links) {
@@ -30,10 +30,10 @@ TEST(LinkMesh, BoxIsAClosedSolidOfTheBoxVolume) {
   ASSERT_TRUE(m.ok()) << m.error().message;
   const MeshDiagnosis d = diagnoseMesh(*m);
   EXPECT_TRUE(d.isSolid());
-  EXPECT_NEAR(d.volume, 0.2 * 0.3 * 0.1, kTol);
+  EXPECT_NEAR(d.volume, 0.2 * 0.3 * 0.1, kLinkMeshTol);
   // Origin z = 0.05: the box stands on the link frame's xy plane.
-  EXPECT_LT((d.bbox.min - Vec3(-0.1, -0.15, 0.0)).norm(), kTol);
-  EXPECT_LT((d.bbox.max - Vec3(0.1, 0.15, 0.1)).norm(), kTol);
+  EXPECT_LT((d.bbox.min - Vec3(-0.1, -0.15, 0.0)).norm(), kLinkMeshTol);
+  EXPECT_LT((d.bbox.max - Vec3(0.1, 0.15, 0.1)).norm(), kLinkMeshTol);
 }
 
 TEST(LinkMesh, CylinderIsAPrismOverTheInscribedPolygon) {
@@ -46,10 +46,10 @@ TEST(LinkMesh, CylinderIsAPrismOverTheInscribedPolygon) {
     EXPECT_TRUE(d.isSolid()) << segments;
     const double polygon_area =
         0.5 * segments * kRadius * kRadius * std::sin(2.0 * std::numbers::pi / segments);
-    EXPECT_NEAR(d.volume, polygon_area * kLength, kTol) << segments;
+    EXPECT_NEAR(d.volume, polygon_area * kLength, kLinkMeshTol) << segments;
     EXPECT_LE(d.volume, std::numbers::pi * kRadius * kRadius * kLength);
-    EXPECT_NEAR(d.bbox.min.z(), 0.0, kTol);
-    EXPECT_NEAR(d.bbox.max.z(), kLength, kTol);
+    EXPECT_NEAR(d.bbox.min.z(), 0.0, kLinkMeshTol);
+    EXPECT_NEAR(d.bbox.max.z(), kLength, kLinkMeshTol);
   }
   EXPECT_FALSE(linkMesh(link(r, "link1"), 2).ok());
 }
@@ -91,7 +91,7 @@ TEST(LinkMesh, SpherePrimitivesAsExactSpheresAndADrawing) {
   const RobotLink& tool = link(r, "tool");
   const std::vector<Sphere> spheres = linkSpheres(tool);
   ASSERT_EQ(spheres.size(), 1u);
-  EXPECT_LT((spheres[0].center - Vec3(0.0, 0.0, 0.05)).norm(), kTol);
+  EXPECT_LT((spheres[0].center - Vec3(0.0, 0.0, 0.05)).norm(), kLinkMeshTol);
   EXPECT_EQ(spheres[0].radius, 0.03);
   EXPECT_TRUE(linkSpheres(link(r, "base_link")).empty());
 
@@ -102,7 +102,7 @@ TEST(LinkMesh, SpherePrimitivesAsExactSpheresAndADrawing) {
   const double ball = 4.0 / 3.0 * std::numbers::pi * std::pow(0.03, 3);
   EXPECT_LT(d.volume, ball);
   EXPECT_GT(d.volume, 0.9 * ball);
-  for (const Vec3& v : m->vertices) EXPECT_NEAR((v - spheres[0].center).norm(), 0.03, kTol);
+  for (const Vec3& v : m->vertices) EXPECT_NEAR((v - spheres[0].center).norm(), 0.03, kLinkMeshTol);
 }
 
 TEST(LinkMesh, ElementsAreConcatenated) {
@@ -116,7 +116,7 @@ TEST(LinkMesh, ElementsAreConcatenated) {
   auto cylinder = linkMesh(link(r, "link1"), 16);
   ASSERT_TRUE(box.ok() && cylinder.ok());
   EXPECT_EQ(m->triangles.size(), box->triangles.size() + cylinder->triangles.size());
-  EXPECT_NEAR(signedVolume(*m), signedVolume(*box) + signedVolume(*cylinder), kTol);
+  EXPECT_NEAR(signedVolume(*m), signedVolume(*box) + signedVolume(*cylinder), kLinkMeshTol);
   EXPECT_EQ(diagnoseMesh(*m).components, 2);
 }
 
@@ -135,10 +135,10 @@ TEST(LinkPoses, ChainAtZero) {
   const auto poses = *linkPoses(r);
   ASSERT_EQ(poses.size(), 4u);
   EXPECT_TRUE(poses.at("base_link").isApprox(Eigen::Isometry3d::Identity()));
-  EXPECT_LT((poses.at("link1").translation() - Vec3(0, 0, 0.1)).norm(), kTol);
-  EXPECT_LT((poses.at("link2").translation() - Vec3(0, 0, 0.5)).norm(), kTol);
-  EXPECT_LT((poses.at("tool").translation() - Vec3(0.5, 0, 0.5)).norm(), kTol);
-  EXPECT_LT((poses.at("tool").linear() - Eigen::Matrix3d::Identity()).norm(), kTol);
+  EXPECT_LT((poses.at("link1").translation() - Vec3(0, 0, 0.1)).norm(), kLinkMeshTol);
+  EXPECT_LT((poses.at("link2").translation() - Vec3(0, 0, 0.5)).norm(), kLinkMeshTol);
+  EXPECT_LT((poses.at("tool").translation() - Vec3(0.5, 0, 0.5)).norm(), kLinkMeshTol);
+  EXPECT_LT((poses.at("tool").linear() - Eigen::Matrix3d::Identity()).norm(), kLinkMeshTol);
 }
 
 // Rotations about z and y written out.
@@ -157,13 +157,13 @@ TEST(LinkPoses, ChainAtJointValues) {
   const Robot r = test::threeLinkRobot();
   const double q1 = 0.7, q2 = 0.4;
   const auto poses = *linkPoses(r, {{"joint1", q1}, {"joint2", q2}});
-  EXPECT_LT((poses.at("link1").linear() - rotZ(q1)).norm(), kTol);
-  EXPECT_LT((poses.at("link2").linear() - rotZ(q1) * rotY(q2)).norm(), kTol);
-  EXPECT_LT((poses.at("link2").translation() - Vec3(0, 0, 0.5)).norm(), kTol);
+  EXPECT_LT((poses.at("link1").linear() - rotZ(q1)).norm(), kLinkMeshTol);
+  EXPECT_LT((poses.at("link2").linear() - rotZ(q1) * rotY(q2)).norm(), kLinkMeshTol);
+  EXPECT_LT((poses.at("link2").translation() - Vec3(0, 0, 0.5)).norm(), kLinkMeshTol);
   // The tool, 0.5 along link2's x: swung by both joints.
   const Vec3 tool = Vec3(0, 0, 0.5) + 0.5 * Vec3(std::cos(q2) * std::cos(q1),
                                                  std::cos(q2) * std::sin(q1), -std::sin(q2));
-  EXPECT_LT((poses.at("tool").translation() - tool).norm(), kTol);
+  EXPECT_LT((poses.at("tool").translation() - tool).norm(), kLinkMeshTol);
 }
 
 TEST(LinkPoses, RevoluteValuesAreClampedToTheLimits) {
@@ -171,7 +171,7 @@ TEST(LinkPoses, RevoluteValuesAreClampedToTheLimits) {
   const auto clamped = *linkPoses(r, {{"joint1", 5.0}, {"joint2", -9.0}});
   const auto at_limits = *linkPoses(r, {{"joint1", 1.5}, {"joint2", -2.0}});
   for (const char* name : {"link1", "link2", "tool"}) {
-    EXPECT_TRUE(clamped.at(name).isApprox(at_limits.at(name), kTol)) << name;
+    EXPECT_TRUE(clamped.at(name).isApprox(at_limits.at(name), kLinkMeshTol)) << name;
   }
   // The clamps are said, one note each (they used to be silent).
   const auto state = jointState(r, {{"joint1", 5.0}, {"joint2", -9.0}});
@@ -201,13 +201,13 @@ TEST(LinkPoses, PrismaticSlidesAlongItsAxisWithinItsLimits) {
   slide.upper = 0.25;
   r.joints = {slide};
   EXPECT_LT((linkPoses(r, {{"slide", 0.2}})->at("carriage").translation() - Vec3(1, 0.2, 0)).norm(),
-            kTol);
+            kLinkMeshTol);
   EXPECT_LT(
       (linkPoses(r, {{"slide", 3.0}})->at("carriage").translation() - Vec3(1, 0.25, 0)).norm(),
-      kTol);
+      kLinkMeshTol);
   EXPECT_LT(
       (linkPoses(r, {{"slide", -3.0}})->at("carriage").translation() - Vec3(1, -0.5, 0)).norm(),
-      kTol);
+      kLinkMeshTol);
 }
 
 // A parallel gripper: the right finger mimics the left one (multiplier -1), as grippers are
@@ -233,8 +233,8 @@ TEST(LinkPoses, MimicJointsFollowTheirLeader) {
   r.joints = {left, right};
   const auto poses = linkPoses(r, {{"left", 0.03}});
   ASSERT_TRUE(poses.ok()) << poses.error().message;
-  EXPECT_LT((poses->at("left_finger").translation() - Vec3(0, 0.03, 0)).norm(), kTol);
-  EXPECT_LT((poses->at("right_finger").translation() - Vec3(0, -0.03, 0)).norm(), kTol);
+  EXPECT_LT((poses->at("left_finger").translation() - Vec3(0, 0.03, 0)).norm(), kLinkMeshTol);
+  EXPECT_LT((poses->at("right_finger").translation() - Vec3(0, -0.03, 0)).norm(), kLinkMeshTol);
   // The follower's own value: accepted when it agrees, refused when it does not.
   EXPECT_TRUE(linkPoses(r, {{"left", 0.03}, {"right", -0.03}}).ok());
   test::expectError(linkPoses(r, {{"left", 0.03}, {"right", 0.01}}), ErrorCode::kInvalidArgument,
