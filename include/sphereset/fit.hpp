@@ -115,9 +115,9 @@ struct FitResult {
   int64_t bounding_interior_cells = 0;  // interior cubes that made a sphere grow
   int shrink_passes = 0;                // shrinking passes kept
   int64_t refine_points = 0;  // points kept covered by the refinement (0: not run or not kept)
-  int decimated = 0;                    // spheres removed by the decimation
-  int idle_teleports = 0;  // spheres that covered nothing alone, moved to split another
-  int restart = 0;         // which restart won (0: the one with options.seed)
+  int decimated = 0;          // spheres removed by the decimation
+  int idle_teleports = 0;     // spheres that covered nothing alone, moved to split another
+  int restart = 0;            // which restart won (0: the one with options.seed)
   FitTimings seconds;
 };
 

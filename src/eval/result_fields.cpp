@@ -41,7 +41,8 @@ std::vector<ResultField> fitResultFields(const FitResult& r, double mesh_volume)
       {"seconds.assignment", r.seconds.assignment, "seconds assigning points to spheres"},
       {"seconds.update", r.seconds.update, "seconds refitting spheres"},
       {"seconds.teleport", r.seconds.teleport, "seconds teleporting"},
-      {"seconds.bounding", r.seconds.bounding, "seconds in the bound, its shrinking passes and refinement"},
+      {"seconds.bounding", r.seconds.bounding,
+       "seconds in the bound, its shrinking passes and refinement"},
   };
 }
 
