@@ -2,7 +2,7 @@
 # Tightness and time of the fit against a baseline commit, side by side in one run: for each
 # mesh, n and seed, `sphereset fit --json` of the baseline and of this build (alternating, so
 # that both see the same machine load), E_r after the bound, the clustering's own E_r (before
-# the bound) and wall time, into bench/results/tightness.csv; then the summary of
+# the bound), wall time and whether the fit's certificates hold, into bench/results/tightness.csv; then the summary of
 # bench/tightness_summary.py (per mesh and overall geometric means of the ratios, the bound
 # overhead) into bench/results/tightness.txt.
 #   bash bench/tightness.sh [MESH ...]        (default: the 12 closed meshes of ../shared/meshes)
@@ -43,7 +43,7 @@ if [ "$(cat "$base_dir/ref" 2>/dev/null)" != "$(git rev-parse "$base_ref")" ] ||
   git rev-parse "$base_ref" >"$base_dir/ref"
 fi
 out=${OUT:-bench/results/tightness.csv}
-echo "mesh,n,seed,variant,er_sum,er_before_bounding,wall_s,spheres" >"$out"
+echo "mesh,n,seed,variant,er_sum,er_before_bounding,wall_s,spheres,covered" >"$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 for mesh in "${meshes[@]}"; do
@@ -60,8 +60,9 @@ import json, os, sys
 mesh, n, seed, variant, tmp = sys.argv[1:6]
 s = json.load(open(os.path.join(tmp, "summary.json")))
 wall = open(os.path.join(tmp, "time")).read().split()[-1]
+covered = all(s.get(k, True) for k in ("surface_covered", "interior_covered", "original_covered"))
 print(",".join([os.path.basename(mesh), n, seed, variant, "%.6f" % s["er_sum"],
-                "%.6f" % s["er_sum_before_bounding"], wall, str(s["spheres"])]))
+                "%.6f" % s["er_sum_before_bounding"], wall, str(s["spheres"]), str(covered)]))
 PY
       done
     done

@@ -1,7 +1,8 @@
 """Summary of bench/tightness.sh's CSV: for each variant against `base:default` (the baseline's
 default quality), per mesh and over everything, the geometric means of the E_r ratio and of the
 wall-time ratio over the cells (n, seed) both ran, and each variant's bound overhead (E_r after
-the bound over the clustering's own E_r; geometric mean and largest per mesh).
+the bound over the clustering's own E_r; geometric mean and largest per mesh), and whether
+every fit's certificates held.
 
     /usr/bin/python3 bench/tightness_summary.py bench/results/tightness.csv
 """
@@ -54,6 +55,12 @@ def main(path):
         er, t = everything[v]
         line += "%26s" % ("%.3f / %.3f" % (geomean(er), geomean(t)))
     print(line)
+    for v in variants:
+        fits = [r for r in rows if r["variant"] == v]
+        uncovered = [r for r in fits if r.get("covered", "True") != "True"]
+        print("%s: %d fits, %s" % (v, len(fits), "every one covered" if not uncovered else
+                                   "NOT covered: " + ", ".join("%s n=%s seed %s" % (
+                                       r["mesh"], r["n"], r["seed"]) for r in uncovered)))
 
 
 if __name__ == "__main__":
