@@ -240,7 +240,7 @@ TEST_F(BatchTest, ItemGivesTheSpheresOfTheFit) {
   const SolidIndex index(solid->repair.solid);
   FitOptions fo = fitOptionsFor(item.fit);
   EXPECT_EQ(fo.seed, 5u);
-  EXPECT_EQ(fo.max_iterations, 30);  // the fast preset
+  EXPECT_EQ(fo.max_iterations, 20);  // the fast preset
   auto fit = fitSpheres(index, fo);
   ASSERT_TRUE(fit.ok());
   SphereFileMeta meta;
@@ -451,7 +451,7 @@ TEST_F(BatchTest, UpToDateItemsAreSkippedAndChangedOnesRunAgain) {
   EXPECT_FALSE(batchItemDone(item, out, changed));
   // The same options spelled differently (the fast preset's own rounds): up to date.
   other = item;
-  other.fit.iterations = 30;
+  other.fit.iterations = 20;
   EXPECT_TRUE(batchItemDone(other, out, o));
   EXPECT_EQ(processBatchItem(other, out, o).status, BatchStatus::kSkipped);
 
@@ -495,8 +495,8 @@ TEST(FitPresets, NamesAndOverrides) {
   EXPECT_FALSE(sphereOptimizerFromName("newton").ok());
 
   const FitOptions fast = fitPreset(10, FitQuality::kFast);
-  EXPECT_EQ(fast.target_points, 2000);  // 0.4 × max(5000, 1000)
-  EXPECT_EQ(fast.max_iterations, 30);
+  EXPECT_EQ(fast.target_points, 1500);  // 0.3 × max(5000, 1000)
+  EXPECT_EQ(fast.max_iterations, 20);
   EXPECT_EQ(fast.optimizer_evaluations, 30);
   EXPECT_EQ(fast.max_failed_teleports, 2);
   const FitOptions best = fitPreset(100, FitQuality::kBest);
