@@ -20,7 +20,7 @@
 // sphere update (Eq. 5) of each sphere subject to holding exactly its own pieces. It stopped in
 // one round with no gain (spot, n = 32: E_r 0.2813 -> 0.2813): the pieces that set a sphere's
 // radius are held by that sphere alone, so moving one sphere at a time cannot move the border
-// between two. Moving all spheres at once under the penalty does (0.2813 -> 0.233).
+// between two. Moving all spheres at once under the penalty does (0.2813 -> 0.224).
 #include "fit/refine.hpp"
 
 #include <tbb/parallel_for.h>
