@@ -2,9 +2,9 @@
 # Tightness and time of the fit against a baseline commit, side by side in one run: for each
 # mesh, n and seed, `sphereset fit --json` of the baseline and of this build (alternating, so
 # that both see the same machine load), E_r after the bound, the clustering's own E_r (before
-# the bound), wall time and whether the fit's certificates hold, into bench/results/tightness.csv; then the summary of
-# bench/tightness_summary.py (per mesh and overall geometric means of the ratios, the bound
-# overhead) into bench/results/tightness.txt.
+# the bound), wall time and whether the fit's certificates hold, into
+# bench/results/tightness.csv; then the summary of bench/tightness_summary.py (per mesh and
+# overall geometric means of the ratios, the bound overhead) into bench/results/tightness.txt.
 #   bash bench/tightness.sh [MESH ...]        (default: the 12 closed meshes of ../shared/meshes)
 #   BASE=REF          the baseline commit (default: the fit before the coverage refinement)
 #   N_LIST="16 32"    SEEDS="1 2"    VARIANTS="base:default new:default new:fast"

@@ -503,6 +503,17 @@ TEST(FitPresets, NamesAndOverrides) {
   EXPECT_EQ(best.target_points, 10000);
   EXPECT_EQ(best.restarts, 4);
   EXPECT_EQ(best.decimation, 0.5);
+  // The help's defaults restate the presets' rounds and restarts: they must follow them.
+  auto helpDefault = [](const std::string& name) {
+    for (const OptionSpec& spec : fitRequestOptions())
+      if (spec.name == name) return std::string(spec.default_text);
+    return std::string();
+  };
+  const FitOptions plain = fitPreset(10, FitQuality::kDefault);
+  EXPECT_EQ(helpDefault("iterations"), std::to_string(plain.max_iterations) + "; quality fast: " +
+                                           std::to_string(fast.max_iterations));
+  EXPECT_EQ(helpDefault("restarts"),
+            std::to_string(plain.restarts) + "; quality best: " + std::to_string(best.restarts));
   FitRequest req;
   req.num_spheres = 100;
   req.quality = FitQuality::kBest;

@@ -3,12 +3,17 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "sphereset/robot.hpp"
 #include "test_meshes.hpp"
 
 namespace sphereset::test {
+
+// Link-name pairs, as SelfCollisionPairs and the planner files list them.
+using LinkPairs = std::vector<std::array<std::string, 2>>;
 
 inline std::string robotDir() { return dataPath("robot"); }
 inline std::string threeLinkUrdf() { return dataPath("robot/three_link.urdf"); }

@@ -235,10 +235,10 @@ TEST(CollisionMatrix, CuroboIgnoresEveryDisabledPair) {
   auto m = sampleSelfCollisions(robot, matrixHandSpheres(), withSamples(500));
   ASSERT_TRUE(m.ok());
   const SelfCollisionPairs p = ignoredPairs(*m);
-  using LinkPairs = std::vector<std::array<std::string, 2>>;
-  EXPECT_EQ(p.adjacent, (LinkPairs{{"base_link", "link1"}, {"link1", "link2"}, {"link2", "tool"}}));
+  EXPECT_EQ(p.adjacent,
+            (test::LinkPairs{{"base_link", "link1"}, {"link1", "link2"}, {"link2", "tool"}}));
   EXPECT_EQ(p.overlapping,
-            (LinkPairs{{"base_link", "link2"}, {"base_link", "tool"}, {"link1", "tool"}}));
+            (test::LinkPairs{{"base_link", "link2"}, {"base_link", "tool"}, {"link1", "tool"}}));
 }
 
 }  // namespace

@@ -131,12 +131,11 @@ TEST(FclCheck, EveryProbeTouchingALinkMeshTouchesItsSpheres) {
 }
 
 // The pairs of an SRDF with the given reason, as written.
-std::vector<std::array<std::string, 2>> srdfPairsWith(const std::string& srdf,
-                                                      const std::string& reason) {
+test::LinkPairs srdfPairsWith(const std::string& srdf, const std::string& reason) {
   TiXmlDocument doc;
   doc.Parse(srdf.c_str());
   EXPECT_FALSE(doc.Error()) << doc.ErrorDesc();
-  std::vector<std::array<std::string, 2>> out;
+  test::LinkPairs out;
   if (doc.RootElement() == nullptr) return out;
   for (const TiXmlElement* d = doc.RootElement()->FirstChildElement("disable_collisions");
        d != nullptr; d = d->NextSiblingElement("disable_collisions"))

@@ -14,7 +14,7 @@
 namespace sphereset {
 namespace {
 
-using Pairs = std::vector<std::array<std::string, 2>>;
+using test::LinkPairs;
 
 // Link frames at the zero pose (root frame): base_link at 0, link1 at (0, 0, 0.1), link2 at
 // (0, 0, 0.5), tool at (0.5, 0, 0.5). joint2 turns link2 and tool about y through (0, 0, 0.5).
@@ -36,26 +36,26 @@ std::vector<LinkSpheres> handSpheres() {
 TEST(SelfCollision, AdjacentPairsFromJoints) {
   const Robot robot = test::threeLinkRobot();
   const SelfCollisionPairs p = *selfCollisionPairs(robot, handSpheres());
-  EXPECT_EQ(p.adjacent, (Pairs{{"base_link", "link1"}, {"link1", "link2"}, {"link2", "tool"}}));
+  EXPECT_EQ(p.adjacent, (LinkPairs{{"base_link", "link1"}, {"link1", "link2"}, {"link2", "tool"}}));
 }
 
 TEST(SelfCollision, OverlapAtZeroPose) {
   const Robot robot = test::threeLinkRobot();
   const SelfCollisionPairs p = *selfCollisionPairs(robot, handSpheres());
   EXPECT_EQ(p.overlapping,
-            (Pairs{{"base_link", "link2"}, {"base_link", "tool"}, {"link2", "tool"}}));
+            (LinkPairs{{"base_link", "link2"}, {"base_link", "tool"}, {"link2", "tool"}}));
 }
 
 TEST(SelfCollision, OverlapSeparatesAtAnotherJointValue) {
   const Robot robot = test::threeLinkRobot();
   const SelfCollisionPairs p = *selfCollisionPairs(robot, handSpheres(), {{"joint2", 1.0}});
-  EXPECT_EQ(p.overlapping, (Pairs{{"link2", "tool"}}));
+  EXPECT_EQ(p.overlapping, (LinkPairs{{"link2", "tool"}}));
   // Adjacency does not depend on the pose.
   EXPECT_EQ(p.adjacent.size(), 3u);
   // The base sphere is off joint1's axis (z): joint1 = 1.5 rad takes link2's sphere to
   // (0.0318, 0.4489, 0.5), 0.649 from it, and tool further.
   const SelfCollisionPairs q = *selfCollisionPairs(robot, handSpheres(), {{"joint1", 1.5}});
-  EXPECT_EQ(q.overlapping, (Pairs{{"link2", "tool"}}));
+  EXPECT_EQ(q.overlapping, (LinkPairs{{"link2", "tool"}}));
 }
 
 TEST(SelfCollision, TouchingIsNotOverlapping) {
@@ -66,7 +66,7 @@ TEST(SelfCollision, TouchingIsNotOverlapping) {
                                 {"link1", {Sphere{Vec3(0, 0, 0.4), 0.25}}}};
   EXPECT_TRUE(selfCollisionPairs(robot, s)->overlapping.empty());
   s[0].spheres[0].radius = 0.2501;
-  EXPECT_EQ(selfCollisionPairs(robot, s)->overlapping, (Pairs{{"base_link", "link1"}}));
+  EXPECT_EQ(selfCollisionPairs(robot, s)->overlapping, (LinkPairs{{"base_link", "link1"}}));
 }
 
 TEST(SelfCollision, InputOrderAndEmptyLinksDoNotMatter) {
@@ -75,13 +75,13 @@ TEST(SelfCollision, InputOrderAndEmptyLinksDoNotMatter) {
   std::reverse(s.begin(), s.end());
   const SelfCollisionPairs p = *selfCollisionPairs(robot, s);
   EXPECT_EQ(p.overlapping,
-            (Pairs{{"base_link", "link2"}, {"base_link", "tool"}, {"link2", "tool"}}));
+            (LinkPairs{{"base_link", "link2"}, {"base_link", "tool"}, {"link2", "tool"}}));
   // A link without spheres overlaps nothing; unknown links are skipped.
   s = handSpheres();
   s[3].spheres.clear();
   s.push_back({"no_such_link", {Sphere{Vec3(0.5, 0, 0.5), 1.0}}});
   const SelfCollisionPairs q = *selfCollisionPairs(robot, s);
-  EXPECT_EQ(q.overlapping, (Pairs{{"base_link", "link2"}}));
+  EXPECT_EQ(q.overlapping, (LinkPairs{{"base_link", "link2"}}));
   EXPECT_EQ(q.adjacent.size(), 3u);
 }
 
