@@ -124,7 +124,7 @@ struct FitResult {
 // Quality presets: how much work a fit does, as `sphereset fit --quality` names them. The CLI,
 // the batch and the Python module all take their options from fitPreset / fitOptionsFor.
 enum class FitQuality {
-  kFast,     // 0.3 of the default points, 20 rounds, 30 optimiser evaluations, 2 failed teleports
+  kFast,     // 0.25 of the default points, 20 rounds, 20 optimiser evaluations, 1 failed teleport
   kDefault,  // max(5000, 100 n) points, 100 rounds, 60 evaluations, 6 failed teleports
   kBest,     // the default's, with 4 restarts (their spheres selected among) and decimation 0.5
 };

@@ -68,7 +68,7 @@ def test_same_spheres_as_cli_after_repair(cli, tmp_path):
 def test_fit_diagnostics_and_options():
     r = ss.fit(ss.load_mesh(LINK), n=4, quality="fast", iterations=5, restarts=2)
     assert r.options["iterations"] == 5 and r.options["restarts"] == 2
-    assert r.options["points"] == int(0.3 * 5000)
+    assert r.options["points"] == int(0.25 * 5000)
     assert r.outside_volume.shape == (4,) and np.all(r.outside_volume >= 0)
     assert r.energy == pytest.approx(r.outside_volume.sum(), rel=1e-9)
     assert r.er_sum == pytest.approx(r.energy / r.mesh_volume)

@@ -495,10 +495,10 @@ TEST(FitPresets, NamesAndOverrides) {
   EXPECT_FALSE(sphereOptimizerFromName("newton").ok());
 
   const FitOptions fast = fitPreset(10, FitQuality::kFast);
-  EXPECT_EQ(fast.target_points, 1500);  // 0.3 × max(5000, 1000)
+  EXPECT_EQ(fast.target_points, 1250);  // 0.25 × max(5000, 1000)
   EXPECT_EQ(fast.max_iterations, 20);
-  EXPECT_EQ(fast.optimizer_evaluations, 30);
-  EXPECT_EQ(fast.max_failed_teleports, 2);
+  EXPECT_EQ(fast.optimizer_evaluations, 20);
+  EXPECT_EQ(fast.max_failed_teleports, 1);
   const FitOptions best = fitPreset(100, FitQuality::kBest);
   EXPECT_EQ(best.target_points, 10000);
   EXPECT_EQ(best.restarts, 4);
