@@ -55,6 +55,31 @@ def main(path):
         er, t = everything[v]
         line += "%26s" % ("%.3f / %.3f" % (geomean(er), geomean(t)))
     print(line)
+    # Per n, over every mesh and seed.
+    for n in sorted({r["n"] for r in rows}, key=int):
+        line = "%-28s" % ("n = " + n)
+        for v in others:
+            er = [float(r["er_sum"]) / float(cell[(r["mesh"], n, r["seed"], BASELINE)]["er_sum"])
+                  for r in rows if r["variant"] == v and r["n"] == n
+                  and (r["mesh"], n, r["seed"], BASELINE) in cell]
+            t = [max(float(r["wall_s"]), 0.01) /
+                 max(float(cell[(r["mesh"], n, r["seed"], BASELINE)]["wall_s"]), 0.01)
+                 for r in rows if r["variant"] == v and r["n"] == n
+                 and (r["mesh"], n, r["seed"], BASELINE) in cell]
+            line += "%26s" % ("%.3f / %.3f" % (geomean(er), geomean(t)))
+        print(line)
+    # Absolute wall times of the cells with a target of their own (mean over seeds).
+    for stem, n in (("armadillo", "64"), ("dragon", "128")):
+        parts = []
+        for v in variants:
+            ts = [float(r["wall_s"]) for r in rows
+                  if stem in r["mesh"] and r["n"] == n and r["variant"] == v]
+            ers = [float(r["er_sum"]) for r in rows
+                   if stem in r["mesh"] and r["n"] == n and r["variant"] == v]
+            if ts:
+                parts.append("%s %.2f s (E_r %.3f)" % (v, sum(ts) / len(ts), sum(ers) / len(ers)))
+        if parts:
+            print("%s n = %s, mean wall time: %s" % (stem, n, "; ".join(parts)))
     for v in variants:
         fits = [r for r in rows if r["variant"] == v]
         uncovered = [r for r in fits if r.get("covered", "True") != "True"]
