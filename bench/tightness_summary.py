@@ -19,6 +19,19 @@ def geomean(values):
     return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
 
 
+def ratios(cell, variant, keep):
+    """E_r and wall-time ratios of `variant` to the baseline over the cells (mesh, n, seed)
+    both ran and keep(mesh, n) accepts."""
+    er, t = [], []
+    for (m, n, seed, var), r in cell.items():
+        b = cell.get((m, n, seed, BASELINE))
+        if var != variant or b is None or not keep(m, n):
+            continue
+        er.append(float(r["er_sum"]) / float(b["er_sum"]))
+        t.append(max(float(r["wall_s"]), 0.01) / max(float(b["wall_s"]), 0.01))
+    return er, t
+
+
 def main(path):
     rows = list(csv.DictReader(open(path)))
     cell = {(r["mesh"], r["n"], r["seed"], r["variant"]): r for r in rows}
@@ -34,13 +47,7 @@ def main(path):
     for mesh in meshes:
         line = "%-28s" % mesh
         for v in others:
-            er, t = [], []
-            for (m, n, seed, var), r in cell.items():
-                b = cell.get((m, n, seed, BASELINE))
-                if m != mesh or var != v or b is None:
-                    continue
-                er.append(float(r["er_sum"]) / float(b["er_sum"]))
-                t.append(max(float(r["wall_s"]), 0.01) / max(float(b["wall_s"]), 0.01))
+            er, t = ratios(cell, v, lambda m, n: m == mesh)
             everything[v][0].extend(er)
             everything[v][1].extend(t)
             line += "%26s" % ("%.3f / %.3f" % (geomean(er), geomean(t)))
@@ -59,13 +66,7 @@ def main(path):
     for n in sorted({r["n"] for r in rows}, key=int):
         line = "%-28s" % ("n = " + n)
         for v in others:
-            er = [float(r["er_sum"]) / float(cell[(r["mesh"], n, r["seed"], BASELINE)]["er_sum"])
-                  for r in rows if r["variant"] == v and r["n"] == n
-                  and (r["mesh"], n, r["seed"], BASELINE) in cell]
-            t = [max(float(r["wall_s"]), 0.01) /
-                 max(float(cell[(r["mesh"], n, r["seed"], BASELINE)]["wall_s"]), 0.01)
-                 for r in rows if r["variant"] == v and r["n"] == n
-                 and (r["mesh"], n, r["seed"], BASELINE) in cell]
+            er, t = ratios(cell, v, lambda m, n_, n=n: n_ == n)
             line += "%26s" % ("%.3f / %.3f" % (geomean(er), geomean(t)))
         print(line)
     # Absolute wall times of the cells with a target of their own (mean over seeds).
