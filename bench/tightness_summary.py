@@ -73,12 +73,11 @@ def main(path):
     for stem, n in (("armadillo", "64"), ("dragon", "128")):
         parts = []
         for v in variants:
-            ts = [float(r["wall_s"]) for r in rows
-                  if stem in r["mesh"] and r["n"] == n and r["variant"] == v]
-            ers = [float(r["er_sum"]) for r in rows
-                   if stem in r["mesh"] and r["n"] == n and r["variant"] == v]
-            if ts:
-                parts.append("%s %.2f s (E_r %.3f)" % (v, sum(ts) / len(ts), sum(ers) / len(ers)))
+            runs = [r for r in rows if stem in r["mesh"] and r["n"] == n and r["variant"] == v]
+            if runs:
+                parts.append("%s %.2f s (E_r %.3f)" % (
+                    v, sum(float(r["wall_s"]) for r in runs) / len(runs),
+                    sum(float(r["er_sum"]) for r in runs) / len(runs)))
         if parts:
             print("%s n = %s, mean wall time: %s" % (stem, n, "; ".join(parts)))
     for v in variants:
