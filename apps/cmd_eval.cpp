@@ -27,7 +27,7 @@ struct EvalArgs {
   std::string spheres_path, link;
   std::vector<std::string> package_paths;  // MESH a URDF: where its package:// meshes are
   TableArgs eval;                          // the rows of evalOptionTable()
-  TableArgs robot;                         // the robot table's link_solid row
+  TableArgs robot;                         // the robot table's link_solid(_for) rows
   bool json = false;
 };
 
@@ -89,13 +89,18 @@ int runEval(EvalArgs a) {
                         a.mesh.path + ": no link '" + a.link + "' in " + robot->name});
     auto repair = repairOptions(a.mesh);
     if (!repair) return fail(repair.error());
-    // The link's solid as the robot command makes it: its --link-solid (the robot table's row).
+    // The link's solid as the robot command makes it: its --link-solid and --link-solid-for
+    // (the robot table's rows).
     RobotFitOptions ro;
     for (const auto& [name, text] : a.robot.given())
       if (Status st = setRobotFitOption(&ro, name, text); !st) return fail(st.error());
-    auto link_repair = linkRepairOptions(*repair, ro.link_solid);
-    if (!link_repair) return fail(link_repair.error());
-    m = linkSolid(*link, *link_repair, a.mesh.path + ": link '" + a.link + "'");
+    ro.repair = *repair;
+    if (Status st = checkRobotFitOptions(ro); !st) return fail(st.error());
+    if (Status st = checkLinkSolidFor(*robot, ro.link_solid_for, a.mesh.path); !st)
+      return fail(st.error());
+    m = linkSolid(*link,
+                  linkRepairOptions(*repair, linkSolidOf(ro.link_solid, ro.link_solid_for, a.link)),
+                  a.mesh.path + ": link '" + a.link + "'");
   } else {
     m = loadSolid(a.mesh);
   }

@@ -180,6 +180,7 @@ Status writeRobotOutput(const RobotArgs& a, const std::string& path, RobotOutput
       ViewLoadOptions vo;
       vo.repair = fo.repair;
       vo.link_solid = fo.link_solid;
+      vo.link_solid_for = fo.link_solid_for;
       auto scene = robotViewScene(robot, a.urdf, spheres, vo);
       if (!scene) return scene.error();
       auto page = viewStaticPage(*scene);

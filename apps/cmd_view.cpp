@@ -32,7 +32,7 @@ struct ViewArgs {
   MeshArgs mesh;  // MESH or ROBOT.urdf, and the repair options
   std::string spheres_path, host = "127.0.0.1", output, html;
   std::vector<std::string> package_paths;
-  TableArgs robot;  // the robot table's link_solid row
+  TableArgs robot;  // the robot table's link_solid and link_solid_for rows
   int port = 0;
   int level = -1;
   bool no_open = false;
@@ -107,6 +107,7 @@ int runView(const ViewArgs& a) {
   for (const auto& [name, text] : a.robot.given())
     if (Status st = setRobotFitOption(&ro, name, text); !st) return fail(st.error());
   lo.link_solid = ro.link_solid;
+  lo.link_solid_for = ro.link_solid_for;
   lo.package_paths = a.package_paths;
   lo.level = a.level;
   lo.output = a.output;

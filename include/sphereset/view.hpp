@@ -93,7 +93,8 @@ struct ViewScene {
 struct ViewLoadOptions {
   RepairOptions repair;                         // how a mesh (or a link's geometry) is made a solid
   LinkSolid link_solid = LinkSolid::kEnvelope;  // a link's solid, as the robot command fits it
-  std::vector<std::string> package_paths;       // a URDF's package:// folders
+  std::map<std::string, LinkSolid> link_solid_for;  // link -> its solid instead of link_solid
+  std::vector<std::string> package_paths;           // a URDF's package:// folders
   bool use_ros_package_path = true;
   int level = -1;      // a tree's level shown first; -1: the leaves
   std::string output;  // where saves go; empty: the sphere file itself

@@ -488,7 +488,8 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
               weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
               wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
               fill_openings: Union[float, str] = 0.0,
-              link_solid: str = "envelope") -> RobotFitResult:
+              link_solid: str = "envelope",
+              link_solid_for: Optional[Dict[str, str]] = None) -> RobotFitResult:
     """Fits collision spheres to every link of a URDF robot, like ``sphereset robot`` (the same
     library call, options and defaults, so the same spheres for the same seed).
 
@@ -500,7 +501,8 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
     fit preset ("fast", "default", "best"); the repair keywords are those of :func:`solid`.
     ``link_solid`` "envelope" (the default) fits each link's envelope, its walls with the hollow
     behind openings up to ``fill_openings`` (0 or "auto": the link's smallest extent) inside;
-    "walls" fits the walls alone.
+    "walls" fits the walls alone; ``link_solid_for`` {link: "envelope" or "walls"} instead for
+    those links.
     Raises InvalidArgumentError (a link name the robot lacks, a budget too small), UnreadableError
     (the URDF or a mesh), NotSolidError (a link's geometry cannot be made a solid). The call
     releases the GIL; Ctrl-C raises KeyboardInterrupt at the next progress report of a link fit
@@ -513,7 +515,8 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
     # The keywords of the library's robot table (robot_fit.hpp), checked there.
     options = dict(budget=budget, default_link_spheres=default_link_spheres,
                    link_spheres=dict(link_spheres or {}), padding=padding,
-                   link_padding=dict(link_padding or {}), link_solid=link_solid)
+                   link_padding=dict(link_padding or {}), link_solid=link_solid,
+                   link_solid_for=dict(link_solid_for or {}))
     d = _core._fit_robot(os.fspath(urdf), options, dict(quality=quality, seed=seed),
                          [os.fspath(p) for p in package_paths], bool(use_ros_package_path),
                          repair, weld_tolerance, bool(fill_cavities), float(wrap_alpha),

@@ -233,6 +233,24 @@ def test_fit_robot_same_spheres_as_cli(cli, tmp_path):
                      quality="fast")
 
 
+def test_fit_robot_link_solid_for():
+    # link2's envelope at the size given, the other links' walls.
+    urdf = DATA / "robot" / "three_link.urdf"
+    counts = {"base_link": 1, "link1": 1, "link2": 2}
+    r = ss.fit_robot(urdf, link_spheres=counts, package_paths=[DATA / "robot"], quality="fast",
+                     link_solid="walls", fill_openings=0.05, link_solid_for={"link2": "envelope"})
+    solids = {lf.link: (lf.solid, lf.fill_openings) for lf in r.links if lf.fitted}
+    assert solids == {"base_link": ("walls", 0.0), "link1": ("walls", 0.0),
+                      "link2": ("envelope", 0.05)}
+    assert r.covered
+    with pytest.raises(ss.InvalidArgumentError, match="link_solid_for names 'elbow'"):
+        ss.fit_robot(urdf, link_spheres=counts, package_paths=[DATA / "robot"], quality="fast",
+                     link_solid_for={"elbow": "walls"})
+    with pytest.raises(ss.InvalidArgumentError,
+                       match="link_solid_for 'link2=hollow': expected LINK=VALUE"):
+        ss.fit_robot(urdf, package_paths=[DATA / "robot"], link_solid_for={"link2": "hollow"})
+
+
 def test_fit_robot_honours_ctrl_c():
     # A signal while the links are fitted is handled at the next progress report of a fit on
     # the calling thread, inside fit_robot; the module is usable afterwards.

@@ -1,6 +1,7 @@
 // The whole-robot fit's options as one table (robot_fit.hpp): the command line's flags of
 // `sphereset robot` and the keywords of Python's fit_robot are made from it, and the library
 // parses and checks what users type through it. Per-link rows are keyed by the link's name.
+#include <algorithm>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -62,6 +63,8 @@ constexpr OptionSpec kRobotOptions[] = {
      "envelope: each link's walls with the hollow behind openings up to fill_openings (auto: "
      "the link's smallest extent, where that encloses a hollow) inside, what a planner treats "
      "as the link; walls: the walls alone"},
+    {"link_solid_for", "--link-solid-for", OptionType::kChoice, 0, 0, kLinkSolids, "none",
+     "LINK=envelope|walls: the link's solid instead of link_solid; repeatable", "LINK"},
 };
 
 }  // namespace
@@ -78,8 +81,9 @@ Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std:
   if (n == "link_spheres") o->link_spheres[v.key] = static_cast<int>(v.integer);
   if (n == "padding") o->padding = v.real;
   if (n == "link_padding") o->link_padding[v.key] = v.real;
-  if (n == "link_solid")
-    o->link_solid = v.choice == "walls" ? LinkSolid::kWalls : LinkSolid::kEnvelope;
+  const LinkSolid solid = v.choice == "walls" ? LinkSolid::kWalls : LinkSolid::kEnvelope;
+  if (n == "link_solid") o->link_solid = solid;
+  if (n == "link_solid_for") o->link_solid_for[v.key] = solid;
   return {};
 }
 
@@ -96,20 +100,51 @@ Status checkRobotFitOptions(const RobotFitOptions& o) {
   for (const auto& [link, padding] : o.link_padding)
     if (Status st = checkTableValue(kRobotOptions, "robot", "link_padding", padding, link); !st)
       return st;
-  if (auto ro = linkRepairOptions(o.repair, o.link_solid); !ro) return ro.error();
+  for (const auto& [link, solid] : o.link_solid_for)
+    if (auto v = parseTableOption(kRobotOptions, "robot", "link_solid_for",
+                                  link + "=" + kLinkSolids[solid == LinkSolid::kWalls ? 1 : 0]);
+        !v)
+      return v.error();
+  return checkLinkSolids(o.repair, o.link_solid, o.link_solid_for);
+}
+
+LinkSolid linkSolidOf(LinkSolid all, const std::map<std::string, LinkSolid>& per_link,
+                      const std::string& link) {
+  const auto it = per_link.find(link);
+  return it != per_link.end() ? it->second : all;
+}
+
+Status checkLinkSolidFor(const Robot& robot, const std::map<std::string, LinkSolid>& per_link,
+                         const std::string& name) {
+  for (const auto& [link, solid] : per_link)
+    if (std::none_of(robot.links.begin(), robot.links.end(),
+                     [&](const RobotLink& l) { return l.name == link; }))
+      return Error{ErrorCode::kInvalidArgument,
+                   name + ": link_solid_for names '" + link + "', not a link of " + robot.name};
   return {};
 }
 
-Expected<RepairOptions> linkRepairOptions(const RepairOptions& repair, LinkSolid solid) {
+RepairOptions linkRepairOptions(const RepairOptions& repair, LinkSolid solid) {
   RepairOptions out = repair;
-  if (solid == LinkSolid::kWalls && repair.fill_openings != 0.0)
-    return Error{ErrorCode::kInvalidArgument,
-                 "link_solid walls: fill_openings " +
-                     (repair.fill_openings == kAutomatic ? std::string("auto")
-                                                         : optionText(repair.fill_openings)) +
-                     " asks for an envelope; give link_solid envelope or no fill_openings"};
+  if (solid == LinkSolid::kWalls) out.fill_openings = 0.0;
   if (solid == LinkSolid::kEnvelope && repair.fill_openings == 0.0) out.fill_openings = kAutomatic;
   return out;
+}
+
+Status checkLinkSolids(const RepairOptions& repair, LinkSolid all,
+                       const std::map<std::string, LinkSolid>& per_link) {
+  const bool any_envelope = all == LinkSolid::kEnvelope ||
+                            std::any_of(per_link.begin(), per_link.end(), [](const auto& entry) {
+                              return entry.second == LinkSolid::kEnvelope;
+                            });
+  if (repair.fill_openings == 0.0 || any_envelope) return {};
+  return Error{
+      ErrorCode::kInvalidArgument,
+      "link_solid walls: fill_openings " +
+          (repair.fill_openings == kAutomatic ? std::string("auto")
+                                              : optionText(repair.fill_openings)) +
+          " asks for an envelope; give link_solid envelope, a link_solid_for LINK=envelope "
+          "or no fill_openings"};
 }
 
 }  // namespace sphereset

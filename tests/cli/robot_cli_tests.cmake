@@ -141,6 +141,28 @@ cli_test(robot_eval_urdf_needs_link 2 ARGS eval ${robot}/three_link.urdf ${work}
 cli_test(robot_eval_urdf_walls_openings 2 ARGS eval ${robot}/three_link.urdf ${work}/three.yml
          --link link2 --package-path ${robot} --link-solid walls --fill-openings 0.1
          STDERR "link_solid walls: fill_openings 0.1 asks for an envelope")
+# One link's solid decided apart (--link-solid-for): link2's envelope at the size given, the
+# others' walls; eval and robot make the same solid from the same flags. A name the robot lacks
+# is refused.
+if(SPHERESET_WITH_REPAIR)
+  cli_test(robot_link_solid_for 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+           --link-solid walls --fill-openings 0.05 --link-solid-for link2=envelope
+           --link-spheres base_link=1 --link-spheres link1=2 --link-spheres link2=2
+           --quality fast -o ${work}/solid_for.yml --json -q
+           STDOUT "\"fill_openings\":0.0,\"fitted\":true,\"from_visual\":false,\"link\":\"link1\".*\"fill_openings\":0.05,\"fitted\":true,\"from_visual\":false,\"link\":\"link2\"")
+  cli_test(robot_eval_link_solid_for 0 ARGS eval ${robot}/three_link.urdf ${work}/solid_for.yml
+           --link link2 --package-path ${robot} --link-solid walls --fill-openings 0.05
+           --link-solid-for link2=envelope --samples 1000 --segments 0 --shadow-resolution 0 --json
+           STDOUT "\"solid\":\"envelope\".*\"surface_covered\":true")
+  set_tests_properties(cli.robot_eval_link_solid_for PROPERTIES DEPENDS cli.robot_link_solid_for)
+endif()
+cli_test(robot_link_solid_for_unknown 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --link-solid-for elbow=walls -o ${work}/never_solid_for.yml
+         STDERR "link_solid_for names 'elbow', not a link of three_link"
+         FORBID ${work}/never_solid_for.yml)
+cli_test(robot_eval_link_solid_for_bad 2 ARGS eval ${robot}/three_link.urdf ${work}/never_read.yml
+         --link link2 --package-path ${robot} --link-solid-for link2=hollow
+         STDERR "link_solid_for 'link2=hollow': expected LINK=VALUE, VALUE envelope or walls")
 
 # The posed robot against obstacles. Spheres by hand: link2's sphere (0.45, 0, 0) r 0.05 is at
 # (0.45, 0, 0.5) at zero and at (0.45 cos q, 0, 0.5 - 0.45 sin q) at joint2 = q; the obstacle

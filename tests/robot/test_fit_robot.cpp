@@ -79,6 +79,43 @@ TEST(FitRobot, FixedSkippedAndPaddedLinks) {
   EXPECT_NE(bad.error().message.find("'elbow'"), std::string::npos);
 }
 
+TEST(FitRobot, LinkSolidForDecidesOneLink) {
+  const Robot robot = test::threeLinkRobot();
+  RobotFitOptions o = fastOptions();
+  o.link_spheres = {{"base_link", 1}, {"link1", 2}, {"link2", 2}};
+#ifdef SPHERESET_TEST_REPAIR
+  // Walls for all but link2, whose envelope closes openings up to the size given.
+  o.link_solid = LinkSolid::kWalls;
+  o.repair.fill_openings = 0.05;
+  o.link_solid_for = {{"link2", LinkSolid::kEnvelope}};
+  auto r = fitRobot(robot, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(find(*r, "link2")->repair.fill_openings, 0.05);
+  EXPECT_STREQ(solidName(find(*r, "link2")->repair), "envelope");
+  EXPECT_FALSE(find(*r, "link2")->repair.walls.triangles.empty());
+#else
+  // The envelope for every link but none can be made without the wrapping: the links given
+  // walls are fitted, the one left to the envelope fails.
+  o.link_solid_for = {{"base_link", LinkSolid::kWalls}, {"link1", LinkSolid::kWalls}};
+  auto envelope = fitRobot(robot, o);
+  ASSERT_FALSE(envelope.ok());
+  EXPECT_NE(envelope.error().message.find("link 'link2'"), std::string::npos);
+  o.link_solid_for["link2"] = LinkSolid::kWalls;
+  auto r = fitRobot(robot, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+#endif
+  for (const char* walls : {"base_link", "link1"}) {
+    EXPECT_EQ(find(*r, walls)->repair.fill_openings, 0.0) << walls;
+    EXPECT_STREQ(solidName(find(*r, walls)->repair), "walls") << walls;
+  }
+  for (const RobotLinkFit& l : r->links) EXPECT_TRUE(l.covered) << l.link;
+  o.link_solid_for = {{"elbow", LinkSolid::kEnvelope}};
+  auto bad = fitRobot(robot, o);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.error().message,
+            "three_link.urdf: link_solid_for names 'elbow', not a link of " + robot.name);
+}
+
 TEST(FitRobot, SameSpheresOnOneAndTwoThreads) {
   const Robot robot = test::threeLinkRobot();
   RobotFitOptions o = fastOptions();

@@ -90,6 +90,34 @@ TEST(OptionTables, KeyedRowsTakeKeyEqualsValue) {
                 "budget '10000000': expected an integer from 0 to 1000000");
 }
 
+TEST(OptionTables, LinkSolidForDecidesLinks) {
+  RobotFitOptions o;
+  ASSERT_TRUE(setRobotFitOption(&o, "link_solid", "walls").ok());
+  ASSERT_TRUE(setRobotFitOption(&o, "link_solid_for", "link2=envelope").ok());
+  ASSERT_TRUE(setRobotFitOption(&o, "link_solid_for", "link1=walls").ok());
+  EXPECT_EQ(linkSolidOf(o.link_solid, o.link_solid_for, "link2"), LinkSolid::kEnvelope);
+  EXPECT_EQ(linkSolidOf(o.link_solid, o.link_solid_for, "link1"), LinkSolid::kWalls);
+  EXPECT_EQ(linkSolidOf(o.link_solid, o.link_solid_for, "base_link"), LinkSolid::kWalls);
+  expectRefused(setRobotFitOption(&o, "link_solid_for", "link1=hollow"),
+                "link_solid_for 'link1=hollow': expected LINK=VALUE, VALUE envelope or walls");
+  expectRefused(setRobotFitOption(&o, "link_solid_for", "walls"),
+                "link_solid_for 'walls': expected LINK=VALUE, VALUE envelope or walls");
+  // A size applies to the envelopes: refused only when no link is one.
+  o.repair.fill_openings = 0.1;
+  EXPECT_TRUE(checkRobotFitOptions(o).ok());
+  EXPECT_EQ(linkRepairOptions(o.repair, LinkSolid::kWalls).fill_openings, 0.0);
+  EXPECT_EQ(linkRepairOptions(o.repair, LinkSolid::kEnvelope).fill_openings, 0.1);
+  o.link_solid_for.erase("link2");
+  expectRefused(checkRobotFitOptions(o),
+                "link_solid walls: fill_openings 0.1 asks for an envelope; give link_solid "
+                "envelope, a link_solid_for LINK=envelope or no fill_openings");
+  o.repair.fill_openings = 0.0;
+  EXPECT_EQ(linkRepairOptions(o.repair, LinkSolid::kEnvelope).fill_openings, kAutomatic);
+  o.link_solid_for[""] = LinkSolid::kWalls;  // set in code, not through the table
+  expectRefused(checkRobotFitOptions(o),
+                "link_solid_for '=walls': expected LINK=VALUE, VALUE envelope or walls");
+}
+
 TEST(OptionTables, AnimationRows) {
   AnimateOptions o;
   EXPECT_EQ(o.weighting, CentreWeighting::kAuto);

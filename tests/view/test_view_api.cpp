@@ -277,11 +277,7 @@ TEST_F(ViewTest, ARobotsSphereUrdfIsSavedAsAUrdf) {
                   threeLinkUrdf(), file,
                   {{"link1", {{Vec3(0, 0, 0.2), 0.25}}}, {"link2", {{Vec3(0.1, -0.2, 0.3), 0.4}}}})
                   .ok());
-  ViewLoadOptions o;
-  o.package_paths = {robotDir()};
-  o.use_ros_package_path = false;
-  o.link_solid = LinkSolid::kWalls;
-  auto loaded = loadViewScene(threeLinkUrdf(), file, o);
+  auto loaded = loadViewScene(threeLinkUrdf(), file, robotOptions());
   ASSERT_TRUE(loaded.ok()) << loaded.error().message;
   ViewScene& scene = *loaded;
   ASSERT_EQ(scene.solids.size(), 2u);
@@ -304,6 +300,29 @@ TEST_F(ViewTest, ARobotsSphereUrdfIsSavedAsAUrdf) {
       EXPECT_EQ(l.geometry[0].kind, LinkGeometry::Kind::kBox);
     }
   }
+}
+
+TEST_F(ViewTest, ARobotsLinksTakeTheirOwnSolids) {
+  const std::string file = robotSpheres();
+  ViewLoadOptions o = robotOptions();
+  // The envelope for all but the two links drawn, which take their walls: no wrapping needed.
+  o.link_solid = LinkSolid::kEnvelope;
+  o.link_solid_for = {{"link1", LinkSolid::kWalls}, {"link2", LinkSolid::kWalls}};
+  auto loaded = loadViewScene(threeLinkUrdf(), file, o);
+  ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+  ASSERT_EQ(loaded->solids.size(), 2u);
+  o.link_solid_for["link2"] = LinkSolid::kEnvelope;
+  auto envelope = loadViewScene(threeLinkUrdf(), file, o);
+  ASSERT_FALSE(envelope.ok());
+  EXPECT_NE(envelope.error().message.find("link 'link2'"), std::string::npos)
+      << envelope.error().message;
+  o.link_solid_for = {{"elbow", LinkSolid::kWalls}};
+  auto bad = loadViewScene(threeLinkUrdf(), file, o);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_NE(bad.error().message.find("link_solid_for names 'elbow', not a link of"),
+            std::string::npos)
+      << bad.error().message;
 }
 
 TEST_F(ViewTest, ARepairedMeshShowsAndCertifiesItsOriginalTriangles) {

@@ -70,17 +70,28 @@ class ViewTest : public TempDirTest {
     return scene.ok() ? std::move(scene).value() : ViewScene{};
   }
 
-  // The three-link robot with spheres for link1 and link2 (in cuRobo's YAML).
-  ViewScene robotScene() {
+  // Spheres for the three-link robot's link1 and link2 (in cuRobo's YAML); the file's path.
+  std::string robotSpheres() {
     const std::string file = path("robot.yml");
     EXPECT_TRUE(writeLinkSpheres(file, {{"link1", {{Vec3(0, 0, 0.2), 0.25}}},
                                         {"link2", {{Vec3(0.1, -0.2, 0.3), 0.4}}}})
                     .ok());
+    return file;
+  }
+
+  // How the tests load the robot: its package folder, each link's walls (the envelope needs
+  // the wrapping, GPL repair).
+  static ViewLoadOptions robotOptions() {
     ViewLoadOptions o;
     o.package_paths = {robotDir()};
     o.use_ros_package_path = false;
-    o.link_solid = LinkSolid::kWalls;  // the envelope needs the wrapping (GPL repair)
-    auto scene = loadViewScene(threeLinkUrdf(), file, o);
+    o.link_solid = LinkSolid::kWalls;
+    return o;
+  }
+
+  // The three-link robot with robotSpheres().
+  ViewScene robotScene() {
+    auto scene = loadViewScene(threeLinkUrdf(), robotSpheres(), robotOptions());
     EXPECT_TRUE(scene.ok()) << scene.error().message;
     return scene.ok() ? std::move(scene).value() : ViewScene{};
   }
