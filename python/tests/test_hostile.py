@@ -61,6 +61,8 @@ def python_value(name, text):
     row = ROWS[name]
     if row["key"] is not None:
         key, value = text.rsplit("=", 1)
+        if row["type"] == "choice":
+            return {key: value}
         return {key: float(value) if row["type"] == "real" else int(value)}
     if row["type"] == "choice":
         return text

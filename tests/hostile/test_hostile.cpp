@@ -140,6 +140,10 @@ Status robotCase(const std::vector<std::string>& in, const nlohmann::json& opts)
     const auto [link, padding] = keyed(opts.at("link_padding"));
     fo.link_padding[link] = std::stod(padding);
   }
+  if (opts.contains("link_solid_for")) {
+    const auto [link, solid] = keyed(opts.at("link_solid_for"));
+    fo.link_solid_for[link] = solid == "walls" ? LinkSolid::kWalls : LinkSolid::kEnvelope;
+  }
   return statusOf(fitRobot(*robot, fo));
 }
 
