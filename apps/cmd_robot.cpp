@@ -130,7 +130,7 @@ void printSummary(const RobotFitResult& r, const CollisionMatrix& m, double seco
   std::fprintf(stderr,
                "E_r is against each link's fitted solid: its envelope when openings is above 0 "
                "(openings narrower than that closed, the hollow behind them inside), else its "
-               "walls\n");
+               "walls; --link-solid-for LINK=walls|envelope decides a link\n");
   std::fprintf(stderr,
                "self-collision: %lld adjacent, %lld default, %lld always, %lld never, %lld of %lld "
                "pairs left to check (%d configurations on the %s, %.2f s)\n",
