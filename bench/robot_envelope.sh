@@ -9,6 +9,8 @@
 # robot command's wall time. Into bench/results/robot_envelope.csv, with a summary on stdout.
 # BASELINE=PATH adds a third fit, "today": the robot command of another build (an earlier
 # commit's, whose only link solid is the walls), run side by side in the same session.
+# WALLS_LINKS="LINK ..." adds a fit "chosen": the default with --link-solid-for LINK=walls for
+# those links, which every fit is then measured against as walls.
 #   bash bench/robot_envelope.sh         BUDGETS="60" SEEDS="1" bash bench/robot_envelope.sh
 #   git worktree add /tmp/base COMMIT && cmake -S /tmp/base -B /tmp/base/build && \
 #     cmake --build /tmp/base/build --target sphereset_cli && \
@@ -29,17 +31,23 @@ out=${OUT:-bench/results/robot_envelope.csv}
 echo "budget,seed,fit,wall_s,link,spheres,covered,envelope_volume,walls_volume,er_envelope,er_walls,outside_envelope,outside_walls" >"$out.tmp"
 for budget in ${BUDGETS:-30 60}; do
   for seed in ${SEEDS:-1 2 3}; do
-    for fit in ${BASELINE:+today} walls envelope; do
+    for fit in ${BASELINE:+today} walls envelope ${WALLS_LINKS:+chosen}; do
       run=$tmp/${fit}_${budget}_$seed
       cli=(build/apps/sphereset) solid=(--link-solid "$fit")
       [ "$fit" = today ] && cli=("$BASELINE") solid=()
+      if [ "$fit" = chosen ]; then
+        solid=()
+        for l in $WALLS_LINKS; do solid+=(--link-solid-for "$l=walls"); done
+      fi
       start=$(date +%s.%N)
       "${cli[@]}" robot "$urdf" --package-path "$root" --budget "$budget" --seed "$seed" \
         "${solid[@]}" -o "$run.yml" --json -q >"$run.json"
       wall=$(echo "$(date +%s.%N) - $start" | bc)
       for i in "${!links[@]}"; do
+        openings=(--fill-openings auto)
+        for l in ${WALLS_LINKS:-}; do [ "$l" = "${links[$i]}" ] && openings=(); done
         build/apps/sphereset eval "$meshes/${files[$i]}.STL" "$run.yml" --link "${links[$i]}" \
-          --fill-openings auto --json --samples 0 --segments 0 --shadow-resolution 0 \
+          "${openings[@]}" --json --samples 0 --segments 0 --shadow-resolution 0 \
           >"$run.${links[$i]}.json"
       done
       python3 - "$budget" "$seed" "$fit" "$wall" "$run" "${links[@]}" >>"$out.tmp" <<'PY'
