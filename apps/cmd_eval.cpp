@@ -94,12 +94,10 @@ int runEval(EvalArgs a) {
     RobotFitOptions ro;
     for (const auto& [name, text] : a.robot.given())
       if (Status st = setRobotFitOption(&ro, name, text); !st) return fail(st.error());
-    ro.repair = *repair;
-    if (Status st = checkRobotFitOptions(ro); !st) return fail(st.error());
-    if (Status st = checkLinkSolidFor(*robot, ro.link_solid_for, a.mesh.path); !st)
+    if (Status st = checkLinkSolids(*robot, *repair, ro.link_solid, ro.link_solid_for, a.mesh.path);
+        !st)
       return fail(st.error());
-    m = linkSolid(*link,
-                  linkRepairOptions(*repair, linkSolidOf(ro.link_solid, ro.link_solid_for, a.link)),
+    m = linkSolid(*link, linkRepairOptions(*repair, ro.link_solid, ro.link_solid_for, a.link),
                   a.mesh.path + ": link '" + a.link + "'");
   } else {
     m = loadSolid(a.mesh);

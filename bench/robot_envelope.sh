@@ -66,6 +66,7 @@ PY
   done
 done
 mv "$out.tmp" "$out"
+[ -z "${WALLS_LINKS:-}" ] || echo "$WALLS_LINKS: measured against the walls in every fit"
 python3 - "$out" <<'PY'
 import csv, statistics, sys
 rows = list(csv.DictReader(open(sys.argv[1])))

@@ -72,6 +72,9 @@ struct RepairOptions {
   // and the walls stay the solid (RepairResult::fill_openings 0). The original triangles and the
   // walls stay in the result, for the certificate and for E_r against the walls.
   double fill_openings = 0.0;
+  // With fill_openings kAutomatic: keep the envelope whatever its volume (the robot's
+  // link_solid_for LINK=envelope, a user's choice for one link, overrules the hollow rule).
+  bool keep_envelope = false;
   // The union and the wrapping; when empty, meshes that need them are refused.
   SolidOperations operations;
 };

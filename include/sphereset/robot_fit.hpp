@@ -89,8 +89,9 @@ struct RobotFitOptions {
   // A planner treats a casing's hollow as part of the link; fitted as walls, the spheres avoid
   // it at a cost of outside volume that buys nothing.
   LinkSolid link_solid = LinkSolid::kEnvelope;
-  // link -> its solid instead of link_solid: the envelope's rule can mistake concave corners
-  // for a hollow, or miss one (docs/algorithm.md, "From a mesh to a solid").
+  // link -> its solid instead of link_solid, for a link the hollow rule gets wrong (it can take
+  // concave corners for a hollow; docs/algorithm.md, "From a mesh to a solid"): kWalls, or
+  // kEnvelope kept whatever its volume (RepairOptions::keep_envelope).
   std::map<std::string, LinkSolid> link_solid_for;
   int default_link_spheres = 8;
   std::string name;  // prefixes messages (e.g. the URDF's path)
@@ -102,27 +103,25 @@ struct RobotFitOptions {
 
 // RobotFitOptions' numbers as one table (options.hpp): budget, default_link_spheres,
 // link_spheres (keyed LINK=N), padding, link_padding (keyed LINK=R), link_solid and
-// link_solid_for (keyed LINK=envelope|walls). The command
-// line's flags of `sphereset robot` and Python's fit_robot keywords are made from it.
+// link_solid_for (keyed LINK=envelope|walls). The command line's flags of `sphereset robot` and
+// Python's fit_robot keywords are made from it.
 // setRobotFitOption sets a row from the text a user typed (a keyed row adds or replaces its link's
 // entry); checkRobotFitOptions checks a struct against the rows with the same messages. (quality
 // and seed are the fit table's rows, fit.hpp; the repair's are repair.hpp's.)
 std::span<const OptionSpec> robotFitOptionTable();
-// The repair options a link's geometry is made a solid with under `solid`: kEnvelope with
-// repair.fill_openings 0 gives kAutomatic; kWalls sets fill_openings to 0. fitRobot, the view
-// and `sphereset eval ROBOT.urdf --link` use it, so a link is measured as the robot command
-// fits it.
-RepairOptions linkRepairOptions(const RepairOptions& repair, LinkSolid solid);
-// kInvalidArgument when repair.fill_openings is not 0 and no link is an envelope (`all` is
-// kWalls and no entry of `per_link` is kEnvelope): the size would apply to nothing.
-Status checkLinkSolids(const RepairOptions& repair, LinkSolid all,
-                       const std::map<std::string, LinkSolid>& per_link);
-// The solid of `link`: its entry in `per_link` (RobotFitOptions::link_solid_for), else `all`.
-LinkSolid linkSolidOf(LinkSolid all, const std::map<std::string, LinkSolid>& per_link,
-                      const std::string& link);
-// kInvalidArgument, prefixed by `name`, when `per_link` names a link `robot` lacks.
-Status checkLinkSolidFor(const Robot& robot, const std::map<std::string, LinkSolid>& per_link,
-                         const std::string& name);
+// The repair options `link`'s geometry is made a solid with: under its entry in `per_link`
+// (RobotFitOptions::link_solid_for), else under `all` (link_solid). Walls: fill_openings 0. An
+// envelope: repair.fill_openings, 0 meaning kAutomatic; one that `per_link` chose is kept even
+// where it encloses no hollow (keep_envelope). fitRobot, the view and `sphereset eval
+// ROBOT.urdf --link` use it, so a link is measured as the robot command fits it.
+RepairOptions linkRepairOptions(const RepairOptions& repair, LinkSolid all,
+                                const std::map<std::string, LinkSolid>& per_link,
+                                const std::string& link);
+// Checks the link solids for `robot` (kInvalidArgument, prefixed by `name`): `per_link` names
+// links of the robot only, and a fill_openings other than 0 has a link to apply to (some link's
+// solid is an envelope).
+Status checkLinkSolids(const Robot& robot, const RepairOptions& repair, LinkSolid all,
+                       const std::map<std::string, LinkSolid>& per_link, const std::string& name);
 Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std::string& text);
 Status checkRobotFitOptions(const RobotFitOptions& o);
 

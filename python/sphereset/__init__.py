@@ -502,7 +502,7 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
     ``link_solid`` "envelope" (the default) fits each link's envelope, its walls with the hollow
     behind openings up to ``fill_openings`` (0 or "auto": the link's smallest extent) inside;
     "walls" fits the walls alone; ``link_solid_for`` {link: "envelope" or "walls"} instead for
-    those links.
+    those links (an envelope chosen so is kept even where it encloses no hollow).
     Raises InvalidArgumentError (a link name the robot lacks, a budget too small), UnreadableError
     (the URDF or a mesh), NotSolidError (a link's geometry cannot be made a solid). The call
     releases the GIL; Ctrl-C raises KeyboardInterrupt at the next progress report of a link fit

@@ -70,7 +70,7 @@ Status closeOpenings(const RepairOptions& o, const std::string& name, RepairResu
   if (!w) return Error{w.error().code, name + ": " + w.error().message};
   const double walls_volume = signedVolume(walls);
   const double ratio = signedVolume(*w) / walls_volume;
-  if (automatic && ratio < kHollowVolumeRatio) {
+  if (automatic && !o.keep_envelope && ratio < kHollowVolumeRatio) {
     res->notes.push_back("no hollow behind openings narrower than " + numberFormat("%.3g", size) +
                          " (the bounding box's smallest extent): their envelope would be " +
                          numberFormat("%.3g", ratio) + " times the walls' volume, below " +

@@ -107,8 +107,8 @@ Expected<std::vector<Job>> prepareLinks(const RobotFitOptions& o, const Robot& r
     if (auto it = o.link_spheres.find(link.name); it != o.link_spheres.end() && it->second == 0)
       return;  // skipped: not worth repairing
     // The options were checked by fitRobot (checkRobotFitOptions).
-    const LinkSolid kind = linkSolidOf(o.link_solid, o.link_solid_for, link.name);
-    auto solid = linkSolid(link, linkRepairOptions(o.repair, kind), name);
+    auto solid = linkSolid(
+        link, linkRepairOptions(o.repair, o.link_solid, o.link_solid_for, link.name), name);
     if (!solid) {
       status[i] = solid.error();
       return;
@@ -285,7 +285,8 @@ Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) 
     if (!isLink(link))
       return Error{ErrorCode::kInvalidArgument,
                    o.name + ": link_padding names '" + link + "', not a link of " + robot.name};
-  if (Status st = checkLinkSolidFor(robot, o.link_solid_for, o.name); !st) return st.error();
+  if (Status st = checkLinkSolids(robot, o.repair, o.link_solid, o.link_solid_for, o.name); !st)
+    return st.error();
   auto jobs = prepareLinks(o, robot);
   if (!jobs) return jobs.error();
   for (Job& j : *jobs) {

@@ -64,7 +64,9 @@ constexpr OptionSpec kRobotOptions[] = {
      "the link's smallest extent, where that encloses a hollow) inside, what a planner treats "
      "as the link; walls: the walls alone"},
     {"link_solid_for", "--link-solid-for", OptionType::kChoice, 0, 0, kLinkSolids, "none",
-     "LINK=envelope|walls: the link's solid instead of link_solid; repeatable", "LINK"},
+     "LINK=envelope|walls: the link's solid instead of link_solid (an envelope chosen so is "
+     "kept even where it encloses no hollow); repeatable",
+     "LINK"},
 };
 
 }  // namespace
@@ -87,6 +89,24 @@ Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std:
   return {};
 }
 
+namespace {
+
+// The refusal of a fill_openings that no link would use.
+Error noEnvelopeError(const RepairOptions& repair) {
+  return Error{ErrorCode::kInvalidArgument,
+               "every link's solid is its walls: fill_openings " +
+                   (repair.fill_openings == kAutomatic ? std::string("auto")
+                                                       : optionText(repair.fill_openings)) +
+                   " asks for an envelope; give link_solid envelope, a link_solid_for "
+                   "LINK=envelope or no fill_openings"};
+}
+
+bool isEnvelope(const std::pair<const std::string, LinkSolid>& entry) {
+  return entry.second == LinkSolid::kEnvelope;
+}
+
+}  // namespace
+
 Status checkRobotFitOptions(const RobotFitOptions& o) {
   // Each number as its text, through the same parser as every front door's.
   const std::pair<const char*, double> values[] = {{"budget", o.budget},
@@ -105,46 +125,46 @@ Status checkRobotFitOptions(const RobotFitOptions& o) {
                                   link + "=" + kLinkSolids[solid == LinkSolid::kWalls ? 1 : 0]);
         !v)
       return v.error();
-  return checkLinkSolids(o.repair, o.link_solid, o.link_solid_for);
-}
-
-LinkSolid linkSolidOf(LinkSolid all, const std::map<std::string, LinkSolid>& per_link,
-                      const std::string& link) {
-  const auto it = per_link.find(link);
-  return it != per_link.end() ? it->second : all;
-}
-
-Status checkLinkSolidFor(const Robot& robot, const std::map<std::string, LinkSolid>& per_link,
-                         const std::string& name) {
-  for (const auto& [link, solid] : per_link)
-    if (std::none_of(robot.links.begin(), robot.links.end(),
-                     [&](const RobotLink& l) { return l.name == link; }))
-      return Error{ErrorCode::kInvalidArgument,
-                   name + ": link_solid_for names '" + link + "', not a link of " + robot.name};
+  // Without the robot: walls for every link unless link_solid_for names an envelope.
+  if (o.repair.fill_openings != 0.0 && o.link_solid == LinkSolid::kWalls &&
+      std::none_of(o.link_solid_for.begin(), o.link_solid_for.end(), isEnvelope))
+    return noEnvelopeError(o.repair);
   return {};
 }
 
-RepairOptions linkRepairOptions(const RepairOptions& repair, LinkSolid solid) {
+RepairOptions linkRepairOptions(const RepairOptions& repair, LinkSolid all,
+                                const std::map<std::string, LinkSolid>& per_link,
+                                const std::string& link) {
   RepairOptions out = repair;
-  if (solid == LinkSolid::kWalls) out.fill_openings = 0.0;
-  if (solid == LinkSolid::kEnvelope && repair.fill_openings == 0.0) out.fill_openings = kAutomatic;
+  const auto it = per_link.find(link);
+  if ((it != per_link.end() ? it->second : all) == LinkSolid::kWalls) {
+    out.fill_openings = 0.0;
+    return out;
+  }
+  if (out.fill_openings == 0.0) out.fill_openings = kAutomatic;
+  out.keep_envelope = it != per_link.end();
   return out;
 }
 
-Status checkLinkSolids(const RepairOptions& repair, LinkSolid all,
-                       const std::map<std::string, LinkSolid>& per_link) {
-  const bool any_envelope = all == LinkSolid::kEnvelope ||
-                            std::any_of(per_link.begin(), per_link.end(), [](const auto& entry) {
-                              return entry.second == LinkSolid::kEnvelope;
-                            });
-  if (repair.fill_openings == 0.0 || any_envelope) return {};
-  return Error{
-      ErrorCode::kInvalidArgument,
-      "link_solid walls: fill_openings " +
-          (repair.fill_openings == kAutomatic ? std::string("auto")
-                                              : optionText(repair.fill_openings)) +
-          " asks for an envelope; give link_solid envelope, a link_solid_for LINK=envelope "
-          "or no fill_openings"};
+Status checkLinkSolids(const Robot& robot, const RepairOptions& repair, LinkSolid all,
+                       const std::map<std::string, LinkSolid>& per_link, const std::string& name) {
+  auto isLink = [&](const std::string& link) {
+    return std::any_of(robot.links.begin(), robot.links.end(),
+                       [&](const RobotLink& l) { return l.name == link; });
+  };
+  for (const auto& [link, solid] : per_link)
+    if (!isLink(link))
+      return Error{ErrorCode::kInvalidArgument,
+                   name + ": link_solid_for names '" + link + "', not a link of " + robot.name};
+  const bool any_envelope = std::any_of(robot.links.begin(), robot.links.end(), [&](auto& l) {
+    return linkRepairOptions(repair, all, per_link, l.name).fill_openings != 0.0;
+  });
+  if (repair.fill_openings != 0.0 && !any_envelope) {
+    Error e = noEnvelopeError(repair);
+    e.message = name + ": " + e.message;
+    return e;
+  }
+  return {};
 }
 
 }  // namespace sphereset

@@ -134,8 +134,8 @@ Expected<ViewScene> robotSceneOf(Robot robot, const std::string& urdf,
   if (o.level >= 0)
     return Error{ErrorCode::kInvalidArgument,
                  source + ": a robot's sets have no levels (--level is for trees)"};
-  if (Status st = checkLinkSolids(o.repair, o.link_solid, o.link_solid_for); !st) return st.error();
-  if (Status st = checkLinkSolidFor(robot, o.link_solid_for, urdf); !st) return st.error();
+  if (Status st = checkLinkSolids(robot, o.repair, o.link_solid, o.link_solid_for, urdf); !st)
+    return st.error();
   for (const LinkSpheres& ls : links) {
     const auto it = std::find_if(robot.links.begin(), robot.links.end(),
                                  [&](const RobotLink& l) { return l.name == ls.link; });
@@ -147,9 +147,9 @@ Expected<ViewScene> robotSceneOf(Robot robot, const std::string& urdf,
       return g.kind != LinkGeometry::Kind::kSphere;
     });
     if (!has_solid || ls.spheres.empty()) continue;
-    const RepairOptions link_repair =
-        linkRepairOptions(o.repair, linkSolidOf(o.link_solid, o.link_solid_for, ls.link));
-    auto solid = linkSolid(*it, link_repair, urdf + ": link '" + ls.link + "'");
+    auto solid =
+        linkSolid(*it, linkRepairOptions(o.repair, o.link_solid, o.link_solid_for, ls.link),
+                  urdf + ": link '" + ls.link + "'");
     if (!solid) return solid.error();
     scene.solids.push_back(
         makeViewSolid(ls.link, ls.link, std::move(solid).value(), {ls.spheres}, 0));

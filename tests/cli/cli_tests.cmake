@@ -204,7 +204,7 @@ cli_test(fit_bad_openings 2 ARGS fit ${data}/open_box.off -n 4 -o ${work}/never_
          FORBID ${work}/never_env.txt)
 cli_test(robot_walls_with_openings 2 ARGS robot ${data}/robot/three_link.urdf --link-solid walls
          --fill-openings 0.1 -o ${work}/never_walls.yml
-         STDERR "link_solid walls: fill_openings 0.1 asks for an envelope" FORBID ${work}/never_walls.yml)
+         STDERR "every link's solid is its walls: fill_openings 0.1 asks for an envelope" FORBID ${work}/never_walls.yml)
 if(SPHERESET_WITH_REPAIR)
   cli_test(fit_sheet 0 ARGS fit ${work}/sheet.off -n 4 -o ${work}/sheet.txt --quality fast --json -q
            FILE ${work}/sheet.txt SPHERES 4 STDOUT "\"original_covered\":true.*\"kind\":\"wrapped\"")

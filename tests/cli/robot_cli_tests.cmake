@@ -140,7 +140,7 @@ cli_test(robot_eval_urdf_needs_link 2 ARGS eval ${robot}/three_link.urdf ${work}
          --package-path ${robot} STDERR "three_link.urdf: a URDF needs --link LINK")
 cli_test(robot_eval_urdf_walls_openings 2 ARGS eval ${robot}/three_link.urdf ${work}/three.yml
          --link link2 --package-path ${robot} --link-solid walls --fill-openings 0.1
-         STDERR "link_solid walls: fill_openings 0.1 asks for an envelope")
+         STDERR "three_link.urdf: every link's solid is its walls: fill_openings 0.1 asks for an envelope")
 # One link's solid decided apart (--link-solid-for): link2's envelope at the size given, the
 # others' walls; eval and robot make the same solid from the same flags. A name the robot lacks
 # is refused.

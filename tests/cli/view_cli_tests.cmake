@@ -35,6 +35,14 @@ add_test(NAME cli.robot_html
          COMMAND ${CMAKE_COMMAND} -DCLI=${cli} -DOUT=${work}/robot_page.html -DSOLIDS=3
            "-DARGS=robot|${data}/robot/three_link.urdf|--package-path|${data}/robot|--budget|8|--quality|fast|-q|-o|${work}/robot_page.yml|-o|${work}/robot_page.json|-o|${work}/robot_page.html"
            -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)
+# The page's link solids follow --link-solid-for as the fit's do: with every other link's walls
+# and a size given, a page that ignored it would have no envelope for the size and be refused.
+if(SPHERESET_WITH_REPAIR)
+  add_test(NAME cli.robot_html_link_solid_for
+           COMMAND ${CMAKE_COMMAND} -DCLI=${cli} -DOUT=${work}/robot_solid_for.html -DSOLIDS=3
+             "-DARGS=robot|${data}/robot/three_link.urdf|--package-path|${data}/robot|--link-solid|walls|--fill-openings|0.05|--link-solid-for|link2=envelope|--quality|fast|-q|-o|${work}/robot_solid_for.html"
+             -P ${CMAKE_CURRENT_LIST_DIR}/view_html.cmake)
+endif()
 file(COPY ${link} DESTINATION ${work}/batch_pages)
 add_test(NAME cli.batch_html
          COMMAND ${CMAKE_COMMAND} -DCLI=${cli} -DOUT=${work}/batch_pages_out/fr3_link1_collision.html

@@ -93,9 +93,23 @@ TEST(FitRobot, LinkSolidForDecidesOneLink) {
   EXPECT_EQ(find(*r, "link2")->repair.fill_openings, 0.05);
   EXPECT_STREQ(solidName(find(*r, "link2")->repair), "envelope");
   EXPECT_FALSE(find(*r, "link2")->repair.walls.triangles.empty());
+  // At the automatic size link2's envelope encloses no hollow, so the rule keeps its walls,
+  // unless the envelope is chosen for it.
+  RobotFitOptions automatic = fastOptions();
+  automatic.link_spheres = o.link_spheres;
+  auto by_rule = fitRobot(robot, automatic);
+  ASSERT_TRUE(by_rule.ok()) << by_rule.error().message;
+  EXPECT_STREQ(solidName(find(*by_rule, "link2")->repair), "walls");
+  automatic.link_solid_for = {{"link2", LinkSolid::kEnvelope}};
+  auto chosen = fitRobot(robot, automatic);
+  ASSERT_TRUE(chosen.ok()) << chosen.error().message;
+  EXPECT_STREQ(solidName(find(*chosen, "link2")->repair), "envelope");
+  EXPECT_GT(find(*chosen, "link2")->repair.fill_openings, 0.0);
+  EXPECT_TRUE(find(*chosen, "link2")->covered);
 #else
   // The envelope for every link but none can be made without the wrapping: the links given
   // walls are fitted, the one left to the envelope fails.
+  o.link_solid = LinkSolid::kEnvelope;
   o.link_solid_for = {{"base_link", LinkSolid::kWalls}, {"link1", LinkSolid::kWalls}};
   auto envelope = fitRobot(robot, o);
   ASSERT_FALSE(envelope.ok());

@@ -95,9 +95,14 @@ TEST(OptionTables, LinkSolidForDecidesLinks) {
   ASSERT_TRUE(setRobotFitOption(&o, "link_solid", "walls").ok());
   ASSERT_TRUE(setRobotFitOption(&o, "link_solid_for", "link2=envelope").ok());
   ASSERT_TRUE(setRobotFitOption(&o, "link_solid_for", "link1=walls").ok());
-  EXPECT_EQ(linkSolidOf(o.link_solid, o.link_solid_for, "link2"), LinkSolid::kEnvelope);
-  EXPECT_EQ(linkSolidOf(o.link_solid, o.link_solid_for, "link1"), LinkSolid::kWalls);
-  EXPECT_EQ(linkSolidOf(o.link_solid, o.link_solid_for, "base_link"), LinkSolid::kWalls);
+  auto repairOf = [&](const char* link) {
+    return linkRepairOptions(o.repair, o.link_solid, o.link_solid_for, link);
+  };
+  // link2's envelope, chosen for it, is kept whatever its volume; the others are walls.
+  EXPECT_EQ(repairOf("link2").fill_openings, kAutomatic);
+  EXPECT_TRUE(repairOf("link2").keep_envelope);
+  EXPECT_EQ(repairOf("link1").fill_openings, 0.0);
+  EXPECT_EQ(repairOf("base_link").fill_openings, 0.0);
   expectRefused(setRobotFitOption(&o, "link_solid_for", "link1=hollow"),
                 "link_solid_for 'link1=hollow': expected LINK=VALUE, VALUE envelope or walls");
   expectRefused(setRobotFitOption(&o, "link_solid_for", "walls"),
@@ -105,14 +110,17 @@ TEST(OptionTables, LinkSolidForDecidesLinks) {
   // A size applies to the envelopes: refused only when no link is one.
   o.repair.fill_openings = 0.1;
   EXPECT_TRUE(checkRobotFitOptions(o).ok());
-  EXPECT_EQ(linkRepairOptions(o.repair, LinkSolid::kWalls).fill_openings, 0.0);
-  EXPECT_EQ(linkRepairOptions(o.repair, LinkSolid::kEnvelope).fill_openings, 0.1);
+  EXPECT_EQ(repairOf("link2").fill_openings, 0.1);
+  EXPECT_EQ(repairOf("link1").fill_openings, 0.0);
   o.link_solid_for.erase("link2");
   expectRefused(checkRobotFitOptions(o),
-                "link_solid walls: fill_openings 0.1 asks for an envelope; give link_solid "
-                "envelope, a link_solid_for LINK=envelope or no fill_openings");
+                "every link's solid is its walls: fill_openings 0.1 asks for an envelope; give "
+                "link_solid envelope, a link_solid_for LINK=envelope or no fill_openings");
+  // The envelope for all links but not chosen for any: the hollow rule decides.
+  o.link_solid = LinkSolid::kEnvelope;
   o.repair.fill_openings = 0.0;
-  EXPECT_EQ(linkRepairOptions(o.repair, LinkSolid::kEnvelope).fill_openings, kAutomatic);
+  EXPECT_EQ(repairOf("base_link").fill_openings, kAutomatic);
+  EXPECT_FALSE(repairOf("base_link").keep_envelope);
   o.link_solid_for[""] = LinkSolid::kWalls;  // set in code, not through the table
   expectRefused(checkRobotFitOptions(o),
                 "link_solid_for '=walls': expected LINK=VALUE, VALUE envelope or walls");

@@ -302,29 +302,6 @@ TEST_F(ViewTest, ARobotsSphereUrdfIsSavedAsAUrdf) {
   }
 }
 
-TEST_F(ViewTest, ARobotsLinksTakeTheirOwnSolids) {
-  const std::string file = robotSpheres();
-  ViewLoadOptions o = robotOptions();
-  // The envelope for all but the two links drawn, which take their walls: no wrapping needed.
-  o.link_solid = LinkSolid::kEnvelope;
-  o.link_solid_for = {{"link1", LinkSolid::kWalls}, {"link2", LinkSolid::kWalls}};
-  auto loaded = loadViewScene(threeLinkUrdf(), file, o);
-  ASSERT_TRUE(loaded.ok()) << loaded.error().message;
-  ASSERT_EQ(loaded->solids.size(), 2u);
-  o.link_solid_for["link2"] = LinkSolid::kEnvelope;
-  auto envelope = loadViewScene(threeLinkUrdf(), file, o);
-  ASSERT_FALSE(envelope.ok());
-  EXPECT_NE(envelope.error().message.find("link 'link2'"), std::string::npos)
-      << envelope.error().message;
-  o.link_solid_for = {{"elbow", LinkSolid::kWalls}};
-  auto bad = loadViewScene(threeLinkUrdf(), file, o);
-  ASSERT_FALSE(bad.ok());
-  EXPECT_EQ(bad.error().code, ErrorCode::kInvalidArgument);
-  EXPECT_NE(bad.error().message.find("link_solid_for names 'elbow', not a link of"),
-            std::string::npos)
-      << bad.error().message;
-}
-
 TEST_F(ViewTest, ARepairedMeshShowsAndCertifiesItsOriginalTriangles) {
   // The unit cube with one triangle flipped: reoriented by the repair.
   const std::string mesh = write(
