@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "robot/link_keys.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/robot_fit.hpp"
 #include "sphereset/solid_index.hpp"
@@ -272,19 +273,11 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
 
 Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
-  auto isLink = [&](const std::string& name) {
-    return std::any_of(robot.links.begin(), robot.links.end(),
-                       [&](const RobotLink& l) { return l.name == name; });
-  };
   if (Status st = checkRobotFitOptions(o); !st) return st.error();
-  for (const auto& [link, count] : o.link_spheres)
-    if (!isLink(link))
-      return Error{ErrorCode::kInvalidArgument,
-                   o.name + ": link_spheres names '" + link + "', not a link of " + robot.name};
-  for (const auto& [link, padding] : o.link_padding)
-    if (!isLink(link))
-      return Error{ErrorCode::kInvalidArgument,
-                   o.name + ": link_padding names '" + link + "', not a link of " + robot.name};
+  if (Status st = detail::checkLinkKeys(robot, o.link_spheres, "link_spheres", o.name); !st)
+    return st.error();
+  if (Status st = detail::checkLinkKeys(robot, o.link_padding, "link_padding", o.name); !st)
+    return st.error();
   if (Status st = checkLinkSolids(robot, o.repair, o.link_solid, o.link_solid_for, o.name); !st)
     return st.error();
   auto jobs = prepareLinks(o, robot);

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <utility>
 
+#include "robot/link_keys.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/robot_fit.hpp"
 
@@ -148,14 +149,7 @@ RepairOptions linkRepairOptions(const RepairOptions& repair, LinkSolid all,
 
 Status checkLinkSolids(const Robot& robot, const RepairOptions& repair, LinkSolid all,
                        const std::map<std::string, LinkSolid>& per_link, const std::string& name) {
-  auto isLink = [&](const std::string& link) {
-    return std::any_of(robot.links.begin(), robot.links.end(),
-                       [&](const RobotLink& l) { return l.name == link; });
-  };
-  for (const auto& [link, solid] : per_link)
-    if (!isLink(link))
-      return Error{ErrorCode::kInvalidArgument,
-                   name + ": link_solid_for names '" + link + "', not a link of " + robot.name};
+  if (Status st = detail::checkLinkKeys(robot, per_link, "link_solid_for", name); !st) return st;
   const bool any_envelope = std::any_of(robot.links.begin(), robot.links.end(), [&](auto& l) {
     return linkRepairOptions(repair, all, per_link, l.name).fill_openings != 0.0;
   });
