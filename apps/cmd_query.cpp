@@ -35,9 +35,7 @@ std::string format(const char* f, Args... args) {
 }
 
 // A file that holds a sphere tree is queried through it; a plain set gets one built.
-SphereTree treeFor(const SphereTree& t) {
-  return t.depth >= 2 && checkSphereTree(t).ok() ? t : queryTree(t.leaves());
-}
+Expected<SphereTree> treeFor(const SphereTree& t) { return queryTreeOf(t); }
 
 // The --point and --segment queries, printed or added to `out`. Every query is answered before
 // anything is printed, so that a refused one prints nothing but its error.
@@ -85,8 +83,9 @@ int otherQuery(const QueryArgs& a, const SphereTree& qa, nlohmann::json* out) {
     pose.translation = Vec3(op[0], op[1], op[2]);
     // The quaternion's NaNs are caught above; the translation is checked by the query.
   }
-  const SphereTree qb = treeFor(*tb);
-  const auto found = separation(qa, Pose{}, qb, pose);
+  const auto qb = treeFor(*tb);
+  if (!qb) return fail(qb.error());
+  const auto found = separation(qa, Pose{}, *qb, pose);
   if (!found) return fail(found.error());
   const PairQuery& pq = *found;
   const bool hit = pq.distance < 0.0;
@@ -96,7 +95,7 @@ int otherQuery(const QueryArgs& a, const SphereTree& qa, nlohmann::json* out) {
                        {"distance", pq.distance},
                        {"closest_pair",
                         {{"a", vec(qa.nodes[pq.sphere_a].center)},
-                         {"b", vec(pose.apply(qb.nodes[pq.sphere_b].center))}}}};
+                         {"b", vec(pose.apply(qb->nodes[pq.sphere_b].center))}}}};
   else
     std::printf("against %s: %s, signed distance %.9g\n", a.other_path.c_str(),
                 hit ? "overlap" : "apart", pq.distance);
@@ -127,10 +126,11 @@ int runQuery(const QueryArgs& a) {
   auto ta = readSphereTree(a.path);
   if (!ta) return fail(ta.error());
   nlohmann::json out;
-  const SphereTree qa = treeFor(*ta);
-  if (const int rc = pointAndSegmentQueries(a, qa, &out); rc != kOk) return rc;
+  const auto qa = treeFor(*ta);
+  if (!qa) return fail(qa.error());
+  if (const int rc = pointAndSegmentQueries(a, *qa, &out); rc != kOk) return rc;
   if (!a.other_path.empty()) {
-    const int rc = otherQuery(a, qa, &out);
+    const int rc = otherQuery(a, *qa, &out);
     if (rc != kOk) return rc;
   }
   if (a.json) std::cout << jsonText(out) << '\n';

@@ -45,8 +45,8 @@ const Scene& scene(int n) {
   Scene s;
   s.a = blob(n, 1);
   s.b = blob(n, 2);
-  s.ta = queryTree(s.a);
-  s.tb = queryTree(s.b);
+  s.ta = *queryTree(s.a);
+  s.tb = *queryTree(s.b);
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(-4.0, 4.0);
   std::normal_distribution<double> g(0.0, 1.0);

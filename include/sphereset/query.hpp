@@ -61,7 +61,25 @@ Expected<bool> overlaps(const SphereTree& a, const Pose& pose_a, const SphereTre
 inline constexpr double kPoseRotationTolerance = 1e-6;  // max |RᵀR - I| entry, and |det R - 1|
 Status checkPose(const std::string& what, const Pose& pose);
 
-// A query tree over a plain set (minimal enclosing parents, branching 8, as deep as needed).
-SphereTree queryTree(const std::vector<Sphere>& spheres, int branching = 8);
+// A query tree over a plain set: median splits along the largest extent (O(n log n) for any set,
+// identical spheres included), minimal enclosing parents, `branching` children per node (2 to
+// kMaxQueryBranching), as deep as needed. Every sphere must pass checkSphere; an empty set gives
+// an empty tree (nothing is inside it). A set larger than the layout holds
+// (maxQueryTreeSpheres) is refused: kInvalidArgument, never an empty tree. `leaf_index`, when
+// given, receives for each slot the sphere's position in `spheres` (-1 for other slots).
+inline constexpr int kMaxQueryBranching = 1024;
+Expected<SphereTree> queryTree(const std::vector<Sphere>& spheres, int branching = 8,
+                               std::vector<int64_t>* leaf_index = nullptr);
+// The most spheres a query tree of `branching` holds within SphereTree::kMaxSlots.
+int64_t maxQueryTreeSpheres(int branching);
+
+// The tree every door queries for a tree read from a file or made by a user: the tree itself
+// when the queries' rule holds (every used parent encloses its children: checkSphereTree) and it
+// has two levels or more, else a query tree over its leaves. A file's parents need not enclose
+// their children (a tree edited level by level in the view, another tool's tree): queried as
+// they are, a point inside a leaf would be "outside". `slot_of`, when given, receives for each
+// slot of the answer the slot of the same leaf in `tree` (left empty when the tree is used as it
+// is: slots are the tree's own).
+Expected<SphereTree> queryTreeOf(const SphereTree& tree, std::vector<int64_t>* slot_of = nullptr);
 
 }  // namespace sphereset

@@ -76,6 +76,16 @@ struct Robot {
 // the rest), for every front door that names joints.
 const char* jointTypeName(RobotJoint::Type type);
 
+// Whether a joint moves (revolute, continuous, prismatic): the one definition for every door.
+bool isMovable(const RobotJoint& j);
+
+// The interval a movable joint's value is sampled and posed over (the self-collision sampling,
+// the view's sliders), low first: a continuous joint, and a revolute joint whose limits span a
+// full turn or more (±1e308 included), over [-π, π], which reaches every pose such a joint
+// has; other joints over their limits. Finite whenever the robot was read by readUrdf (its
+// limits are checked there).
+std::pair<double, double> jointSampleRange(const RobotJoint& j);
+
 // Reads a URDF file and resolves every mesh path (relative to the URDF's folder, absolute,
 // file://, package://NAME/... through the package search folders). Errors (one line): the
 // file missing or unreadable (kUnreadable), not a valid URDF (kInvalidData), a mesh file not

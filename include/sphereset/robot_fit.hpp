@@ -28,8 +28,9 @@ struct LinkFitCurve {
 // The outside volume at k spheres on the curve: piecewise linear in log k and log volume
 // between the measured counts, and the last piece's power law beyond them (the first piece's
 // below them); a single measured count gives a constant. A volume of 0 (a link bounded
-// exactly) stays 0 from there on.
-double curveVolume(const LinkFitCurve& curve, int k);
+// exactly) stays 0 from there on. The curve must be non-empty with increasing counts from 1 and
+// one finite volume >= 0 each, and k >= 1: kInvalidArgument otherwise (a NaN is never returned).
+Expected<double> curveVolume(const LinkFitCurve& curve, int k);
 
 // The lower envelope the budget split uses: measured volumes made non-increasing (k + 1
 // spheres can always do what k do: a repeated sphere adds nothing), then the lower convex

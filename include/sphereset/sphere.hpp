@@ -16,11 +16,18 @@ struct Sphere {
   bool contains(const Vec3& p) const { return (p - center).squaredNorm() <= radius * radius; }
 };
 
-// Whether a computation can take `spheres` (one rule for the fit's bound, the evaluation and the
-// incremental certificate): 1 to limits::kMaxSpheres spheres, each with a finite centre and a
-// finite, non-negative radius. kInvalidArgument naming the first problem: "no spheres to WHAT"
-// (`what`: "evaluate", "bound"), a count over the limit, "sphere I has a NaN, infinite or
-// negative value".
+// The one rule for a sphere, at every door (files, queries, edits, Python, computations): a
+// finite centre and a finite, non-negative radius, each value at most limits::kMaxCoordinate in
+// magnitude (so that distances and volumes stay finite). An error with `code` naming `where`:
+// "WHERE: NaN or infinite value", "WHERE: negative radius", "WHERE: a value beyond 1e+30 in
+// magnitude (the coordinate limit)".
+Status checkSphere(const std::string& where, const Sphere& s,
+                   ErrorCode code = ErrorCode::kInvalidData);
+
+// Whether a computation can take `spheres` (the fit's bound, the evaluation, the incremental
+// certificate): 1 to limits::kMaxSpheres spheres, each passing checkSphere. kInvalidArgument
+// naming the first problem: "no spheres to WHAT" (`what`: "evaluate", "bound"), a count over the
+// limit, "sphere I: NaN or infinite value" (checkSphere's wording).
 Status checkSphereSet(std::span<const Sphere> spheres, const std::string& what);
 // Its two parts: the count, and one sphere (`index` names it).
 Status checkSphereCount(size_t count, const std::string& what);

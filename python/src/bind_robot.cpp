@@ -254,9 +254,9 @@ geometry when a link has none), joints, forward kinematics.)doc")
   m.def(
       "curve_volume",
       [](const std::vector<int>& counts, const std::vector<double>& volumes, int k) {
-        if (counts.empty() || counts.size() != volumes.size())
-          raise(ErrorCode::kInvalidArgument, "counts and volumes of equal, non-zero length");
-        return curveVolume({counts, volumes}, k);
+        if (counts.size() != volumes.size())
+          raise(ErrorCode::kInvalidArgument, "counts and volumes of equal length");
+        return unwrap(curveVolume({counts, volumes}, k));
       },
       py::arg("counts"), py::arg("outside_volumes"), py::arg("k"),
       "A link's outside volume at k spheres interpolated on its measured curve.");

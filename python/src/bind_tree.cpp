@@ -18,7 +18,7 @@ namespace {
 // set of each leaf slot (queries on a set report positions, as query.hpp promises for vectors).
 struct Target {
   SphereTree tree;
-  std::vector<int64_t> slot_to_index;  // empty for a tree given as such
+  std::vector<int64_t> slot_to_index;  // empty: slots are the given tree's own
   int64_t id(int64_t slot) const {
     if (slot < 0 || slot_to_index.empty()) return slot;
     return slot_to_index[static_cast<size_t>(slot)];
@@ -28,23 +28,14 @@ struct Target {
 Target target(const py::object& o, const std::string& what) {
   Target t;
   if (py::isinstance<SphereTree>(o)) {
-    t.tree = o.cast<SphereTree>();
+    // The library's rule for a given tree: queried as it is only where its parents enclose
+    // their children (queryTreeOf); answers name the given tree's slots either way.
+    t.tree = unwrap(queryTreeOf(o.cast<const SphereTree&>(), &t.slot_to_index));
     return t;
   }
   const std::vector<Sphere> s = spheresFromArray(o, what);
   if (s.empty()) raise(ErrorCode::kInvalidData, what + ": no spheres");
-  t.tree = queryTree(s);
-  std::map<std::tuple<double, double, double, double>, int64_t> where;
-  for (size_t i = 0; i < s.size(); ++i)
-    where.emplace(std::make_tuple(s[i].center.x(), s[i].center.y(), s[i].center.z(), s[i].radius),
-                  static_cast<int64_t>(i));
-  t.slot_to_index.assign(t.tree.nodes.size(), -1);
-  const int64_t b = t.tree.levelBegin(t.tree.depth);
-  for (int64_t k = b; k < static_cast<int64_t>(t.tree.nodes.size()); ++k) {
-    const Sphere& n = t.tree.nodes[static_cast<size_t>(k)];
-    auto it = where.find({n.center.x(), n.center.y(), n.center.z(), n.radius});
-    if (it != where.end()) t.slot_to_index[static_cast<size_t>(k)] = it->second;
-  }
+  t.tree = unwrap(queryTree(s, 8, &t.slot_to_index));
   return t;
 }
 
@@ -281,8 +272,7 @@ SphereTree(nodes, branching, depth) checks the layout and the enclosure (Invalid
       [](const py::object& spheres, int branching) {
         const std::vector<Sphere> s = spheresFromArray(spheres, "spheres");
         if (s.empty()) raise(ErrorCode::kInvalidData, "spheres: no spheres");
-        if (branching < 2) raise(ErrorCode::kInvalidArgument, "branching must be >= 2");
-        return queryTree(s, branching);
+        return unwrap(queryTree(s, branching));
       },
       py::arg("spheres"), py::arg("branching") = 8);
 }

@@ -23,12 +23,7 @@ std::vector<Sphere> spheresFromArray(const py::handle& a, const std::string& wha
     Sphere& s = out[static_cast<size_t>(i)];
     s.center = Vec3(v(i, 0), v(i, 1), v(i, 2));
     s.radius = v(i, 3);
-    if (!s.center.allFinite() || !std::isfinite(s.radius))
-      raise(ErrorCode::kInvalidData,
-            what + ": sphere " + std::to_string(i) + " has a NaN or infinite value");
-    if (s.radius < 0.0)
-      raise(ErrorCode::kInvalidData,
-            what + ": sphere " + std::to_string(i) + " has a negative radius");
+    if (Status st = checkSphere(what + ": sphere " + std::to_string(i), s); !st) check(st);
   }
   return out;
 }

@@ -125,6 +125,20 @@ def test_unbalanced_tree_keeps_its_leaves():
                        [-2, 0, 0, 1], none, none], 2, 2)
 
 
+def test_a_tree_whose_parent_lost_its_leaves_is_queried_by_its_leaves(tmp_path):
+    # A parent edited (in the page) so that it no longer holds its two leaves, saved and read
+    # back: contains used to miss both leaves' centres while `sphereset query` found them.
+    path = tmp_path / "edited.sph"
+    path.write_text("3 2\n0 0 0 10 0\n-3 0 0 0.1 0\n5 0 0 2 0\n-4 0 0 1 0\n-2 0 0 1 0\n"
+                    "4 0 0 1 0\n6 0 0 1 0\n")
+    back = ss.read_sphere_tree(path)
+    assert len(back.leaves()) == 4
+    centres = [[-4.0, 0, 0], [-2, 0, 0], [4, 0, 0], [6, 0, 0]]
+    assert ss.contains(back, centres).all()
+    q = ss.point_distance(back, centres)
+    assert np.allclose(q.distance, -1.0)
+
+
 def test_robot(tmp_path):
     urdf = DATA / "robot" / "three_link.urdf"
     r = ss.load_robot(urdf, package_paths=[str(DATA / "robot")])

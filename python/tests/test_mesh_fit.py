@@ -226,6 +226,31 @@ def test_progress_and_cancel():
     assert np.array_equal(ss.fit(m, n=4, quality="fast").spheres, r.spheres)
 
 
+def test_interrupt_anywhere_in_the_fit_leaves_it():
+    """Ctrl-C at any moment of a fit raises KeyboardInterrupt: inside the optimisers too, where
+    NLopt's wrapper used to swallow it (the refinement ran on and the fit returned)."""
+    import time
+
+    s = ss.solid(ss.load_mesh(LINK))
+    t0 = time.perf_counter()
+    ss.fit(s, n=8, quality="default")
+    took = time.perf_counter() - t0
+
+    def alarm(*_):
+        raise KeyboardInterrupt()
+
+    old = signal.signal(signal.SIGALRM, alarm)
+    try:
+        for frac in (0.2, 0.4, 0.55, 0.7, 0.8, 0.9, 0.95):
+            signal.setitimer(signal.ITIMER_REAL, frac * took)
+            with pytest.raises(KeyboardInterrupt):
+                ss.fit(s, n=8, quality="default")
+                time.sleep(2 * took)  # an alarm after the fit still ends up here
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+
+
 def test_evaluate_options_are_checked_by_the_library_table():
     # Python had lower bounds only: shadow_resolution=100000 ended in MemoryError.
     box = ss.Mesh(*cube_arrays())

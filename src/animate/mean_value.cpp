@@ -8,8 +8,11 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -137,26 +140,48 @@ Status checkWeightInputs(const Mesh& rest, const std::vector<Vec3>& points, doub
     if (!points[i].allFinite())
       return Error{ErrorCode::kInvalidArgument,
                    "point " + std::to_string(i) + " is not finite (NaN or infinite)"};
-  return limits::checkArray("mean value weights of " + std::to_string(points.size()) +
-                                " points over " + std::to_string(rest.vertices.size()) +
-                                " vertices",
-                            static_cast<double>(points.size()),
-                            bytes * static_cast<double>(rest.vertices.size()));
+  return limits::checkArray(
+      "mean value weights of " + std::to_string(points.size()) + " points over " +
+          std::to_string(rest.vertices.size()) + " vertices",
+      static_cast<double>(points.size()), bytes * static_cast<double>(rest.vertices.size()));
 }
 
-// Row i of the coordinates (double precision) handed to `store(i, row)`, rows in parallel.
+// Row i of the coordinates (double precision) handed to `store(i, row)`, rows in parallel. A
+// point whose coordinates are not finite numbers (so far from the mesh, 1e30 say, that the
+// angles between its directions to the vertices round to zero) is an error naming the first
+// such point, never a row of infinities.
 template <class Store>
-void coordinateRows(const Mesh& rest, const std::vector<Vec3>& points, Store store) {
+Status coordinateRows(const Mesh& rest, const std::vector<Vec3>& points, Store store) {
   const size_t nv = rest.vertices.size();
-  const double eps = kVertexEpsRel * boundingBox(rest).diagonal();
+  const Aabb box = boundingBox(rest);
+  const double eps = kVertexEpsRel * box.diagonal();
+  std::atomic<size_t> first_bad{points.size()};
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()), [&](const auto& r) {
     std::vector<double> row(nv), d(nv);
     std::vector<Vec3> u(nv);
     for (size_t i = r.begin(); i != r.end(); ++i) {
       coordinates(rest, points[i], eps, row.data(), d.data(), u.data());
+      bool finite = true;
+      for (double w : row) finite = finite && std::isfinite(w);
+      if (!finite) {
+        size_t seen = first_bad.load();
+        while (i < seen && !first_bad.compare_exchange_weak(seen, i)) {
+        }
+        continue;
+      }
       store(static_cast<Eigen::Index>(i), row);
     }
   });
+  if (const size_t bad = first_bad.load(); bad < points.size()) {
+    const double far = (points[bad] - 0.5 * (box.min + box.max)).norm();
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  ": its mean value coordinates are not finite in double precision (it lies "
+                  "%.3g from the mesh's centre, %.3g times the mesh's diagonal)",
+                  far, far / std::max(box.diagonal(), std::numeric_limits<double>::min()));
+    return Error{ErrorCode::kInvalidArgument, "point " + std::to_string(bad) + buf};
+  }
+  return {};
 }
 
 }  // namespace
@@ -165,9 +190,13 @@ Expected<Eigen::MatrixXd> meanValueMatrix(const Mesh& rest, const std::vector<Ve
   if (Status st = checkWeightInputs(rest, points, sizeof(double)); !st) return st.error();
   Eigen::MatrixXd out(static_cast<Eigen::Index>(points.size()),
                       static_cast<Eigen::Index>(rest.vertices.size()));
-  coordinateRows(rest, points, [&](Eigen::Index i, const std::vector<double>& row) {
-    for (size_t j = 0; j < row.size(); ++j) out(i, static_cast<Eigen::Index>(j)) = row[j];
-  });
+  if (Status st = coordinateRows(rest, points,
+                                 [&](Eigen::Index i, const std::vector<double>& row) {
+                                   for (size_t j = 0; j < row.size(); ++j)
+                                     out(i, static_cast<Eigen::Index>(j)) = row[j];
+                                 });
+      !st)
+    return st.error();
   return out;
 }
 
@@ -177,10 +206,14 @@ Expected<MeanValueWeights> meanValueWeights(const Mesh& rest, const std::vector<
   MeanValueWeights out;
   out.weights.resize(static_cast<Eigen::Index>(points.size()),
                      static_cast<Eigen::Index>(rest.vertices.size()));
-  coordinateRows(rest, points, [&](Eigen::Index i, const std::vector<double>& row) {
-    for (size_t j = 0; j < row.size(); ++j)
-      out.weights(i, static_cast<Eigen::Index>(j)) = static_cast<float>(row[j]);
-  });
+  if (Status st = coordinateRows(rest, points,
+                                 [&](Eigen::Index i, const std::vector<double>& row) {
+                                   for (size_t j = 0; j < row.size(); ++j)
+                                     out.weights(i, static_cast<Eigen::Index>(j)) =
+                                         static_cast<float>(row[j]);
+                                 });
+      !st)
+    return st.error();
   out.points = points;
   out.rest_vertices = rest.vertices;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -53,7 +53,7 @@ Status checkOptions(const SolidIndex& index, const FitOptions& o) {
         checkRange("max_failed_teleports", o.max_failed_teleports, 0, limits::kMaxIterations),
         checkRange("optimizer_evaluations", o.optimizer_evaluations, 0,
                    limits::kMaxOptimizerEvaluations),
-        checkRange("padding", o.padding, 0.0, std::numeric_limits<double>::max()),
+        checkRange("padding", o.padding, 0.0, limits::kMaxCoordinate),
         checkRange("shrink_passes", o.shrink_passes, 0, limits::kMaxIterations),
         checkRange("decimation", o.decimation, 0.0, limits::kMaxDecimation),
         checkRange("restarts", o.restarts, 1, limits::kMaxRestarts),

@@ -124,7 +124,7 @@ constexpr OptionSpec kFitRequestOptions[] = {
      "--padding",
      OptionType::kReal,
      0.0,
-     kRealMax,
+     limits::kMaxCoordinate,
      {},
      "0",
      "Distance added to every radius (absolute units)"},

@@ -35,6 +35,7 @@
 #include "cover/sphere_grid.hpp"
 #include "fit/bound.hpp"
 #include "fit/fit_common.hpp"
+#include "fit/guarded_optimize.hpp"
 
 namespace sphereset::detail {
 namespace {
@@ -203,6 +204,7 @@ class PenalisedEnergy {
   double best_f = std::numeric_limits<double>::infinity();
   std::vector<double> best_x;
   int64_t queries = 0;
+  ObjectiveGuard guard;  // carries the energy's exceptions out of NLopt
 
  private:
   const SolidIndex& index_;
@@ -218,16 +220,15 @@ void runLbfgs(PenalisedEnergy* energy, const std::vector<double>& lo, const std:
   opt.set_ftol_rel(1e-9);
   opt.set_min_objective(
       [](unsigned nx, const double* xx, double* g, void* data) {
-        return (*static_cast<PenalisedEnergy*>(data))(xx, g, static_cast<int>(nx));
+        auto* e = static_cast<PenalisedEnergy*>(data);
+        return e->guard.call([&] { return (*e)(xx, g, static_cast<int>(nx)); });
       },
       energy);
   energy->best_f = std::numeric_limits<double>::infinity();
   double f = 0.0;
-  try {
-    opt.optimize(*x, f);
-  } catch (const std::exception&) {
-    // Round-off or a forced stop: the best point evaluated is kept, below.
-  }
+  // Round-off or a forced stop ends it quietly (the best point evaluated is kept, below); a
+  // cancellation or an allocation failure inside the energy is rethrown.
+  energy->guard.optimize(&opt, x, &f);
   if (!energy->best_x.empty()) *x = energy->best_x;
 }
 

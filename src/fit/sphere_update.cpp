@@ -13,6 +13,8 @@
 #include <limits>
 #include <nlopt.hpp>
 
+#include "fit/guarded_optimize.hpp"
+
 namespace sphereset::detail {
 namespace {
 
@@ -37,23 +39,26 @@ SphereUpdate minimiseOutsideVolume(const SolidIndex& index, const EnclosingRadiu
     const SolidIndex* index;
     const EnclosingRadius* radius_of;
     SphereUpdate* best;
-  } ctx{&index, &radius_of, &best};
+    ObjectiveGuard guard;  // carries bad_alloc and cancellations out of NLopt
+  } ctx{&index, &radius_of, &best, {}};
   auto objective = [](unsigned, const double* x, double* grad, void* data) -> double {
     Ctx& c = *static_cast<Ctx*>(data);
-    const Vec3 centre(x[0], x[1], x[2]);
-    Vec3 dr = Vec3::Zero();
-    const double r = (*c.radius_of)(centre, grad ? &dr : nullptr);
-    const OutsideVolume ov = c.index->outsideVolume({centre, r});
-    ++c.best->queries;
-    if (ov.volume < c.best->sov) {
-      c.best->sov = ov.volume;
-      c.best->sphere = {centre, r};
-    }
-    if (grad) {
-      const Vec3 g = ov.gradient + ov.d_radius * dr;
-      for (int k = 0; k < 3; ++k) grad[k] = g[k];
-    }
-    return ov.volume;
+    return c.guard.call([&] {
+      const Vec3 centre(x[0], x[1], x[2]);
+      Vec3 dr = Vec3::Zero();
+      const double r = (*c.radius_of)(centre, grad ? &dr : nullptr);
+      const OutsideVolume ov = c.index->outsideVolume({centre, r});
+      ++c.best->queries;
+      if (ov.volume < c.best->sov) {
+        c.best->sov = ov.volume;
+        c.best->sphere = {centre, r};
+      }
+      if (grad) {
+        const Vec3 g = ov.gradient + ov.d_radius * dr;
+        for (int k = 0; k < 3; ++k) grad[k] = g[k];
+      }
+      return ov.volume;
+    });
   };
   nlopt::opt opt(optimizer == SphereOptimizer::kGradient ? nlopt::LD_MMA : nlopt::LN_BOBYQA, 3);
   std::vector<double> lo(3), hi(3), x(3), step(3, 0.25 * scale);
@@ -70,11 +75,9 @@ SphereUpdate minimiseOutsideVolume(const SolidIndex& index, const EnclosingRadiu
   opt.set_xtol_abs(kCentreTolRel * scale);
   opt.set_ftol_rel(1e-7);
   double f = 0.0;
-  try {
-    opt.optimize(x, f);
-  } catch (const std::exception&) {
-    // Round-off or a forced stop: the best point evaluated so far is kept.
-  }
+  // Round-off or a forced stop: the best point evaluated so far is kept. An exception of the
+  // objective's own (bad_alloc, a cancellation) is rethrown.
+  ctx.guard.optimize(&opt, &x, &f);
   return best;
 }
 

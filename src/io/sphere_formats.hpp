@@ -44,12 +44,15 @@ void writeYamlSphereList(std::ostream& os, const std::vector<Sphere>& spheres);
 std::string yamlKey(const std::string& name);
 // Always double-quoted, with escapes.
 std::string yamlQuoted(const std::string& name);
+// A comment line, "# " + `text` + newline, for YAML and the text sphere format alike: control
+// characters and Unicode line breaks (U+0085, U+2028, U+2029) are written as escapes (\x0a,
+// \u2028), so no text a file or a user names (a robot's name) can end the comment and start a
+// key or a sphere line. The one writer of comments.
+std::string commentLine(const std::string& text);
 // The same followed by ':', in the explicit form "? key" then ':' on the next line (indented by
 // `indent`) when the key is too long for an implicit one.
 std::string yamlMappingKey(const std::string& name, int indent);
 
-// kInvalidData, naming `where`, for a sphere with a NaN or infinite value or a negative radius.
-Status checkSphere(const std::string& where, const Sphere& s);
 // The JSON document read from `in` (the file `path`); kUnreadable when it is not JSON.
 Expected<nlohmann::json> parseJson(std::istream& in, const std::string& path);
 // A JSON number that is an integer in [lo, hi], written as an integer or as an integral

@@ -27,19 +27,11 @@
 
 namespace sphereset {
 
-using detail::checkSphere;
 using detail::extensionOf;
 using detail::parseJson;
 using detail::readFileText;
 
 namespace detail {
-
-Status checkSphere(const std::string& where, const Sphere& s) {
-  if (!s.center.allFinite() || !std::isfinite(s.radius))
-    return Error{ErrorCode::kInvalidData, where + ": NaN or infinite value"};
-  if (s.radius < 0.0) return Error{ErrorCode::kInvalidData, where + ": negative radius"};
-  return {};
-}
 
 // The JSON document read from `in` (the file `path`).
 Expected<nlohmann::json> parseJson(std::istream& in, const std::string& path) {
@@ -98,7 +90,8 @@ std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& sphere
   std::ostringstream os;
   switch (format) {
     case SphereFormat::kText:
-      os << "# " << meta.generator << ": " << spheres.size() << " spheres, x y z r\n";
+      os << detail::commentLine(meta.generator + ": " + std::to_string(spheres.size()) +
+                                " spheres, x y z r");
       for (const Sphere& s : spheres)
         os << detail::formatNumber(s.center.x()) << ' ' << detail::formatNumber(s.center.y()) << ' '
            << detail::formatNumber(s.center.z()) << ' ' << detail::formatNumber(s.radius) << '\n';
@@ -129,7 +122,8 @@ std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& sphere
       break;
     }
     case SphereFormat::kYaml:
-      os << "# " << meta.generator << ": " << spheres.size() << " spheres\n";
+      os << detail::commentLine(meta.generator + ": " + std::to_string(spheres.size()) +
+                                " spheres");
       os << "collision_spheres:\n  " << detail::yamlMappingKey(meta.name, 2) << "\n";
       detail::writeYamlSphereList(os, spheres);
       break;

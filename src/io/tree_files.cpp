@@ -17,7 +17,6 @@
 
 namespace sphereset {
 
-using detail::checkSphere;
 using detail::jsonInteger;
 using detail::parseJson;
 using detail::readFileText;

@@ -278,6 +278,32 @@ std::string yamlQuoted(const std::string& name) {
   return out + "\"";
 }
 
+std::string commentLine(const std::string& text) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out = "# ";
+  for (size_t i = 0; i < text.size(); ++i) {
+    const auto u = static_cast<unsigned char>(text[i]);
+    if (u < 0x20 || u == 0x7f) {
+      out += "\\x";
+      out += kHex[u >> 4];
+      out += kHex[u & 15];
+    } else if (u == 0xc2 && i + 1 < text.size() &&
+               static_cast<unsigned char>(text[i + 1]) == 0x85) {
+      out += "\\u0085";
+      ++i;
+    } else if (u == 0xe2 && i + 2 < text.size() &&
+               static_cast<unsigned char>(text[i + 1]) == 0x80 &&
+               (static_cast<unsigned char>(text[i + 2]) == 0xa8 ||
+                static_cast<unsigned char>(text[i + 2]) == 0xa9)) {
+      out += static_cast<unsigned char>(text[i + 2]) == 0xa8 ? "\\u2028" : "\\u2029";
+      i += 2;
+    } else {
+      out += text[i];
+    }
+  }
+  return out + "\n";
+}
+
 std::string yamlMappingKey(const std::string& name, int indent) {
   // YAML limits implicit keys to 1024 characters; longer ones take the explicit "? key" form.
   const std::string key = yamlKey(name);
@@ -289,7 +315,8 @@ std::string formatYamlLinks(const std::vector<LinkSpheres>& links, const SphereF
   size_t total = 0;
   for (const LinkSpheres& l : links) total += l.spheres.size();
   std::ostringstream os;
-  os << "# " << meta.generator << ": " << total << " spheres in " << links.size() << " links\n";
+  os << commentLine(meta.generator + ": " + std::to_string(total) + " spheres in " +
+                    std::to_string(links.size()) + " links");
   os << "collision_spheres:" << (links.empty() ? " {}\n" : "\n");
   for (const LinkSpheres& l : links) {
     os << "  " << yamlMappingKey(l.link, 2) << (l.spheres.empty() ? " []\n" : "\n");

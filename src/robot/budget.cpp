@@ -14,7 +14,22 @@
 
 namespace sphereset {
 
-double curveVolume(const LinkFitCurve& c, int k) {
+namespace {
+
+// A curve as splitBudget and curveVolume take it (`what` names it).
+Status checkCurve(const LinkFitCurve& c, const std::string& what) {
+  bool ok = c.counts.size() == c.outside_volume.size();
+  for (size_t k = 0; ok && k < c.counts.size(); ++k)
+    ok = c.counts[k] >= 1 && (k == 0 || c.counts[k] > c.counts[k - 1]) &&
+         c.outside_volume[k] >= 0.0 && std::isfinite(c.outside_volume[k]);
+  if (!ok)
+    return Error{ErrorCode::kInvalidArgument,
+                 what + ": expected increasing counts from 1 and one finite volume >= 0 each"};
+  return {};
+}
+
+// curveVolume on a checked curve and k >= 1.
+double interpolate(const LinkFitCurve& c, int k) {
   const size_t m = c.counts.size();
   if (m == 0) return 0.0;
   if (m == 1) return c.outside_volume[0];
@@ -29,6 +44,17 @@ double curveVolume(const LinkFitCurve& c, int k) {
   return std::exp(std::log(v0) + slope * (std::log(static_cast<double>(k)) - x0));
 }
 
+}  // namespace
+
+Expected<double> curveVolume(const LinkFitCurve& c, int k) {
+  if (c.counts.empty()) return Error{ErrorCode::kInvalidArgument, "the curve has no counts"};
+  if (Status st = checkCurve(c, "the curve"); !st) return st.error();
+  if (k < 1)
+    return Error{ErrorCode::kInvalidArgument,
+                 "k must be at least 1 (got " + std::to_string(k) + ")"};
+  return interpolate(c, k);
+}
+
 LinkFitCurve curveEnvelope(const LinkFitCurve& c) {
   // Non-increasing: the best volume measured at or below each count; nothing after a 0.
   LinkFitCurve mono;
@@ -40,7 +66,7 @@ LinkFitCurve curveEnvelope(const LinkFitCurve& c) {
     if (!(v > 0.0)) break;
   }
   // Lower convex hull in (log k, log v) of the positive points (monotone chain); a final 0 is
-  // kept as it is (curveVolume steps to it).
+  // kept as it is (interpolate steps to it).
   LinkFitCurve hull;
   auto x = [](int k) { return std::log(static_cast<double>(k)); };
   for (size_t i = 0; i < mono.counts.size(); ++i) {
@@ -80,17 +106,8 @@ Status checkCurves(const std::vector<LinkFitCurve>& curves, const std::vector<in
   if (curves.size() != fixed.size())
     return Error{ErrorCode::kInvalidArgument, std::to_string(curves.size()) + " curves for " +
                                                   std::to_string(fixed.size()) + " links"};
-  for (size_t i = 0; i < curves.size(); ++i) {
-    const LinkFitCurve& c = curves[i];
-    bool ok = c.counts.size() == c.outside_volume.size();
-    for (size_t k = 0; ok && k < c.counts.size(); ++k)
-      ok = c.counts[k] >= 1 && (k == 0 || c.counts[k] > c.counts[k - 1]) &&
-           c.outside_volume[k] >= 0.0 && std::isfinite(c.outside_volume[k]);
-    if (!ok)
-      return Error{ErrorCode::kInvalidArgument,
-                   "curve " + std::to_string(i) +
-                       ": expected increasing counts from 1 and one finite volume >= 0 each"};
-  }
+  for (size_t i = 0; i < curves.size(); ++i)
+    if (Status st = checkCurve(curves[i], "curve " + std::to_string(i)); !st) return st;
   return {};
 }
 
@@ -114,7 +131,7 @@ Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& measured
     double best_gain = -1.0;
     for (size_t i = 0; i < n; ++i) {
       if (fixed[i] >= 0) continue;
-      const double gain = curveVolume(curves[i], count[i]) - curveVolume(curves[i], count[i] + 1);
+      const double gain = interpolate(curves[i], count[i]) - interpolate(curves[i], count[i] + 1);
       if (gain > best_gain) {
         best_gain = gain;
         best = i;

@@ -10,8 +10,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <random>
@@ -28,11 +30,6 @@ namespace sphereset {
 namespace {
 
 using PosesByLink = std::map<std::string, Eigen::Isometry3d>;
-
-bool movable(const RobotJoint& j) {
-  return j.type == RobotJoint::Type::kRevolute || j.type == RobotJoint::Type::kContinuous ||
-         j.type == RobotJoint::Type::kPrismatic;
-}
 
 // Pairs (by index into the robot's links, first < second) joined by a joint, or through links
 // not in `has_geometry` (MoveIt's rule: a link without geometry joins its neighbours).
@@ -61,20 +58,17 @@ std::set<std::pair<size_t, size_t>> adjacentPairs(const Robot& robot,
   return out;
 }
 
-// Configuration `i`: each movable joint that is not a mimic uniform within its limits
-// (continuous joints over [-π, π]), from a generator of its own.
+// Configuration `i`: each movable joint that is not a mimic uniform within jointSampleRange
+// (continuous joints, and revolute joints of a turn or more, over [-π, π]; limits of ±1e308
+// once made every sample infinite), from a generator of its own.
 std::map<std::string, double> sampledConfiguration(const std::vector<const RobotJoint*>& joints,
                                                    uint64_t seed, int64_t i) {
   std::mt19937_64 rng(detail::mixSeed(seed, static_cast<uint64_t>(i)));
   std::map<std::string, double> q;
   for (const RobotJoint* j : joints) {
     const double u = detail::uniform01(rng);
-    if (j->type == RobotJoint::Type::kContinuous) {
-      q[j->name] = std::numbers::pi * (2.0 * u - 1.0);
-    } else {
-      const double lo = std::min(j->lower, j->upper), hi = std::max(j->lower, j->upper);
-      q[j->name] = lo + u * (hi - lo);
-    }
+    const auto [lo, hi] = jointSampleRange(*j);
+    q[j->name] = lo + u * (hi - lo);
   }
   return q;
 }
@@ -94,24 +88,37 @@ bool pairTouches(const Robot& robot, const Participants& who, const PosesByLink&
 }
 
 // Collisions per pair of `who` over the samples, in parallel (integer sums: the same on any
-// number of threads).
-std::vector<int64_t> countCollisions(const Robot& robot, const Participants& who, int samples,
-                                     uint64_t seed) {
+// number of threads). A sample that cannot be posed is an error naming the first such sample,
+// never a sample skipped: a skipped sample would make pairs that collide "Never".
+Expected<std::vector<int64_t>> countCollisions(const Robot& robot, const Participants& who,
+                                               int samples, uint64_t seed) {
   std::vector<const RobotJoint*> joints;
   for (const RobotJoint& j : robot.joints)
-    if (movable(j) && !j.mimic) joints.push_back(&j);
+    if (isMovable(j) && !j.mimic) joints.push_back(&j);
   tbb::enumerable_thread_specific<std::vector<int64_t>> local(
       std::vector<int64_t>(who.pairs.size(), 0));
+  std::atomic<int64_t> first_failure{std::numeric_limits<int64_t>::max()};
   tbb::parallel_for(tbb::blocked_range<int64_t>(0, samples, 16),
                     [&](const tbb::blocked_range<int64_t>& range) {
                       std::vector<int64_t>& counts = local.local();
                       for (int64_t i = range.begin(); i != range.end(); ++i) {
                         auto poses = linkPoses(robot, sampledConfiguration(joints, seed, i));
-                        if (!poses) continue;  // not reached: the default pose passed
+                        if (!poses) {
+                          int64_t seen = first_failure.load();
+                          while (i < seen && !first_failure.compare_exchange_weak(seen, i)) {
+                          }
+                          continue;
+                        }
                         for (size_t p = 0; p < who.pairs.size(); ++p)
                           if (pairTouches(robot, who, *poses, who.pairs[p])) ++counts[p];
                       }
                     });
+  if (const int64_t bad = first_failure.load(); bad != std::numeric_limits<int64_t>::max()) {
+    const auto poses = linkPoses(robot, sampledConfiguration(joints, seed, bad));
+    return Error{ErrorCode::kInvalidData,
+                 "sampled configuration " + std::to_string(bad) + " cannot be posed: " +
+                     (poses ? std::string("unknown") : poses.error().message)};
+  }
   std::vector<int64_t> total(who.pairs.size(), 0);
   for (const std::vector<int64_t>& c : local)
     for (size_t p = 0; p < c.size(); ++p) total[p] += c[p];
@@ -173,7 +180,9 @@ Expected<CollisionMatrix> sampleSelfCollisions(const Robot& robot,
         who.pairs.push_back({a, b});
     }
 
-  const std::vector<int64_t> counts = countCollisions(robot, who, out.samples, options.seed);
+  const auto sampled = countCollisions(robot, who, out.samples, options.seed);
+  if (!sampled) return sampled.error();
+  const std::vector<int64_t>& counts = *sampled;
   const double always = options.always_fraction * out.samples;
   for (size_t p = 0; p < who.pairs.size(); ++p) {
     const size_t a = who.links[who.pairs[p][0]], b = who.links[who.pairs[p][1]];

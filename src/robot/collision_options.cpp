@@ -103,10 +103,7 @@ Status checkCollisionSamplingOptions(const CollisionSamplingOptions& o) {
 int defaultSampleCount(const Robot& robot) {
   int movable = 0;
   for (const RobotJoint& j : robot.joints)
-    if (!j.mimic &&
-        (j.type == RobotJoint::Type::kRevolute || j.type == RobotJoint::Type::kContinuous ||
-         j.type == RobotJoint::Type::kPrismatic))
-      ++movable;
+    if (!j.mimic && isMovable(j)) ++movable;
   return std::clamp(2000 * movable, 1000, 100000);
 }
 

@@ -18,11 +18,6 @@
 namespace sphereset {
 namespace {
 
-bool movableJoint(const RobotJoint& j) {
-  return j.type == RobotJoint::Type::kRevolute || j.type == RobotJoint::Type::kContinuous ||
-         j.type == RobotJoint::Type::kPrismatic;
-}
-
 // A number as YAML reads a float: formatNumber's text, with ".0" when it has no point or
 // exponent.
 std::string yamlFloat(double x) {
@@ -48,7 +43,7 @@ std::optional<RobotChain> longestChain(const Robot& robot) {
     todo.pop_back();
     for (const RobotJoint* j : child_joints[link]) {
       if (depth.count(j->child) > 0) continue;  // not a tree: the first path counts
-      depth[j->child] = depth[link] + (movableJoint(*j) && !j->mimic ? 1 : 0);
+      depth[j->child] = depth[link] + (isMovable(*j) && !j->mimic ? 1 : 0);
       todo.push_back(j->child);
     }
   }
@@ -72,14 +67,14 @@ std::optional<RobotChain> longestChain(const Robot& robot) {
   }
   RobotChain chain;
   for (auto j = path.rbegin(); j != path.rend(); ++j)
-    if (movableJoint(**j) && !(*j)->mimic) chain.joints.push_back((*j)->name);
+    if (isMovable(**j) && !(*j)->mimic) chain.joints.push_back((*j)->name);
   for (auto j = path.rbegin(); j != path.rend(); ++j)
-    if (movableJoint(**j) && !(*j)->mimic) {
+    if (isMovable(**j) && !(*j)->mimic) {
       chain.base_link = (*j)->parent;
       break;
     }
   for (const RobotJoint* j : path)
-    if (movableJoint(*j) && !j->mimic) {
+    if (isMovable(*j) && !j->mimic) {
       chain.tip_link = j->child;
       break;
     }
@@ -145,7 +140,7 @@ Expected<std::string> formatLulaDescription(const Robot& robot,
       return Error{ErrorCode::kInvalidArgument,
                    "Lula description: link '" + l.link + "' appears twice"};
     for (size_t i = 0; i < l.spheres.size(); ++i)
-      if (Status st = detail::checkSphere(
+      if (Status st = checkSphere(
               "Lula description: link '" + l.link + "' sphere " + std::to_string(i), l.spheres[i]);
           !st)
         return st.error();
@@ -153,11 +148,12 @@ Expected<std::string> formatLulaDescription(const Robot& robot,
   }
   std::vector<const RobotJoint*> cspace, rules;
   for (const RobotJoint& j : robot.joints)
-    if (movableJoint(j)) (j.mimic ? rules : cspace).push_back(&j);
+    if (isMovable(j)) (j.mimic ? rules : cspace).push_back(&j);
 
   std::ostringstream os;
-  os << "# sphereset: Lula robot description of " << robot.name << ", " << total
-     << " collision spheres in " << spheres.size() << " links\n";
+  os << detail::commentLine("sphereset: Lula robot description of " + robot.name + ", " +
+                            std::to_string(total) + " collision spheres in " +
+                            std::to_string(spheres.size()) + " links");
   os << "api_version: 1.0\n";
   os << "cspace:" << (cspace.empty() ? " []\n" : "\n");
   for (const RobotJoint* j : cspace) os << "  - " << detail::yamlKey(j->name) << '\n';

@@ -12,26 +12,15 @@
 #include <set>
 #include <span>
 
-#include "robot/median_tree.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/query.hpp"
+#include "tree/median_tree.hpp"
 #include "util/number_text.hpp"
 
 namespace sphereset {
 namespace {
 
 constexpr double kNoContact = std::numeric_limits<double>::infinity();
-
-// "`what`: radius R is negative / not finite", or the coordinates' message; kInvalidData.
-Status checkSphereValues(const std::string& what, const Sphere& s) {
-  if (Status st = limits::checkCoordinates(what, std::span<const double>(s.center.data(), 3)); !st)
-    return Error{ErrorCode::kInvalidData, st.error().message};
-  if (!std::isfinite(s.radius) || s.radius < 0.0)
-    return Error{ErrorCode::kInvalidData,
-                 what + ": radius " + detail::numberText(s.radius) +
-                     (s.radius < 0.0 ? " is negative" : " is not a finite number")};
-  return {};
-}
 
 // The checked spheres of each listed link and a tree over each non-empty set, in list order.
 struct PreparedLinks {
@@ -56,7 +45,7 @@ Expected<PreparedLinks> checkedLinkTrees(const Robot& robot,
     if (!seen.insert(ls.link).second)
       return Error{ErrorCode::kInvalidData, what + " is listed twice"};
     for (size_t i = 0; i < ls.spheres.size(); ++i)
-      if (Status st = checkSphereValues(what + " sphere " + std::to_string(i), ls.spheres[i]); !st)
+      if (Status st = checkSphere(what + " sphere " + std::to_string(i), ls.spheres[i]); !st)
         return st.error();
     if (static_cast<int64_t>(ls.spheres.size()) > limits::kMaxObstacles)
       return Error{ErrorCode::kInvalidData,
@@ -133,7 +122,7 @@ Expected<Obstacles> makeObstacles(std::vector<Sphere> spheres, const std::string
                                               " obstacles, at most " +
                                               std::to_string(limits::kMaxObstacles)};
   for (size_t i = 0; i < spheres.size(); ++i)
-    if (Status st = checkSphereValues(name + ": sphere " + std::to_string(i), spheres[i]); !st)
+    if (Status st = checkSphere(name + ": sphere " + std::to_string(i), spheres[i]); !st)
       return st.error();
   Obstacles out;
   detail::IndexedTree t = detail::medianTree(spheres);

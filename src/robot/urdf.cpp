@@ -10,6 +10,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -17,6 +18,7 @@
 #include <fstream>
 #include <memory>
 #include <mutex>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -25,6 +27,7 @@
 
 #include "sphereset/limits.hpp"
 #include "sphereset/robot.hpp"
+#include "util/number_text.hpp"
 #include "util/utf8.hpp"
 
 namespace sphereset {
@@ -257,6 +260,24 @@ RobotJoint convertJoint(const urdf::Joint& j) {
   return out;
 }
 
+// A joint's limits as the library can pose and sample it: finite (urdfdom reads "nan" and
+// "inf"); a prismatic joint's within limits::kMaxCoordinate, a length. A revolute joint's may be
+// any finite angle (its poses repeat every turn: jointSampleRange).
+Status checkJointLimits(const RobotJoint& j) {
+  const std::string what = "joint '" + j.name + "'";
+  if (!std::isfinite(j.lower) || !std::isfinite(j.upper))
+    return Error{ErrorCode::kInvalidData, what + ": a limit is not a finite number (lower " +
+                                              detail::numberText(j.lower) + ", upper " +
+                                              detail::numberText(j.upper) + ")"};
+  if (j.type == RobotJoint::Type::kPrismatic &&
+      std::max(std::fabs(j.lower), std::fabs(j.upper)) > limits::kMaxCoordinate)
+    return Error{ErrorCode::kInvalidData,
+                 what + ": prismatic limits beyond " + detail::numberText(limits::kMaxCoordinate) +
+                     " in magnitude (lower " + detail::numberText(j.lower) + ", upper " +
+                     detail::numberText(j.upper) + ")"};
+  return {};
+}
+
 // The names of the elements `tag` under <robot>, in file order (urdfdom keeps them in maps).
 std::vector<std::string> namesInFileOrder(const std::string& xml, const char* tag) {
   std::vector<std::string> names;
@@ -406,9 +427,25 @@ Expected<Robot> loadRobot(const std::string& urdf_path, const RobotLoadOptions& 
   }
   for (const std::string& name : namesInFileOrder(xml, "joint")) {
     urdf::JointConstSharedPtr joint = model->getJoint(name);
-    if (joint) robot.joints.push_back(convertJoint(*joint));
+    if (!joint) continue;
+    robot.joints.push_back(convertJoint(*joint));
+    if (Status st = checkJointLimits(robot.joints.back()); !st)
+      return Error{ErrorCode::kInvalidData, urdf_path + ": " + st.error().message};
   }
   return robot;
+}
+
+bool isMovable(const RobotJoint& j) {
+  return j.type == RobotJoint::Type::kRevolute || j.type == RobotJoint::Type::kContinuous ||
+         j.type == RobotJoint::Type::kPrismatic;
+}
+
+std::pair<double, double> jointSampleRange(const RobotJoint& j) {
+  constexpr double kPi = std::numbers::pi;
+  const double lo = std::min(j.lower, j.upper), hi = std::max(j.lower, j.upper);
+  const bool full_turn = j.type == RobotJoint::Type::kRevolute && !(hi - lo < 2.0 * kPi);
+  if (j.type == RobotJoint::Type::kContinuous || full_turn) return {-kPi, kPi};
+  return {lo, hi};
 }
 
 const char* jointTypeName(RobotJoint::Type type) {

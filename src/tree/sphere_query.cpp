@@ -18,6 +18,7 @@
 #include "sphereset/query.hpp"
 #include "sphereset/sphere_tree.hpp"
 #include "sphereset/tree.hpp"
+#include "tree/median_tree.hpp"
 #include "tree/query_oracles.hpp"
 #include "util/ray_sphere.hpp"
 
@@ -280,19 +281,52 @@ Expected<bool> overlaps(const SphereTree& a, const Pose& pose_a, const SphereTre
   return found;
 }
 
-SphereTree queryTree(const std::vector<Sphere>& spheres, int branching) {
-  TreeOptions o;
-  o.branching = std::max(2, branching);
-  o.depth = 1;
-  int64_t cap = o.branching;
-  while (cap < static_cast<int64_t>(spheres.size())) {
-    cap *= o.branching;
-    ++o.depth;
+int64_t maxQueryTreeSpheres(int branching) {
+  int64_t leaves = 1;
+  for (int depth = 1; SphereTree::slotCount(branching, depth) > 0; ++depth) leaves *= branching;
+  return leaves;
+}
+
+Expected<SphereTree> queryTree(const std::vector<Sphere>& spheres, int branching,
+                               std::vector<int64_t>* leaf_index) {
+  if (Status st = limits::checkRange("branching", branching, 2, kMaxQueryBranching); !st)
+    return st.error();
+  for (size_t i = 0; i < spheres.size(); ++i)
+    if (Status st =
+            checkSphere("sphere " + std::to_string(i), spheres[i], ErrorCode::kInvalidArgument);
+        !st)
+      return st.error();
+  if (leaf_index) leaf_index->clear();
+  if (spheres.empty()) return SphereTree{};
+  const auto n = static_cast<int64_t>(spheres.size());
+  if (const int64_t most = maxQueryTreeSpheres(branching); n > most)
+    return Error{ErrorCode::kInvalidArgument,
+                 std::to_string(n) + " spheres: a query tree of branching " +
+                     std::to_string(branching) + " holds at most " + std::to_string(most) +
+                     " (SphereTree::kMaxSlots)"};
+  detail::IndexedTree t = detail::medianTree(spheres, branching);
+  if (leaf_index) *leaf_index = std::move(t.leaf_index);
+  return std::move(t.tree);
+}
+
+Expected<SphereTree> queryTreeOf(const SphereTree& tree, std::vector<int64_t>* slot_of) {
+  if (slot_of) slot_of->clear();
+  if (tree.depth >= 2 && checkSphereTree(tree).ok()) return tree;
+  if (tree.nodes.empty()) return SphereTree{};
+  // The used slots of the last level, in slot order (the order of tree.leaves()).
+  std::vector<int64_t> leaf_slots;
+  const int64_t first = tree.levelBegin(tree.depth);
+  for (int64_t s = first; s < first + tree.levelSize(tree.depth); ++s)
+    if (s < static_cast<int64_t>(tree.nodes.size()) && tree.used(s)) leaf_slots.push_back(s);
+  std::vector<int64_t> position;
+  auto made = queryTree(tree.leaves(), 8, slot_of ? &position : nullptr);
+  if (!made) return made.error();
+  if (slot_of) {
+    slot_of->assign(position.size(), -1);
+    for (size_t k = 0; k < position.size(); ++k)
+      if (position[k] >= 0) (*slot_of)[k] = leaf_slots[static_cast<size_t>(position[k])];
   }
-  o.max_iterations = 10;
-  auto r = buildSphereTree(spheres, o, nullptr);
-  if (!r) return {};  // only for an empty or invalid set
-  return std::move(r->tree);
+  return made;
 }
 
 }  // namespace sphereset

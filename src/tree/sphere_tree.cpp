@@ -106,10 +106,9 @@ Expected<SphereTree> makeSphereTree(int branching, int depth, std::vector<Sphere
   for (size_t i = 0; i < t.nodes.size(); ++i) {
     const Sphere& s = t.nodes[i];
     // A NaN radius is neither used nor unused: refuse it with the centres.
-    if ((s.radius >= 0.0 || std::isnan(s.radius)) &&
-        !(s.center.allFinite() && std::isfinite(s.radius)))
-      return Error{ErrorCode::kInvalidData,
-                   "sphere tree: node " + std::to_string(i) + " has a NaN or infinite value"};
+    if (s.radius >= 0.0 || std::isnan(s.radius))
+      if (Status st = checkSphere("sphere tree: node " + std::to_string(i), s); !st)
+        return st.error();
   }
   if (Status st = checkSphereTree(t, tolerance); !st) return st.error();
   lowerLeaves(&t);

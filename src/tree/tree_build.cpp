@@ -175,9 +175,9 @@ Expected<TreeResult> buildSphereTree(std::span<const Sphere> leaves, const TreeO
                  std::to_string(nl) + " leaves do not fit a tree of branching " +
                      std::to_string(o.branching) + " and depth " + std::to_string(o.depth) +
                      " (at most " + std::to_string(max_leaves) + ")"};
-  for (const Sphere& s : leaves)
-    if (!s.center.allFinite() || !std::isfinite(s.radius) || s.radius < 0.0)
-      return Error{ErrorCode::kInvalidData, "a leaf sphere is NaN, infinite or negative"};
+  for (size_t i = 0; i < leaves.size(); ++i)
+    if (Status st = checkSphere("leaf sphere " + std::to_string(i), leaves[i]); !st)
+      return st.error();
   if (o.parents == TreeParents::kOutsideVolume && !index)
     return Error{ErrorCode::kInvalidArgument, "outside-volume parents need the mesh"};
 

@@ -1,12 +1,24 @@
-// The one rule for a set of spheres a computation takes (sphere.hpp): the fit's bound, the
-// evaluation and the incremental certificate check their input through it.
+// The one rule for a sphere (sphere.hpp): every reader, query, edit and computation of the
+// library checks spheres through checkSphere, so that a sphere one door accepts, every door
+// accepts.
 #include <cmath>
 #include <string>
 
 #include "sphereset/limits.hpp"
 #include "sphereset/sphere.hpp"
+#include "util/number_text.hpp"
 
 namespace sphereset {
+
+Status checkSphere(const std::string& where, const Sphere& s, ErrorCode code) {
+  if (!s.center.allFinite() || !std::isfinite(s.radius))
+    return Error{code, where + ": NaN or infinite value"};
+  if (s.radius < 0.0) return Error{code, where + ": negative radius"};
+  if (s.center.cwiseAbs().maxCoeff() > limits::kMaxCoordinate || s.radius > limits::kMaxCoordinate)
+    return Error{code, where + ": a value beyond " + detail::numberText(limits::kMaxCoordinate) +
+                           " in magnitude (the coordinate limit)"};
+  return {};
+}
 
 Status checkSphereCount(size_t count, const std::string& what) {
   if (count == 0) return Error{ErrorCode::kInvalidArgument, "no spheres to " + what};
@@ -14,10 +26,7 @@ Status checkSphereCount(size_t count, const std::string& what) {
 }
 
 Status checkSphereValues(const Sphere& s, size_t index) {
-  if (!s.center.allFinite() || !(s.radius >= 0.0) || !std::isfinite(s.radius))
-    return Error{ErrorCode::kInvalidArgument,
-                 "sphere " + std::to_string(index) + " has a NaN, infinite or negative value"};
-  return {};
+  return checkSphere("sphere " + std::to_string(index), s, ErrorCode::kInvalidArgument);
 }
 
 Status checkSphereSet(std::span<const Sphere> spheres, const std::string& what) {

@@ -82,16 +82,13 @@ nlohmann::json joints(const ViewScene& scene) {
   if (!scene.robot) return a;
   // The joints a user moves: revolute, continuous and prismatic, not mimics (they follow).
   for (const RobotJoint& j : scene.robot->joints) {
-    const bool movable = j.type == RobotJoint::Type::kRevolute ||
-                         j.type == RobotJoint::Type::kContinuous ||
-                         j.type == RobotJoint::Type::kPrismatic;
-    if (!movable || j.mimic) continue;
-    const bool turns = j.type == RobotJoint::Type::kContinuous;
+    if (!isMovable(j) || j.mimic) continue;
+    const auto [lower, upper] = jointSampleRange(j);
     const auto v = scene.joint_values.find(j.name);
     a.push_back({{"name", j.name},
                  {"type", jointTypeName(j.type)},
-                 {"lower", turns ? -std::numbers::pi : j.lower},
-                 {"upper", turns ? std::numbers::pi : j.upper},
+                 {"lower", lower},
+                 {"upper", upper},
                  {"value", v == scene.joint_values.end() ? 0.0 : v->second}});
   }
   return a;

@@ -227,5 +227,28 @@ TEST(MeanValue, UpdateDoesNotDependOnTheThreadCount) {
   EXPECT_EQ(one, many);
 }
 
+// A point at 1e30 (within the coordinate limit) used to get weights of ±inf: the weights of
+// every point are finite numbers, or the point is named as too far for double precision.
+TEST(MeanValue, AFarPointIsRefusedNotInfinite) {
+  const Mesh m = makeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  for (double far : {1e6, 1e30}) {
+    auto w = meanValueWeights(m, {Vec3(0.1, 0.2, 0.3), Vec3(far, 0, 0)});
+    auto mat = meanValueMatrix(m, {Vec3(0.1, 0.2, 0.3), Vec3(far, 0, 0)});
+    if (w) {
+      EXPECT_TRUE(w->weights.allFinite()) << far;
+      ASSERT_TRUE(mat);
+      EXPECT_TRUE(mat->allFinite()) << far;
+      continue;
+    }
+    EXPECT_EQ(w.error().code, ErrorCode::kInvalidArgument);
+    EXPECT_NE(w.error().message.find("point 1: its mean value coordinates are not finite"),
+              std::string::npos)
+        << w.error().message;
+    ASSERT_FALSE(mat);
+    EXPECT_EQ(mat.error().message, w.error().message);
+  }
+  EXPECT_FALSE(meanValueWeights(m, {Vec3(1e30, 1e30, 0)}));
+}
+
 }  // namespace
 }  // namespace sphereset

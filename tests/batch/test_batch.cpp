@@ -202,7 +202,7 @@ TEST_F(BatchTest, BadManifestLinesNameTheFileAndLine) {
       {"empty.csv", "mesh,n\n,3\n", ":2: the mesh path is empty"},
       {"quality.csv", "mesh,quality\na.obj,great\n", ":2: quality 'great': expected fast"},
       {"padding.csv", "mesh,padding\na.obj,-1\n",
-       ":2: padding '-1': expected a finite number >= 0"},
+       ":2: padding '-1': expected a number from 0 to 1e+30"},
       {"out.csv", "mesh,output\na.obj,../x.json\n", ":2: output '../x.json': expected a relative"},
       {"outext.csv", "mesh,output\na.obj,x.obj\n", ":2: output 'x.obj': the extension"},
       {"same.csv", "mesh,n\na.obj,3\na.obj,4\n", ":3: writes a.obj.json as"},

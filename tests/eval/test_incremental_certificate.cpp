@@ -348,8 +348,9 @@ TEST(IncrementalCertificate, RefusesBadInputsAndChangesNothing) {
   };
   expectRefusal(made(makeCoverageCertificate(idx, {})), "no spheres to evaluate");
   expectRefusal(made(makeCoverageCertificate(idx, {{Vec3::Zero(), 1.0}, {Vec3(nan, 0, 0), 1.0}})),
-                "sphere 1 has a NaN, infinite or negative value");
-  expectRefusal(made(makeCoverageCertificate(idx, {{Vec3::Zero(), -1.0}})), "sphere 0 has a NaN");
+                "sphere 1: NaN or infinite value");
+  expectRefusal(made(makeCoverageCertificate(idx, {{Vec3::Zero(), -1.0}})),
+                "sphere 0: negative radius");
   expectRefusal(made(makeCoverageCertificate(
                     idx, std::vector<Sphere>(limits::kMaxSpheres + 1, {Vec3::Zero(), 1.0}))),
                 "spheres must be from 1 to 1000000");
@@ -370,13 +371,14 @@ TEST(IncrementalCertificate, RefusesBadInputsAndChangesNothing) {
   expectRefusal(cert->setSphere(2, {Vec3::Zero(), 1.0}),
                 "sphere index 2 is out of range (the set has 2 spheres)");
   expectRefusal(cert->setSphere(-1, {Vec3::Zero(), 1.0}), "sphere index -1 is out of range");
-  expectRefusal(cert->setSphere(0, {Vec3::Zero(), inf}), "sphere 0 has a NaN");
-  expectRefusal(cert->setSphere(1, {Vec3(0, inf, 0), 1.0}), "sphere 1 has a NaN");
-  expectRefusal(cert->setSphere(1, {Vec3::Zero(), nan}), "sphere 1 has a NaN");
-  expectRefusal(cert->addSphere({Vec3::Zero(), -0.5}), "sphere 2 has a NaN");
+  expectRefusal(cert->setSphere(0, {Vec3::Zero(), inf}), "sphere 0: NaN or infinite value");
+  expectRefusal(cert->setSphere(1, {Vec3(0, inf, 0), 1.0}), "sphere 1: NaN or infinite value");
+  expectRefusal(cert->setSphere(1, {Vec3::Zero(), nan}), "sphere 1: NaN or infinite value");
+  expectRefusal(cert->addSphere({Vec3::Zero(), -0.5}), "sphere 2: negative radius");
   expectRefusal(cert->removeSphere(5), "sphere index 5 is out of range");
   expectRefusal(cert->setSpheres({}), "no spheres to evaluate");
-  expectRefusal(cert->setSpheres({{Vec3::Zero(), 1.0}, {Vec3::Zero(), nan}}), "sphere 1 has a NaN");
+  expectRefusal(cert->setSpheres({{Vec3::Zero(), 1.0}, {Vec3::Zero(), nan}}),
+                "sphere 1: NaN or infinite value");
   ASSERT_TRUE(cert->removeSphere(0).ok());
   expectRefusal(cert->removeSphere(0), "cannot remove sphere 0: no spheres to evaluate");
   // The refusals changed nothing: one sphere left, the larger one, still covering.

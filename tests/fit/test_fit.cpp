@@ -2,9 +2,13 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <map>
+#include <new>
 #include <string>
+#include <vector>
 
+#include "fit/guarded_optimize.hpp"
 #include "fit/restarts.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
@@ -119,6 +123,65 @@ TEST(Fit, ProgressIsPolledInsideLongPhasesAndCanCancelThem) {
   FitOptions bad = o;
   bad.progress_interval = -1.0;
   EXPECT_FALSE(fitSpheres(index, bad).ok());
+}
+
+// NLopt's C++ wrapper catches what an objective throws: a cancellation from the poll inside the
+// coverage refinement's energy (refinement is on by default) was swallowed, and the fit ran on
+// and returned. A callback that throws once, the first time it is polled from inside an
+// optimiser's objective (as a Python KeyboardInterrupt is raised once), now ends the fit.
+TEST(Fit, ACancellationInsideTheOptimiserLeavesTheFit) {
+  const SolidIndex index(test::robotLink());
+  FitOptions o;
+  o.num_spheres = 8;
+  o.target_points = 1000;
+  o.progress_interval = 0.0;
+  struct Stop {};
+  bool thrown = false;
+  o.progress = [&](const FitProgress&) {
+    if (!thrown && detail::ObjectiveGuard::active()) {
+      thrown = true;
+      throw Stop{};
+    }
+  };
+  EXPECT_THROW((void)fitSpheres(index, o), Stop);
+  EXPECT_TRUE(thrown) << "no poll inside an optimiser: the test tests nothing";
+}
+
+TEST(Fit, AnObjectivesExceptionIsCarriedOutOfNlopt) {
+  struct Mine {};
+  for (int kind = 0; kind < 3; ++kind) {
+    nlopt::opt opt(nlopt::LN_BOBYQA, 2);
+    opt.set_lower_bounds(std::vector<double>{-5, -5});
+    opt.set_upper_bounds(std::vector<double>{5, 5});
+    opt.set_maxeval(200);
+    struct Ctx {
+      detail::ObjectiveGuard guard;
+      int calls = 0;
+      int kind = 0;
+    } ctx;
+    ctx.kind = kind;
+    opt.set_min_objective(
+        [](unsigned, const double* x, double*, void* data) {
+          auto* c = static_cast<Ctx*>(data);
+          return c->guard.call([&] {
+            if (++c->calls == 7 && c->kind == 1) throw Mine{};
+            if (c->calls == 7 && c->kind == 2) throw std::bad_alloc();
+            return (x[0] - 1) * (x[0] - 1) + (x[1] + 2) * (x[1] + 2);
+          });
+        },
+        &ctx);
+    std::vector<double> x{0, 0};
+    double f = 0.0;
+    if (kind == 0) {
+      EXPECT_NO_THROW(ctx.guard.optimize(&opt, &x, &f));  // NLopt's own end: quiet
+      EXPECT_NEAR(x[0], 1.0, 1e-3);
+    } else if (kind == 1) {
+      EXPECT_THROW(ctx.guard.optimize(&opt, &x, &f), Mine);
+    } else {
+      EXPECT_THROW(ctx.guard.optimize(&opt, &x, &f), std::bad_alloc);
+    }
+    EXPECT_EQ(ctx.calls, kind == 0 ? ctx.calls : 7);
+  }
 }
 
 TEST(Fit, PaddingIsAddedToEveryRadius) {

@@ -24,12 +24,31 @@ LinkFitCurve powerLaw(double a, double b) {
 
 TEST(RobotBudget, CurveInterpolatesAndExtrapolatesAPowerLaw) {
   const LinkFitCurve c = powerLaw(3.0, 1.5);
-  for (int k : {1, 3, 5, 8, 16, 40}) EXPECT_NEAR(curveVolume(c, k), 3.0 * std::pow(k, -1.5), 1e-12);
+  for (int k : {1, 3, 5, 8, 16, 40})
+    EXPECT_NEAR(*curveVolume(c, k), 3.0 * std::pow(k, -1.5), 1e-12);
   LinkFitCurve one;
   one.counts = {4};
   one.outside_volume = {2.0};
-  EXPECT_EQ(curveVolume(one, 1), 2.0);
-  EXPECT_EQ(curveVolume(one, 9), 2.0);
+  EXPECT_EQ(*curveVolume(one, 1), 2.0);
+  EXPECT_EQ(*curveVolume(one, 9), 2.0);
+}
+
+// k = -1 used to give NaN (the log of a negative count): refused, as are curves no fit makes.
+TEST(RobotBudget, CurveVolumeRefusesWhatItCannotAnswer) {
+  const LinkFitCurve c = powerLaw(3.0, 1.5);
+  for (int k : {0, -1}) {
+    const auto v = curveVolume(c, k);
+    ASSERT_FALSE(v);
+    EXPECT_EQ(v.error().code, ErrorCode::kInvalidArgument);
+    EXPECT_NE(v.error().message.find("k must be at least 1"), std::string::npos);
+  }
+  EXPECT_FALSE(curveVolume(LinkFitCurve{}, 1));
+  LinkFitCurve bad = c;
+  bad.outside_volume[1] = std::nan("");
+  EXPECT_FALSE(curveVolume(bad, 2));
+  bad = c;
+  bad.counts[1] = bad.counts[0];
+  EXPECT_FALSE(curveVolume(bad, 2));
 }
 
 TEST(RobotBudget, GreedySplitFollowsTheLargestGain) {
@@ -45,7 +64,7 @@ TEST(RobotBudget, GreedySplitFollowsTheLargestGain) {
   EXPECT_EQ((*s)[1], 1);
   // The split never has a larger total outside volume than an even one.
   auto total = [&](const std::vector<int>& n) {
-    return curveVolume(curves[0], n[0]) + curveVolume(curves[1], n[1]);
+    return *curveVolume(curves[0], n[0]) + *curveVolume(curves[1], n[1]);
   };
   auto s10 = splitBudget(curves, {-1, -1}, 10);
   ASSERT_TRUE(s10.ok());
@@ -93,10 +112,10 @@ TEST(RobotBudget, EnvelopeIsDecreasingConvexAndBelowEveryMeasurement) {
   EXPECT_EQ(e.counts.back(), 32);
   // Every measurement lies on or above the envelope; the envelope never rises.
   for (size_t i = 0; i < c.counts.size(); ++i)
-    EXPECT_LE(curveVolume(e, c.counts[i]), c.outside_volume[i] * (1 + 1e-12)) << c.counts[i];
+    EXPECT_LE(*curveVolume(e, c.counts[i]), c.outside_volume[i] * (1 + 1e-12)) << c.counts[i];
   double prev_gain = 1e300;
   for (int k = 1; k < 40; ++k) {
-    const double gain = curveVolume(e, k) - curveVolume(e, k + 1);
+    const double gain = *curveVolume(e, k) - *curveVolume(e, k + 1);
     EXPECT_GE(gain, 0.0) << k;
     EXPECT_LE(gain, prev_gain * (1 + 1e-9)) << k;  // diminishing returns: convex
     prev_gain = gain;
@@ -106,14 +125,14 @@ TEST(RobotBudget, EnvelopeIsDecreasingConvexAndBelowEveryMeasurement) {
   // A power law is its own envelope (collinear points in log-log may be dropped).
   const LinkFitCurve p = powerLaw(3.0, 1.5);
   const LinkFitCurve pe = curveEnvelope(p);
-  for (int k : {1, 3, 8, 20}) EXPECT_NEAR(curveVolume(pe, k), curveVolume(p, k), 1e-12) << k;
+  for (int k : {1, 3, 8, 20}) EXPECT_NEAR(*curveVolume(pe, k), *curveVolume(p, k), 1e-12) << k;
   // A link bounded exactly stops at its 0.
   LinkFitCurve z;
   z.counts = {1, 2, 4};
   z.outside_volume = {1.0, 0.0, 0.5};
   const LinkFitCurve ze = curveEnvelope(z);
   EXPECT_EQ(ze.counts, (std::vector<int>{1, 2}));
-  EXPECT_EQ(curveVolume(ze, 7), 0.0);
+  EXPECT_EQ(*curveVolume(ze, 7), 0.0);
 }
 
 TEST(RobotBudget, SplitUsesTheEnvelopeNotTheNoise) {

@@ -113,6 +113,32 @@ TEST(CollisionMatrix, AlwaysAboveTheFractionAndDefaultPoseFirst) {
   EXPECT_EQ(disableReasonName(findPair(*m, "link1", "tool")->reason), std::string("Default"));
 }
 
+// Revolute limits of ±1e308 used to make every sampled configuration infinite, every sample was
+// skipped and a pair that collides was written "Never" (SRDF, cuRobo's ignore list): the joint is
+// sampled over one turn, where link1 and tool touch for q2 in (-1.501, 2.001), 55.7 % of it.
+TEST(CollisionMatrix, HugeRevoluteLimitsSampleOneTurn) {
+  Robot robot = test::threeLinkRobot();
+  for (RobotJoint& j : robot.joints)
+    if (j.name == "joint2") {
+      j.lower = -1e308;
+      j.upper = 1e308;
+    }
+  CollisionSamplingOptions o;
+  o.samples = 4000;
+  o.default_pose = {{"joint2", -2.0}};
+  auto m = sampleSelfCollisions(robot, mostlyTouching(), o);
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  EXPECT_EQ(findPair(*m, "link1", "tool"), nullptr) << "a pair that collides was disabled";
+  EXPECT_EQ(m->enabled, 1);
+  // Limits no pose can use (a robot made in code, not read): an error, never "Never".
+  for (RobotJoint& j : robot.joints)
+    if (j.name == "joint2") j.type = RobotJoint::Type::kPrismatic;
+  m = sampleSelfCollisions(robot, mostlyTouching(), o);
+  ASSERT_FALSE(m.ok());
+  EXPECT_NE(m.error().message.find("sampled configuration"), std::string::npos)
+      << m.error().message;
+}
+
 TEST(CollisionMatrix, SameOnAnyThreadCountAndSeedMatters) {
   const Robot robot = test::threeLinkRobot();
   CollisionSamplingOptions o;

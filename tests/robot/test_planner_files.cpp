@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "io/sphere_formats.hpp"
 #include "robot/robot_data.hpp"
 #include "sphereset/robot.hpp"
 #include "sphereset/robot_collision.hpp"
@@ -165,6 +166,34 @@ TEST_F(PlannerFiles, LulaDescriptionReadsBackAsWritten) {
     EXPECT_EQ((*back)[i].link, spheres[i].link);
     EXPECT_TRUE(sameSpheres((*back)[i].spheres, spheres[i].spheres)) << spheres[i].link;
   }
+}
+
+// A robot name holding a line break (a URDF's "&#10;") used to end the header comment and start a
+// collision_spheres: key, which the library's own reader then took: every name and comment is
+// escaped by the YAML writer, and the file reads back with the robot's spheres only.
+TEST_F(PlannerFiles, ARobotNameCannotInjectYaml) {
+  Robot robot = test::threeLinkRobot();
+  for (const char* brk : {"\n", "\r", "\xe2\x80\xa8", "\xc2\x85"}) {
+    robot.name = std::string("evil") + brk + "collision_spheres:" + brk + "  - base_link:" + brk +
+                 "    - center: [9, 9, 9]" + brk + "      radius: 9";
+    const std::vector<LinkSpheres> spheres = threeLinkSpheres();
+    auto text = formatLulaDescription(robot, spheres, {});
+    ASSERT_TRUE(text.ok()) << text.error().message;
+    const std::string first = text->substr(0, text->find('\n'));
+    EXPECT_NE(first.find("evil"), std::string::npos);
+    EXPECT_NE(first.find("radius: 9"), std::string::npos) << "the whole name stays in the comment";
+    EXPECT_EQ(first.find('\r'), std::string::npos);
+    const std::string file = path("evil.lula.yml");
+    ASSERT_TRUE(writeLulaDescription(file, robot, spheres, {}).ok());
+    auto back = readLinkSpheres(file);
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    ASSERT_EQ(back->size(), spheres.size());
+    for (size_t i = 0; i < spheres.size(); ++i)
+      EXPECT_TRUE(sameSpheres((*back)[i].spheres, spheres[i].spheres)) << spheres[i].link;
+  }
+  EXPECT_EQ(detail::commentLine("a\nb\x7f\xe2\x80\xa9"
+                                "c"),
+            "# a\\x0ab\\x7f\\u2029c\n");
 }
 
 TEST_F(PlannerFiles, LulaRefusesBadSpheresAndNames) {

@@ -5,7 +5,9 @@
 #include <stdlib.h>
 
 #include <filesystem>
+#include <numbers>
 #include <string>
+#include <utility>
 
 #include "robot/robot_data.hpp"
 #include "sphereset/robot.hpp"
@@ -287,6 +289,44 @@ TEST_F(Urdf, DeeplyNestedElementsAreRefused) {
   flat += "--><link name=\"a\"/></robot>\n";
   auto r = loadRobot(write("flat.urdf", flat));
   EXPECT_TRUE(r.ok()) << r.error().message;
+}
+
+// Limits urdfdom accepts but no pose can use: "nan" and "inf", and a prismatic joint moving
+// beyond the coordinate limit, are refused naming the joint; a revolute joint's huge limits are
+// kept (its poses repeat every turn) and sampled over one turn.
+TEST_F(Urdf, JointLimitsThatCannotBePosedAreRefused) {
+  auto robotWith = [&](const std::string& name, const std::string& type, const std::string& lo,
+                       const std::string& hi) {
+    return write(name,
+                 "<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/><joint name=\"j\" "
+                 "type=\"" +
+                     type +
+                     "\"><parent link=\"a\"/><child link=\"b\"/><axis "
+                     "xyz=\"0 0 1\"/><limit lower=\"" +
+                     lo + "\" upper=\"" + hi + "\" effort=\"1\" velocity=\"1\"/></joint></robot>");
+  };
+  auto refused = loadRobot(robotWith("nan.urdf", "revolute", "nan", "1"));
+  ASSERT_FALSE(refused);
+  EXPECT_EQ(refused.error().code, ErrorCode::kInvalidData);
+  // urdfdom refuses "nan" itself; the reader's own check catches what it lets through.
+  EXPECT_NE(refused.error().message.find("nan.urdf: "), std::string::npos)
+      << refused.error().message;
+  EXPECT_NE(refused.error().message.find("(nan)"), std::string::npos) << refused.error().message;
+  refused = loadRobot(robotWith("far.urdf", "prismatic", "-1e308", "1e308"));
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().message.find("joint 'j': prismatic limits beyond 1e+30"),
+            std::string::npos)
+      << refused.error().message;
+  auto huge = loadRobot(robotWith("huge.urdf", "revolute", "-1e308", "1e308"));
+  ASSERT_TRUE(huge) << huge.error().message;
+  ASSERT_EQ(huge->joints.size(), 1u);
+  EXPECT_TRUE(isMovable(huge->joints[0]));
+  const auto [lo, hi] = jointSampleRange(huge->joints[0]);
+  EXPECT_DOUBLE_EQ(lo, -std::numbers::pi);
+  EXPECT_DOUBLE_EQ(hi, std::numbers::pi);
+  auto small = loadRobot(robotWith("small.urdf", "prismatic", "0.1", "-0.2"));
+  ASSERT_TRUE(small);
+  EXPECT_EQ(jointSampleRange(small->joints[0]), std::make_pair(-0.2, 0.1));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Queries on sphere trees against brute force over all spheres or pairs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -38,7 +39,7 @@ Vec3 randomPoint(std::mt19937_64& rng) {
 TEST(Query, PointQueriesMatchBruteForce) {
   for (int n : {1, 64, 500}) {
     const auto s = blob(n, n);
-    const SphereTree t = queryTree(s);
+    const SphereTree t = *queryTree(s);
     ASSERT_TRUE(checkSphereTree(t).ok());
     std::mt19937_64 rng(7);
     for (int k = 0; k < 500; ++k) {
@@ -58,14 +59,14 @@ TEST(Query, SegmentOutsideLengthMatchesBruteForceAndClosedForm) {
   // Two overlapping unit balls on the x axis: the segment from -2 to 4 is inside over
   // [-1, 2], so 3 of its 6 units are outside; overlaps count once.
   const std::vector<Sphere> two = {{Vec3(0, 0, 0), 1.0}, {Vec3(1, 0, 0), 1.0}};
-  EXPECT_NEAR(*segmentOutsideLength(queryTree(two), Vec3(-2, 0, 0), Vec3(4, 0, 0)), 3.0, 1e-12);
+  EXPECT_NEAR(*segmentOutsideLength(*queryTree(two), Vec3(-2, 0, 0), Vec3(4, 0, 0)), 3.0, 1e-12);
   // A chord off the centre: at y = 0.6 the unit ball spans x in [-0.8, 0.8], so 4 - 1.6 of
   // the segment from x = -2 to 2 is outside.
   const std::vector<Sphere> unit = {{Vec3::Zero(), 1.0}};
-  EXPECT_NEAR(*segmentOutsideLength(queryTree(unit), Vec3(-2, 0.6, 0), Vec3(2, 0.6, 0)), 2.4,
+  EXPECT_NEAR(*segmentOutsideLength(*queryTree(unit), Vec3(-2, 0.6, 0), Vec3(2, 0.6, 0)), 2.4,
               1e-12);
   const auto s = blob(300, 3);
-  const SphereTree t = queryTree(s);
+  const SphereTree t = *queryTree(s);
   std::mt19937_64 rng(11);
   for (int k = 0; k < 1000; ++k) {
     const Vec3 a = randomPoint(rng), b = randomPoint(rng);
@@ -78,7 +79,7 @@ TEST(Query, SeparationAndOverlapMatchBruteForceUnderRandomPoses) {
   int overlapping = 0, apart = 0;
   for (int k = 0; k < 200; ++k) {
     const auto sa = blob(20 + k % 90, 100 + k), sb = blob(10 + k % 70, 500 + k);
-    const SphereTree ta = queryTree(sa, 4 + k % 5), tb = queryTree(sb);
+    const SphereTree ta = *queryTree(sa, 4 + k % 5), tb = *queryTree(sb);
     ASSERT_TRUE(checkSphereTree(ta).ok() && checkSphereTree(tb).ok());
     const Pose pa = randomPose(rng, 1.0), pb = randomPose(rng, 4.0);
     const PairQuery q = *separation(ta, pa, tb, pb);
@@ -108,7 +109,7 @@ TEST(Query, SeparationAndOverlapMatchBruteForceUnderRandomPoses) {
 
 TEST(Query, TreeVisitsFewerPairsThanBruteForce) {
   const auto sa = blob(1000, 1), sb = blob(1000, 2);
-  const SphereTree ta = queryTree(sa), tb = queryTree(sb);
+  const SphereTree ta = *queryTree(sa), tb = *queryTree(sb);
   Pose pb;
   pb.translation = Vec3(12.0, 0.0, 0.0);
   const PairQuery q = *separation(ta, Pose{}, tb, pb);
@@ -119,7 +120,7 @@ TEST(Query, TreeVisitsFewerPairsThanBruteForce) {
 // A NaN point used to be "outside, inf" and a segment of length 1.7e154 "inf of inf outside":
 // every query now refuses what it cannot answer in finite numbers.
 TEST(Query, NonFiniteOrHugeInputsAreRefused) {
-  const SphereTree t = queryTree({{Vec3::Zero(), 1.0}, {Vec3(3, 0, 0), 1.0}});
+  const SphereTree t = *queryTree({{Vec3::Zero(), 1.0}, {Vec3(3, 0, 0), 1.0}});
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const auto p = pointDistance(t, Vec3(nan, 0, 0));
   ASSERT_FALSE(p);
@@ -176,6 +177,108 @@ TEST(SphereTreeData, ChildlessNodesAboveTheLastLevelAreLeaves) {
   const auto bad = makeSphereTree(2, 2, slots);
   ASSERT_FALSE(bad);
   EXPECT_NE(bad.error().message.find("node 2"), std::string::npos) << bad.error().message;
+}
+
+// A set the layout cannot hold used to become an empty tree, so that a sphere's own centre was
+// "outside, signed distance inf": it is refused, naming the limit.
+TEST(Query, ASetTooLargeForATreeIsRefusedNotEmpty) {
+  EXPECT_EQ(maxQueryTreeSpheres(8), int64_t{1} << 21);
+  EXPECT_EQ(maxQueryTreeSpheres(2), int64_t{1} << 21);
+  const std::vector<Sphere> many(static_cast<size_t>(maxQueryTreeSpheres(8)) + 1,
+                                 Sphere{Vec3::Zero(), 1.0});
+  const auto t = queryTree(many);
+  ASSERT_FALSE(t);
+  EXPECT_EQ(t.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_NE(t.error().message.find("2097153 spheres: a query tree of branching 8 holds at most "
+                                   "2097152"),
+            std::string::npos)
+      << t.error().message;
+  EXPECT_FALSE(queryTree({{Vec3::Zero(), 1.0}}, 1));
+  EXPECT_FALSE(queryTree({{Vec3::Zero(), 1.0}}, kMaxQueryBranching + 1));
+}
+
+// Sphere values beyond the coordinate limit used to load and answer "inside, signed distance
+// inf": the one sphere rule refuses them.
+TEST(Query, SpheresBeyondTheCoordinateLimitAreRefused) {
+  for (const Sphere& bad : {Sphere{Vec3(1e200, 0, 0), 1.0}, Sphere{Vec3::Zero(), 1e31}}) {
+    const auto t = queryTree({{Vec3::Zero(), 1.0}, bad});
+    ASSERT_FALSE(t);
+    EXPECT_NE(t.error().message.find("sphere 1: a value beyond 1e+30 in magnitude"),
+              std::string::npos)
+        << t.error().message;
+  }
+}
+
+// The sets that made the Lloyd-built tree quadratic (thousands of identical or random spheres):
+// the median tree answers exactly as brute force does, every leaf slot names its sphere, and the
+// parents enclose their children.
+TEST(Query, LargeAndDegenerateSetsBuildAndAnswerExactly) {
+  const std::vector<Sphere> same(32769, Sphere{Vec3(1, 2, 3), 0.5});
+  std::vector<int64_t> where;
+  const auto ts = queryTree(same, 8, &where);
+  ASSERT_TRUE(ts);
+  EXPECT_TRUE(checkSphereTree(*ts).ok());
+  EXPECT_TRUE(*containsPoint(*ts, Vec3(1, 2, 3.4)));
+  EXPECT_FALSE(*containsPoint(*ts, Vec3(1, 2, 3.6)));
+  std::vector<int> seen(same.size(), 0);
+  for (int64_t w : where)
+    if (w >= 0) ++seen[static_cast<size_t>(w)];
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(same.size()));
+
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-10.0, 10.0), r(0.01, 0.2);
+  std::vector<Sphere> random(40000);
+  for (Sphere& s : random) s = {Vec3(u(rng), u(rng), u(rng)), r(rng)};
+  for (int branching : {2, 8, 27}) {
+    std::vector<int64_t> slot;
+    const auto t = queryTree(random, branching, &slot);
+    ASSERT_TRUE(t);
+    EXPECT_TRUE(checkSphereTree(*t, 1e-9).ok());
+    for (size_t i = 0; i < random.size(); i += 997) {
+      const auto q = pointDistance(*t, random[i].center);
+      ASSERT_TRUE(q);
+      EXPECT_NEAR(q->distance, pointDistanceBruteForce(random, random[i].center).distance, 1e-12);
+      EXPECT_TRUE(*containsPoint(*t, random[i].center));
+      const auto& leaf = t->nodes[static_cast<size_t>(q->sphere)];
+      const auto& named = random[static_cast<size_t>(slot[static_cast<size_t>(q->sphere)])];
+      EXPECT_EQ(leaf.center, named.center);
+      EXPECT_EQ(leaf.radius, named.radius);
+    }
+  }
+}
+
+// A tree edited in the view so that a parent no longer holds its children, saved and read back:
+// queried as it is, 4 of its 8 leaf centres were "outside". The tree every door queries
+// (queryTreeOf) answers as the leaves do, naming the given tree's slots.
+TEST(Query, ATreeWhoseParentsDoNotHoldTheirLeavesIsQueriedByItsLeaves) {
+  std::vector<Sphere> leaves;
+  for (int i = 0; i < 8; ++i) leaves.push_back({Vec3(i % 2, (i / 2) % 2, i / 4) * 2.0, 0.5});
+  SphereTree t = *queryTree(leaves, 2);
+  ASSERT_EQ(t.depth, 3);
+  ASSERT_TRUE(checkSphereTree(t).ok());
+  t.nodes[1].radius = 0.1;  // a parent of four leaves shrunk by an edit
+  ASSERT_FALSE(checkSphereTree(t).ok());
+  int missed = 0;
+  for (const Sphere& l : leaves) missed += !*containsPoint(t, l.center);
+  EXPECT_EQ(missed, 4);  // what the tree as it is answers
+  std::vector<int64_t> slot_of;
+  const auto q = queryTreeOf(t, &slot_of);
+  ASSERT_TRUE(q);
+  EXPECT_TRUE(checkSphereTree(*q).ok());
+  for (const Sphere& l : leaves) {
+    EXPECT_TRUE(*containsPoint(*q, l.center));
+    const auto d = pointDistance(*q, l.center);
+    ASSERT_TRUE(d);
+    const int64_t slot = slot_of[static_cast<size_t>(d->sphere)];
+    EXPECT_EQ(t.nodes[static_cast<size_t>(slot)].center, l.center);
+  }
+  // A tree that holds its rule is used as it is.
+  const SphereTree good = *queryTree(leaves, 2);
+  std::vector<int64_t> none;
+  const auto same = queryTreeOf(good, &none);
+  ASSERT_TRUE(same);
+  EXPECT_TRUE(none.empty());
+  EXPECT_EQ(same->nodes.size(), good.nodes.size());
 }
 
 }  // namespace
