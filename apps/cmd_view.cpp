@@ -6,13 +6,16 @@
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -38,14 +41,54 @@ struct ViewArgs {
   bool no_open = false;
 };
 
-// Opens `url` in the desktop's browser when xdg-open is there; whatever happens is ignored
-// (a machine without a desktop just shows the printed address).
-void openBrowser(const std::string& url) {
+// The tokened address in a file only this user can read, in a folder of its own (0700, under
+// $XDG_RUNTIME_DIR, else $TMPDIR or /tmp): a page that forwards the browser to the address. The
+// browser is opened on that file, so the command lines of xdg-open and the browser, which every
+// local user can read in ps, never hold the token. The folder is removed when the command ends.
+class Launcher {
+ public:
+  explicit Launcher(const std::string& url) {
+    const char* base = std::getenv("XDG_RUNTIME_DIR");
+    if (base == nullptr || *base == '\0') base = std::getenv("TMPDIR");
+    if (base == nullptr || *base == '\0') base = "/tmp";
+    std::string tmpl = std::string(base) + "/sphereset-view.XXXXXX";
+    if (mkdtemp(tmpl.data()) == nullptr) return;  // mode 0700
+    dir_ = tmpl;
+    const std::string page = dir_ + "/open.html";
+    const int fd = ::open(page.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0) return;
+    const std::string html =
+        "<!doctype html><meta charset=\"utf-8\"><meta name=\"referrer\" content=\"no-referrer\">"
+        "<meta http-equiv=\"refresh\" content=\"0;url=" +
+        url +
+        "\"><title>sphereset view</title>"
+        "<a href=\"" +
+        url + "\">open sphereset view</a>\n";
+    const bool written = ::write(fd, html.data(), html.size()) == static_cast<ssize_t>(html.size());
+    if (::close(fd) == 0 && written) path_ = page;
+  }
+  ~Launcher() {
+    if (dir_.empty()) return;
+    std::error_code ec;
+    std::filesystem::remove_all(dir_, ec);
+  }
+  Launcher(const Launcher&) = delete;
+  Launcher& operator=(const Launcher&) = delete;
+  const std::string& path() const { return path_; }  // empty when it could not be written
+
+ private:
+  std::string dir_, path_;
+};
+
+// Opens the launcher page in the desktop's browser when xdg-open is there; whatever happens is
+// ignored (a machine without a desktop just shows the printed address).
+void openBrowser(const Launcher& launcher) {
+  if (launcher.path().empty()) return;
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  std::string program = "xdg-open", address = url;
+  std::string program = "xdg-open", address = launcher.path();
   char* argv[] = {program.data(), address.data(), nullptr};
   pid_t pid = 0;
   if (posix_spawnp(&pid, "xdg-open", &actions, nullptr, argv, environ) == 0)
@@ -134,7 +177,8 @@ int runView(const ViewArgs& a) {
   signals.serving();
   const std::string url = (*server)->url();
   std::cout << "sphereset view: " << url << std::endl;  // flushed: scripts wait for this line
-  if (!a.no_open) openBrowser(url);
+  std::optional<Launcher> launcher;
+  if (!a.no_open) openBrowser(launcher.emplace(url));
   signals.wait();
   (*server)->stop();
   return kOk;

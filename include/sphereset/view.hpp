@@ -179,7 +179,14 @@ struct ViewResponse {
   int status = 200;
   std::string content_type = "application/json";
   std::string body;
+  // Sent with the answer: handleViewRequest sets viewResponseHeaders() on every answer.
+  std::vector<std::pair<std::string, std::string>> headers;
 };
+
+// The headers of every answer of the API: nothing cached (Cache-Control: no-store), no type
+// guessed from the content (X-Content-Type-Options: nosniff), no address (and with it the page's
+// token) sent to another site (Referrer-Policy: no-referrer), no framing by another page.
+const std::vector<std::pair<std::string, std::string>>& viewResponseHeaders();
 
 // Who may talk to the server: its token and the address it listens on.
 struct ViewAccess {

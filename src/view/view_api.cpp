@@ -10,6 +10,8 @@
 #include <random>
 #include <set>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "sphereset/limits.hpp"
@@ -36,7 +38,9 @@ std::string jsonText(const nlohmann::json& j) {
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-ViewResponse answer(const nlohmann::json& j) { return {kHttpOk, "application/json", jsonText(j)}; }
+ViewResponse answer(const nlohmann::json& j) {
+  return {kHttpOk, "application/json", jsonText(j), {}};
+}
 
 // Longest error message sent back: it may quote what the request held.
 constexpr size_t kMaxMessageChars = 400;
@@ -47,7 +51,7 @@ ViewResponse refuse(int status, const std::string& message) {
   std::string line = message.substr(0, kMaxMessageChars);
   for (char& c : line)
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
-  return {status, "application/json", jsonText({{"error", line}})};
+  return {status, "application/json", jsonText({{"error", line}}), {}};
 }
 
 // A library error as an answer: a file that could not be written or read (the save's) is the
@@ -215,52 +219,61 @@ nlohmann::json setAnswer(const ViewScene& scene, int64_t solid) {
           {"certificate", view_json::certificate(s.certificate)}};
 }
 
-// The POST endpoints, on a parsed body.
-ViewResponse post(ViewScene* scene, const std::string& path, const nlohmann::json& body) {
-  if (path == "/api/edit") {
-    onlyFields(body, {"solid", "edits"}, "body");
-    const int64_t solid = integerField(body, "solid", "body");
-    if (Status st = applyViewEdits(scene, solid, editsOf(body)); !st) return refuse(st.error());
-    return answer(setAnswer(*scene, solid));
-  }
-  if (path == "/api/bound") {
-    onlyFields(body, {"solid"}, "body");
-    const int64_t solid = integerField(body, "solid", "body");
-    if (Status st = boundViewSolid(scene, solid); !st) return refuse(st.error());
-    return answer(setAnswer(*scene, solid));
-  }
-  if (path == "/api/level") {
-    onlyFields(body, {"solid", "level"}, "body");
-    const int64_t solid = integerField(body, "solid", "body");
-    const int64_t level = integerField(body, "level", "body");
-    if (Status st = setViewLevel(scene, solid, level); !st) return refuse(st.error());
-    return answer(setAnswer(*scene, solid));
-  }
-  if (path == "/api/pose") {
-    onlyFields(body, {"joints"}, "body");
-    const nlohmann::json& j = field(body, "joints", "body");
-    if (!j.is_object()) throw BodyError{"body: 'joints' must be an object"};
-    std::map<std::string, double> values;
-    for (const auto& [name, v] : j.items()) values[name] = number(v, "joint '" + name + "'");
-    if (Status st = setViewJoints(scene, values); !st) return refuse(st.error());
-    return answer({{"version", scene->version},
-                   {"poses", view_json::poses(*scene)},
-                   {"joints", view_json::joints(*scene)}});
-  }
-  // /api/save: the path is the scene's, fixed when it was loaded; the body names nothing.
+// The POST endpoints, each on a parsed body.
+ViewResponse postEdit(ViewScene* scene, const nlohmann::json& body) {
+  onlyFields(body, {"solid", "edits"}, "body");
+  const int64_t solid = integerField(body, "solid", "body");
+  if (Status st = applyViewEdits(scene, solid, editsOf(body)); !st) return refuse(st.error());
+  return answer(setAnswer(*scene, solid));
+}
+
+ViewResponse postBound(ViewScene* scene, const nlohmann::json& body) {
+  onlyFields(body, {"solid"}, "body");
+  const int64_t solid = integerField(body, "solid", "body");
+  if (Status st = boundViewSolid(scene, solid); !st) return refuse(st.error());
+  return answer(setAnswer(*scene, solid));
+}
+
+ViewResponse postLevel(ViewScene* scene, const nlohmann::json& body) {
+  onlyFields(body, {"solid", "level"}, "body");
+  const int64_t solid = integerField(body, "solid", "body");
+  const int64_t level = integerField(body, "level", "body");
+  if (Status st = setViewLevel(scene, solid, level); !st) return refuse(st.error());
+  return answer(setAnswer(*scene, solid));
+}
+
+ViewResponse postPose(ViewScene* scene, const nlohmann::json& body) {
+  onlyFields(body, {"joints"}, "body");
+  const nlohmann::json& j = field(body, "joints", "body");
+  if (!j.is_object()) throw BodyError{"body: 'joints' must be an object"};
+  std::map<std::string, double> values;
+  for (const auto& [name, v] : j.items()) values[name] = number(v, "joint '" + name + "'");
+  if (Status st = setViewJoints(scene, values); !st) return refuse(st.error());
+  return answer({{"version", scene->version},
+                 {"poses", view_json::poses(*scene)},
+                 {"joints", view_json::joints(*scene)}});
+}
+
+// The path is the scene's, fixed when it was loaded; the body names nothing.
+ViewResponse postSave(ViewScene* scene, const nlohmann::json& body) {
   onlyFields(body, {}, "body");
   auto bytes = saveViewScene(*scene);
   if (!bytes) return refuse(bytes.error());
   return answer({{"path", scene->save_path}, {"bytes", *bytes}});
 }
 
-ViewResponse get(const ViewScene& scene, const ViewRequest& r) {
-  if (r.path == "/") {
-    if (Status st = checkViewPage(); !st) return refuse(kHttpServerError, st.error().message);
-    return {kHttpOk, "text/html; charset=utf-8", std::string(view_page::html())};
-  }
-  if (r.path == "/api/scene") return {kHttpOk, "application/json", viewSceneJson(scene)};
-  // /api/geometry?solid=K, K a decimal index.
+// The GET endpoints.
+ViewResponse getPage(const ViewScene&, const ViewRequest&) {
+  if (Status st = checkViewPage(); !st) return refuse(kHttpServerError, st.error().message);
+  return {kHttpOk, "text/html; charset=utf-8", std::string(view_page::html()), {}};
+}
+
+ViewResponse getScene(const ViewScene& scene, const ViewRequest&) {
+  return {kHttpOk, "application/json", viewSceneJson(scene), {}};
+}
+
+// /api/geometry?solid=K, K a decimal index.
+ViewResponse getGeometry(const ViewScene& scene, const ViewRequest& r) {
   const auto q = r.query.find("solid");
   const std::string k = q == r.query.end() ? "" : q->second;
   constexpr size_t kMaxIndexDigits = 9;
@@ -271,8 +284,64 @@ ViewResponse get(const ViewScene& scene, const ViewRequest& r) {
   if (solid >= static_cast<int64_t>(scene.solids.size()))
     return refuse(kHttpBadRequest,
                   "no solid " + k + " (the scene has " + std::to_string(scene.solids.size()) + ")");
-  return {kHttpOk, "application/octet-stream",
-          viewGeometry(scene.solids[static_cast<size_t>(solid)])};
+  return {kHttpOk,
+          "application/octet-stream",
+          viewGeometry(scene.solids[static_cast<size_t>(solid)]),
+          {}};
+}
+
+// The routes, the only paths answered: each path reads (GET, and HEAD) or changes (POST).
+struct Route {
+  std::string_view path;
+  ViewResponse (*get)(const ViewScene&, const ViewRequest&);
+  ViewResponse (*post)(ViewScene*, const nlohmann::json&);
+};
+constexpr Route kRoutes[] = {
+    {"/", getPage, nullptr},
+    {"/api/scene", getScene, nullptr},
+    {"/api/geometry", getGeometry, nullptr},
+    {"/api/edit", nullptr, postEdit},
+    {"/api/bound", nullptr, postBound},
+    {"/api/level", nullptr, postLevel},
+    {"/api/pose", nullptr, postPose},
+    {"/api/save", nullptr, postSave},
+};
+
+const Route* routeOf(const std::string& path) {
+  for (const Route& r : kRoutes)
+    if (r.path == path) return &r;
+  return nullptr;
+}
+
+// The answer before its headers.
+ViewResponse dispatch(ViewScene* scene, const ViewAccess& access, const ViewRequest& request) {
+  if (request.body.size() > static_cast<size_t>(limits::kMaxViewRequestBytes))
+    return refuse(kHttpTooLarge,
+                  "the body is over " + std::to_string(limits::kMaxViewRequestBytes) + " bytes");
+  std::string why;
+  if (const int status = checkAccess(access, request, &why); status != 0)
+    return refuse(status, why);
+  const Route* route = routeOf(request.path);
+  if (route == nullptr) return refuse(kHttpNotFound, "no such path: " + request.path);
+  const bool reads = request.method == "GET" || request.method == "HEAD";
+  if (route->get != nullptr) {
+    if (!reads)
+      return refuse(kHttpBadMethod, request.method + " is not allowed on " + request.path);
+    return route->get(*scene, request);
+  }
+  if (request.method != "POST")
+    return refuse(kHttpBadMethod, request.method + " is not allowed on " + request.path);
+  const std::vector<std::string> type = headerValues(request, "content-type");
+  if (type.size() != 1 || type[0].rfind("application/json", 0) != 0)
+    return refuse(kHttpBadRequest, "the body must be JSON (Content-Type: application/json)");
+  try {
+    const nlohmann::json body = nlohmann::json::parse(request.body);
+    return route->post(scene, body);
+  } catch (const nlohmann::json::exception& e) {
+    return refuse(kHttpBadRequest, std::string("bad JSON: ") + e.what());
+  } catch (const BodyError& e) {
+    return refuse(kHttpBadRequest, e.message);
+  }
 }
 
 }  // namespace
@@ -289,34 +358,21 @@ std::string randomViewToken() {
   return out;
 }
 
+const std::vector<std::pair<std::string, std::string>>& viewResponseHeaders() {
+  static const std::vector<std::pair<std::string, std::string>> kHeaders = {
+      {"Cache-Control", "no-store"},
+      {"X-Content-Type-Options", "nosniff"},
+      {"Referrer-Policy", "no-referrer"},
+      {"X-Frame-Options", "DENY"},
+  };
+  return kHeaders;
+}
+
 ViewResponse handleViewRequest(ViewScene* scene, const ViewAccess& access,
                                const ViewRequest& request) {
-  if (request.body.size() > static_cast<size_t>(limits::kMaxViewRequestBytes))
-    return refuse(kHttpTooLarge,
-                  "the body is over " + std::to_string(limits::kMaxViewRequestBytes) + " bytes");
-  std::string why;
-  if (const int status = checkAccess(access, request, &why); status != 0)
-    return refuse(status, why);
-  static const std::set<std::string> kGets = {"/", "/api/scene", "/api/geometry"};
-  static const std::set<std::string> kPosts = {"/api/edit", "/api/bound", "/api/level", "/api/pose",
-                                               "/api/save"};
-  const bool is_get = kGets.count(request.path) > 0, is_post = kPosts.count(request.path) > 0;
-  if (!is_get && !is_post) return refuse(kHttpNotFound, "no such path: " + request.path);
-  const bool reads = request.method == "GET" || request.method == "HEAD";
-  if (is_get != reads || (is_post && request.method != "POST"))
-    return refuse(kHttpBadMethod, request.method + " is not allowed on " + request.path);
-  if (is_get) return get(*scene, request);
-  const std::vector<std::string> type = headerValues(request, "content-type");
-  if (type.size() != 1 || type[0].rfind("application/json", 0) != 0)
-    return refuse(kHttpBadRequest, "the body must be JSON (Content-Type: application/json)");
-  try {
-    const nlohmann::json body = nlohmann::json::parse(request.body);
-    return post(scene, request.path, body);
-  } catch (const nlohmann::json::exception& e) {
-    return refuse(kHttpBadRequest, std::string("bad JSON: ") + e.what());
-  } catch (const BodyError& e) {
-    return refuse(kHttpBadRequest, e.message);
-  }
+  ViewResponse out = dispatch(scene, access, request);
+  out.headers = viewResponseHeaders();
+  return out;
 }
 
 }  // namespace sphereset

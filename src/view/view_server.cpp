@@ -1,5 +1,8 @@
 // The view's API on a socket (cpp-httplib): every request, whatever its method and path, goes to
-// handleViewRequest under one lock, so the scene sees one request at a time.
+// handleViewRequest under one lock, so the scene sees one request at a time. A request that
+// cannot have the scene within kBusyWait (another one, a Bound of a large set say, holds it) is
+// answered 503 with Retry-After instead of waiting in a worker thread: the page says the server
+// is busy, and the workers stay free for the requests that can be answered.
 #include <algorithm>
 #include <atomic>
 #include <cctype>
@@ -22,7 +25,7 @@ namespace sphereset {
 struct ViewServer::Impl {
   ViewScene scene;
   ViewAccess access;
-  mutable std::mutex lock;
+  mutable std::timed_mutex lock;
   httplib::Server http;
   std::thread thread;
   std::atomic<bool> ended{false};  // listen_after_bind returned
@@ -30,8 +33,12 @@ struct ViewServer::Impl {
 
 namespace {
 
-// HTTP 411: a body without a Content-Length (docs/view.md).
+// HTTP 411: a body without a Content-Length (docs/view.md); 503: the scene is busy.
 constexpr int kLengthRequired = 411;
+constexpr int kServiceUnavailable = 503;
+// How long a request waits for the scene before it is answered 503, and the Retry-After sent.
+constexpr auto kBusyWait = std::chrono::seconds(2);
+constexpr const char* kRetryAfterSeconds = "1";
 
 // The request as the API sees it: header names in lower case, the query's first values.
 ViewRequest viewRequest(const httplib::Request& req) {
@@ -69,12 +76,18 @@ Expected<std::unique_ptr<ViewServer>> ViewServer::start(ViewScene scene, const s
   const auto handler = [self](const httplib::Request& req, httplib::Response& res) {
     const ViewRequest r = viewRequest(req);
     ViewResponse answer;
-    {
-      std::lock_guard<std::mutex> guard(self->lock);
+    std::unique_lock<std::timed_mutex> guard(self->lock, kBusyWait);
+    if (guard.owns_lock()) {
       answer = handleViewRequest(&self->scene, self->access, r);
+      guard.unlock();
+    } else {
+      answer.status = kServiceUnavailable;
+      answer.body = "{\"error\": \"the server is busy with another request; try again\"}";
+      answer.headers = viewResponseHeaders();
+      res.set_header("Retry-After", kRetryAfterSeconds);
     }
     res.status = answer.status;
-    res.set_header("Cache-Control", "no-store");
+    for (const auto& [name, value] : answer.headers) res.set_header(name.c_str(), value);
     res.set_content(std::move(answer.body), answer.content_type.c_str());
   };
   const std::string any = ".*";
@@ -84,9 +97,11 @@ Expected<std::unique_ptr<ViewServer>> ViewServer::start(ViewScene scene, const s
   self->http.Patch(any, handler);
   self->http.Delete(any, handler);
   self->http.Options(any, handler);
-  // httplib answers a Content-Length over the cap itself (413) before reading the body. A body
-  // without one (chunked, or read until the connection closes) has no size to check before it
-  // is read: such requests are refused (411) before httplib reads anything.
+  // httplib answers a Content-Length over the cap itself (413) after reading the headers; the
+  // answer is sent once the body has been read and discarded, so a client is never left writing
+  // into a closed socket. A body without a Content-Length (chunked, or read until the
+  // connection closes) has no size to check before it is read: such requests are refused (411)
+  // before httplib reads any of it.
   self->http.set_payload_max_length(static_cast<size_t>(limits::kMaxViewRequestBytes));
   self->http.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
     const bool has_body = req.method != "GET" && req.method != "HEAD" && req.method != "OPTIONS";
@@ -137,7 +152,7 @@ std::string ViewServer::url() const {
 }
 
 ViewScene ViewServer::scene() const {
-  std::lock_guard<std::mutex> guard(impl_->lock);
+  std::lock_guard<std::timed_mutex> guard(impl_->lock);
   return impl_->scene;
 }
 

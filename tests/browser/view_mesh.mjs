@@ -22,6 +22,13 @@ await runTest(async (args, browser) => {
     'scene() holds the set');
   check(await pageStatus(page) === 'covered', 'status "covered" for a set around the box');
   check(await hooks(() => window.sphereset.redTriangles(0)) === 0, 'no red triangles');
+  // The token leaves the address bar once the page has read it; every answer forbids sniffing,
+  // referrers and framing.
+  check(await page.evaluate(() => location.search) === '', 'the token is gone from the address');
+  const first = await fetch(url);
+  check(first.headers.get('x-content-type-options') === 'nosniff' &&
+    first.headers.get('referrer-policy') === 'no-referrer' &&
+    first.headers.get('cache-control') === 'no-store', 'the page is sent with its safety headers');
 
   const before = await canvasShot(page);
   const plain = await pixelStats(browser, before);

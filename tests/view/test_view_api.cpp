@@ -324,6 +324,53 @@ TEST_F(ViewTest, ARepairedMeshShowsAndCertifiesItsOriginalTriangles) {
   EXPECT_FALSE(scene->solids[0].certificate.covered);
 }
 
+// Every answer, refusals included, carries the safety headers; a POST to a path the table does
+// not hold is "no such path", never a save.
+TEST_F(ViewTest, EveryAnswerHasItsHeadersAndOnlyTheRoutesAnswer) {
+  ViewScene scene = boxScene();
+  const auto has = [](const ViewResponse& r, const std::string& name, const std::string& value) {
+    for (const auto& [k, v] : r.headers)
+      if (k == name && v == value) return true;
+    return false;
+  };
+  ViewRequest unknown = post("/api/saveas", nlohmann::json::object());
+  for (const ViewRequest& r : {request("GET", "/api/scene", ""), unknown,
+                               request("GET", "/nothing", ""), post("/api/save", {{"x", 1}})}) {
+    const ViewResponse a = handleViewRequest(&scene, kAccess, r);
+    EXPECT_TRUE(has(a, "X-Content-Type-Options", "nosniff")) << r.path;
+    EXPECT_TRUE(has(a, "Referrer-Policy", "no-referrer")) << r.path;
+    EXPECT_TRUE(has(a, "Cache-Control", "no-store")) << r.path;
+  }
+  const ViewResponse a = handleViewRequest(&scene, kAccess, unknown);
+  EXPECT_EQ(a.status, 404);
+  EXPECT_NE(a.body.find("no such path: /api/saveas"), std::string::npos) << a.body;
+}
+
+// One request of thousands of adds used to take each through the incremental certificate (8 000
+// adds: 18 s, holding the scene): many edits get one full certificate, the same as edit by edit.
+TEST_F(ViewTest, ARequestOfManyAddsIsCertifiedInFull) {
+  ViewScene scene = boxScene();
+  nlohmann::json edits = nlohmann::json::array();
+  for (int i = 0; i < 4000; ++i)
+    edits.push_back(
+        {{"op", "add"}, {"sphere", {0.001 * (i % 1000), 0.0005 * (i % 7), 0.1, 0.01 + 1e-6 * i}}});
+  edits.push_back({{"op", "delete"}, {"index", 0}});
+  const nlohmann::json j = call(&scene, post("/api/edit", {{"solid", 0}, {"edits", edits}}));
+  EXPECT_EQ(scene.solids[0].spheres().size(), 2u + 4000u - 1u);
+  ViewSolid full = scene.solids[0];
+  certifyViewSolid(&full);
+  const ViewCertificate& c = scene.solids[0].certificate;
+  EXPECT_EQ(c.uncovered_triangles, full.certificate.uncovered_triangles);
+  EXPECT_EQ(c.er_sum, full.certificate.er_sum);
+  EXPECT_EQ(c.covered, full.certificate.covered);
+  EXPECT_EQ(j["spheres"].size(), 4001u);
+  // The next single edit is incremental again, on the full certificate's engine.
+  call(&scene, post("/api/edit", {{"solid", 0}, {"edits", {{{"op", "delete"}, {"index", 0}}}}}));
+  full = scene.solids[0];
+  certifyViewSolid(&full);
+  EXPECT_EQ(scene.solids[0].certificate.er_sum, full.certificate.er_sum);
+}
+
 TEST_F(ViewTest, BadRequestsChangeNothing) {
   ViewScene scene = boxScene();
   const std::string before = viewSceneJson(scene);

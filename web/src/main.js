@@ -11,6 +11,8 @@ function source() {
   if (data) return { api: null, staticScene: JSON.parse(data.textContent) };
   const token = new URLSearchParams(location.search).get('token');
   if (!token) throw new Error('this page needs its token: open the address `sphereset view` printed');
+  // The token leaves the address bar and the history once read: it is kept in the page only.
+  history.replaceState(null, '', location.pathname);
   return { api: new ServerApi(token), staticScene: null };
 }
 
