@@ -104,28 +104,9 @@ Expected<SolidInput> loadSolid(const MeshArgs& a) {
 // --joint-positions j1=v1,j2=v2 (radians or metres), for joints of the robot.
 Expected<std::map<std::string, double>> parseJointPositions(const std::string& text,
                                                             const Robot& robot) {
-  std::map<std::string, double> out;
-  size_t start = 0;
-  while (start < text.size()) {
-    size_t end = text.find(',', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string item = text.substr(start, end - start);
-    const size_t eq = item.find('=');
-    const std::string name = item.substr(0, eq);
-    double v = 0.0;
-    size_t used = 0;
-    bool number = false;
-    if (eq != std::string::npos) try {
-        v = std::stod(item.substr(eq + 1), &used);
-        number = used == item.size() - eq - 1;
-      } catch (const std::exception&) {
-      }
-    if (!number)
-      return Error{ErrorCode::kInvalidArgument,
-                   "--joint-positions " + item + ": expected JOINT=VALUE (a number)"};
-    out[name] = v;
-    start = end + 1;
-  }
+  auto parsed = parseJointValues(text);
+  if (!parsed) return Error{parsed.error().code, "--joint-positions " + parsed.error().message};
+  const std::map<std::string, double>& out = *parsed;
   // The library checks the names and values, and says what it clamps.
   auto state = jointState(robot, out);
   if (!state) return Error{state.error().code, "--joint-positions: " + state.error().message};

@@ -76,6 +76,12 @@ struct Robot {
 // the rest), for every front door that names joints.
 const char* jointTypeName(RobotJoint::Type type);
 
+// "J1=V1,J2=V2" (radians or metres) as joint values, each number read whatever the locale.
+// kInvalidArgument "ITEM: expected JOINT=VALUE (a number)", or "joint 'J' is given twice" (a
+// repeated value used to keep the last one silently). Names and values are checked against a
+// robot by jointState.
+Expected<std::map<std::string, double>> parseJointValues(const std::string& text);
+
 // Whether a joint moves (revolute, continuous, prismatic): the one definition for every door.
 bool isMovable(const RobotJoint& j);
 

@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "util/number_text.hpp"
 #include "util/read_file.hpp"
 
 namespace sphereset::detail {
@@ -99,9 +100,7 @@ Expected<RawMesh> parseOff(const std::string& text, const std::string& name) {
     Vec3 p;
     for (int k = 0; k < 3; ++k) {
       number.assign(tok[k]);
-      char* end = nullptr;
-      p[k] = std::strtod(number.c_str(), &end);
-      if (end == number.c_str() || *end != '\0') return bad("malformed vertex coordinate");
+      if (!detail::parseNumber(number, &p[k])) return bad("malformed vertex coordinate");
     }
     verts.push_back(p);
   }
@@ -189,14 +188,16 @@ class PlyData {
   double read(PlyType t) {
     if (!ok_) return 0.0;
     if (format_ == 0) {
-      const char* start = buf_.c_str() + pos_;
-      char* end = nullptr;
-      const double v = std::strtod(start, &end);
-      if (end == start) {
+      // Blanks before the number, as strtod skipped them; the number read whatever the locale.
+      while (pos_ < buf_.size() && std::isspace(static_cast<unsigned char>(buf_[pos_]))) ++pos_;
+      double v = 0.0;
+      const size_t used =
+          detail::parseNumberPrefix(buf_.data() + pos_, buf_.data() + buf_.size(), &v);
+      if (used == 0) {
         ok_ = false;
         return 0.0;
       }
-      pos_ += static_cast<size_t>(end - start);
+      pos_ += used;
       return v;
     }
     const int n = plySize(t);

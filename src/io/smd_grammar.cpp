@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sphereset/limits.hpp"
+#include "util/number_text.hpp"
 
 namespace sphereset::detail {
 namespace {
@@ -38,9 +39,8 @@ bool isNumber(const std::string& w) {
   if (first != std::string::npos &&
       (last == std::string::npos ? w.size() : last) - first > kMaxSmdIntegerDigits)
     return false;
-  char* end = nullptr;
-  const double v = std::strtod(w.c_str(), &end);
-  return end == w.c_str() + w.size() && std::fabs(v) <= limits::kMaxCoordinate;  // false: NaN
+  double v = 0.0;
+  return detail::parseNumber(w, &v) && std::fabs(v) <= limits::kMaxCoordinate;  // false: NaN
 }
 
 // "ID "NAME" PARENT": the name quoted, without quotes inside; nodes numbered 0, 1, ... in

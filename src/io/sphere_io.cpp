@@ -23,6 +23,7 @@
 #include "sphereset/limits.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_tree.hpp"
+#include "util/number_text.hpp"
 #include "util/read_file.hpp"
 
 namespace sphereset {
@@ -303,14 +304,10 @@ Expected<std::vector<Sphere>> parseSpheres(SphereFormat format, const std::strin
     std::vector<std::string> words;
     for (std::string w; is >> w;) words.push_back(w);
     if (words.empty()) continue;  // blank line (a line of other words is an error, not a skip)
-    // Numbers as strtod reads them ("nan" and "inf" included, for checkSphere to name).
+    // Numbers whatever the locale ("nan" and "inf" included, for checkSphere to name).
     double v[4];
     bool numbers = words.size() == 4;
-    for (size_t k = 0; numbers && k < 4; ++k) {
-      char* end = nullptr;
-      v[k] = std::strtod(words[k].c_str(), &end);
-      numbers = end == words[k].c_str() + words[k].size();
-    }
+    for (size_t k = 0; numbers && k < 4; ++k) numbers = detail::parseNumber(words[k], &v[k]);
     if (!numbers)
       return Error{ErrorCode::kInvalidData,
                    path + ":" + std::to_string(lineno) + ": expected four numbers x y z r"};

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "io/sphere_formats.hpp"
+#include "util/number_text.hpp"
 #include "util/utf8.hpp"
 
 namespace sphereset::detail {
@@ -45,9 +46,7 @@ bool yamlNumber(const YAML::Node& node, double* out) {
       *out = -HUGE_VAL;
       return true;
     }
-  char* end = nullptr;
-  *out = std::strtod(t.c_str(), &end);
-  return !t.empty() && end == t.c_str() + t.size();
+  return parseNumber(t, out);
 }
 
 Error invalid(const std::string& what) { return Error{ErrorCode::kInvalidData, what}; }
@@ -251,9 +250,8 @@ std::string yamlKey(const std::string& raw) {
     for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     for (const char* word : {"true", "false", "yes", "no", "on", "off", "null", "y", "n"})
       if (lower == word) plain = false;
-    char* end = nullptr;
-    std::strtod(name.c_str(), &end);
-    if (end == name.c_str() + name.size()) plain = false;
+    double ignored = 0.0;
+    if (parseNumber(name, &ignored)) plain = false;
   }
   if (plain) return name;
   return yamlQuoted(name);

@@ -435,6 +435,25 @@ Expected<Robot> loadRobot(const std::string& urdf_path, const RobotLoadOptions& 
   return robot;
 }
 
+Expected<std::map<std::string, double>> parseJointValues(const std::string& text) {
+  std::map<std::string, double> out;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(',', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string item = text.substr(start, end - start);
+    const size_t eq = item.find('=');
+    double v = 0.0;
+    if (eq == std::string::npos || !detail::parseNumber(std::string_view(item).substr(eq + 1), &v))
+      return Error{ErrorCode::kInvalidArgument, item + ": expected JOINT=VALUE (a number)"};
+    if (!out.emplace(item.substr(0, eq), v).second)
+      return Error{ErrorCode::kInvalidArgument,
+                   "joint '" + item.substr(0, eq) + "' is given twice"};
+    start = end + 1;
+  }
+  return out;
+}
+
 bool isMovable(const RobotJoint& j) {
   return j.type == RobotJoint::Type::kRevolute || j.type == RobotJoint::Type::kContinuous ||
          j.type == RobotJoint::Type::kPrismatic;

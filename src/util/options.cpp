@@ -78,10 +78,9 @@ Expected<OptionValue> parseOption(const OptionSpec& spec, const std::string& ful
         ok = true;
         break;
       }
-      char* end = nullptr;
-      v.real = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
-      ok = !text.empty() && end == text.c_str() + text.size() && std::isfinite(v.real) &&
-           v.real >= spec.min && v.real <= spec.max;
+      v.real = 0.0;
+      ok = detail::parseNumber(text, &v.real) && std::isfinite(v.real) && v.real >= spec.min &&
+           v.real <= spec.max;
       break;
     }
     case OptionType::kChoice:
