@@ -3,7 +3,8 @@
 // picks the path, the method and which of the token, Host and Origin are wrong; the rest is
 // the body. Invariant checked on every input: a request answered with an error leaves the
 // scene exactly as it was (the same JSON, the same version), and every status is one the
-// contract lists (docs/view.md).
+// contract lists (docs/view.md). The same bytes also go to the server's request-head reader
+// (src/view/view_http.cpp), whose status must be one it may answer.
 #include <unistd.h>
 
 #include <array>
@@ -13,9 +14,11 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <string_view>
 
 #include "fuzz_input.hpp"
 #include "sphereset/view.hpp"
+#include "view/view_http.hpp"
 
 namespace {
 
@@ -60,6 +63,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }();
   static const sphereset::ViewAccess access{"00112233445566778899aabbccddeeff", "127.0.0.1", 8080};
   if (size == 0) return 0;
+  // The server's head reader on the raw bytes: a status it may answer, never a crash.
+  {
+    const std::string_view raw(reinterpret_cast<const char*>(data), size);
+    const size_t end = sphereset::detail::httpHeadEnd(raw);
+    const auto head = sphereset::detail::parseHttpHead(raw.substr(0, end));
+    static const std::set<int> kHeadStatuses = {0, 400, 411, 413, 431, 505};
+    if (!kHeadStatuses.count(head.status)) std::abort();
+    if (head.status == 0 && (head.request.path.empty() || head.request.path[0] != '/'))
+      std::abort();
+  }
   const uint8_t pick = data[0];
   sphereset::ViewRequest r;
   r.path = kPaths[pick & 7];

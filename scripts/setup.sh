@@ -23,13 +23,13 @@ demo_packages=(
   libcgal-dev          # repair: corefinement and alpha wrapping, GPL, see README
   libgmp-dev           # exact arithmetic linked by CGAL's CMake target (CGAL::CGAL)
   libmpfr-dev          # exact arithmetic linked by CGAL's CMake target (CGAL::CGAL)
-  libcpp-httplib-dev   # the local server of `sphereset view`
 )
 # Tests, the Python module, benchmarks and fuzzing: what scripts/build_and_test.sh and CI add.
 test_packages=(
   time                 # wall time and peak memory in the benchmark scripts
   ccache               # compiler cache (used by CMake when present)
   libgtest-dev         # unit tests
+  libcpp-httplib-dev   # tests: an HTTP client for the server of `sphereset view`
   libbenchmark-dev     # micro-benchmarks
   libfcl-dev           # tests: FCL, an independent collision check of the robot spheres
   clang                # fuzzing (fuzz/run.sh): libFuzzer needs clang
@@ -46,6 +46,7 @@ test_packages=(
   python3-venv         # Python module: `pip install .` into a virtual environment
   python3-pip          # Python module: `pip install .`
   chromium             # tests: the view's page in a real browser, headless (tests/browser)
+  locales              # tests: a comma-decimal locale (de_DE.UTF-8) for the number readers
 )
 # The view's page is built with Node.js and npm (web/, three.js pinned by web/package-lock.json).
 # A machine that already has them keeps its own (Debian's npm conflicts with a Node.js installed
@@ -63,6 +64,17 @@ case "${1:-all}" in
   *) echo "usage: bash scripts/setup.sh [demo]" >&2; exit 2 ;;
 esac
 
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+
+# The tests read numbers under a comma-decimal locale: de_DE.UTF-8 is made once (localedef).
+comma_locale() {
+  [ "${1:-all}" = all ] || return 0
+  locale -a 2>/dev/null | grep -qi '^de_DE\.utf-\?8$' && return 0
+  echo "setup: making the locale de_DE.UTF-8 (tests)"
+  $SUDO localedef -i de_DE -c -f UTF-8 de_DE.UTF-8 || echo "setup: could not make de_DE.UTF-8"
+}
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -70,12 +82,11 @@ done
 
 if ((${#missing[@]} == 0)); then
   echo "setup: all ${#packages[@]} packages present"
+  comma_locale "${1:-all}"
   exit 0
 fi
-
-SUDO=""
-if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+comma_locale "${1:-all}"

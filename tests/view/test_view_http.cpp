@@ -12,6 +12,14 @@
 // After Eigen (through the fixture): clang refuses Eigen's product kernels when the system
 // headers httplib.h pulls in come first.
 #include <httplib.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <thread>
+#include <vector>
 
 namespace sphereset::test {
 namespace {
@@ -151,6 +159,90 @@ TEST_F(ViewHttpTest, RefusesWhatIsNotThePage) {
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 200) << res->body;
   EXPECT_EQ(version(), 1);
+}
+
+// A raw connection to the server, for clients that misbehave on purpose.
+int connectTo(int port) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_port = htons(static_cast<uint16_t>(port));
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) {
+    ::close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+// Whether the server ends the connection (an answer then EOF, or EOF) within `seconds`.
+bool closedWithin(int fd, int seconds) {
+  timeval tv{seconds, 0};
+  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+  char buf[4096];
+  for (;;) {
+    const ssize_t r = ::recv(fd, buf, sizeof buf, 0);
+    if (r == 0) return true;
+    if (r < 0) return errno == ECONNRESET;
+  }
+}
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Connections that send a request line and then one header line now and then once held all of
+// a thread pool's workers (a user's request waited 91 s): they hold no one else's turn, and each
+// is closed when its head is not complete within the head deadline.
+TEST_F(ViewHttpTest, SlowClientsDoNotHoldTheServer) {
+  const int port = server_->access().port;
+  std::vector<int> slow;
+  for (int i = 0; i < 16; ++i) {
+    const int fd = connectTo(port);
+    ASSERT_GE(fd, 0);
+    const std::string line = "GET /api/scene HTTP/1.1\r\nHost: 127.0.0.1\r\n";
+    ASSERT_EQ(::send(fd, line.data(), line.size(), MSG_NOSIGNAL),
+              static_cast<ssize_t>(line.size()));
+    slow.push_back(fd);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  auto res = client_->Get("/api/scene", token());
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_LT(secondsSince(t0), 2.0) << "the user's request waited for the slow clients";
+  for (int fd : slow) {
+    EXPECT_TRUE(closedWithin(fd, 10)) << "a slow client was kept past the head deadline";
+    ::close(fd);
+  }
+}
+
+// 200 idle connections once delayed a user's request by more than 10 s: the user gets an answer
+// at once (the scene, or 503 "try again" while the connection cap is full), and the scene once
+// the idle connections have been dropped at the first-byte deadline.
+TEST_F(ViewHttpTest, IdleConnectionsAreDroppedAndTheUserIsAnswered) {
+  const int port = server_->access().port;
+  std::vector<int> idle;
+  for (int i = 0; i < 200; ++i) {
+    const int fd = connectTo(port);
+    if (fd >= 0) idle.push_back(fd);
+  }
+  ASSERT_EQ(idle.size(), 200u);
+  auto t0 = std::chrono::steady_clock::now();
+  auto res = client_->Get("/api/scene", token());
+  ASSERT_TRUE(res);
+  EXPECT_TRUE(res->status == 200 || res->status == 503) << res->status;
+  if (res->status == 503) {
+    EXPECT_EQ(res->get_header_value("Retry-After"), "1");
+  }
+  EXPECT_LT(secondsSince(t0), 2.0);
+  std::this_thread::sleep_for(std::chrono::seconds(3));
+  res = client_->Get("/api/scene", token());
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  for (int fd : idle) {
+    EXPECT_TRUE(closedWithin(fd, 1));
+    ::close(fd);
+  }
 }
 
 TEST_F(ViewHttpTest, StopsCleanly) {
