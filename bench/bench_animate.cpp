@@ -23,7 +23,7 @@ struct Scene {
 const Scene& scene() {
   static const Scene s = [] {
     Scene sc;
-    sc.mesh = sphereSetMesh({{Vec3::Zero(), 1.0}}, 5).mesh;
+    sc.mesh = sphereSetMesh({{Vec3::Zero(), 1.0}}, 5)->mesh;
     for (Vec3& v : sc.mesh.vertices) v = Vec3(2.0 * v.x(), v.y(), 0.6 * v.z());
     // A twist about x, as a stand-in for any deformation (the update does not depend on it).
     for (const Vec3& v : sc.mesh.vertices) {

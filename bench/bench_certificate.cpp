@@ -33,7 +33,7 @@ struct Scene {
 
 const Scene& scene() {
   static const Scene s = [] {
-    Mesh mesh = sphereSetMesh({{Vec3::Zero(), 1.0}}, 6).mesh;
+    Mesh mesh = sphereSetMesh({{Vec3::Zero(), 1.0}}, 6)->mesh;
     for (Vec3& v : mesh.vertices) v = Vec3(2.0 * v.x(), v.y(), 0.6 * v.z());
     SolidIndex index(mesh);
     FitOptions fo;

@@ -44,7 +44,7 @@ inline Mesh makeBox(const Vec3& lo, const Vec3& hi) {
 // Icosphere of radius r about the origin (subdivided icosahedron, vertices on the sphere):
 // the library's own sphere-to-mesh conversion.
 inline Mesh makeIcosphere(double r, int subdivisions) {
-  return sphereSetMesh({{Vec3::Zero(), r}}, subdivisions).mesh;
+  return sphereSetMesh({{Vec3::Zero(), r}}, subdivisions)->mesh;
 }
 
 // Torus about the z axis: major radius R, minor radius r, nu × nv quads.

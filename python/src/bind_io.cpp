@@ -159,8 +159,6 @@ void bindIo(py::module_& m) {
       [](const Path& path_arg, const py::object& spheres, int subdivisions) {
         const std::string path = path_arg.string();
         const std::vector<Sphere> s = spheresFromArray(spheres, "spheres");
-        if (subdivisions < 0 || subdivisions > 6)
-          raise(ErrorCode::kInvalidArgument, "subdivisions must be in 0..6");
         py::gil_scoped_release release;
         check(writeSphereSetMesh(path, s, subdivisions));
       },

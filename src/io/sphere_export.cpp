@@ -4,6 +4,7 @@
 // "v x y z r g b", which MeshLab, Blender and others read) and glTF 2.0 (.gltf with the buffer
 // embedded as a data URI, or binary .glb), with normals and COLOR_0.
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <map>
@@ -13,6 +14,7 @@
 #include "io/atomic_write.hpp"
 #include "io/json_text.hpp"
 #include "sphereset/export.hpp"
+#include "sphereset/limits.hpp"
 #include "sphereset/sphere.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "util/read_file.hpp"
@@ -95,8 +97,29 @@ std::array<uint8_t, 3> sphereColour(size_t i) {
   return palette[i % palette.size()];
 }
 
-SphereSetMesh sphereSetMesh(const std::vector<Sphere>& spheres, int subdivisions) {
-  const UnitSphere u = icosphere(std::clamp(subdivisions, 0, 6));
+// Bytes one exported vertex and one triangle take at most: the mesh (position, normal, colour;
+// three indices) and the largest file text (an OBJ line "v x y z r g b" and "vn", an "f" line).
+constexpr double kBytesPerVertex = 24 + 24 + 3 + 120;
+constexpr double kBytesPerTriangle = 12 + 40;
+
+Status checkSphereSetMesh(size_t spheres, int subdivisions) {
+  if (Status st = limits::checkRange("subdivisions", subdivisions, 0, kMaxExportSubdivisions); !st)
+    return st;
+  const double faces = 20.0 * std::pow(4.0, subdivisions);
+  const double vertices = faces / 2.0 + 2.0;
+  const double n = static_cast<double>(spheres);
+  const std::string what =
+      std::to_string(spheres) + " spheres at " + std::to_string(subdivisions) + " subdivisions";
+  if (n * vertices >= 2147483648.0)
+    return Error{ErrorCode::kInvalidArgument,
+                 what + " make more than 2^31 vertices; use fewer subdivisions"};
+  return limits::checkArray(what, n, vertices * kBytesPerVertex + faces * kBytesPerTriangle,
+                            ErrorCode::kInvalidArgument);
+}
+
+Expected<SphereSetMesh> sphereSetMesh(const std::vector<Sphere>& spheres, int subdivisions) {
+  if (Status st = checkSphereSetMesh(spheres.size(), subdivisions); !st) return st.error();
+  const UnitSphere u = icosphere(subdivisions);
   SphereSetMesh out;
   for (size_t i = 0; i < spheres.size(); ++i) {
     const int32_t base = static_cast<int32_t>(out.mesh.vertices.size());
@@ -247,7 +270,14 @@ Status writeSphereSetMesh(const std::string& path, const std::vector<Sphere>& sp
     return Error{ErrorCode::kInvalidArgument,
                  path + ": unknown mesh extension (use .ply, .obj, .gltf or .glb)"};
   if (spheres.empty()) return Error{ErrorCode::kInvalidArgument, path + ": no spheres to export"};
-  const SphereSetMesh m = sphereSetMesh(spheres, subdivisions);
+  for (size_t i = 0; i < spheres.size(); ++i)
+    if (Status st = checkSphere(path + ": sphere " + std::to_string(i), spheres[i],
+                                ErrorCode::kInvalidArgument);
+        !st)
+      return st;
+  const auto made = sphereSetMesh(spheres, subdivisions);
+  if (!made) return Error{made.error().code, path + ": " + made.error().message};
+  const SphereSetMesh& m = *made;
   const std::string out = ext == ".ply"   ? plyBytes(m, spheres.size())
                           : ext == ".obj" ? objText(m, spheres.size())
                                           : gltfBytes(m, ext == ".glb");

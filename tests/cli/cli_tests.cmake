@@ -117,6 +117,9 @@ cli_test(export_glb 0 ARGS export ${work}/bound.txt -o ${work}/bound_spheres.glb
          FILE ${work}/bound_spheres.glb TRIANGLES 80)
 cli_test(export_bad_extension 2 ARGS export ${work}/bound.txt -o ${work}/never10.stl
          STDERR "never10.stl: unknown mesh extension" FORBID ${work}/never10.stl)
+# The library's rule for the subdivisions (once clamped there, refused by the command's own check).
+cli_test(export_bad_subdivisions 2 ARGS export ${work}/bound.txt -o ${work}/never10b.ply
+         --subdivisions 7 STDERR "subdivisions must be from 0 to 6 .got 7." FORBID ${work}/never10b.ply)
 
 # The read-back itself goes through the library's reader: a malformed file fails it.
 add_test(NAME cli.read_output_malformed

@@ -93,9 +93,32 @@ TEST_F(SphereIo, FailedWritesLeaveNoFile) {
   EXPECT_EQ(files, 1);
 }
 
+// 50 000 spheres at 4 subdivisions ended in bad_alloc, and a subdivision count out of range was
+// clamped by the library while two doors refused it: the library estimates and refuses.
+TEST(SphereExport, SizesAreCheckedBeforeAnythingIsAllocated) {
+  EXPECT_TRUE(checkSphereSetMesh(1000, 2).ok());
+  const Status big = checkSphereSetMesh(50000, 4);
+  ASSERT_FALSE(big.ok());
+  EXPECT_EQ(big.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_NE(big.error().message.find("50000 spheres at 4 subdivisions would need"),
+            std::string::npos)
+      << big.error().message;
+  for (int s : {-1, 7}) {
+    const auto m = sphereSetMesh({{Vec3::Zero(), 1.0}}, s);
+    ASSERT_FALSE(m.ok());
+    EXPECT_NE(m.error().message.find("subdivisions must be from 0 to 6"), std::string::npos)
+        << m.error().message;
+  }
+  const std::string out = (std::filesystem::temp_directory_path() / "sphereset_far.ply").string();
+  const Status far = writeSphereSetMesh(out, {{Vec3(1e200, 0, 0), 1.0}}, 1);
+  ASSERT_FALSE(far.ok());
+  EXPECT_NE(far.error().message.find("sphere 0: a value beyond 1e+30"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST(SphereExport, MeshesReadBackAsClosedSolidsInsideTheSpheres) {
   const std::vector<Sphere> spheres = {{Vec3(0, 0, 0), 1.0}, {Vec3(3, 0, 0), 0.5}};
-  const SphereSetMesh m = sphereSetMesh(spheres, 2);
+  const SphereSetMesh m = *sphereSetMesh(spheres, 2);
   EXPECT_EQ(m.mesh.triangles.size(), 2u * 20u * 16u);
   for (size_t i = 0; i < m.mesh.vertices.size(); ++i) {
     const Sphere& s = spheres[i / m.vertices_per_sphere];
