@@ -17,10 +17,9 @@ namespace sphereset::python {
 
 FitRequest fitRequest(const py::dict& options) {
   FitRequest rq;
-  for (const auto& [key, value] : options) {
-    if (value.is_none()) continue;
-    check(setFitRequestOption(&rq, py::str(key), py::str(value)));
-  }
+  setOptions(options, [&](const std::string& name, const std::string& text) {
+    return setFitRequestOption(&rq, name, text);
+  });
   return rq;
 }
 

@@ -77,27 +77,35 @@ void bindAnimate(py::module_& m);
 void bindRobotFit(py::module_& m);
 void bindRobotQuery(py::module_& m);
 
+// A keyword's value as the text the library's tables parse, one rule for every keyword: a
+// float as the library writes a number (optionText: 4.0 is "4", which an integer row takes,
+// where str() gave "4.0", refused while '4' was taken), a bool refused for a number row (str()
+// gave "True"), anything else as str() gives it (a number's text, as on the command line and
+// in a manifest, parsed by the library like theirs).
+inline std::string optionValueText(const std::string& name, const py::handle& v) {
+  if (py::isinstance<py::bool_>(v))
+    raise(ErrorCode::kInvalidArgument,
+          name + " '" + std::string(py::str(v)) + "': expected a number or a name, not a bool");
+  if (!py::isinstance<py::float_>(v)) return py::str(v);
+  return optionText(v.cast<double>());
+}
+
 // Keyword options by the names of a library option table: each value that is not None is handed
-// to `set(name, text)` as its text (str()), so that the library parses and checks it exactly as
-// it does the command line's; its error is raised. A dict value is a keyed row's ({link: value}):
-// each item is handed over as KEY=VALUE.
+// to `set(name, text)` as its text (optionValueText), so that the library parses and checks it
+// exactly as it does the command line's; its error is raised. A dict value is a keyed row's
+// ({link: value}): each item is handed over as KEY=VALUE.
 template <class Set>
 void setOptions(const py::dict& options, Set&& set) {
-  // A float as the library writes a number's text (optionText: "-1", not str()'s "-1.0"); other
-  // values as str() gives them.
-  auto text = [](const py::handle& v) -> std::string {
-    if (!py::isinstance<py::float_>(v)) return py::str(v);
-    return optionText(v.cast<double>());
-  };
   for (const auto& [key, value] : options) {
     if (value.is_none()) continue;
     const std::string name = py::str(key);
     if (py::isinstance<py::dict>(value)) {
       for (const auto& [k, v] : py::reinterpret_borrow<py::dict>(value))
-        if (Status st = set(name, std::string(py::str(k)) + "=" + text(v)); !st) raise(st.error());
+        if (Status st = set(name, std::string(py::str(k)) + "=" + optionValueText(name, v)); !st)
+          raise(st.error());
       continue;
     }
-    if (Status st = set(name, text(value)); !st) raise(st.error());
+    if (Status st = set(name, optionValueText(name, value)); !st) raise(st.error());
   }
 }
 

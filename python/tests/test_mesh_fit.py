@@ -325,3 +325,17 @@ def test_check_fields_are_the_command_lines(cli, mesh):
     for name, value in r.repair.items():
         if name != "seconds":
             same(value, ref["repair"][name], name)
+
+
+def test_a_number_option_is_read_by_one_rule():
+    """n='4' was accepted while n=4.0 was refused: a float is written as the library writes a
+    number (4.0 is "4"), text is parsed as on the command line, a bool is refused."""
+    m = ss.load_mesh(LINK)
+    a = ss.fit(m, 4.0, quality="fast")
+    b = ss.fit(m, "4", quality="fast")
+    c = ss.fit(m, 4, quality="fast")
+    assert np.array_equal(a.spheres, c.spheres) and np.array_equal(b.spheres, c.spheres)
+    with pytest.raises(ss.InvalidArgumentError, match="padding 'True': expected a number"):
+        ss.fit(m, 4, padding=True)
+    with pytest.raises(ss.InvalidArgumentError, match="n '4.5'"):
+        ss.fit(m, 4.5)

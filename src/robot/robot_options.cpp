@@ -79,6 +79,13 @@ Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std:
   if (!parsed) return parsed.error();
   const OptionValue& v = parsed->value;
   const std::string_view n = parsed->spec->name;
+  // A link named twice in one keyed row used to keep the last value silently.
+  const bool repeated = (n == "link_spheres" && o->link_spheres.count(v.key) > 0) ||
+                        (n == "link_padding" && o->link_padding.count(v.key) > 0) ||
+                        (n == "link_solid_for" && o->link_solid_for.count(v.key) > 0);
+  if (repeated)
+    return Error{ErrorCode::kInvalidArgument,
+                 std::string(n) + " '" + text + "': link '" + v.key + "' is given twice"};
   if (n == "budget") o->budget = static_cast<int>(v.integer);
   if (n == "default_link_spheres") o->default_link_spheres = static_cast<int>(v.integer);
   if (n == "link_spheres") o->link_spheres[v.key] = static_cast<int>(v.integer);

@@ -379,6 +379,14 @@ Expected<Robot> loadRobot(const std::string& urdf_path, const RobotLoadOptions& 
     return Error{ErrorCode::kInvalidData, urdf_path + ": elements nested more than " +
                                               std::to_string(limits::kMaxXmlDepth) +
                                               " deep (the limit)"};
+  // A document type declaration (internal entities, as in "billion laughs", or external ones):
+  // no URDF needs one and the XML readers do not expand entities, so the file is refused by
+  // name instead of failing later as "Could not find the 'robot' element".
+  if (xml.find("<!DOCTYPE") != std::string::npos || xml.find("<!ENTITY") != std::string::npos)
+    return Error{ErrorCode::kInvalidData,
+                 urdf_path +
+                     ": a document type declaration (<!DOCTYPE> or <!ENTITY>): entities "
+                     "are not read in a URDF"};
 
   std::string message, bad_link;
   const urdf::ModelInterfaceSharedPtr model = parseQuietly(xml, message, bad_link);
@@ -432,6 +440,11 @@ Expected<Robot> loadRobot(const std::string& urdf_path, const RobotLoadOptions& 
     if (Status st = checkJointLimits(robot.joints.back()); !st)
       return Error{ErrorCode::kInvalidData, urdf_path + ": " + st.error().message};
   }
+  // The joints must settle with no value given: a <mimic> cycle, or a mimic of no joint, is the
+  // file's defect, reported as such when it is read (it was once blamed on --joint-positions,
+  // given or not).
+  if (auto settled = jointState(robot, {}); !settled)
+    return Error{ErrorCode::kInvalidData, urdf_path + ": " + settled.error().message};
   return robot;
 }
 

@@ -274,6 +274,45 @@ TEST_F(Urdf, MimicJointsAreRead) {
   EXPECT_NEAR(poses->at("r").translation().y(), -0.02, 1e-12);
 }
 
+// Mimic joints in a cycle used to be reported by every pose as a fault of --joint-positions,
+// given or not: the file is refused when it is read, naming it and the joint.
+TEST_F(Urdf, AMimicCycleIsTheFilesDefect) {
+  const std::string urdf =
+      write("cycle.urdf",
+            "<robot name=\"g\"><link name=\"palm\"/><link name=\"l\"/><link name=\"r\"/>"
+            "<joint name=\"left\" type=\"prismatic\"><parent link=\"palm\"/><child link=\"l\"/>"
+            "<axis xyz=\"0 1 0\"/><limit lower=\"0\" upper=\"0.04\" effort=\"1\" velocity=\"1\"/>"
+            "<mimic joint=\"right\"/></joint><joint name=\"right\" type=\"prismatic\"><parent "
+            "link=\"palm\"/><child link=\"r\"/><axis xyz=\"0 1 0\"/><limit lower=\"-0.04\" "
+            "upper=\"0\" effort=\"1\" velocity=\"1\"/><mimic joint=\"left\" multiplier=\"-1\"/>"
+            "</joint></robot>");
+  auto r = loadRobot(urdf);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().code, ErrorCode::kInvalidData);
+  EXPECT_NE(r.error().message.find("cycle.urdf: joint '"), std::string::npos) << r.error().message;
+  EXPECT_NE(r.error().message.find("form a cycle"), std::string::npos) << r.error().message;
+  EXPECT_EQ(r.error().message.find("joint-positions"), std::string::npos);
+}
+
+// Billion-laughs and external-entity files used to get "Could not find the 'robot' element".
+TEST_F(Urdf, DocumentTypeDeclarationsAreRefusedByName) {
+  const std::string laughs =
+      write("laughs.urdf",
+            "<?xml version=\"1.0\"?><!DOCTYPE robot [<!ENTITY a \"ha\"><!ENTITY b \"&a;&a;&a;\">]>"
+            "<robot name=\"&b;\"><link name=\"x\"/></robot>");
+  const std::string external =
+      write("external.urdf",
+            "<?xml version=\"1.0\"?><!DOCTYPE robot [<!ENTITY e SYSTEM \"file:///etc/passwd\">]>"
+            "<robot name=\"r\"><link name=\"&e;\"/></robot>");
+  for (const std::string& f : {laughs, external}) {
+    auto r = loadRobot(f);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, ErrorCode::kInvalidData);
+    EXPECT_NE(r.error().message.find("a document type declaration"), std::string::npos)
+        << r.error().message;
+  }
+}
+
 // 50 000 nested elements used to overflow the stack inside TinyXML (a segfault); the depth is
 // checked before parsing.
 TEST_F(Urdf, DeeplyNestedElementsAreRefused) {

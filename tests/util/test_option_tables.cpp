@@ -80,6 +80,14 @@ TEST(OptionTables, KeyedRowsTakeKeyEqualsValue) {
   expectRefused(
       setRobotFitOption(&o, "link_spheres", "link1=2.5"),
       "link_spheres 'link1=2.5': expected LINK=VALUE, VALUE an integer from 0 to 1000000");
+  // A link named twice used to keep the last value silently.
+  expectRefused(setRobotFitOption(&o, "link_spheres", "link1=5"),
+                "link_spheres 'link1=5': link 'link1' is given twice");
+  EXPECT_EQ(o.link_spheres.at("link1"), 4);
+  ASSERT_TRUE(setRobotFitOption(&o, "link_solid_for", "link1=walls").ok());
+  expectRefused(setRobotFitOption(&o, "link_solid_for", "link1=envelope"),
+                "link_solid_for 'link1=envelope': link 'link1' is given twice");
+  o.link_solid_for.clear();
   EXPECT_TRUE(checkRobotFitOptions(o).ok());
   o.link_padding["l"] = -1.0;
   expectRefused(checkRobotFitOptions(o),
