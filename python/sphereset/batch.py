@@ -35,6 +35,9 @@ from . import _sphereset as _core
 __all__ = ["batch_options", "list_items", "process_item", "run_batch", "main"]
 
 
+# How long the command waits for a --scheduler to answer.
+_SCHEDULER_TIMEOUT = "5s"
+
 def batch_options(n: int = 32, *, quality: str = "default", seed: int = 1, padding: float = 0.0,
                   points: int = 0, iterations: Optional[int] = None,
                   restarts: Optional[int] = None, decimation: Optional[float] = None,
@@ -192,7 +195,15 @@ def main(argv: Optional[List[str]] = None) -> int:
         client = Client(cluster)
     else:
         threads = a.threads if a.threads is not None else 0
-        client = Client(a.scheduler)
+        try:
+            client = Client(a.scheduler, timeout=_SCHEDULER_TIMEOUT)
+        except (OSError, TimeoutError, ValueError) as e:
+            # An address that answers nothing, or is not one: one line, exit 2 (a bad option),
+            # not a traceback.
+            reason = str(e).splitlines()[0] if str(e) else type(e).__name__
+            print(f"sphereset: --scheduler {a.scheduler}: cannot reach the scheduler ({reason})",
+                  file=sys.stderr)
+            return 2
     try:
         fit = {row["name"]: getattr(a, row["name"]) for row in _core._fit_option_table()}
         opts = batch_options(

@@ -141,3 +141,18 @@ def test_repair_options_are_checked_by_the_library_table(tmp_path, capsys):
         "repair": "auto", "weld_tolerance": -1.0, "wrap_alpha": 0.5, "wrap_offset": 0.0,
         "fill_openings": 0.0}
     assert ss._core._repair_option_values({"fill_openings": "auto"})["fill_openings"] == "auto"
+
+
+def test_an_unreachable_scheduler_is_one_line(tmp_path, capsys):
+    """An address nobody answers used to print a traceback."""
+    src = tmp_path / "in"
+    src.mkdir()
+    shutil.copy(DATA / "fr3_link1_collision.stl", src / "link1.stl")
+    code = batch.main([str(src), "-o", str(tmp_path / "out"), "--scheduler", "tcp://127.0.0.1:9",
+                       "-q"])
+    err = capsys.readouterr().err
+    assert code == 2
+    assert "Traceback" not in err
+    assert err.startswith("sphereset: --scheduler tcp://127.0.0.1:9: cannot reach the scheduler")
+    assert len(err.strip().splitlines()) == 1
+    assert not (tmp_path / "out").exists()

@@ -10,6 +10,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -223,6 +224,15 @@ Expected<LinkGeometry> convertGeometry(const urdf::Geometry& g, const urdf::Pose
       return Error{ErrorCode::kInvalidData,
                    urdf_path + ": link '" + link + "': unknown geometry type"};
   }
+  // Sizes and the origin within the coordinate limit (a 1e300 box once "enclosed no volume":
+  // its volume overflowed), as every coordinate the library takes.
+  const std::array<double, 9> values = {
+      out.radius,       out.length,       out.box_size.x(),
+      out.box_size.y(), out.box_size.z(), out.scale.x(),
+      out.scale.y(),    out.scale.z(),    out.origin.translation().norm()};
+  if (Status st = limits::checkCoordinates("sizes, scale and origin", values); !st)
+    return Error{ErrorCode::kInvalidData,
+                 urdf_path + ": link '" + link + "': " + st.error().message};
   return out;
 }
 

@@ -313,6 +313,20 @@ TEST_F(Urdf, DocumentTypeDeclarationsAreRefusedByName) {
   }
 }
 
+// A 1e300 box used to reach the fit and "enclose no volume" (its volume overflowed).
+TEST_F(Urdf, PrimitiveSizesBeyondTheCoordinateLimitAreRefused) {
+  const std::string urdf = write("huge_box.urdf",
+                                 "<robot name=\"r\"><link name=\"x\"><collision><geometry><box "
+                                 "size=\"1e300 1 1\"/></geometry></collision></link></robot>");
+  auto r = loadRobot(urdf);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().code, ErrorCode::kInvalidData);
+  EXPECT_NE(r.error().message.find("huge_box.urdf: link 'x': sizes, scale and origin"),
+            std::string::npos)
+      << r.error().message;
+  EXPECT_NE(r.error().message.find("at most 1e+30"), std::string::npos) << r.error().message;
+}
+
 // 50 000 nested elements used to overflow the stack inside TinyXML (a segfault); the depth is
 // checked before parsing.
 TEST_F(Urdf, DeeplyNestedElementsAreRefused) {
