@@ -120,6 +120,14 @@ Expected<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& option
   if (tris.empty())
     return Error{ErrorCode::kInvalidData,
                  path + ": the file contains no triangles (points or lines only, or nothing)"};
+  // assimp reads coordinates in single precision: a value beyond float's range (1e80, say)
+  // arrives as infinity, which the clean-up would call "NaN or infinite".
+  for (size_t i = 0; i < verts.size(); ++i)
+    if (!verts[i].allFinite())
+      return Error{ErrorCode::kInvalidData,
+                   path + ": vertex " + std::to_string(i) +
+                       " has a coordinate that is NaN or beyond 3.4e+38 (this format is read in "
+                       "single precision)"};
   auto cleaned = cleanMesh(std::move(verts), std::move(tris), options, path);
   if (!cleaned) return cleaned.error();
   LoadedMesh out = std::move(cleaned).value();

@@ -95,6 +95,22 @@ TEST_F(SphereIo, FailedWritesLeaveNoFile) {
 
 // 50 000 spheres at 4 subdivisions ended in bad_alloc, and a subdivision count out of range was
 // clamped by the library while two doors refused it: the library estimates and refuses.
+// assimp reads coordinates as floats: 1e80 arrived as infinity and was reported as "NaN or
+// infinite"; the message says what happened.
+TEST(LoadMesh, CoordinatesBeyondFloatSayTheFormatIsSinglePrecision) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "sphereset_huge_coordinate.obj").string();
+  std::ofstream(path) << "v 0 0 0\nv 1e80 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\n"
+                         "f 2 4 3\n";
+  const auto m = loadMesh(path);
+  std::filesystem::remove(path);
+  ASSERT_FALSE(m.ok());
+  EXPECT_EQ(m.error().code, ErrorCode::kInvalidData);
+  EXPECT_NE(m.error().message.find("beyond 3.4e+38 (this format is read in single precision)"),
+            std::string::npos)
+      << m.error().message;
+}
+
 TEST(SphereExport, SizesAreCheckedBeforeAnythingIsAllocated) {
   EXPECT_TRUE(checkSphereSetMesh(1000, 2).ok());
   const Status big = checkSphereSetMesh(50000, 4);
