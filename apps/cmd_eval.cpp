@@ -69,11 +69,8 @@ int runEval(EvalArgs a) {
   const std::string& spheres_path = a.spheres_path;
   // MESH may be a URDF: the --link's collision geometry is then measured, placed in the link
   // frame and repaired as the robot command does.
-  std::string ext = std::filesystem::path(a.mesh.path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
   Expected<SolidInput> m = Error{ErrorCode::kInvalidArgument, ""};
-  if (ext == ".urdf") {
+  if (isRobotDescriptionPath(a.mesh.path)) {
     if (a.link.empty())
       return fail(Error{ErrorCode::kInvalidArgument,
                         a.mesh.path + ": a URDF needs --link LINK (the link to measure)"});

@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "query_robot.hpp"
 #include "sphereset/query.hpp"
+#include "sphereset/robot.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/sphere_tree.hpp"
 
@@ -106,7 +107,7 @@ int runQuery(const QueryArgs& a) {
   const bool robot_options = !a.robot.spheres.empty() || !a.robot.package_paths.empty() ||
                              !a.robot.joint_positions.empty() || !a.robot.trajectory.empty() ||
                              !a.robot.points.empty() || !a.robot.obstacle_spheres.empty();
-  if (std::filesystem::path(a.path).extension() == ".urdf") {
+  if (isRobotDescriptionPath(a.path)) {
     if (!a.points.empty() || !a.segments.empty() || !a.other_path.empty())
       return fail(Error{ErrorCode::kInvalidArgument,
                         a.path + ": --point, --segment and --other query a sphere set; a robot "

@@ -19,7 +19,7 @@ namespace {
 // The robot's spheres: a sphere URDF's sphere collisions, or a file of per-link spheres.
 Expected<std::vector<LinkSpheres>> robotSpheres(const RobotQueryArgs& a,
                                                 const RobotLoadOptions& lo) {
-  if (std::filesystem::path(a.spheres).extension() == ".urdf") {
+  if (isRobotDescriptionPath(a.spheres)) {
     auto sphere_robot = loadRobot(a.spheres, lo);
     if (!sphere_robot) return sphere_robot.error();
     std::vector<LinkSpheres> out = urdfLinkSpheres(*sphere_robot);

@@ -188,7 +188,7 @@ int runRender(const RenderArgs& a) {
   if (!a.frames.empty() || !a.animation.empty()) return renderFrames(a, ro);
   if (!a.spheres_dir.empty())
     return fail(Error{ErrorCode::kInvalidArgument, "--spheres-dir needs --frames or --animation"});
-  const bool urdf = std::filesystem::path(a.mesh.path).extension() == ".urdf";
+  const bool urdf = isRobotDescriptionPath(a.mesh.path);
   if (urdf) return renderRobot(a, ro);
   if (!a.link.empty())
     return fail(Error{ErrorCode::kInvalidArgument, "--link needs a robot (.urdf)"});

@@ -82,6 +82,10 @@ const char* jointTypeName(RobotJoint::Type type);
 // robot by jointState.
 Expected<std::map<std::string, double>> parseJointValues(const std::string& text);
 
+// Whether `path` names a robot description (a URDF): its extension is ".urdf" in any case
+// ("arm.URDF" too). The one test of every door that takes a mesh or a robot.
+bool isRobotDescriptionPath(const std::string& path);
+
 // Whether a joint moves (revolute, continuous, prismatic): the one definition for every door.
 bool isMovable(const RobotJoint& j);
 

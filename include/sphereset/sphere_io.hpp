@@ -22,6 +22,12 @@ enum class SphereFormat {
 // Format from a file name's extension (.txt/.xyzr, .json, .sph, .yaml/.yml); kInvalidArgument
 // for anything else.
 Expected<SphereFormat> sphereFormatFromPath(const std::string& path);
+// A format's name, as every door (options, Python, the page) spells it: "txt", "json", "sph",
+// "yaml"; and the format of one of those names exactly (kInvalidArgument "format 'X': expected
+// txt, json, sph or yaml" otherwise: the Python module took "yml" and "text" where the command
+// refused them).
+const char* sphereFormatName(SphereFormat format);
+Expected<SphereFormat> sphereFormatFromName(const std::string& name);
 
 struct SphereFileMeta {
   std::string name = "object";  // link name for YAML output

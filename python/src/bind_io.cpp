@@ -15,28 +15,9 @@ SphereFileMeta meta(const std::string& name, const std::string& source_mesh) {
   return m;
 }
 
-SphereFormat formatFromName(const std::string& s) {
-  if (s == "txt" || s == "text" || s == "xyzr") return SphereFormat::kText;
-  if (s == "json") return SphereFormat::kJson;
-  if (s == "sph") return SphereFormat::kSph;
-  if (s == "yaml" || s == "yml") return SphereFormat::kYaml;
-  raise(ErrorCode::kInvalidArgument,
-        "format must be 'txt', 'json', 'sph' or 'yaml', not '" + s + "'");
-}
+SphereFormat formatFromName(const std::string& s) { return unwrap(sphereFormatFromName(s)); }
 
-const char* formatName(SphereFormat f) {
-  switch (f) {
-    case SphereFormat::kText:
-      return "txt";
-    case SphereFormat::kJson:
-      return "json";
-    case SphereFormat::kSph:
-      return "sph";
-    case SphereFormat::kYaml:
-      return "yaml";
-  }
-  return "txt";
-}
+const char* formatName(SphereFormat f) { return sphereFormatName(f); }
 
 // dict (or list of pairs) link name -> (N, 4) spheres, in the given order.
 std::vector<LinkSpheres> linksFrom(const py::object& o) {

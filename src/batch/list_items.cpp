@@ -316,9 +316,7 @@ Expected<std::vector<BatchItem>> listManifest(const std::string& input, const st
 }  // namespace
 
 Status checkBatchOptions(const BatchOptions& options) {
-  if (!sphereFormatFromPath("x." + options.format))
-    return Error{ErrorCode::kInvalidArgument,
-                 "format '" + options.format + "': expected txt, json, sph or yaml"};
+  if (auto f = sphereFormatFromName(options.format); !f) return f.error();
   if (Status st = checkFitRequest(options.fit); !st) return st;
   if (options.threads < 0) return Error{ErrorCode::kInvalidArgument, "threads must be >= 0"};
   return {};

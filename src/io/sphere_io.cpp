@@ -86,6 +86,28 @@ Expected<SphereFormat> sphereFormatFromPath(const std::string& path) {
                                                 "' (use .txt, .json, .sph or .yaml)"};
 }
 
+namespace {
+constexpr std::pair<SphereFormat, const char*> kFormatNames[] = {
+    {SphereFormat::kText, "txt"},
+    {SphereFormat::kJson, "json"},
+    {SphereFormat::kSph, "sph"},
+    {SphereFormat::kYaml, "yaml"},
+};
+}  // namespace
+
+const char* sphereFormatName(SphereFormat format) {
+  for (const auto& [f, name] : kFormatNames)
+    if (f == format) return name;
+  return "txt";
+}
+
+Expected<SphereFormat> sphereFormatFromName(const std::string& name) {
+  for (const auto& [f, n] : kFormatNames)
+    if (name == n) return f;
+  return Error{ErrorCode::kInvalidArgument,
+               "format '" + name + "': expected txt, json, sph or yaml"};
+}
+
 std::string formatSpheres(SphereFormat format, const std::vector<Sphere>& spheres,
                           const SphereFileMeta& meta) {
   std::ostringstream os;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -475,6 +476,13 @@ Expected<std::map<std::string, double>> parseJointValues(const std::string& text
     start = end + 1;
   }
   return out;
+}
+
+bool isRobotDescriptionPath(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".urdf";
 }
 
 bool isMovable(const RobotJoint& j) {

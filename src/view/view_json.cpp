@@ -24,18 +24,7 @@ const char* saveFormatName(const ViewScene& scene) {
       break;
   }
   auto f = sphereFormatFromPath(scene.save_path);
-  if (!f) return "text";
-  switch (*f) {
-    case SphereFormat::kJson:
-      return "json";
-    case SphereFormat::kSph:
-      return "sph";
-    case SphereFormat::kYaml:
-      return "yaml";
-    case SphereFormat::kText:
-      break;
-  }
-  return "text";
+  return f ? sphereFormatName(*f) : sphereFormatName(SphereFormat::kText);
 }
 
 }  // namespace

@@ -253,7 +253,7 @@ Expected<ViewScene> robotViewScene(const Robot& robot, const std::string& urdf,
 
 Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::string& spheres,
                                   const ViewLoadOptions& options) {
-  if (extensionOf(mesh_or_urdf) == ".urdf") return loadRobotScene(mesh_or_urdf, spheres, options);
+  if (isRobotDescriptionPath(mesh_or_urdf)) return loadRobotScene(mesh_or_urdf, spheres, options);
   return loadMeshScene(mesh_or_urdf, spheres, options);
 }
 

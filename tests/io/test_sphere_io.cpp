@@ -97,6 +97,22 @@ TEST_F(SphereIo, FailedWritesLeaveNoFile) {
 // clamped by the library while two doors refused it: the library estimates and refuses.
 // assimp reads coordinates as floats: 1e80 arrived as infinity and was reported as "NaN or
 // infinite"; the message says what happened.
+// One spelling of the format names at every door ("yml" and "text" were Python's alone).
+TEST(SphereIo, FormatNamesHaveOneSpelling) {
+  for (SphereFormat f :
+       {SphereFormat::kText, SphereFormat::kJson, SphereFormat::kSph, SphereFormat::kYaml}) {
+    const auto back = sphereFormatFromName(sphereFormatName(f));
+    ASSERT_TRUE(back.ok());
+    EXPECT_EQ(*back, f);
+  }
+  for (const char* other : {"yml", "text", "xyzr", "TXT", ""}) {
+    const auto f = sphereFormatFromName(other);
+    ASSERT_FALSE(f.ok()) << other;
+    EXPECT_EQ(f.error().message,
+              std::string("format '") + other + "': expected txt, json, sph or yaml");
+  }
+}
+
 TEST(LoadMesh, CoordinatesBeyondFloatSayTheFormatIsSinglePrecision) {
   const std::string path =
       (std::filesystem::temp_directory_path() / "sphereset_huge_coordinate.obj").string();

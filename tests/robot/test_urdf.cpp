@@ -327,6 +327,14 @@ TEST_F(Urdf, PrimitiveSizesBeyondTheCoordinateLimitAreRefused) {
   EXPECT_NE(r.error().message.find("at most 1e+30"), std::string::npos) << r.error().message;
 }
 
+// URDF detection by extension was case-sensitive at three doors and not at others: one rule.
+TEST(UrdfPath, AnyCaseOfTheExtensionIsARobot) {
+  for (const char* yes : {"a.urdf", "dir/ARM.URDF", "x.Urdf"})
+    EXPECT_TRUE(isRobotDescriptionPath(yes));
+  for (const char* no : {"a.obj", "urdf", "a.urdf.obj", "a.urdfx"})
+    EXPECT_FALSE(isRobotDescriptionPath(no)) << no;
+}
+
 // 50 000 nested elements used to overflow the stack inside TinyXML (a segfault); the depth is
 // checked before parsing.
 TEST_F(Urdf, DeeplyNestedElementsAreRefused) {

@@ -51,7 +51,7 @@ TEST_F(ViewTest, SceneHoldsTheSolidItsSetAndCertificate) {
   ASSERT_EQ(j["poses"].size(), 1u);
   EXPECT_EQ(j["poses"][0], nlohmann::json({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}));
   EXPECT_EQ(j["save"]["path"], path("box.txt"));
-  EXPECT_EQ(j["save"]["format"], "text");
+  EXPECT_EQ(j["save"]["format"], "txt");
 }
 
 TEST_F(ViewTest, GeometryIsTheDisplayedMeshInBinary) {
