@@ -98,7 +98,7 @@ TEST_F(SphereIo, FailedWritesLeaveNoFile) {
 // assimp reads coordinates as floats: 1e80 arrived as infinity and was reported as "NaN or
 // infinite"; the message says what happened.
 // One spelling of the format names at every door ("yml" and "text" were Python's alone).
-TEST(SphereIo, FormatNamesHaveOneSpelling) {
+TEST(SphereFormat, FormatNamesHaveOneSpelling) {
   for (SphereFormat f :
        {SphereFormat::kText, SphereFormat::kJson, SphereFormat::kSph, SphereFormat::kYaml}) {
     const auto back = sphereFormatFromName(sphereFormatName(f));
