@@ -79,12 +79,26 @@ struct Participants {
   std::vector<std::array<int, 2>> pairs;  // positions in `links`, not adjacent
 };
 
-// Whether pair p of `who` is in collision at `poses`.
-bool pairTouches(const Robot& robot, const Participants& who, const PosesByLink& poses,
-                 const std::array<int, 2>& p) {
-  const Eigen::Isometry3d& ta = poses.at(robot.links[who.links[p[0]]].name);
-  const Eigen::Isometry3d& tb = poses.at(robot.links[who.links[p[1]]].name);
-  return detail::bodiesTouch(who.bodies[p[0]], who.bodies[p[1]], ta.inverse() * tb);
+// Each participant's pose at `poses`, in the order of `who.links` (one lookup per link, not
+// two per pair), with its inverse.
+struct PlacedLinks {
+  std::vector<Eigen::Isometry3d> pose, inverse;
+};
+PlacedLinks placeLinks(const Robot& robot, const Participants& who, const PosesByLink& poses) {
+  PlacedLinks out;
+  out.pose.reserve(who.links.size());
+  out.inverse.reserve(who.links.size());
+  for (size_t link : who.links) {
+    out.pose.push_back(poses.at(robot.links[link].name));
+    out.inverse.push_back(out.pose.back().inverse());
+  }
+  return out;
+}
+
+// Whether pair p of `who` is in collision with its links placed at `at`.
+bool pairTouches(const Participants& who, const PlacedLinks& at, const std::array<int, 2>& p) {
+  return detail::bodiesTouch(who.bodies[p[0]], who.bodies[p[1]],
+                             at.inverse[p[0]] * at.pose[p[1]]);
 }
 
 // Collisions per pair of `who` over the samples, in parallel (integer sums: the same on any
@@ -109,8 +123,9 @@ Expected<std::vector<int64_t>> countCollisions(const Robot& robot, const Partici
                           }
                           continue;
                         }
+                        const PlacedLinks at = placeLinks(robot, who, *poses);
                         for (size_t p = 0; p < who.pairs.size(); ++p)
-                          if (pairTouches(robot, who, *poses, who.pairs[p])) ++counts[p];
+                          if (pairTouches(who, at, who.pairs[p])) ++counts[p];
                       }
                     });
   if (const int64_t bad = first_failure.load(); bad != std::numeric_limits<int64_t>::max()) {
@@ -170,11 +185,12 @@ Expected<CollisionMatrix> sampleSelfCollisions(const Robot& robot,
   };
   for (const auto& [a, b] : adjacent) disable(a, b, DisableReason::kAdjacent, 0);
   const int n = static_cast<int>(who.links.size());
+  const PlacedLinks at_default = placeLinks(robot, who, *defaults);
   for (int a = 0; a < n; ++a)
     for (int b = a + 1; b < n; ++b) {
       ++out.pairs;
       if (adjacent.count({who.links[a], who.links[b]}) > 0) continue;
-      if (pairTouches(robot, who, *defaults, {a, b}))
+      if (pairTouches(who, at_default, {a, b}))
         disable(who.links[a], who.links[b], DisableReason::kDefault, 0);
       else
         who.pairs.push_back({a, b});
