@@ -80,25 +80,23 @@ struct Participants {
 };
 
 // Each participant's pose at `poses`, in the order of `who.links` (one lookup per link, not
-// two per pair), with its inverse.
+// two per pair), with its inverse; `out`'s storage is reused from one configuration to the next.
 struct PlacedLinks {
   std::vector<Eigen::Isometry3d> pose, inverse;
 };
-PlacedLinks placeLinks(const Robot& robot, const Participants& who, const PosesByLink& poses) {
-  PlacedLinks out;
-  out.pose.reserve(who.links.size());
-  out.inverse.reserve(who.links.size());
+void placeLinks(const Robot& robot, const Participants& who, const PosesByLink& poses,
+                PlacedLinks* out) {
+  out->pose.clear();
+  out->inverse.clear();
   for (size_t link : who.links) {
-    out.pose.push_back(poses.at(robot.links[link].name));
-    out.inverse.push_back(out.pose.back().inverse());
+    out->pose.push_back(poses.at(robot.links[link].name));
+    out->inverse.push_back(out->pose.back().inverse());
   }
-  return out;
 }
 
 // Whether pair p of `who` is in collision with its links placed at `at`.
 bool pairTouches(const Participants& who, const PlacedLinks& at, const std::array<int, 2>& p) {
-  return detail::bodiesTouch(who.bodies[p[0]], who.bodies[p[1]],
-                             at.inverse[p[0]] * at.pose[p[1]]);
+  return detail::bodiesTouch(who.bodies[p[0]], who.bodies[p[1]], at.inverse[p[0]] * at.pose[p[1]]);
 }
 
 // Collisions per pair of `who` over the samples, in parallel (integer sums: the same on any
@@ -111,10 +109,12 @@ Expected<std::vector<int64_t>> countCollisions(const Robot& robot, const Partici
     if (isMovable(j) && !j.mimic) joints.push_back(&j);
   tbb::enumerable_thread_specific<std::vector<int64_t>> local(
       std::vector<int64_t>(who.pairs.size(), 0));
+  tbb::enumerable_thread_specific<PlacedLinks> placed;
   std::atomic<int64_t> first_failure{std::numeric_limits<int64_t>::max()};
   tbb::parallel_for(tbb::blocked_range<int64_t>(0, samples, 16),
                     [&](const tbb::blocked_range<int64_t>& range) {
                       std::vector<int64_t>& counts = local.local();
+                      PlacedLinks& at = placed.local();
                       for (int64_t i = range.begin(); i != range.end(); ++i) {
                         auto poses = linkPoses(robot, sampledConfiguration(joints, seed, i));
                         if (!poses) {
@@ -123,7 +123,7 @@ Expected<std::vector<int64_t>> countCollisions(const Robot& robot, const Partici
                           }
                           continue;
                         }
-                        const PlacedLinks at = placeLinks(robot, who, *poses);
+                        placeLinks(robot, who, *poses, &at);
                         for (size_t p = 0; p < who.pairs.size(); ++p)
                           if (pairTouches(who, at, who.pairs[p])) ++counts[p];
                       }
@@ -185,7 +185,8 @@ Expected<CollisionMatrix> sampleSelfCollisions(const Robot& robot,
   };
   for (const auto& [a, b] : adjacent) disable(a, b, DisableReason::kAdjacent, 0);
   const int n = static_cast<int>(who.links.size());
-  const PlacedLinks at_default = placeLinks(robot, who, *defaults);
+  PlacedLinks at_default;
+  placeLinks(robot, who, *defaults, &at_default);
   for (int a = 0; a < n; ++a)
     for (int b = a + 1; b < n; ++b) {
       ++out.pairs;

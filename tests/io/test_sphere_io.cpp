@@ -93,10 +93,6 @@ TEST_F(SphereIo, FailedWritesLeaveNoFile) {
   EXPECT_EQ(files, 1);
 }
 
-// 50 000 spheres at 4 subdivisions ended in bad_alloc, and a subdivision count out of range was
-// clamped by the library while two doors refused it: the library estimates and refuses.
-// assimp reads coordinates as floats: 1e80 arrived as infinity and was reported as "NaN or
-// infinite"; the message says what happened.
 // One spelling of the format names at every door ("yml" and "text" were Python's alone).
 TEST(SphereFormat, FormatNamesHaveOneSpelling) {
   for (SphereFormat f :
@@ -113,6 +109,8 @@ TEST(SphereFormat, FormatNamesHaveOneSpelling) {
   }
 }
 
+// assimp reads coordinates as floats: 1e80 arrived as infinity and was reported as "NaN or
+// infinite"; the message says what happened.
 TEST(LoadMesh, CoordinatesBeyondFloatSayTheFormatIsSinglePrecision) {
   const std::string path =
       (std::filesystem::temp_directory_path() / "sphereset_huge_coordinate.obj").string();
@@ -127,6 +125,8 @@ TEST(LoadMesh, CoordinatesBeyondFloatSayTheFormatIsSinglePrecision) {
       << m.error().message;
 }
 
+// 50 000 spheres at 4 subdivisions ended in bad_alloc, and a subdivision count out of range was
+// clamped by the library while two doors refused it: the library estimates and refuses.
 TEST(SphereExport, SizesAreCheckedBeforeAnythingIsAllocated) {
   EXPECT_TRUE(checkSphereSetMesh(1000, 2).ok());
   const Status big = checkSphereSetMesh(50000, 4);
