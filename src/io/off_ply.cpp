@@ -284,7 +284,7 @@ Expected<PlyHeader> parsePlyHeader(const std::string& buf, const std::string& pa
     if (e == std::string::npos) e = buf.size();
     *out = buf.substr(pos, e - pos);
     if (!out->empty() && out->back() == '\r') out->pop_back();
-    pos = e + 1;
+    pos = e < buf.size() ? e + 1 : buf.size();  // never past the end: the data starts there
     return true;
   };
   std::string l;

@@ -17,6 +17,7 @@ namespace sphereset::detail {
 // must), hexadecimal is not. The characters read, 0 when there is no number; a value out of
 // range is ±inf or 0, as strtod gives it.
 inline size_t parseNumberPrefix(const char* first, const char* last, double* out) {
+  if (first >= last) return 0;
   const char* p = first;
   if (p != last && *p == '+' && (p + 1 == last || p[1] != '-')) ++p;
   const auto [end, ec] = std::from_chars(p, last, *out);

@@ -87,6 +87,18 @@ TEST_F(MeshHostile, PlyListCountsMustBeCountsTheDataCanHold) {
   expectError(loadMesh(huge), ErrorCode::kUnreadable, huge, "truncated data in element 'vertex'");
 }
 
+TEST_F(MeshHostile, PlyHeaderEndingAtTheLastByteHasNoData) {
+  // No line break after end_header: the data starts at the end of the file, not one byte past
+  // it (the ascii reader once parsed a number from beyond the buffer; AddressSanitizer shows it).
+  for (const char* format : {"ascii", "binary_little_endian"}) {
+    const std::string p =
+        write("end.ply", std::string("ply\nformat ") + format +
+                             " 1.0\nelement vertex 1\nproperty float x\n"
+                             "property float y\nproperty float z\nend_header");
+    expectError(loadMesh(p), ErrorCode::kUnreadable, p, "truncated data in element 'vertex'");
+  }
+}
+
 // A mesh file may name other files. Only the companions its format needs are read (a glTF's
 // .bin, an OBJ's .mtl), and they are listed in the report; any other file is missing to the
 // loader (an OBJ naming /etc/passwd as its material library used to echo a line of it, and
