@@ -60,6 +60,12 @@ class SolidIndex {
   // Length of the part of segment [a, b] that lies outside the solid.
   double outsideLength(const Vec3& a, const Vec3& b) const;
 
+  // Frees the answers the index remembers (up to about 6.5 MB once it answered outside-volume
+  // queries, sov_memo.hpp); later queries give the same answers and remember anew. For a caller
+  // that holds many indices and is done with one for now (a robot's links). Not concurrently
+  // with queries on the same index.
+  void forgetAnswers() const;
+
   const Mesh& mesh() const;  // the original mesh
   const Aabb& bounds() const;
   double boundaryTolerance() const;

@@ -77,6 +77,10 @@ SolidIndex& SolidIndex::operator=(SolidIndex&&) noexcept = default;
 
 const Mesh& SolidIndex::mesh() const { return impl_->mesh; }
 const Aabb& SolidIndex::bounds() const { return impl_->bounds; }
+void SolidIndex::forgetAnswers() const {
+  impl_->sov_memo.clear();
+  impl_->centre_memo.clear();
+}
 double SolidIndex::boundaryTolerance() const { return impl_->tolerance; }
 int64_t SolidIndex::nodeCount() const { return static_cast<int64_t>(impl_->bvh.nodes.size()); }
 

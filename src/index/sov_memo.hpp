@@ -47,6 +47,14 @@ class ExactMemo {
     return true;
   }
 
+  // Frees every slot (the shards allocate again on their next store).
+  void clear() const {
+    for (Shard& s : shards_) {
+      std::lock_guard<std::mutex> lock(s.mutex);
+      std::vector<Slot>().swap(s.slots);
+    }
+  }
+
   void store(const Key& k, const Value& value) const {
     const uint64_t h = hashOf(k);
     Shard& s = shard(h);

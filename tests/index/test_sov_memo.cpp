@@ -68,5 +68,27 @@ TEST(SovMemo, RepeatedQueriesFromManyThreadsEqualAFreshIndex) {
   for (size_t k = 0; k < asks; ++k) EXPECT_TRUE(sameBits(got[k], expected[k % balls.size()])) << k;
 }
 
+TEST(SovMemo, ForgottenAnswersAreGoneAndComeBackTheSame) {
+  detail::CentreMemo memo;
+  const auto key = detail::bitsOf(Vec3(1.0, 2.0, 3.0));
+  memo.store(key, Containment::kInside);
+  Containment c = Containment::kOutside;
+  ASSERT_TRUE(memo.find(key, &c));
+  memo.clear();
+  EXPECT_FALSE(memo.find(key, &c));
+  memo.store(key, Containment::kBoundary);
+  ASSERT_TRUE(memo.find(key, &c));
+  EXPECT_EQ(c, Containment::kBoundary);
+
+  // An index that forgets between two rounds of the same queries answers them alike.
+  const SolidIndex index(test::makeTorus(1.0, 0.35, 40, 20));
+  const Sphere balls[] = {{Vec3(1.0, 0.0, 0.0), 0.5}, {Vec3(0.0, 0.0, 0.0), 0.9}};
+  OutsideVolume before[2];
+  for (int i = 0; i < 2; ++i) before[i] = index.outsideVolume(balls[i]);
+  index.forgetAnswers();
+  for (int i = 0; i < 2; ++i) EXPECT_TRUE(sameBits(index.outsideVolume(balls[i]), before[i]));
+  EXPECT_EQ(index.classify(Vec3(1.0, 0.0, 0.0)), Containment::kInside);
+}
+
 }  // namespace
 }  // namespace sphereset
