@@ -18,21 +18,7 @@
 
 namespace sphereset::cli {
 
-int exitFor(const Error& e) {
-  switch (e.code) {
-    case ErrorCode::kInvalidArgument:
-      return kUsage;
-    case ErrorCode::kUnreadable:
-      return kUnreadable;
-    case ErrorCode::kInvalidData:
-      return kInvalid;
-    case ErrorCode::kNotSolid:
-      return kNotSolid;
-    case ErrorCode::kWriteFailed:
-      return kWrite;
-  }
-  return kInternal;
-}
+int exitFor(const Error& e) { return exitCodeFor(e.code); }
 
 int fail(const Error& e) {
   std::cerr << "sphereset: " << e.message << '\n';

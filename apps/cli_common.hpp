@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "sphereset/evaluate.hpp"
+#include "sphereset/exit_codes.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/load.hpp"
 #include "sphereset/mesh.hpp"
@@ -29,27 +30,19 @@
 
 namespace sphereset::cli {
 
-// Exit codes, listed under --help (kExitCodesHelp) and in the README.
+// Exit codes: the library's table for every door (exit_codes.hpp), by their short names here.
 enum Exit {
-  kOk = 0,
-  kInternal = 1,
-  kUsage = 2,
-  kUnreadable = 3,
-  kInvalid = 4,
-  kNotSolid = 5,
-  kWrite = 6,
-  kUncovered = 7,    // fit, tree: the result failed its own coverage check (the file is written)
-  kItemsFailed = 8,  // batch: some items failed (each is reported; the others are written)
-  kNoPage = 9,       // view: this build has no page (web/ was not built)
+  kOk = kExitOk,
+  kInternal = kExitInternal,
+  kUsage = kExitUsage,
+  kUnreadable = kExitUnreadable,
+  kInvalid = kExitInvalid,
+  kNotSolid = kExitNotSolid,
+  kWrite = kExitWrite,
+  kUncovered = kExitUncovered,
+  kItemsFailed = kExitItemsFailed,
+  kNoPage = kExitNoPage,
 };
-
-// The footer of --help.
-inline constexpr const char* kExitCodesHelp =
-    "Exit codes: 0 success, 1 internal error, 2 bad options, 3 unreadable input,\n"
-    "4 invalid data, 5 mesh is not a closed solid, 6 output could not be written,\n"
-    "7 the result failed its own coverage check (fit, tree: the file is still written),\n"
-    "8 some items of a batch failed (batch: the others are written; see report.jsonl),\n"
-    "9 this build has no page for `view` (web/ was not built).";
 
 // The exit code for a library error.
 int exitFor(const Error& e);

@@ -75,18 +75,13 @@ class Progress {
         start_(std::chrono::steady_clock::now()) {}
 
   void add(const BatchItemReport& r) {
-    ++done_;
-    if (r.status == BatchStatus::kSkipped) ++skipped_;
-    if (r.status == BatchStatus::kError) ++failed_;
-    // An item skipped as up to date keeps its recorded coverage: a resumed batch exits as the
-    // first run did.
-    if (r.status != BatchStatus::kError && !r.covered) ++uncovered_;
-    if (r.status != BatchStatus::kSkipped) ++run_;
+    countBatchItem(r, &totals_);
     if (quiet_) return;
     const double t = seconds();
     // Skipped items take no time: the rate counts the items fitted.
-    const double rate = run_ > 0 && t > 0 ? 60.0 * static_cast<double>(run_) / t : 0.0;
-    const size_t left = total_ - done_;
+    const size_t run = totals_.items - totals_.skipped;
+    const double rate = run > 0 && t > 0 ? 60.0 * static_cast<double>(run) / t : 0.0;
+    const size_t left = total_ - totals_.items;
     std::string eta = left == 0 ? "done" : rate > 0 ? duration(60.0 * left / rate) + " left" : "";
     char item[512];
     if (r.status == BatchStatus::kError)
@@ -97,8 +92,8 @@ class Progress {
                     r.er_sum, r.covered ? "" : ", NOT covered", r.seconds);
     char line[256];
     std::snprintf(line, sizeof line,
-                  "batch: %zu/%zu items (%zu failed, %zu skipped), %.1f items/min, %s", done_,
-                  total_, failed_, skipped_, rate, eta.c_str());
+                  "batch: %zu/%zu items (%zu failed, %zu skipped), %.1f items/min, %s",
+                  totals_.items, total_, totals_.failed, totals_.skipped, rate, eta.c_str());
     if (tty_)
       std::fprintf(stderr, "\r\033[K%s\n%s", item, line);
     else
@@ -109,12 +104,11 @@ class Progress {
   double seconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
-  size_t failed() const { return failed_; }
-  size_t skipped() const { return skipped_; }
-  size_t uncovered() const { return uncovered_; }
+  const BatchTotals& totals() const { return totals_; }
 
  private:
-  size_t total_, done_ = 0, run_ = 0, skipped_ = 0, failed_ = 0, uncovered_ = 0;
+  size_t total_;
+  BatchTotals totals_;
   bool quiet_, tty_;
   std::chrono::steady_clock::time_point start_;
 };
@@ -188,9 +182,9 @@ int runBatch(const BatchArgs& c) {
   if (write_error) return fail(*write_error);
   if (Status st = report->finish(); !st) return fail(st.error());
 
+  const BatchEnd end = batchEnd(progress.totals(), a.mesh.path, out);
   if (!a.quiet)
-    std::fprintf(stderr, "batch: %zu items: %zu fitted, %zu skipped, %zu failed in %s -> %s\n", n,
-                 n - progress.skipped() - progress.failed(), progress.skipped(), progress.failed(),
+    std::fprintf(stderr, "batch: %s in %s -> %s\n", end.summary.c_str(),
                  duration(progress.seconds()).c_str(), batchReportPath(out).c_str());
   if (!page_errors.empty()) {
     // In item order, whatever the order the workers finished in.
@@ -201,19 +195,8 @@ int runBatch(const BatchArgs& c) {
                  a.mesh.path.c_str(), page_errors.size(), n);
     return kWrite;
   }
-  if (progress.failed() > 0) {
-    std::fprintf(stderr, "sphereset: %s: %zu of %zu items failed (see %s)\n", a.mesh.path.c_str(),
-                 progress.failed(), n, batchReportPath(out).c_str());
-    return kItemsFailed;
-  }
-  if (progress.uncovered() > 0) {
-    std::fprintf(stderr,
-                 "sphereset: %s: %zu of %zu items failed the coverage check (written anyway; see "
-                 "%s)\n",
-                 a.mesh.path.c_str(), progress.uncovered(), n, batchReportPath(out).c_str());
-    return kUncovered;
-  }
-  return kOk;
+  if (end.exit_code != kOk) std::fprintf(stderr, "sphereset: %s\n", end.message.c_str());
+  return end.exit_code;
 }
 
 }  // namespace

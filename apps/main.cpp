@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
   using namespace sphereset::cli;
   CLI::App app{"sphereset: tight bounding sphere sets for solid triangle meshes"};
   app.require_subcommand(1);
-  app.footer(kExitCodesHelp);
+  app.footer(sphereset::kExitCodesHelp);
   int threads = 0;
   app.add_option("--threads", threads, "Worker threads (default 0: all cores)")
       ->check(CLI::Range(0, 4096));

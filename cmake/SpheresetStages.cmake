@@ -31,7 +31,7 @@ set(SPHERESET_NOT_IN_CORE assimp yaml-cpp nlohmann png urdf tinyxml CGAL)
 # The public headers (include/sphereset/NAME.hpp) each stage owns. mesh.hpp holds the plain
 # data every stage shares (Vec3, Mesh, Aabb) with the mesh stage's functions, so it is the
 # util stage's.
-set(SPHERESET_PUBLIC_util status limits options sphere mesh)
+set(SPHERESET_PUBLIC_util status exit_codes limits options sphere mesh)
 set(SPHERESET_PUBLIC_index solid_index)
 set(SPHERESET_PUBLIC_mesh mesh_defects)
 set(SPHERESET_PUBLIC_repair repair)

@@ -128,6 +128,27 @@ std::string reportLine(const BatchItemReport& report);
 // Reads a line written by reportLine. Errors: kInvalidData naming what is wrong.
 Expected<BatchItemReport> parseReportLine(const std::string& line);
 
+// The counts of a run's items, as every batch door reports them.
+struct BatchTotals {
+  size_t items = 0, fitted = 0, skipped = 0, failed = 0;
+  size_t uncovered = 0;  // written (fitted or skipped) but not covered
+};
+
+// Counts one item. An item skipped as up to date keeps its recorded coverage: a resumed batch
+// ends as the first run did.
+void countBatchItem(const BatchItemReport& report, BatchTotals* totals);
+
+// How a run ends: its summary ("12 items: 10 fitted, 1 skipped, 1 failed"), and the exit code
+// of exit_codes.hpp with, when it is not kExitOk, the one line that says why, naming the input
+// and the report: kExitItemsFailed when some item failed (the others are written), else
+// kExitUncovered when some item failed its coverage check (written anyway).
+struct BatchEnd {
+  std::string summary;
+  int exit_code = 0;
+  std::string message;  // "" with kExitOk
+};
+BatchEnd batchEnd(const BatchTotals& totals, const std::string& input, const std::string& out_dir);
+
 // Fingerprint of what determines an item's sphere file: the fit options the request resolves to
 // (fitOptionsFor), the repair options (and whether the union and the wrapping are available),
 // the output's format and the bytes of the mesh file. 16 hex digits (FNV-1a, 64 bits).

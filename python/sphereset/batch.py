@@ -128,13 +128,8 @@ def run_batch(input_path: str, out_dir: str, options: Dict[str, Any], client: An
 
 
 def _exit_code(e: Exception) -> int:
-    """The exit code `sphereset` gives the same error."""
-    for cls, code in ((_core.InvalidArgumentError, 2), (_core.UnreadableError, 3),
-                      (_core.InvalidDataError, 4), (_core.NotSolidError, 5),
-                      (_core.WriteError, 6)):
-        if isinstance(e, cls):
-            return code
-    return 1
+    """The exit code `sphereset` gives the same error (the library's table, exit_codes.hpp)."""
+    return getattr(e, "exit_code", 1)
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -148,7 +143,8 @@ def _parser() -> argparse.ArgumentParser:
     where.add_argument("--scheduler", help="address of a running Dask scheduler, e.g. "
                                            "tcp://host:8786 (or a scheduler JSON file)")
     where.add_argument("--local-workers", type=int, metavar="K",
-                       help="start a local cluster of K worker processes")
+                       help="start a local cluster of K worker processes (1 to the number of "
+                            "cores)")
     p.add_argument("--threads", type=int, default=None,
                    help="threads of one item's fit (default: all of a remote worker's cores; "
                         "cores / K for --local-workers)")
@@ -185,8 +181,13 @@ def main(argv: Optional[List[str]] = None) -> int:
 
     cluster = None
     if a.local_workers is not None:
-        if a.local_workers < 1:
-            print("sphereset.batch: --local-workers must be at least 1", file=sys.stderr)
+        # One fit per worker process: more processes than cores only share them, and a huge
+        # count would start that many interpreters before the first item.
+        cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (
+            os.cpu_count() or 1)
+        if not 1 <= a.local_workers <= cores:
+            print(f"sphereset: --local-workers {a.local_workers}: expected an integer from 1 to "
+                  f"{cores} (the cores of this machine)", file=sys.stderr)
             return 2
         threads = a.threads if a.threads is not None else max(
             1, (os.cpu_count() or 1) // a.local_workers)
@@ -219,26 +220,14 @@ def main(argv: Optional[List[str]] = None) -> int:
         client.close()
         if cluster is not None:
             cluster.close()
-    import json
-    reports = [json.loads(line) for line in lines]
-    failed = sum(r["status"] == "error" for r in reports)
-    skipped = sum(r["status"] == "skipped" for r in reports)
-    uncovered = sum(r["status"] != "error" and not r["covered"] for r in reports)
-    report = _core._batch_report_path(os.path.abspath(a.output))
+    # The summary and the exit code of `sphereset batch` (batch.hpp: batchEnd).
+    end = _core._batch_end(lines, a.input, os.path.abspath(a.output))
     if not a.quiet:
-        print(f"batch: {len(lines)} items: {len(lines) - failed - skipped} fitted, {skipped} "
-              f"skipped, {failed} failed -> {report}", file=sys.stderr)
-    # The exit codes of `sphereset batch`.
-    if failed:
-        print(f"sphereset: {a.input}: {failed} of {len(lines)} items failed (see {report})",
+        print(f"batch: {end['summary']} -> {_core._batch_report_path(os.path.abspath(a.output))}",
               file=sys.stderr)
-        return 8
-    if uncovered:
-        print(f"sphereset: {a.input}: {uncovered} of {len(lines)} items failed the coverage "
-              f"check (written anyway; see {report})", file=sys.stderr)
-        return 7
-    return 0
-
+    if end["exit_code"]:
+        print(f"sphereset: {end['message']}", file=sys.stderr)
+    return end["exit_code"]
 
 if __name__ == "__main__":
     sys.exit(main())

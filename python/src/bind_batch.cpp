@@ -122,6 +122,21 @@ void bindBatch(py::module_& m) {
           "finish", [](BatchReport& r) { check(r.finish()); },
           "Replaces OUT/report.jsonl with this run's report and releases the folder.");
   m.def("_batch_report_path", &batchReportPath, py::arg("out_dir"));
+  m.def(
+      "_batch_end",
+      [](const std::vector<std::string>& lines, const std::string& input,
+         const Path& out_dir) {
+        BatchTotals totals;
+        for (const std::string& line : lines) countBatchItem(unwrap(parseReportLine(line)), &totals);
+        const BatchEnd end = batchEnd(totals, input, out_dir.string());
+        py::dict d;
+        d["summary"] = end.summary;
+        d["exit_code"] = end.exit_code;
+        d["message"] = end.message;
+        return d;
+      },
+      py::arg("lines"), py::arg("input"), py::arg("out_dir"),
+      "How a run of these report lines ends (batch.hpp: batchEnd): summary, exit_code, message.");
 }
 
 }  // namespace sphereset::python

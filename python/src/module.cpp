@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common.hpp"
+#include "sphereset/exit_codes.hpp"
 
 namespace sphereset::python {
 
@@ -140,6 +141,16 @@ PYBIND11_MODULE(_sphereset, m) {
                    pair(base, PyExc_ValueError));
   static PyObject* write_failed = newException(
       m, "WriteError", "An output file could not be written.", pair(base, PyExc_OSError));
+
+  // Each class names the exit code the command gives its errors (exit_codes.hpp).
+  for (const auto& [cls, code] :
+       {std::pair<PyObject*, int>{base, sphereset::kExitInternal},
+        {invalid_argument, sphereset::exitCodeFor(ErrorCode::kInvalidArgument)},
+        {unreadable, sphereset::exitCodeFor(ErrorCode::kUnreadable)},
+        {invalid_data, sphereset::exitCodeFor(ErrorCode::kInvalidData)},
+        {not_solid, sphereset::exitCodeFor(ErrorCode::kNotSolid)},
+        {write_failed, sphereset::exitCodeFor(ErrorCode::kWriteFailed)}})
+    py::handle(cls).attr("exit_code") = code;
 
   py::register_exception_translator([](std::exception_ptr p) {
     try {

@@ -156,3 +156,40 @@ def test_an_unreachable_scheduler_is_one_line(tmp_path, capsys):
     assert err.startswith("sphereset: --scheduler tcp://127.0.0.1:9: cannot reach the scheduler")
     assert len(err.strip().splitlines()) == 1
     assert not (tmp_path / "out").exists()
+
+
+def test_local_workers_beyond_the_cores_are_refused_before_any_start(tmp_path, capsys):
+    # --local-workers 100000 used to start that many worker processes before the first item.
+    shutil.copy(DATA / "open_box.off", tmp_path / "a.off")
+    out = tmp_path / "out"
+    cores = len(os.sched_getaffinity(0))
+    for k in (0, cores + 1, 100000):
+        assert batch.main([str(tmp_path), "-o", str(out), "--local-workers", str(k), "-q"]) == 2
+        assert (f"--local-workers {k}: expected an integer from 1 to {cores}"
+                in capsys.readouterr().err)
+    assert not out.exists()
+
+
+def test_exit_codes_and_summary_come_from_the_library(tmp_path):
+    # One table for every door (exit_codes.hpp, batch.hpp: batchEnd): the exception classes
+    # carry the command's codes, and the end of a run is the command's.
+    assert [c.exit_code for c in (ss.Error, ss.InvalidArgumentError, ss.UnreadableError,
+                                  ss.InvalidDataError, ss.NotSolidError, ss.WriteError)] == [
+        1, 2, 3, 4, 5, 6]
+    ok = ('{"mesh":"a.off","output":"a.json","status":"ok","n":2,"spheres":2,"er_sum":0.5,'
+          '"er_union":0.4,"covered":true,"repair":"none","seconds":1.0,"error":"",'
+          '"fingerprint":"0123456789abcdef"}')
+    bare = ss._core._batch_end([ok], "in", str(tmp_path))
+    assert bare == {"summary": "1 items: 1 fitted, 0 skipped, 0 failed", "exit_code": 0,
+                    "message": ""}
+    uncovered = ok.replace('"covered":true', '"covered":false')
+    end = ss._core._batch_end([ok, uncovered], "in", str(tmp_path))
+    assert end["exit_code"] == 7
+    assert end["message"].startswith("in: 1 of 2 items failed the coverage check")
+    failed = ('{"mesh":"b.off","output":"b.json","status":"error","n":2,"spheres":0,'
+              '"er_sum":null,"er_union":null,"covered":false,"repair":"","seconds":0.1,'
+              '"error":"b.off: no such file","fingerprint":""}')
+    end = ss._core._batch_end([ok, uncovered, failed], "in", str(tmp_path))
+    assert (end["summary"], end["exit_code"]) == ("3 items: 2 fitted, 0 skipped, 1 failed", 8)
+    assert end["message"] == f"in: 1 of 3 items failed (see {tmp_path / 'report.jsonl'})"
+

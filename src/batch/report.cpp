@@ -19,6 +19,7 @@
 
 #include "batch/batch_internal.hpp"
 #include "sphereset/batch.hpp"
+#include "sphereset/exit_codes.hpp"
 #include "sphereset/sphere_io.hpp"
 
 namespace sphereset {
@@ -128,6 +129,31 @@ Expected<BatchItemReport> parseReportLine(const std::string& line) {
 
 std::string batchReportPath(const std::string& out_dir) {
   return (std::filesystem::path(out_dir) / "report.jsonl").string();
+}
+
+void countBatchItem(const BatchItemReport& r, BatchTotals* t) {
+  ++t->items;
+  if (r.status == BatchStatus::kSkipped) ++t->skipped;
+  if (r.status == BatchStatus::kError) ++t->failed;
+  if (r.status == BatchStatus::kOk) ++t->fitted;
+  if (r.status != BatchStatus::kError && !r.covered) ++t->uncovered;
+}
+
+BatchEnd batchEnd(const BatchTotals& t, const std::string& input, const std::string& out_dir) {
+  BatchEnd end;
+  end.summary = std::to_string(t.items) + " items: " + std::to_string(t.fitted) + " fitted, " +
+                std::to_string(t.skipped) + " skipped, " + std::to_string(t.failed) + " failed";
+  const std::string of = " of " + std::to_string(t.items) + " items ";
+  const std::string report = batchReportPath(out_dir);
+  if (t.failed > 0) {
+    end.exit_code = kExitItemsFailed;
+    end.message = input + ": " + std::to_string(t.failed) + of + "failed (see " + report + ")";
+  } else if (t.uncovered > 0) {
+    end.exit_code = kExitUncovered;
+    end.message = input + ": " + std::to_string(t.uncovered) + of +
+                  "failed the coverage check (written anyway; see " + report + ")";
+  }
+  return end;
 }
 
 std::string batchPartialReportPath(const std::string& out_dir) {
