@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -70,6 +71,15 @@ struct Robot {
   std::string root;                // the root link's name
   std::vector<RobotLink> links;    // in file order
   std::vector<RobotJoint> joints;  // in file order
+};
+
+// How far a long robot computation is, for a door to show: `done` of `total` units of `stage`
+// ("link curves": the budget's quick fits, one unit per link; "link fits": one unit per fit;
+// "self-collision": sampled configurations), with the link just finished where there is one.
+struct RobotProgress {
+  std::string stage;
+  int64_t done = 0, total = 0;
+  std::string link;
 };
 
 // A joint type as the URDF spells it ("fixed", "revolute", "continuous", "prismatic"; "other" for

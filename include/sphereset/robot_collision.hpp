@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <span>
@@ -48,6 +49,10 @@ struct CollisionSamplingOptions {
   // clamped to the limits, mimic joints following.
   std::map<std::string, double> default_pose;
   CollisionCheck check = CollisionCheck::kSpheres;
+  // Called from the calling thread after each block of configurations (stage "self-collision",
+  // about a hundred blocks in all). It may throw to cancel: the exception leaves
+  // sampleSelfCollisions.
+  std::function<void(const RobotProgress&)> progress;
 };
 
 // CollisionSamplingOptions as one table (options.hpp): collision_samples, collision_seed,
@@ -59,6 +64,11 @@ std::span<const OptionSpec> collisionSamplingOptionTable();
 Status setCollisionSamplingOption(CollisionSamplingOptions* o, const std::string& name,
                                   const std::string& text);
 Status checkCollisionSamplingOptions(const CollisionSamplingOptions& o);
+
+// Configuration `i` of the sampling with `seed` (joint -> value, the joints sampleSelfCollisions
+// draws): to pose a sample again, e.g. to see a pair in contact.
+std::map<std::string, double> collisionSampleConfiguration(const Robot& robot, uint64_t seed,
+                                                           int64_t i);
 
 // The sample count when none is asked for: 2000 per movable joint that is not a mimic joint
 // (revolute, continuous, prismatic), at least 1000 and at most 100000.

@@ -100,6 +100,9 @@ struct RobotFitOptions {
   // the links, several at once; it must be thread-safe. It may throw to cancel: the exception
   // leaves fitRobot.
   std::function<void(const std::string& link, const FitProgress& progress)> progress;
+  // Each finished link: its budget curve ("link curves") and each of its fits ("link fits").
+  // Calls are one at a time (from the threads that fit the links). It may throw to cancel.
+  std::function<void(const RobotProgress&)> steps;
 };
 
 // RobotFitOptions' numbers as one table (options.hpp): budget, default_link_spheres,

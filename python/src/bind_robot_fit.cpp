@@ -113,6 +113,11 @@ void bindRobotFit(py::module_& m) {
         const std::vector<CollisionSolid> solids = co.check == CollisionCheck::kMeshes
                                                        ? robotSolids(*robot)
                                                        : std::vector<CollisionSolid>{};
+        // Ctrl-C between blocks of configurations (called from this, the main, thread).
+        co.progress = [](const RobotProgress&) {
+          py::gil_scoped_acquire gil;
+          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        };
         Expected<CollisionMatrix> matrix = CollisionMatrix{};
         {
           py::gil_scoped_release release;

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -65,6 +66,24 @@ struct LinkFit {
   double outside_volume = 0.0;
   double seconds = 0.0;
   std::string error;
+};
+
+// RobotFitOptions::steps, one call at a time, counting the units done.
+class StepReporter {
+ public:
+  StepReporter(const RobotFitOptions& o, std::string stage, int64_t total)
+      : o_(o), stage_(std::move(stage)), total_(total) {}
+  void done(const std::string& link) {
+    if (!o_.steps) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    o_.steps(RobotProgress{stage_, ++done_, total_, link});
+  }
+
+ private:
+  const RobotFitOptions& o_;
+  std::string stage_;
+  int64_t total_, done_ = 0;
+  std::mutex mutex_;
 };
 
 FitOptions linkFitOptions(const RobotFitOptions& o, const Job& j, int n, bool quick) {
@@ -145,6 +164,9 @@ Status chooseCounts(const RobotFitOptions& o, std::vector<Job>* jobs) {
   }
   // Curves of the free links, the links in parallel (each fit is parallel too, and gives the
   // same spheres for any thread count).
+  int64_t free_links = 0;
+  for (const Job& j : *jobs) free_links += j.fixed < 0;
+  StepReporter steps(o, "link curves", free_links);
   tbb::parallel_for(size_t{0}, jobs->size(), [&](size_t i) {
     Job& j = (*jobs)[i];
     if (j.fixed >= 0) return;
@@ -156,6 +178,7 @@ Status chooseCounts(const RobotFitOptions& o, std::vector<Job>* jobs) {
       j.curve.outside_volume.push_back(f->energy);
     }
     j.index->forgetAnswers();  // memory per link in flight, not per link (a 1000-link chain)
+    steps.done(j.link->name);
   });
   std::vector<LinkFitCurve> curves;
   std::vector<int> fixed;
@@ -236,10 +259,12 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
   // follows the links being fitted, not all of them (about 6.5 MB each, SolidIndex).
   std::vector<std::atomic<int>> unfinished(jobs->size());
   for (const auto& task : tasks) ++unfinished[task.first];
+  StepReporter steps(o, "link fits", static_cast<int64_t>(tasks.size()));
   tbb::parallel_for(size_t{0}, tasks.size(), [&](size_t t) {
     const Job& j = (*jobs)[tasks[t].first];
     fits[t] = fitLinkAt(o, j, tasks[t].second);
     if (--unfinished[tasks[t].first] == 0 && j.index) j.index->forgetAnswers();
+    steps.done(j.link->name);
   });
   for (size_t t = 0; t < tasks.size(); ++t)
     if (!fits[t].error.empty())

@@ -8,6 +8,10 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "broken_meshes.hpp"
 #include "robot_data.hpp"
@@ -151,6 +155,34 @@ TEST(FitRobot, SameSpheresOnOneAndTwoThreads) {
       EXPECT_EQ(a->links[i].spheres[k].radius, b->links[i].spheres[k].radius);
     }
   }
+}
+
+TEST(FitRobot, StepsCountEveryLinkCurveAndFitAndAThrowCancels) {
+  const Robot robot = test::threeLinkRobot();
+  RobotFitOptions o = fastOptions();
+  o.budget = 12;
+  std::map<std::string, std::vector<int64_t>> done;
+  std::map<std::string, int64_t> total;
+  o.steps = [&](const RobotProgress& p) {  // one call at a time: no lock needed here
+    done[p.stage].push_back(p.done);
+    total[p.stage] = p.total;
+    EXPECT_FALSE(p.link.empty());
+  };
+  auto r = fitRobot(robot, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_EQ(done.size(), 2u);
+  int fitted = 0;
+  for (const RobotLinkFit& l : r->links) fitted += l.fitted;
+  EXPECT_EQ(total["link curves"], fitted);  // every fitted link is free under the budget
+  EXPECT_GE(total["link fits"], fitted);    // and fitted at one count or more
+  for (const auto& [stage, d] : done) {
+    ASSERT_EQ(static_cast<int64_t>(d.size()), total[stage]) << stage;
+    for (size_t k = 0; k < d.size(); ++k) EXPECT_EQ(d[k], static_cast<int64_t>(k) + 1) << stage;
+  }
+  o.steps = [](const RobotProgress& p) {
+    if (p.stage == "link fits") throw std::runtime_error("stop");
+  };
+  EXPECT_THROW((void)fitRobot(robot, o), std::runtime_error);
 }
 
 // The peak resident memory of this process so far, in MB.
