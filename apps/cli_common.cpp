@@ -20,6 +20,25 @@ namespace sphereset::cli {
 
 int exitFor(const Error& e) { return exitCodeFor(e.code); }
 
+ProgressLine::ProgressLine(std::string command)
+    : command_(std::move(command)),
+      t0_(std::chrono::steady_clock::now()),
+      tty_(isatty(STDERR_FILENO) != 0) {}
+
+void ProgressLine::show(const std::string& stage, int64_t done, int64_t total,
+                        const std::string& item) {
+  const int64_t tenth = total > 0 ? 10 * done / total : 10;
+  const bool last = done >= total;
+  if (!tty_ && !last && stage == stage_ && tenth == tenth_) return;
+  stage_ = stage;
+  tenth_ = tenth;
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  std::fprintf(stderr, "%s%s: %s %lld/%lld%s%s (%.1f s)%s", tty_ ? "\r\033[K" : "",
+               command_.c_str(), stage.c_str(), static_cast<long long>(done),
+               static_cast<long long>(total), item.empty() ? "" : ", ", item.c_str(), s,
+               tty_ && !last ? "" : "\n");
+}
+
 int fail(const Error& e) {
   std::cerr << "sphereset: " << e.message << '\n';
   return exitFor(e);

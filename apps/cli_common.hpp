@@ -4,6 +4,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdint>
 #include <initializer_list>
 #include <iostream>
@@ -42,6 +43,22 @@ enum Exit {
   kUncovered = kExitUncovered,
   kItemsFailed = kExitItemsFailed,
   kNoPage = kExitNoPage,
+};
+
+// Progress of a long command on stderr, "COMMAND: STAGE done/total, ITEM (elapsed)": on a
+// terminal one line rewritten in place; in a log a line at each tenth of a stage and at its end,
+// so that a long run says where it is without flooding the log.
+class ProgressLine {
+ public:
+  explicit ProgressLine(std::string command);
+  void show(const std::string& stage, int64_t done, int64_t total, const std::string& item);
+
+ private:
+  std::string command_;
+  std::chrono::steady_clock::time_point t0_;
+  bool tty_;
+  std::string stage_;
+  int64_t tenth_ = -1;
 };
 
 // The exit code for a library error.

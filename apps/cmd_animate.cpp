@@ -96,8 +96,8 @@ int runAnimate(const AnimateArgs& a) {
   o.rebound = a.rebound;
   o.fresh_fit = a.fresh_fit;
   o.fit.restarts = 1;
-  if (!a.quiet)
-    o.progress = [&](int f, int n) { std::cerr << "frame " << (f + 1) << "/" << n << '\n'; };
+  ProgressLine progress("animate");
+  if (!a.quiet) o.progress = [&](int f, int n) { progress.show("frame", f + 1, n, ""); };
   auto res = animateSpheres(rest->mesh, *spheres, frames->frames, o,
                             frames->skinned ? &frames->skin : nullptr);
   if (!res) return fail(Error{res.error().code, a.rest + ": " + res.error().message});

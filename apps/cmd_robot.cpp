@@ -3,8 +3,6 @@
 // found by sampling the joint space (sampleSelfCollisions, robot_collision.hpp). Outputs, one or
 // more (-o repeated), by the name's ending: cuRobo's YAML with the self-collision ignore list,
 // Lula's robot description, MoveIt's SRDF, the URDF with sphere collisions, a JSON report.
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -200,32 +198,6 @@ Status writeRobotOutput(const RobotArgs& a, const std::string& path, RobotOutput
   return {};
 }
 
-// The robot's progress on stderr: on a terminal one line rewritten in place; in a log a line
-// at each tenth of a stage and at its end, so that a long run says where it is without flooding.
-class ProgressLine {
- public:
-  explicit ProgressLine(const std::chrono::steady_clock::time_point& t0)
-      : t0_(t0), tty_(isatty(STDERR_FILENO) != 0) {}
-  void operator()(const RobotProgress& p) {
-    const int64_t tenth = p.total > 0 ? 10 * p.done / p.total : 10;
-    const bool last = p.done >= p.total;
-    if (!tty_ && !last && p.stage == stage_ && tenth == tenth_) return;
-    stage_ = p.stage;
-    tenth_ = tenth;
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-    std::fprintf(stderr, "%srobot: %s %lld/%lld%s%s (%.1f s)%s", tty_ ? "\r\033[K" : "",
-                 p.stage.c_str(), static_cast<long long>(p.done), static_cast<long long>(p.total),
-                 p.link.empty() ? "" : ", link ", p.link.c_str(), s,
-                 tty_ && !last ? "" : "\n");
-  }
-
- private:
-  std::chrono::steady_clock::time_point t0_;
-  bool tty_;
-  std::string stage_;
-  int64_t tenth_ = -1;
-};
-
 int runRobot(const RobotArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   // The options first: a bad value is refused before anything is read.
@@ -256,9 +228,11 @@ int runRobot(const RobotArgs& a) {
   if (!joints) return fail(joints.error());
   co.default_pose = *joints;  // the default pose of the sampling and of Lula's default_q
   fo.name = a.urdf;
-  ProgressLine progress(t0);
+  ProgressLine progress("robot");
   if (!a.quiet) {
-    fo.steps = [&progress](const RobotProgress& p) { progress(p); };
+    fo.steps = [&progress](const RobotProgress& p) {
+      progress.show(p.stage, p.done, p.total, p.link.empty() ? "" : "link " + p.link);
+    };
     co.progress = fo.steps;
   }
   auto fit = fitRobot(*robot, fo);

@@ -5,6 +5,11 @@ set(robot ${CMAKE_CURRENT_SOURCE_DIR}/data/robot)
 cli_test(robot_budget 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot} --budget 12
          --quality fast -o ${work}/three.yml --json -q FILE ${work}/three.yml
          STDOUT "\"link\":\"base_link\".*\"covered\":true.*\"link\":\"link1\".*\"link\":\"link2\".*\"link\":\"tool\"")
+# Progress in a log: the stages in order, the curves and the samples to their totals (the
+# budget's curves of the 3 fitted links, their fits, the sampled configurations).
+cli_test(robot_progress 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot} --budget 12
+         --quality fast --collision-samples 600 -o ${work}/three_progress.json
+         STDERR "robot: link curves 3/3, link [a-z0-9_]+ .*robot: link fits [0-9]+/[0-9]+, link .*robot: self-collision 600/600 ")
 cli_test(robot_link_counts 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres base_link=2 --link-spheres link1=0 --link-spheres link2=3 --quality fast
          -o ${work}/three.json -q FILE ${work}/three.json)
