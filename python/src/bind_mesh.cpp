@@ -67,18 +67,27 @@ std::vector<Triangle> facesFromArray(const py::handle& a, size_t vertices,
     if (arr.size() == 0) return {};
     raise(ErrorCode::kInvalidArgument, name + ": faces must be an (F, 3) array");
   }
-  auto f = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(arr);
-  std::vector<Triangle> out(static_cast<size_t>(f.shape(0)));
-  const int64_t* d = f.data();
-  for (size_t t = 0; t < out.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const int64_t i = d[3 * t + static_cast<size_t>(k)];
-      if (i < 0 || static_cast<uint64_t>(i) >= vertices)
-        raise(ErrorCode::kInvalidData, name + ": triangle " + std::to_string(t) +
-                                           " references vertex " + std::to_string(i) + " of " +
-                                           std::to_string(vertices));
-      out[t][static_cast<size_t>(k)] = static_cast<int32_t>(i);
-    }
+  // Unsigned indices are read as unsigned: 2^64 - 1 is that number, not vertex -1.
+  std::vector<Triangle> out(static_cast<size_t>(arr.shape(0)));
+  auto read = [&](auto zero) {
+    using Index = decltype(zero);
+    auto f = py::array_t<Index, py::array::c_style | py::array::forcecast>::ensure(arr);
+    const Index* d = f.data();
+    for (size_t t = 0; t < out.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const Index i = d[3 * t + static_cast<size_t>(k)];
+        if (i < 0 || static_cast<uint64_t>(i) >= vertices ||
+            static_cast<uint64_t>(i) > static_cast<uint64_t>(INT32_MAX))
+          raise(ErrorCode::kInvalidData, name + ": triangle " + std::to_string(t) +
+                                             " references vertex " + std::to_string(i) + " of " +
+                                             std::to_string(vertices));
+        out[t][static_cast<size_t>(k)] = static_cast<int32_t>(i);
+      }
+  };
+  if (kind == 'u')
+    read(uint64_t{0});
+  else
+    read(int64_t{0});
   return out;
 }
 

@@ -148,6 +148,12 @@ def test_errors_are_exceptions(tmp_path):
         ss.Mesh(v, np.where(f == 7, 8, f))
     with pytest.raises(ss.InvalidDataError):
         ss.Mesh(v, -f - 1)
+    # Unsigned indices are named as they are (2^64 - 1 was shown as vertex -1).
+    huge = f.astype(np.uint64)
+    huge[2, 1] = 2**64 - 1
+    with pytest.raises(ss.InvalidDataError, match="triangle 2 references vertex 18446744073709551615 of 8"):
+        ss.Mesh(v, huge)
+    assert ss.Mesh(v, f.astype(np.uint16)).faces.shape == (12, 3)
     with pytest.raises(ss.InvalidArgumentError, match="integer"):
         ss.Mesh(v, f.astype(float))
     with pytest.raises(ss.InvalidArgumentError):
