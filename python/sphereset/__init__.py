@@ -19,9 +19,12 @@ fit (KeyboardInterrupt) at its next progress report.
 from __future__ import annotations
 
 import dataclasses
+import functools
+import inspect
 import os
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
+from typing import (Any, Callable, Dict, List, Optional, Sequence, Tuple, TypeVar, Union,
+                    cast)
 
 import numpy as np
 
@@ -86,6 +89,52 @@ def _size_text(value: Union[float, str]) -> str:
     return value if isinstance(value, str) else repr(float(value))
 
 
+def _repair_keyword_defaults() -> Dict[str, Any]:
+    """The repair keywords of every function that makes a solid, with the library's defaults
+    (its repair table and RepairOptions): repair, weld_tolerance (None: automatic),
+    fill_cavities, wrap_alpha, wrap_offset, fill_openings."""
+    d = _core._repair_option_values({})
+    d["weld_tolerance"] = None if d["weld_tolerance"] < 0 else d["weld_tolerance"]
+    return {k: d[k] for k in ("repair", "weld_tolerance", "fill_cavities", "wrap_alpha",
+                              "wrap_offset", "fill_openings")}
+
+
+# Defined once, here: the functions below get them from `_repair_keywords`.
+REPAIR_KEYWORDS: Dict[str, Any] = _repair_keyword_defaults()
+
+_F = TypeVar("_F", bound=Callable[..., Any])
+
+
+def _repair_keywords(fn: _F) -> _F:
+    """Gives ``fn`` the repair keywords (REPAIR_KEYWORDS, keyword-only, shown in its signature)
+    and passes them to it as one dict, ``repair_options``."""
+    sig = inspect.signature(fn)
+    own = [p for name, p in sig.parameters.items() if name != "repair_options"]
+    extra = [inspect.Parameter(k, inspect.Parameter.KEYWORD_ONLY, default=v)
+             for k, v in REPAIR_KEYWORDS.items()]
+
+    @functools.wraps(fn)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        repair = {k: kwargs.pop(k, v) for k, v in REPAIR_KEYWORDS.items()}
+        return fn(*args, repair_options=repair, **kwargs)
+
+    wrapper.__signature__ = sig.replace(parameters=own + extra)  # type: ignore[attr-defined]
+    return cast(_F, wrapper)
+
+
+def _repair_args(ro: Dict[str, Any]) -> Tuple[str, float, bool, float, float, str]:
+    """The repair keywords as the extension takes them: repair "auto"/"off" (True/False too),
+    weld (-1: automatic), fill_cavities, wrap_alpha, wrap_offset, fill_openings as text."""
+    repair = ro["repair"]
+    if repair is True:
+        repair = "auto"
+    elif repair is False:
+        repair = "off"
+    weld = -1.0 if ro["weld_tolerance"] is None else float(ro["weld_tolerance"])
+    return (repair, weld, bool(ro["fill_cavities"]), float(ro["wrap_alpha"]),
+            float(ro["wrap_offset"]), _size_text(ro["fill_openings"]))
+
+
 def load_mesh(path: PathLike, *, weld_tolerance: float = 0.0) -> Mesh:
     """Reads a mesh file (OBJ, PLY, STL, OFF, DAE, glTF/GLB, ... anything assimp reads).
 
@@ -96,10 +145,8 @@ def load_mesh(path: PathLike, *, weld_tolerance: float = 0.0) -> Mesh:
     return _core._load_mesh(os.fspath(path), weld_tolerance)
 
 
-def solid(mesh: MeshLike, *, repair: Union[str, bool] = "auto",
-          weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
-          wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
-          fill_openings: Union[float, str] = 0.0) -> Solid:
+@_repair_keywords
+def solid(mesh: MeshLike, *, repair_options: Dict[str, Any]) -> Solid:
     """The solid the fit runs on: ``mesh`` repaired as ``sphereset fit`` does and indexed.
 
     ``mesh`` is a Mesh, a path, or already a Solid (returned as it is). ``repair`` is "auto"
@@ -115,13 +162,10 @@ def solid(mesh: MeshLike, *, repair: Union[str, bool] = "auto",
         return mesh
     if not isinstance(mesh, Mesh):
         mesh = load_mesh(mesh)
-    if repair is True:
-        repair = "auto"
-    elif repair is False:
-        repair = "off"
-    return Solid(mesh, repair=repair, weld_tolerance=weld_tolerance,
-                 fill_cavities=fill_cavities, wrap_alpha=wrap_alpha, wrap_offset=wrap_offset,
-                 fill_openings=_size_text(fill_openings))
+    repair, weld, fill, alpha, offset, openings = _repair_args(repair_options)
+    return Solid(mesh, repair=repair, weld_tolerance=None if weld < 0 else weld,
+                 fill_cavities=fill, wrap_alpha=alpha, wrap_offset=offset,
+                 fill_openings=openings)
 
 
 @dataclass
@@ -152,43 +196,33 @@ def diagnose(mesh: Union[Mesh, PathLike]) -> Dict[str, Any]:
     return _core._diagnose(mesh)
 
 
-def check(mesh: Union[Mesh, PathLike], *, repair: Union[str, bool] = "auto",
-          weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
-          wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
-          fill_openings: Union[float, str] = 0.0) -> CheckResult:
+@_repair_keywords
+def check(mesh: Union[Mesh, PathLike], *, repair_options: Dict[str, Any]) -> CheckResult:
     """Diagnoses a mesh as a solid and says what the fit does about its problems, like
     ``sphereset check`` (same options as :func:`solid`). Never raises for a mesh the fit
     refuses: ``result.error`` holds the reason; a file that cannot be read and options outside
     the library's repair table raise."""
-    if repair is True:
-        repair = "auto"
-    elif repair is False:
-        repair = "off"
-    weld = -1.0 if weld_tolerance is None else float(weld_tolerance)
-    _core._check_repair_options(repair, weld, bool(fill_cavities), float(wrap_alpha),
-                                float(wrap_offset), _size_text(fill_openings))
+    args = _repair_args(repair_options)
+    _core._check_repair_options(*args)
     if not isinstance(mesh, Mesh):
-        mesh = load_mesh(mesh, weld_tolerance=max(0.0, weld))
+        mesh = load_mesh(mesh, weld_tolerance=max(0.0, args[1]))
     rep: Optional[Dict[str, Any]] = None
     err: Optional[str] = None
     try:
-        rep = solid(mesh, repair=repair, weld_tolerance=weld_tolerance,
-                    fill_cavities=fill_cavities, wrap_alpha=wrap_alpha,
-                    wrap_offset=wrap_offset, fill_openings=fill_openings).repair
+        rep = solid(mesh, **repair_options).repair
     except Error as e:
         err = str(e)
     return CheckResult(name=mesh.name, diagnosis=_core._diagnose(mesh), load=mesh.load_report,
                        shells=_core._shells(mesh), repair=rep, error=err)
 
 
+@_repair_keywords
 def fit(mesh: MeshLike, n: int = 32, *, seed: int = 1, quality: str = "default",
         padding: float = 0.0, points: int = 0, iterations: Optional[int] = None,
         restarts: Optional[int] = None, decimation: Optional[float] = None,
         optimizer: str = "powell", init: str = "fps", method: str = "variational",
-        repair: Union[str, bool] = "auto", weld_tolerance: Optional[float] = None,
-        fill_cavities: bool = True, wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
-        fill_openings: Union[float, str] = 0.0,
-        progress: Optional[ProgressCallback] = None) -> FitResult:
+        progress: Optional[ProgressCallback] = None,
+        repair_options: Dict[str, Any]) -> FitResult:
     """Fits ``n`` spheres that bound the solid: the options and defaults of ``sphereset fit``.
 
     ``quality`` "fast", "default" or "best" sets the points, rounds, optimiser effort, restarts
@@ -206,20 +240,18 @@ def fit(mesh: MeshLike, n: int = 32, *, seed: int = 1, quality: str = "default",
                    iterations=iterations, restarts=restarts, decimation=decimation,
                    optimizer=optimizer, init=init, method=method)
     _core._check_fit_options(options)
-    s = solid(mesh, repair=repair, weld_tolerance=weld_tolerance, fill_cavities=fill_cavities,
-              wrap_alpha=wrap_alpha, wrap_offset=wrap_offset, fill_openings=fill_openings)
+    s = solid(mesh, **repair_options)
     d = _core._fit(s, options, progress)
     return FitResult(**d)
 
 
+@_repair_keywords
 def evaluate(mesh: MeshLike, spheres: Any, *, seed: Optional[int] = None,
              samples: Optional[int] = None, segments: Optional[int] = None,
              up: Optional[str] = None, shadow_resolution: Optional[int] = None,
              shadow_lights: Optional[int] = None, surface_max_depth: Optional[int] = None,
-             interior_max_depth: Optional[int] = None, repair: Union[str, bool] = "auto",
-             weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
-             wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
-             fill_openings: Union[float, str] = 0.0) -> EvalResult:
+             interior_max_depth: Optional[int] = None,
+             repair_options: Dict[str, Any]) -> EvalResult:
     """Measures (N, 4) ``spheres`` against the solid with the options and defaults of
     ``sphereset eval`` (the library's evaluation table; None keeps a default, see
     :func:`eval_option_table`).
@@ -234,8 +266,7 @@ def evaluate(mesh: MeshLike, spheres: Any, *, seed: Optional[int] = None,
                    shadow_resolution=shadow_resolution, shadow_lights=shadow_lights,
                    surface_max_depth=surface_max_depth, interior_max_depth=interior_max_depth)
     _core._check_eval_options(options)
-    s = solid(mesh, repair=repair, weld_tolerance=weld_tolerance, fill_cavities=fill_cavities,
-              wrap_alpha=wrap_alpha, wrap_offset=wrap_offset, fill_openings=fill_openings)
+    s = solid(mesh, **repair_options)
     return EvalResult(**_core._evaluate(s, spheres, options))
 
 
@@ -258,15 +289,13 @@ class TreeResult:
     repair: Optional[Dict[str, Any]] = None
 
 
+@_repair_keywords
 def tree(mesh: MeshLike, *, branching: int = 8, depth: int = 2, parents: str = "minimal",
          n: Optional[int] = None, seed: int = 1, quality: str = "default", padding: float = 0.0,
          points: int = 0, iterations: Optional[int] = None, restarts: Optional[int] = None,
          decimation: Optional[float] = None, optimizer: str = "powell", init: str = "fps",
-         method: str = "variational", repair: Union[str, bool] = "auto",
-         weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
-         wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
-         fill_openings: Union[float, str] = 0.0,
-         progress: Optional[ProgressCallback] = None) -> TreeResult:
+         method: str = "variational", progress: Optional[ProgressCallback] = None,
+         repair_options: Dict[str, Any]) -> TreeResult:
     """Fits leaves and builds a sphere tree over them, like ``sphereset tree``: ``n`` leaves
     (None: branching**depth), levels above by Lloyd clustering of the children, each parent the
     minimal ball enclosing its children (``parents="minimal"``) or the enclosing ball of least
@@ -275,8 +304,7 @@ def tree(mesh: MeshLike, *, branching: int = 8, depth: int = 2, parents: str = "
                    iterations=iterations, restarts=restarts, decimation=decimation,
                    optimizer=optimizer, init=init, method=method)
     _core._check_fit_options(options)
-    s = solid(mesh, repair=repair, weld_tolerance=weld_tolerance, fill_cavities=fill_cavities,
-              wrap_alpha=wrap_alpha, wrap_offset=wrap_offset, fill_openings=fill_openings)
+    s = solid(mesh, **repair_options)
     d = _core._fit_tree(s, int(branching), int(depth), parents, options, progress)
     d["fit"] = FitResult(**d["fit"], options={}, repair=d["repair"])
     return TreeResult(**d)
@@ -480,16 +508,14 @@ def animate(rest_mesh: Union[Mesh, PathLike, None], spheres: Any,
     return AnimateResult(**out)
 
 
+@_repair_keywords
 def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
               link_spheres: Optional[Dict[str, int]] = None,
               padding: float = 0.0, link_padding: Optional[Dict[str, float]] = None,
               package_paths: Sequence[PathLike] = (), use_ros_package_path: bool = True,
-              seed: int = 1, quality: str = "default", repair: Union[str, bool] = "auto",
-              weld_tolerance: Optional[float] = None, fill_cavities: bool = True,
-              wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
-              fill_openings: Union[float, str] = 0.0,
-              link_solid: str = "envelope",
-              link_solid_for: Optional[Dict[str, str]] = None) -> RobotFitResult:
+              seed: int = 1, quality: str = "default", link_solid: str = "envelope",
+              link_solid_for: Optional[Dict[str, str]] = None,
+              repair_options: Dict[str, Any]) -> RobotFitResult:
     """Fits collision spheres to every link of a URDF robot, like ``sphereset robot`` (the same
     library call, options and defaults, so the same spheres for the same seed).
 
@@ -508,10 +534,6 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
     releases the GIL; Ctrl-C raises KeyboardInterrupt at the next progress report of a link fit
     on the calling thread and cancels the whole call.
     """
-    if repair is True:
-        repair = "auto"
-    elif repair is False:
-        repair = "off"
     # The keywords of the library's robot table (robot_fit.hpp), checked there.
     options = dict(budget=budget, default_link_spheres=default_link_spheres,
                    link_spheres=dict(link_spheres or {}), padding=padding,
@@ -519,8 +541,7 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
                    link_solid_for=dict(link_solid_for or {}))
     d = _core._fit_robot(os.fspath(urdf), options, dict(quality=quality, seed=seed),
                          [os.fspath(p) for p in package_paths], bool(use_ros_package_path),
-                         repair, weld_tolerance, bool(fill_cavities), float(wrap_alpha),
-                         float(wrap_offset), _size_text(fill_openings))
+                         *_repair_args(repair_options))
     d["links"] = [RobotLinkFit(**lf) for lf in d["links"]]
     return RobotFitResult(**d)
 

@@ -27,9 +27,9 @@ import os
 import sys
 import time
 import uuid
-from typing import Any, Dict, List, Optional, Union
+from typing import Any, Dict, List, Optional
 
-from . import _size_text
+from . import _repair_args, _repair_keywords
 from . import _sphereset as _core
 
 __all__ = ["batch_options", "list_items", "process_item", "run_batch", "main"]
@@ -38,14 +38,13 @@ __all__ = ["batch_options", "list_items", "process_item", "run_batch", "main"]
 # How long the command waits for a --scheduler to answer.
 _SCHEDULER_TIMEOUT = "5s"
 
+@_repair_keywords
 def batch_options(n: int = 32, *, quality: str = "default", seed: int = 1, padding: float = 0.0,
                   points: int = 0, iterations: Optional[int] = None,
                   restarts: Optional[int] = None, decimation: Optional[float] = None,
                   optimizer: str = "powell", init: str = "fps", method: str = "variational",
-                  repair: str = "auto", weld_tolerance: Optional[float] = None,
-                  fill_cavities: bool = True, wrap_alpha: float = 0.0, wrap_offset: float = 0.0,
-                  fill_openings: Union[float, str] = 0.0, format: str = "json", resume: bool = True,  # noqa: A002
-                  threads: int = 0) -> Dict[str, Any]:
+                  format: str = "json", resume: bool = True,  # noqa: A002
+                  threads: int = 0, repair_options: Dict[str, Any]) -> Dict[str, Any]:
     """The options of a batch as a plain dict (picklable, sent to the workers): the fit and
     repair options of ``sphereset fit``, the sphere file format, resuming, and the threads of
     one item's fit (0: all of the worker's cores)."""
@@ -55,11 +54,8 @@ def batch_options(n: int = 32, *, quality: str = "default", seed: int = 1, paddi
                 "points": points, "iterations": iterations, "restarts": restarts,
                 "decimation": decimation, "optimizer": optimizer, "init": init,
                 "method": method},
-        "repair": repair,
-        "weld_tolerance": -1.0 if weld_tolerance is None else float(weld_tolerance),
-        "fill_cavities": bool(fill_cavities), "wrap_alpha": float(wrap_alpha),
-        "wrap_offset": float(wrap_offset),
-        "fill_openings": _size_text(fill_openings),
+        **dict(zip(("repair", "weld_tolerance", "fill_cavities", "wrap_alpha", "wrap_offset",
+                    "fill_openings"), _repair_args(repair_options))),
         "format": format, "resume": bool(resume),
         "threads": int(threads),
     }
@@ -177,6 +173,8 @@ def main(argv: Optional[List[str]] = None) -> int:
     except _core.Error as e:
         print(f"sphereset: {e}", file=sys.stderr)
         return _exit_code(e)
+    repair["fill_cavities"] = a.fill_cavities
+    repair["weld_tolerance"] = None if repair["weld_tolerance"] < 0 else repair["weld_tolerance"]
     from distributed import Client, LocalCluster
 
     cluster = None
@@ -209,7 +207,7 @@ def main(argv: Optional[List[str]] = None) -> int:
         fit = {row["name"]: getattr(a, row["name"]) for row in _core._fit_option_table()}
         opts = batch_options(
             **{k: v for k, v in fit.items() if v is not None}, **repair,
-            fill_cavities=a.fill_cavities, format=a.format,
+            format=a.format,
             resume=not a.force, threads=threads)
         try:
             lines = run_batch(a.input, a.output, opts, client, quiet=a.quiet)

@@ -182,6 +182,7 @@ Raises InvalidDataError for NaN/infinite coordinates, indices out of range or no
         d["weld_tolerance"] = ro.weld_tolerance;
         d["wrap_alpha"] = ro.wrap_alpha;
         d["wrap_offset"] = ro.wrap_offset;
+        d["fill_cavities"] = ro.fill_cavities;
         d["fill_openings"] = ro.fill_openings == kAutomatic
                                  ? py::object(py::str("auto"))
                                  : py::object(py::float_(ro.fill_openings));
@@ -189,7 +190,7 @@ Raises InvalidDataError for NaN/infinite coordinates, indices out of range or no
       },
       py::arg("texts"),
       "The repair options {name: text} as users type them, parsed and checked by the library's "
-      "table; the values of every row (defaults for those not given).");
+      "table; the values of every row (defaults for those not given), and fill_cavities' default.");
 
   m.def(
       "_load_mesh",
@@ -253,9 +254,10 @@ and evaluate the same mesh several times. Raises NotSolidError when no solid can
              return s;
            }),
            py::arg("mesh"), py::kw_only(), py::arg("repair") = "auto",
-           py::arg("weld_tolerance") = py::none(), py::arg("fill_cavities") = true,
-           py::arg("wrap_alpha") = 0.0, py::arg("wrap_offset") = 0.0,
-           py::arg("fill_openings") = "0")
+           py::arg("weld_tolerance") = py::none(),
+           py::arg("fill_cavities") = RepairOptions{}.fill_cavities,
+           py::arg("wrap_alpha") = RepairOptions{}.wrap_alpha,
+           py::arg("wrap_offset") = RepairOptions{}.wrap_offset, py::arg("fill_openings") = "0")
       .def_property_readonly(
           "mesh",
           [](const PySolid& s) {

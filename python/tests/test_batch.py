@@ -139,7 +139,7 @@ def test_repair_options_are_checked_by_the_library_table(tmp_path, capsys):
     # The library's values, defaults for the rows not given.
     assert ss._core._repair_option_values({"wrap_alpha": "0.5"}) == {
         "repair": "auto", "weld_tolerance": -1.0, "wrap_alpha": 0.5, "wrap_offset": 0.0,
-        "fill_openings": 0.0}
+        "fill_cavities": True, "fill_openings": 0.0}
     assert ss._core._repair_option_values({"fill_openings": "auto"})["fill_openings"] == "auto"
 
 

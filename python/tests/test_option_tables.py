@@ -53,3 +53,24 @@ def test_keywords_are_the_rows(function, table, skip):
             assert given is None or given == {}, row["name"]
         else:
             assert given == want, (row["name"], given, want)
+
+
+def test_repair_keywords_have_one_home():
+    # Every function that makes a solid takes the same repair keywords, with the library's
+    # defaults (REPAIR_KEYWORDS, from its repair table), and refuses others as Python does.
+    from sphereset import batch
+    assert ss.REPAIR_KEYWORDS == {"repair": "auto", "weld_tolerance": None,
+                                  "fill_cavities": True, "wrap_alpha": 0.0, "wrap_offset": 0.0,
+                                  "fill_openings": 0.0}
+    for function in (ss.solid, ss.check, ss.fit, ss.evaluate, ss.tree, ss.fit_robot,
+                     batch.batch_options):
+        params = inspect.signature(function).parameters
+        assert "repair_options" not in params, function.__name__
+        for name, default in ss.REPAIR_KEYWORDS.items():
+            assert params[name].kind == inspect.Parameter.KEYWORD_ONLY, (function.__name__, name)
+            assert params[name].default == default, (function.__name__, name)
+    with pytest.raises(TypeError, match="wrap_alfa"):
+        ss.fit(object(), 4, wrap_alfa=0.5)
+    opts = batch.batch_options(4, wrap_alpha=0.25, weld_tolerance=None, fill_cavities=False)
+    assert (opts["wrap_alpha"], opts["weld_tolerance"], opts["fill_cavities"]) == (0.25, -1.0, False)
+
