@@ -14,14 +14,14 @@ root=$PWD
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 seconds=${FUZZ_SECONDS:-6}
 seed=${FUZZ_SEED:-1}
-targets=${FUZZ_TARGETS:-"off ply stl obj spheres_txt spheres_json spheres_sph spheres_yaml tree repair urdf animation trajectory point_cloud view_request"}
+targets=${FUZZ_TARGETS:-"off ply stl obj spheres_txt spheres_json spheres_sph spheres_yaml tree repair urdf animation trajectory point_cloud view_request planner"}
 
 launcher=()
 if command -v ccache > /dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 echo "== fuzz: configure and build ($build, clang)"
 mkdir -p "$build"
 CC=clang CXX=clang++ cmake -S . -B "$build" -DSPHERESET_BUILD_FUZZERS=ON \
-  -DSPHERESET_BUILD_TESTS=OFF -DSPHERESET_BUILD_BENCH=OFF -DSPHERESET_UNITY=OFF \
+  -DSPHERESET_BUILD_TESTS=OFF -DSPHERESET_BUILD_BENCH=OFF -DSPHERESET_UNITY=OFF -DSPHERESET_PCH=OFF \
   -DSPHERESET_VIEW_PAGE=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" "${launcher[@]}" > "$build/configure.log" 2>&1 ||
