@@ -52,6 +52,10 @@ def command(case, files, out):
     if op == "animate":
         return ["animate", files[0], files[1], "--animation", files[0], "-o", out / "anim", "-q",
                 *flags]
+    if op == "links":  # a planner's sphere file (cuRobo, Lula) read for a link of a robot
+        robot = HOSTILE.parent / "data" / "robot"
+        return ["eval", robot / "three_link.urdf", files[0], "--link", "link1",
+                "--package-path", robot]
     raise AssertionError(op)
 
 
@@ -93,6 +97,8 @@ def python_call(case, files):
         move = {k: v for k, v in opts.items() if k != "fps"}
         return lambda: ss.animate(None, ss.read_spheres(files[1]),
                                   ss.load_animation(files[0], **load), **move)
+    if op == "links":
+        return lambda: ss.read_link_spheres(files[0])
     raise AssertionError(op)
 
 

@@ -51,9 +51,19 @@ bool yamlNumber(const YAML::Node& node, double* out) {
 
 Error invalid(const std::string& what) { return Error{ErrorCode::kInvalidData, what}; }
 
-// One sphere of a link: {center: [x, y, z], radius: r}, extra keys ignored.
+// One sphere of a link: {center: [x, y, z], radius: r}, extra keys ignored. A key given twice is
+// refused: YAML forbids it, and a reader that kept one of the two would let a line appended to a
+// file (a name injected into a comment once did) change a sphere silently.
 Expected<Sphere> readSphere(const YAML::Node& node, const std::string& where) {
   if (!node.IsMap()) return invalid(where + ": expected {center: [x, y, z], radius: r}");
+  int centers = 0, radii = 0;
+  for (const auto& entry : node) {
+    const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : std::string();
+    centers += key == "center";
+    radii += key == "radius";
+  }
+  if (centers > 1 || radii > 1)
+    return invalid(where + ": " + (centers > 1 ? "center" : "radius") + " is given twice");
   const YAML::Node center = node["center"];
   const YAML::Node radius = node["radius"];
   if (!center.IsDefined()) return invalid(where + ": center is missing");

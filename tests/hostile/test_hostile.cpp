@@ -178,6 +178,7 @@ Status runCase(const nlohmann::json& c) {
   if (op == "query") return queryCase(in, c.at("point"));
   if (op == "robot") return robotCase(in, opts);
   if (op == "animate") return animateCase(in, opts);
+  if (op == "links") return statusOf(readLinkSpheres(in[0]));
   ADD_FAILURE() << "unknown op " << op;
   return {};
 }
