@@ -11,7 +11,7 @@
 set -euo pipefail
 args=()
 source "$(dirname "$0")/common.sh"
-[ -x build/bench/animate_table ] || cmake --build build --target animate_table
+bench_program animate_table
 tmp=$(mktemp -d)
 fbx=/usr/share/assimp/models/FBX/animation_with_skeleton.fbx
 armadillo=../shared/meshes/organic/armadillo_libigl.obj

@@ -4,6 +4,17 @@
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 [ -x build/apps/sphereset ] || cmake --build build --target sphereset_cli
 mkdir -p bench/results
+# bench_program NAME...: the benchmark programs built (the README's test command leaves them
+# off; this turns SPHERESET_BUILD_BENCH on in build/ when one is missing).
+bench_program() {
+  local name
+  for name in "$@"; do
+    if [ ! -x "build/bench/$name" ]; then
+      cmake -S . -B build -DSPHERESET_BUILD_BENCH=ON > /dev/null
+      cmake --build build -j "$(nproc)" --target "$name"
+    fi
+  done
+}
 # skip_without_shared NAME: `shared` (SHARED, default ../shared), or exit 0 saying NAME was
 # skipped when it has no meshes (the benchmarks on ../shared's meshes run only where it is).
 skip_without_shared() {

@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 args=()
 source bench/common.sh
 skip_without_shared incremental_certificate.sh
-[ -x build/bench/certificate_table ] || cmake --build build --target certificate_table
+bench_program certificate_table
 n=${N:-64}
 edits=${EDITS:-30}
 out=${OUT:-bench/results/incremental_certificate.csv}

@@ -13,8 +13,8 @@
 set -euo pipefail
 args=("$@")
 source "$(dirname "$0")/common.sh"
-[ -x build/bench/cover_check ] || cmake --build build --target cover_check
-[ -x build/bench/winding_volume ] || cmake --build build --target winding_volume
+bench_program cover_check
+bench_program winding_volume
 shared=../shared/meshes
 kinova=../shared/robots/kinova_gen3/kortex_description/arms/gen3/7dof/meshes
 bench_meshes "$shared"/defect/* "$shared"/robot/* "$shared"/cad/* "$shared"/organic/* \

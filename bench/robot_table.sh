@@ -11,7 +11,7 @@
 set -euo pipefail
 args=()
 source "$(dirname "$0")/common.sh"
-[ -x build/bench/cover_check ] || cmake --build build --target cover_check
+bench_program cover_check
 root=../shared/robots/kinova_gen3
 urdf=$root/kortex_description/arms/gen3/7dof/urdf/GEN3-7DOF-VISION_ARM_URDF_V12.urdf
 meshes=$root/kortex_description/arms/gen3/7dof/meshes

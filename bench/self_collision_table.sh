@@ -9,7 +9,7 @@
 set -euo pipefail
 args=()
 source "$(dirname "$0")/common.sh"
-[ -x build/bench/self_collision_table ] || cmake --build build --target self_collision_table
+bench_program self_collision_table
 root=${ROBOT_ROOT:-../shared/robots/kinova_gen3}
 urdf=$root/kortex_description/arms/gen3/7dof/urdf/GEN3-7DOF-VISION_ARM_URDF_V12.urdf
 budget=${BUDGET:-60}

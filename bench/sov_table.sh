@@ -5,9 +5,8 @@
 # each way, speed-up, closed-form evaluations per query each way).
 #   bash bench/sov_table.sh [--mesh-dir DIR]
 set -euo pipefail
-cd "$(dirname "$0")/.."
-[ -x build/bench/bench_outside_volume ] || cmake --build build --target bench_outside_volume
-mkdir -p bench/results
+source "$(dirname "$0")/common.sh"
+bench_program bench_outside_volume
 build/bench/bench_outside_volume "$@" --benchmark_out=bench/results/sov.json \
   --benchmark_out_format=json >/dev/null
 python3 - <<'PY'

