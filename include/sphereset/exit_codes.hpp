@@ -1,5 +1,5 @@
 // The exit codes of the project's commands (`sphereset` and `python3 -m sphereset.batch`): one
-// table for every door, listed by --help and in docs/cli.md. The library itself never exits;
+// table for every door, listed by --help and in the README. The library itself never exits;
 // its errors carry an ErrorCode, which a door turns into a code with exitCodeFor.
 #pragma once
 

@@ -23,7 +23,7 @@ import functools
 import inspect
 import os
 from dataclasses import dataclass, field
-from typing import (Any, Callable, Dict, List, Optional, Sequence, Tuple, TypeVar, Union,
+from typing import (Any, Callable, Dict, List, Optional, Sequence, TypeVar, Union,
                     cast)
 
 import numpy as np
@@ -89,18 +89,18 @@ def _size_text(value: Union[float, str]) -> str:
     return value if isinstance(value, str) else repr(float(value))
 
 
-def _repair_keyword_defaults() -> Dict[str, Any]:
-    """The repair keywords of every function that makes a solid, with the library's defaults
-    (its repair table and RepairOptions): repair, weld_tolerance (None: automatic),
-    fill_cavities, wrap_alpha, wrap_offset, fill_openings."""
-    d = _core._repair_option_values({})
+def _repair_keyword_values(texts: Dict[str, str]) -> Dict[str, Any]:
+    """The repair keywords of every function that makes a solid, from the texts a user typed
+    ({} for the defaults), parsed and checked by the library's repair table: repair,
+    weld_tolerance (None: automatic), fill_cavities, wrap_alpha, wrap_offset, fill_openings."""
+    d = _core._repair_option_values(texts)
     d["weld_tolerance"] = None if d["weld_tolerance"] < 0 else d["weld_tolerance"]
     return {k: d[k] for k in ("repair", "weld_tolerance", "fill_cavities", "wrap_alpha",
                               "wrap_offset", "fill_openings")}
 
 
 # Defined once, here: the functions below get them from `_repair_keywords`.
-REPAIR_KEYWORDS: Dict[str, Any] = _repair_keyword_defaults()
+REPAIR_KEYWORDS: Dict[str, Any] = _repair_keyword_values({})
 
 _F = TypeVar("_F", bound=Callable[..., Any])
 
@@ -122,17 +122,20 @@ def _repair_keywords(fn: _F) -> _F:
     return cast(_F, wrapper)
 
 
-def _repair_args(ro: Dict[str, Any]) -> Tuple[str, float, bool, float, float, str]:
-    """The repair keywords as the extension takes them: repair "auto"/"off" (True/False too),
-    weld (-1: automatic), fill_cavities, wrap_alpha, wrap_offset, fill_openings as text."""
+def _repair_args(ro: Dict[str, Any]) -> Dict[str, Any]:
+    """The repair keywords as the extension takes them, in its order: repair "auto"/"off"
+    (True/False too), weld_tolerance (-1: automatic), fill_cavities, wrap_alpha, wrap_offset,
+    fill_openings as text."""
     repair = ro["repair"]
     if repair is True:
         repair = "auto"
     elif repair is False:
         repair = "off"
-    weld = -1.0 if ro["weld_tolerance"] is None else float(ro["weld_tolerance"])
-    return (repair, weld, bool(ro["fill_cavities"]), float(ro["wrap_alpha"]),
-            float(ro["wrap_offset"]), _size_text(ro["fill_openings"]))
+    return {"repair": repair,
+            "weld_tolerance": -1.0 if ro["weld_tolerance"] is None else float(ro["weld_tolerance"]),
+            "fill_cavities": bool(ro["fill_cavities"]), "wrap_alpha": float(ro["wrap_alpha"]),
+            "wrap_offset": float(ro["wrap_offset"]),
+            "fill_openings": _size_text(ro["fill_openings"])}
 
 
 def load_mesh(path: PathLike, *, weld_tolerance: float = 0.0) -> Mesh:
@@ -162,10 +165,7 @@ def solid(mesh: MeshLike, *, repair_options: Dict[str, Any]) -> Solid:
         return mesh
     if not isinstance(mesh, Mesh):
         mesh = load_mesh(mesh)
-    repair, weld, fill, alpha, offset, openings = _repair_args(repair_options)
-    return Solid(mesh, repair=repair, weld_tolerance=None if weld < 0 else weld,
-                 fill_cavities=fill, wrap_alpha=alpha, wrap_offset=offset,
-                 fill_openings=openings)
+    return Solid(mesh, **_repair_args(repair_options))
 
 
 @dataclass
@@ -203,9 +203,9 @@ def check(mesh: Union[Mesh, PathLike], *, repair_options: Dict[str, Any]) -> Che
     refuses: ``result.error`` holds the reason; a file that cannot be read and options outside
     the library's repair table raise."""
     args = _repair_args(repair_options)
-    _core._check_repair_options(*args)
+    _core._check_repair_options(*args.values())
     if not isinstance(mesh, Mesh):
-        mesh = load_mesh(mesh, weld_tolerance=max(0.0, args[1]))
+        mesh = load_mesh(mesh, weld_tolerance=max(0.0, args["weld_tolerance"]))
     rep: Optional[Dict[str, Any]] = None
     err: Optional[str] = None
     try:
@@ -541,7 +541,7 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
                    link_solid_for=dict(link_solid_for or {}))
     d = _core._fit_robot(os.fspath(urdf), options, dict(quality=quality, seed=seed),
                          [os.fspath(p) for p in package_paths], bool(use_ros_package_path),
-                         *_repair_args(repair_options))
+                         *_repair_args(repair_options).values())
     d["links"] = [RobotLinkFit(**lf) for lf in d["links"]]
     return RobotFitResult(**d)
 

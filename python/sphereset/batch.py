@@ -29,7 +29,7 @@ import time
 import uuid
 from typing import Any, Dict, List, Optional
 
-from . import _repair_args, _repair_keywords
+from . import _repair_args, _repair_keyword_values, _repair_keywords
 from . import _sphereset as _core
 
 __all__ = ["batch_options", "list_items", "process_item", "run_batch", "main"]
@@ -54,8 +54,7 @@ def batch_options(n: int = 32, *, quality: str = "default", seed: int = 1, paddi
                 "points": points, "iterations": iterations, "restarts": restarts,
                 "decimation": decimation, "optimizer": optimizer, "init": init,
                 "method": method},
-        **dict(zip(("repair", "weld_tolerance", "fill_cavities", "wrap_alpha", "wrap_offset",
-                    "fill_openings"), _repair_args(repair_options))),
+        **_repair_args(repair_options),
         "format": format, "resume": bool(resume),
         "threads": int(threads),
     }
@@ -167,14 +166,13 @@ def _parser() -> argparse.ArgumentParser:
 def main(argv: Optional[List[str]] = None) -> int:
     a = _parser().parse_args(argv)
     try:
-        repair = _core._repair_option_values(
+        repair = _repair_keyword_values(
             {row["name"]: getattr(a, row["name"]) for row in _core._repair_option_table()
              if getattr(a, row["name"]) is not None})
     except _core.Error as e:
         print(f"sphereset: {e}", file=sys.stderr)
         return _exit_code(e)
     repair["fill_cavities"] = a.fill_cavities
-    repair["weld_tolerance"] = None if repair["weld_tolerance"] < 0 else repair["weld_tolerance"]
     from distributed import Client, LocalCluster
 
     cluster = None
@@ -187,8 +185,7 @@ def main(argv: Optional[List[str]] = None) -> int:
             print(f"sphereset: --local-workers {a.local_workers}: expected an integer from 1 to "
                   f"{cores} (the cores of this machine)", file=sys.stderr)
             return 2
-        threads = a.threads if a.threads is not None else max(
-            1, (os.cpu_count() or 1) // a.local_workers)
+        threads = a.threads if a.threads is not None else max(1, cores // a.local_workers)
         cluster = LocalCluster(n_workers=a.local_workers, threads_per_worker=1, processes=True,
                                dashboard_address=":0")
         client = Client(cluster)
@@ -226,6 +223,7 @@ def main(argv: Optional[List[str]] = None) -> int:
     if end["exit_code"]:
         print(f"sphereset: {end['message']}", file=sys.stderr)
     return end["exit_code"]
+
 
 if __name__ == "__main__":
     sys.exit(main())

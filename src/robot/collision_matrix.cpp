@@ -135,9 +135,15 @@ constexpr double kBroadPhaseSlack = 1e-9;
 // The pairs whose bounding spheres may meet with the links placed at `at`, by sweep and prune
 // along x (Baraff 1992): O(n log n + pairs met) per configuration instead of every pair (a
 // 1000-link chain has half a million pairs, of which a few thousand meet). Reuses `order`.
+// A link's bounding sphere in the world at one configuration, and its interval's low end on x.
+struct WorldBound {
+  Vec3 centre;
+  double radius = 0.0, low_x = 0.0;
+};
+
 template <class Visit>
 void broadPhase(const Participants& who, const PlacedLinks& at, std::vector<int>* order,
-                std::vector<std::array<double, 5>>* world, Visit&& visit) {
+                std::vector<WorldBound>* world, Visit&& visit) {
   const int n = static_cast<int>(who.links.size());
   world->resize(n);
   order->clear();
@@ -146,19 +152,20 @@ void broadPhase(const Participants& who, const PlacedLinks& at, std::vector<int>
     if (b.radius < 0.0) continue;  // an empty body touches nothing
     const Vec3 c = at.pose[i] * b.center;
     const double r = b.radius + kBroadPhaseSlack * (b.radius + c.norm());
-    (*world)[i] = {c.x(), c.y(), c.z(), r, c.x() - r};
+    (*world)[i] = {c, r, c.x() - r};
     order->push_back(i);
   }
+  const std::vector<WorldBound>& w = *world;
   std::sort(order->begin(), order->end(), [&](int x, int y) {
-    return (*world)[x][4] < (*world)[y][4] || ((*world)[x][4] == (*world)[y][4] && x < y);
+    return w[x].low_x < w[y].low_x || (w[x].low_x == w[y].low_x && x < y);
   });
   for (size_t u = 0; u < order->size(); ++u) {
-    const auto& a = (*world)[(*order)[u]];
-    const double right = a[0] + a[3];
-    for (size_t v = u + 1; v < order->size() && (*world)[(*order)[v]][4] <= right; ++v) {
-      const auto& b = (*world)[(*order)[v]];
-      const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2], reach = a[3] + b[3];
-      if (dx * dx + dy * dy + dz * dz > reach * reach) continue;
+    const WorldBound& a = w[(*order)[u]];
+    const double right = a.centre.x() + a.radius;
+    for (size_t v = u + 1; v < order->size() && w[(*order)[v]].low_x <= right; ++v) {
+      const WorldBound& b = w[(*order)[v]];
+      const double reach = a.radius + b.radius;
+      if ((a.centre - b.centre).squaredNorm() > reach * reach) continue;
       visit(std::min((*order)[u], (*order)[v]), std::max((*order)[u], (*order)[v]));
     }
   }
@@ -183,7 +190,7 @@ Expected<std::vector<int64_t>> countCollisions(const Robot& robot, const Partici
   struct Scratch {
     PlacedLinks at;
     std::vector<int> order;
-    std::vector<std::array<double, 5>> world;
+    std::vector<WorldBound> world;
   };
   tbb::enumerable_thread_specific<Scratch> scratch;
   std::atomic<int64_t> first_failure{std::numeric_limits<int64_t>::max()};
