@@ -90,10 +90,13 @@ struct FitOptions {
 };
 
 // teleport: choosing the moves and the decimation's removals (their rounds count as
-// assignment and update).
+// assignment and update). bounding is everything after the clustering; bound, shrink, refine
+// and radii are its parts: the exact bound's passes (surface with refits, interior, original
+// triangles), the shrinking passes, the coverage-aware refinement and the optimal radii.
 struct FitTimings {
   double sampling = 0.0, assignment = 0.0, update = 0.0, teleport = 0.0, bounding = 0.0,
          total = 0.0;
+  double bound = 0.0, shrink = 0.0, refine = 0.0, radii = 0.0;
 };
 
 struct FitResult {

@@ -84,7 +84,7 @@ class FitResult:
     restart: int
     """which restart won (0: the one with the seed given)"""
     seconds: Dict[str, float]
-    """total: seconds in all; sampling: seconds sampling points; assignment: seconds assigning points to spheres; update: seconds refitting spheres; teleport: seconds teleporting; bounding: seconds in the bound, its shrinking passes and refinement"""
+    """total: seconds in all; sampling: seconds sampling points; assignment: seconds assigning points to spheres; update: seconds refitting spheres; teleport: seconds teleporting; bounding: seconds after the clustering: bound, shrink, refine and radii; bound: seconds in the exact bound's passes (surface with refits, interior, original); shrink: seconds in the shrinking passes; refine: seconds in the coverage-aware refinement; radii: seconds choosing optimal radii"""
     options: Dict[str, Any]
     """the options the fit ran with"""
     repair: Dict[str, Any]

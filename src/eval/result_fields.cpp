@@ -42,7 +42,12 @@ std::vector<ResultField> fitResultFields(const FitResult& r, double mesh_volume)
       {"seconds.update", r.seconds.update, "seconds refitting spheres"},
       {"seconds.teleport", r.seconds.teleport, "seconds teleporting"},
       {"seconds.bounding", r.seconds.bounding,
-       "seconds in the bound, its shrinking passes and refinement"},
+       "seconds after the clustering: bound, shrink, refine and radii"},
+      {"seconds.bound", r.seconds.bound,
+       "seconds in the exact bound's passes (surface with refits, interior, original)"},
+      {"seconds.shrink", r.seconds.shrink, "seconds in the shrinking passes"},
+      {"seconds.refine", r.seconds.refine, "seconds in the coverage-aware refinement"},
+      {"seconds.radii", r.seconds.radii, "seconds choosing optimal radii"},
   };
 }
 

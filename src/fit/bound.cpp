@@ -26,10 +26,28 @@ constexpr int kCandidates = 3;  // spheres whose outside-volume growth is compar
 // that the containment of vertices survives rounding.
 constexpr double kSlackRel = 1e-12;
 
+// A piece's request: its cheapest sphere and the radius that holds it. Kept per triangle, one
+// per sphere (the largest radius), with the pieces only when the caller wants them.
 struct Request {
-  int32_t sphere;
-  double radius;
-  std::array<Vec3, 3> piece;
+  int32_t sphere = -1;
+  double radius = 0.0;
+};
+
+struct TriangleRequests {
+  std::vector<Request> grow;                                    // one per sphere
+  std::vector<std::pair<int32_t, std::array<Vec3, 3>>> pieces;  // (sphere, piece) if wanted
+
+  void add(const Request& r, const std::array<Vec3, 3>& piece, bool keep_piece) {
+    ++count;
+    if (keep_piece) pieces.emplace_back(r.sphere, piece);
+    for (Request& g : grow)
+      if (g.sphere == r.sphere) {
+        g.radius = std::max(g.radius, r.radius);
+        return;
+      }
+    grow.push_back(r);
+  }
+  int64_t count = 0;
 };
 
 // The sphere whose outside volume grows least, to first order (dSOV/dr times the radius
@@ -79,35 +97,58 @@ void growTo(std::vector<Sphere>* sp, const std::vector<double>& radius, BoundSta
 
 }  // namespace
 
-BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres, double min_edge,
-                        std::vector<std::vector<Vec3>>* held, const Mesh* surface) {
+BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
+                        const SurfaceBoundOptions& o) {
   BoundStats st;
   std::vector<Sphere>& sp = *spheres;
-  const Mesh& mesh = surface ? *surface : index.mesh();
+  const Mesh& mesh = o.surface ? *o.surface : index.mesh();
   const double slack = kSlackRel * index.bounds().diagonal();
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
   const std::vector<double> sov_dr = radiusRates(index, sp, &st);
   const SphereGrid grid(sp);
-  std::vector<std::vector<Request>> req(nt);
+  std::vector<TriangleRequests> req(nt);
+  const bool keep = o.held != nullptr;
   tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
     const auto& tri = mesh.triangles[t];
+    const auto request = [&](const std::array<Vec3, 3>& v) {
+      Request r;
+      cheapestGrowth(grid, sov_dr, v.data(), 3, slack, &r.sphere, &r.radius);
+      return r;
+    };
     splitPieces(
-        mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], min_edge,
-        [&](const std::array<Vec3, 3>& v) { return oneSphereHolds(grid, v.data(), 3); },
+        mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], o.min_edge,
         [&](const std::array<Vec3, 3>& v) {
-          Request best{-1, 0.0, v};
-          cheapestGrowth(grid, sov_dr, v.data(), 3, slack, &best.sphere, &best.radius);
-          if (best.sphere >= 0) req[t].push_back(best);
+          if (oneSphereHolds(grid, v.data(), 3)) return true;
+          if (o.growth_tolerance < 0.0) return false;
+          // Every vertex must join some sphere, so no split of the piece asks any sphere for
+          // less growth than the largest gap of a vertex to the union; within the tolerance of
+          // that, the piece goes whole. Where the spheres leave a region uncovered this stops
+          // at its first pieces instead of splitting them all to min_edge.
+          const Request r = request(v);
+          if (r.sphere < 0) return false;
+          double least = 0.0;
+          for (const Vec3& p : v) least = std::max(least, gapToUnion(grid, p));
+          if (r.radius - sp[r.sphere].radius - slack > least + o.growth_tolerance) return false;
+          req[t].add(r, v, keep);
+          return true;
+        },
+        [&](const std::array<Vec3, 3>& v) {
+          const Request r = request(v);
+          if (r.sphere >= 0) req[t].add(r, v, keep);
         });
   });
-  if (held) held->assign(sp.size(), {});
+  if (o.held) o.held->assign(sp.size(), {});
   std::vector<double> radius(sp.size());
   for (size_t i = 0; i < sp.size(); ++i) radius[i] = sp[i].radius;
   for (int64_t t = 0; t < nt; ++t) {
-    for (const Request& r : req[t]) {
-      ++st.pieces;
-      radius[r.sphere] = std::max(radius[r.sphere], r.radius);
-      if (held) (*held)[r.sphere].insert((*held)[r.sphere].end(), r.piece.begin(), r.piece.end());
+    st.pieces += req[t].count;
+    for (const Request& r : req[t].grow) radius[r.sphere] = std::max(radius[r.sphere], r.radius);
+    for (const auto& [i, v] : req[t].pieces) {
+      auto& out = (*o.held)[i];
+      if (o.held_centroids)
+        out.push_back((v[0] + v[1] + v[2]) / 3.0);
+      else
+        out.insert(out.end(), v.begin(), v.end());
     }
   }
   growTo(&sp, radius, &st);

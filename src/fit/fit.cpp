@@ -84,6 +84,51 @@ detail::Clustering baselineClusters(const SolidIndex& index, const detail::Point
   return c;
 }
 
+// Everything after the clustering: the exact bound with refits, the shrinking passes, the
+// refinement, the interior passes and the original triangles; each part timed.
+void boundClusters(const SolidIndex& index, const detail::PointSet& ps, const FitOptions& o,
+                   detail::Clustering* best, FitResult* res) {
+  using detail::FitClock, detail::secondsSince;
+  const bool variational = o.method == FitMethod::kVariational;
+  const double surface_spacing =
+      std::sqrt(surfaceArea(index.mesh()) /
+                std::max<double>(1.0, static_cast<double>(res->points - res->interior_points)));
+  const double min_edge = 0.5 * std::min(surface_spacing, ps.spacing);
+  auto t = FitClock::now();
+  detail::BoundStats bs =
+      detail::boundWithRefits(index, &best->spheres, &best->members, min_edge, variational, o, res);
+  res->seconds.bound += secondsSince(t);
+  if (variational && o.shrink_passes > 0) {
+    t = FitClock::now();
+    detail::shrinkPasses(index, ps, min_edge, o, &best->spheres, &bs, res);
+    res->seconds.shrink += secondsSince(t);
+  }
+  if (variational && o.refine) {
+    t = FitClock::now();
+    const std::vector<Vec3> interior(ps.points.begin(), ps.points.begin() + ps.interior);
+    const detail::RefineStats rs =
+        detail::refineCoverage(index, interior, detail::kRefineSpacing * surface_spacing, min_edge,
+                               res->points, &best->spheres);
+    res->bounding_queries += rs.queries;
+    if (rs.kept) res->refine_points = rs.points;
+    res->seconds.refine += secondsSince(t);
+  }
+  res->bounding_enlarged = bs.enlarged;
+  t = FitClock::now();
+  detail::boundInteriorPasses(index, &best->spheres, res);
+  if (o.original) {
+    // A repaired solid's input triangles: the wrap holds them strictly inside and a union or
+    // capped solid holds them on or inside its boundary, so this pass rarely grows a sphere;
+    // it makes their coverage exact rather than implied.
+    const detail::BoundStats ob =
+        detail::boundSurface(index, &best->spheres, min_edge, nullptr, o.original);
+    res->bounding_enlarged += ob.enlarged;
+    res->bounding_pieces += ob.pieces;
+    res->bounding_queries += ob.queries;
+  }
+  res->seconds.bound += secondsSince(t);
+}
+
 }  // namespace
 
 Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
@@ -128,34 +173,7 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
   // are already inside the sphere of their cluster (each radius encloses its points).
   report("bounding", res.iterations, best.energy);
   const auto tb = detail::FitClock::now();
-  const double surface_spacing =
-      std::sqrt(surfaceArea(index.mesh()) /
-                std::max<double>(1.0, static_cast<double>(res.points - res.interior_points)));
-  const double min_edge = 0.5 * std::min(surface_spacing, ps.spacing);
-  detail::BoundStats bs =
-      detail::boundWithRefits(index, &best.spheres, &best.members, min_edge, variational, o, &res);
-  if (variational && o.shrink_passes > 0)
-    detail::shrinkPasses(index, ps, min_edge, o, &best.spheres, &bs, &res);
-  if (variational && o.refine) {
-    const std::vector<Vec3> interior(ps.points.begin(), ps.points.begin() + ps.interior);
-    const detail::RefineStats rs =
-        detail::refineCoverage(index, interior, detail::kRefineSpacing * surface_spacing, min_edge,
-                               res.points, &best.spheres);
-    res.bounding_queries += rs.queries;
-    if (rs.kept) res.refine_points = rs.points;
-  }
-  res.bounding_enlarged = bs.enlarged;
-  detail::boundInteriorPasses(index, &best.spheres, &res);
-  if (o.original) {
-    // A repaired solid's input triangles: the wrap holds them strictly inside and a union or
-    // capped solid holds them on or inside its boundary, so this pass rarely grows a sphere;
-    // it makes their coverage exact rather than implied.
-    const detail::BoundStats ob =
-        detail::boundSurface(index, &best.spheres, min_edge, nullptr, o.original);
-    res.bounding_enlarged += ob.enlarged;
-    res.bounding_pieces += ob.pieces;
-    res.bounding_queries += ob.queries;
-  }
+  boundClusters(index, ps, o, &best, &res);
   for (Sphere& s : best.spheres) s.radius += o.padding;
   res.spheres = std::move(best.spheres);
   res.outside_volume = detail::outsideVolumes(index, res.spheres);

@@ -19,6 +19,19 @@ inline double secondsSince(FitClock::time_point t) {
   return std::chrono::duration<double>(FitClock::now() - t).count();
 }
 
+// Adds the phases' seconds of `t` to *sum (all but total).
+inline void addTimings(const FitTimings& t, FitTimings* sum) {
+  sum->sampling += t.sampling;
+  sum->assignment += t.assignment;
+  sum->update += t.update;
+  sum->teleport += t.teleport;
+  sum->bounding += t.bounding;
+  sum->bound += t.bound;
+  sum->shrink += t.shrink;
+  sum->refine += t.refine;
+  sum->radii += t.radii;
+}
+
 // Progress, and with it cancellation, from inside long steps. fitSpheres holds one
 // ProgressScope on its calling thread; report() calls FitOptions::progress at each phase and
 // round, and the fit's long loops (sampling, seeding, assignment, updates, the bound) call

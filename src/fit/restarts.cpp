@@ -79,11 +79,7 @@ Expected<FitResult> fitWithRestarts(const SolidIndex& index, const FitOptions& o
     one.seed = restartSeed(o.seed, r);
     auto f = fitSpheres(index, one);
     if (!f) return f;
-    sum.sampling += f->seconds.sampling;
-    sum.assignment += f->seconds.assignment;
-    sum.update += f->seconds.update;
-    sum.teleport += f->seconds.teleport;
-    sum.bounding += f->seconds.bounding;
+    addTimings(f->seconds, &sum);
     queries += f->sov_queries;
     culled += f->sov_queries_culled;
     optimizer += f->optimizer_queries;
