@@ -63,6 +63,13 @@ struct FitOptions {
   // spheres move at once to lower the outside volume of a set covering a dense set of points,
   // then are bounded exactly; kept only if it lowers the total outside volume.
   bool refine = true;
+  // After the refinement (variational method only): the radii chosen by a covering integer
+  // program with the centres fixed (every surface piece and interior point in a sphere, least
+  // total outside volume; src/fit/optimal_radii.cpp), kept only if the bounded set has less
+  // outside volume; FitResult::radii reports the program's gap. Off by default (it costs about
+  // as much as the refinement and the refined radii are already within 0.01 % of its optimum,
+  // docs/benchmarks.md); on in the best quality.
+  bool optimal_radii = false;
   // Decimation (variational method only): the clustering starts with round(decimation * n)
   // extra spheres and removes the cheapest to remove (upper bound of the outside-volume
   // change when its points join their neighbours) in a few batches, clustering again after
@@ -99,6 +106,19 @@ struct FitTimings {
   double bound = 0.0, shrink = 0.0, refine = 0.0, radii = 0.0;
 };
 
+// The optimal-radii program (FitOptions::optimal_radii): with the fit's centres fixed, the radii
+// of least total outside volume that keep every unit (surface pieces, split until one sphere
+// holds each, and interior points) in a sphere. Its figures are those of the program as posed
+// (units, candidate spheres, quantised radius levels), before the exact bound of its solution.
+struct RadiiCertificate {
+  double objective = 0.0;    // Σ outside volume of the program's best solution
+  double lower_bound = 0.0;  // its proven lower bound (branch and bound)
+  double gap = -1.0;         // (objective - lower_bound) / objective; 0: optimal; -1: not run
+  double start = 0.0;        // Σ outside volume of the set the program started from
+  int64_t units = 0, rows = 0;
+  bool kept = false;  // its bounded solution had less outside volume and replaced the set
+};
+
 struct FitResult {
   std::vector<Sphere> spheres;
   std::vector<double> outside_volume;  // per sphere, exact, after bounding and padding
@@ -118,9 +138,10 @@ struct FitResult {
   int64_t bounding_interior_cells = 0;  // interior cubes that made a sphere grow
   int shrink_passes = 0;                // shrinking passes kept
   int64_t refine_points = 0;  // points kept covered by the refinement (0: not run or not kept)
-  int decimated = 0;          // spheres removed by the decimation
-  int idle_teleports = 0;     // spheres that covered nothing alone, moved to split another
-  int restart = 0;            // which restart won (0: the one with options.seed)
+  RadiiCertificate radii;
+  int decimated = 0;       // spheres removed by the decimation
+  int idle_teleports = 0;  // spheres that covered nothing alone, moved to split another
+  int restart = 0;         // which restart won (0: the one with options.seed)
   FitTimings seconds;
 };
 

@@ -77,6 +77,8 @@ class FitResult:
     """shrinking passes kept"""
     refine_points: int
     """points kept covered by the refinement (0: not run or not kept)"""
+    radii: Dict[str, Any]
+    """objective: Σ outside volume of the optimal-radii program's solution (its units, before the bound); lower_bound: the program's proven lower bound; gap: (objective - lower bound) / objective; 0: proven optimal, -1: not run; start: Σ outside volume of the set the program started from; units: surface pieces and interior points of the program; rows: its coverage rows after reduction; kept: its bounded solution replaced the set"""
     decimated: int
     """spheres removed by the decimation"""
     idle_teleports: int

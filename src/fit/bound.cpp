@@ -97,6 +97,18 @@ void growTo(std::vector<Sphere>* sp, const std::vector<double>& radius, BoundSta
 
 }  // namespace
 
+double splitPieceCount(const Mesh& mesh, double edge) {
+  double count = 0.0;
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    int depth = 0;
+    for (double e = longest; e > edge && depth < kSurfaceSplitDepth; e *= 0.5) ++depth;
+    count += std::pow(4.0, depth);
+  }
+  return count;
+}
+
 BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
                         const SurfaceBoundOptions& o) {
   BoundStats st;

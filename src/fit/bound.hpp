@@ -48,6 +48,10 @@ void splitPieces(const Vec3& a, const Vec3& b, const Vec3& c, double min_edge, S
   }
 }
 
+// How many pieces splitting every triangle of `mesh` in four (as splitPieces does) until its
+// edges are at most `edge` makes.
+double splitPieceCount(const Mesh& mesh, double edge);
+
 // How boundSurface splits and what it reports.
 struct SurfaceBoundOptions {
   // Pieces are split until their longest edge is at most this (absolute units).

@@ -31,6 +31,7 @@
 #include "fit/bound_refit.hpp"
 #include "fit/decimate.hpp"
 #include "fit/fit_common.hpp"
+#include "fit/optimal_radii.hpp"
 #include "fit/refine.hpp"
 #include "fit/restarts.hpp"
 #include "fit/samples.hpp"
@@ -112,6 +113,10 @@ void boundClusters(const SolidIndex& index, const detail::PointSet& ps, const Fi
     res->bounding_queries += rs.queries;
     if (rs.kept) res->refine_points = rs.points;
     res->seconds.refine += secondsSince(t);
+  }
+  if (variational && o.optimal_radii) {
+    const std::vector<Vec3> interior(ps.points.begin(), ps.points.begin() + ps.interior);
+    detail::runOptimalRadii(index, interior, min_edge, &best->spheres, res);
   }
   res->bounding_enlarged = bs.enlarged;
   t = FitClock::now();

@@ -52,11 +52,9 @@ constexpr double kPenaltyStart = 1.0;
 constexpr double kPenaltyGrowth = 10.0;
 constexpr int kPenaltyStages = 4;
 constexpr int kPenaltyEvaluations = 60;
-// The exact bound of the result splits pieces down to this fraction of the fit's `min_edge`
-// (the coverage points are denser than the fit's bound, so its pieces must be too); pieces
-// still in no single sphere add their vertices to the points and the last stage runs again,
-// at most kDensifyRounds times.
-constexpr double kFineEdge = 0.25;
+// The exact bound of the result splits pieces down to kRefineFineEdge (refine.hpp) times the
+// fit's `min_edge`; pieces still in no single sphere add their centroids to the points and the
+// last stage runs again, at most kDensifyRounds times.
 constexpr int kDensifyRounds = 2;
 // That bound's adaptive stop (bound.hpp), as a fraction of its pieces' edge: where the penalty
 // left a region uncovered, its pieces go whole to a sphere once no split could ask less than
@@ -76,19 +74,6 @@ bool lexLess(const Vec3& a, const Vec3& b) {
   return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
 }
 
-// How many pieces splitting every triangle in four until its edges are at most `spacing` makes.
-double pieceCount(const Mesh& mesh, double spacing) {
-  double count = 0.0;
-  for (const Triangle& t : mesh.triangles) {
-    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-    const double edge = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-    int depth = 0;
-    for (double e = edge; e > spacing && depth < kSurfaceSplitDepth; e *= 0.5) ++depth;
-    count += std::pow(4.0, depth);
-  }
-  return count;
-}
-
 // The vertices of the triangles split until their edges are at most `spacing` (coarser if that
 // would make more than `max_pieces` pieces, as slivers do), and the interior points, each once,
 // in a fixed order.
@@ -97,7 +82,7 @@ PointList coveragePoints(const SolidIndex& index, const PointList& interior, dou
   const Mesh& mesh = index.mesh();
   // Unsplit triangles are the fewest pieces there can be.
   max_pieces = std::max(max_pieces, static_cast<double>(mesh.triangles.size()));
-  while (pieceCount(mesh, spacing) > max_pieces) spacing *= 2.0;
+  while (splitPieceCount(mesh, spacing) > max_pieces) spacing *= 2.0;
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
   std::vector<PointList> per(nt);
   tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
@@ -282,7 +267,7 @@ RefineStats refineCoverage(const SolidIndex& index, const std::vector<Vec3>& int
     std::vector<Sphere> cand = unpack(x);
     std::vector<std::vector<Vec3>> held;
     SurfaceBoundOptions bo;
-    bo.min_edge = kFineEdge * min_edge;
+    bo.min_edge = kRefineFineEdge * min_edge;
     bo.growth_tolerance = kFineGrowthTolerance * bo.min_edge;
     bo.held = &held;
     bo.held_centroids = true;

@@ -12,6 +12,11 @@ namespace sphereset::detail {
 // samples.
 inline constexpr double kRefineSpacing = 1.0;
 
+// The refinement bounds its result with pieces down to this fraction of the fit's min_edge (its
+// coverage points are denser than the fit's bound, so its pieces must be too); the optimal
+// radii split their units as finely.
+inline constexpr double kRefineFineEdge = 0.25;
+
 struct RefineStats {
   bool kept = false;    // the refined set had less outside volume and replaced the input
   int64_t points = 0;   // points kept covered by the penalty

@@ -12,6 +12,7 @@
 
 #include "fit/bound_refit.hpp"
 #include "fit/fit_common.hpp"
+#include "fit/optimal_radii.hpp"
 #include "fit/samples.hpp"
 #include "fit/select.hpp"
 #include "fit/shrink.hpp"
@@ -49,6 +50,8 @@ void selectAmongRestarts(const SolidIndex& index, const FitOptions& o,
   BoundStats bs = boundSurface(index, &sp, min_edge);
   res.bounding_queries += bs.queries;
   if (o.shrink_passes > 0) shrinkPasses(index, ps, min_edge, o, &sp, &bs, &res);
+  res.radii = {};  // the restart's program does not apply to the selection
+  if (o.optimal_radii) runOptimalRadii(index, interior, min_edge, &sp, &res);
   res.bounding_enlarged = bs.enlarged;
   boundInteriorPasses(index, &sp, &res);
   if (o.original) boundSurface(index, &sp, min_edge, nullptr, o.original);
@@ -99,7 +102,9 @@ Expected<FitResult> fitWithRestarts(const SolidIndex& index, const FitOptions& o
   }
   if (o.select_among_restarts) {
     const auto ts = FitClock::now();
+    const double radii_before = best->seconds.radii;
     selectAmongRestarts(index, o, pool, group_of, start, &*best);
+    sum.radii += best->seconds.radii - radii_before;
     for (Sphere& s : best->spheres) s.radius += o.padding;
     best->outside_volume = outsideVolumes(index, best->spheres);
     best->energy = totalOf(best->outside_volume);

@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "cover/sphere_grid.hpp"
+#include "fit/cbc_settings.hpp"
 #include "sphereset/cover.hpp"
 #include "util/poll.hpp"
 
@@ -34,9 +35,6 @@ constexpr double kSwapGainRel = 1e-12;
 constexpr double kCostFloorRel = 1e-12;
 // Rows at which the ILP is not attempted (the swap search's answer stands).
 constexpr size_t kMaxIlpClasses = 200000;
-// CBC's options (its command-line names): no cuts, heuristics or strong branching.
-constexpr std::pair<const char*, const char*> kCbcSettings[] = {
-    {"cuts", "off"}, {"heur", "off"}, {"strong", "0"}, {"trust", "0"}};
 // An ILP variable above this is taken as chosen.
 constexpr double kChosenThreshold = 0.5;
 
@@ -238,9 +236,6 @@ void solveIlp(const CoverProblem& p, const std::vector<std::vector<int32_t>>& of
   Cbc_setMIPStartI(model, static_cast<int>(cols.size()), cols.data(), ones.data());
   Cbc_setLogLevel(model, 0);
   Cbc_setMaximumNodes(model, max_nodes);
-  // Plain branch and bound on the LP bound: CBC's default strong branching, cuts and heuristics
-  // took 30 to 70 s on 256 candidates and 5 700 classes (fr3_link1, n = 64) for the same
-  // proven optimum that this finds in 2.5 s.
   for (const auto& [key, setting] : kCbcSettings) Cbc_setParameter(model, key, setting);
   const auto t0 = std::chrono::steady_clock::now();
   Cbc_solve(model);
