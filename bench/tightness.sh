@@ -2,7 +2,8 @@
 # Tightness and time of the fit against a baseline commit, side by side in one run: for each
 # mesh, n and seed, `sphereset fit --json` of the baseline and of this build (alternating, so
 # that both see the same machine load), E_r after the bound, the clustering's own E_r (before
-# the bound), wall time and whether the fit's certificates hold, into
+# the bound), wall time, the seconds after the clustering (seconds.bounding), the peak resident
+# memory and whether the fit's certificates hold, into
 # bench/results/tightness.csv; then the summary of bench/tightness_summary.py (per mesh and
 # overall geometric means of the ratios, the bound overhead) into bench/results/tightness.txt.
 #   bash bench/tightness.sh [MESH ...]        (default: the 12 closed meshes of ../shared/meshes)
@@ -43,7 +44,7 @@ if [ "$(cat "$base_dir/ref" 2>/dev/null)" != "$(git rev-parse "$base_ref")" ] ||
   git rev-parse "$base_ref" >"$base_dir/ref"
 fi
 out=${OUT:-bench/results/tightness.csv}
-echo "mesh,n,seed,variant,er_sum,er_before_bounding,wall_s,spheres,covered" >"$out"
+echo "mesh,n,seed,variant,er_sum,er_before_bounding,wall_s,spheres,covered,bounding_s,peak_kb" >"$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 for mesh in "${meshes[@]}"; do
@@ -53,16 +54,17 @@ for mesh in "${meshes[@]}"; do
         build=${variant%%:*} quality=${variant#*:}
         bin=build/apps/sphereset
         [ "$build" = base ] && bin=$base_bin
-        /usr/bin/time -f "%e" -o "$tmp/time" "$bin" fit "$mesh" -n "$n" --seed "$seed" \
+        /usr/bin/time -f "%e %M" -o "$tmp/time" "$bin" fit "$mesh" -n "$n" --seed "$seed" \
           --quality "$quality" -o "$tmp/spheres.json" --json -q >"$tmp/summary.json"
         /usr/bin/python3 - "$mesh" "$n" "$seed" "$variant" "$tmp" >>"$out" <<'PY'
 import json, os, sys
 mesh, n, seed, variant, tmp = sys.argv[1:6]
 s = json.load(open(os.path.join(tmp, "summary.json")))
-wall = open(os.path.join(tmp, "time")).read().split()[-1]
+wall, peak = open(os.path.join(tmp, "time")).read().split()[-2:]
 covered = all(s.get(k, True) for k in ("surface_covered", "interior_covered", "original_covered"))
 print(",".join([os.path.basename(mesh), n, seed, variant, "%.6f" % s["er_sum"],
-                "%.6f" % s["er_sum_before_bounding"], wall, str(s["spheres"]), str(covered)]))
+                "%.6f" % s["er_sum_before_bounding"], wall, str(s["spheres"]), str(covered),
+                "%.3f" % s["seconds"]["bounding"], peak]))
 PY
       done
     done

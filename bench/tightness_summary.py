@@ -80,6 +80,20 @@ def main(path):
                     sum(float(r["er_sum"]) for r in runs) / len(runs)))
         if parts:
             print("%s n = %s, mean wall time: %s" % (stem, n, "; ".join(parts)))
+    # The bounding step's share of the wall time and the peak memory, per variant: the largest
+    # over the fits (and where), for the targets (share <= 25 %, peak < 150 MB).
+    for v in variants:
+        fits = [r for r in rows if r["variant"] == v and r.get("bounding_s")]
+        if not fits:
+            continue
+        share = max(fits, key=lambda r: float(r["bounding_s"]) / max(float(r["wall_s"]), 0.01))
+        peak = max(fits, key=lambda r: int(r["peak_kb"]))
+        print("%s: bounding share of wall time: geomean %.2f, largest %.2f (%s n=%s); peak memory "
+              "largest %.0f MB (%s n=%s)" % (
+                  v, geomean(max(float(r["bounding_s"]), 1e-3) / max(float(r["wall_s"]), 0.01)
+                             for r in fits),
+                  float(share["bounding_s"]) / max(float(share["wall_s"]), 0.01), share["mesh"],
+                  share["n"], int(peak["peak_kb"]) / 1024.0, peak["mesh"], peak["n"]))
     for v in variants:
         fits = [r for r in rows if r["variant"] == v]
         uncovered = [r for r in fits if r.get("covered", "True") != "True"]
