@@ -59,10 +59,10 @@ constexpr int kDensifyRounds = 2;
 // That bound's adaptive stop (bound.hpp), as a fraction of its pieces' edge: where the penalty
 // left a region uncovered, its pieces go whole to a sphere once no split could ask less than
 // this much less growth. Without it the first bound split 920 679 pieces to the fine edge on
-// ur5_upperarm at n = 32 (190 MB, 0.23 s); with it, E_r over the 3 robot meshes at n = 32 was
-// within the seeds' noise (0.3795, 0.2510, 0.3956 against 0.3849, 0.2465, 0.3973), with 1.0
-// it was 4 to 14 % worse.
-constexpr double kFineGrowthTolerance = 0.25;
+// ur5_upperarm at n = 32 (192 MB peak, 0.23 s; 63 MB with it). E_r at n = 32, seed 1, against
+// none: 1.0 was 4 to 14 % worse on the robot collision meshes; 0.25 was +2.2 % on spot and
+// +2.3 % on fandisk; 0.05 is +1.4 %, +0.9 % and -0.8 % on spot, fandisk and ur5_upperarm.
+constexpr double kFineGrowthTolerance = 0.05;
 // The surface's points come from at most this many pieces per clustered point (the triangles
 // are split coarser if needed), and the points with those the densification adds are at most
 // as many: the points' cost stays in proportion to the clustering's.
