@@ -22,9 +22,6 @@ namespace sphereset::detail {
 namespace {
 
 constexpr int kCandidates = 3;  // spheres whose outside-volume growth is compared per piece
-// Radii get this fraction of the bounding-box diagonal on top of the exact requirement, so
-// that the containment of vertices survives rounding.
-constexpr double kSlackRel = 1e-12;
 
 // A piece's request: its cheapest sphere and the radius that holds it. Kept per triangle, one
 // per sphere (the largest radius), with the pieces only when the caller wants them.
@@ -114,7 +111,7 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
   BoundStats st;
   std::vector<Sphere>& sp = *spheres;
   const Mesh& mesh = o.surface ? *o.surface : index.mesh();
-  const double slack = kSlackRel * index.bounds().diagonal();
+  const double slack = kBoundSlackRel * index.bounds().diagonal();
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
   const std::vector<double> sov_dr = radiusRates(index, sp, &st);
   const SphereGrid grid(sp);
@@ -170,7 +167,7 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
 BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth) {
   BoundStats st;
   std::vector<Sphere>& sp = *spheres;
-  const double slack = kSlackRel * index.bounds().diagonal();
+  const double slack = kBoundSlackRel * index.bounds().diagonal();
   const std::vector<double> sov_dr = radiusRates(index, sp, &st);
   const SphereGrid grid(sp);
   // An uncovered centre found above max_depth goes to the cheapest sphere and the walk

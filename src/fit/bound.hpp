@@ -48,6 +48,10 @@ void splitPieces(const Vec3& a, const Vec3& b, const Vec3& c, double min_edge, S
   }
 }
 
+// Radii get this fraction of the bounding-box diagonal on top of the exact requirement, so
+// that the containment of vertices survives rounding (the bound's and the optimal radii's).
+inline constexpr double kBoundSlackRel = 1e-12;
+
 // How many pieces splitting every triangle of `mesh` in four (as splitPieces does) until its
 // edges are at most `edge` makes.
 double splitPieceCount(const Mesh& mesh, double edge);

@@ -91,10 +91,8 @@ void boundClusters(const SolidIndex& index, const detail::PointSet& ps, const Fi
                    detail::Clustering* best, FitResult* res) {
   using detail::FitClock, detail::secondsSince;
   const bool variational = o.method == FitMethod::kVariational;
-  const double surface_spacing =
-      std::sqrt(surfaceArea(index.mesh()) /
-                std::max<double>(1.0, static_cast<double>(res->points - res->interior_points)));
-  const double min_edge = 0.5 * std::min(surface_spacing, ps.spacing);
+  const double surface_spacing = detail::surfaceSpacing(index, ps);
+  const double min_edge = detail::boundMinEdge(index, ps);
   auto t = FitClock::now();
   detail::BoundStats bs =
       detail::boundWithRefits(index, &best->spheres, &best->members, min_edge, variational, o, res);
@@ -104,9 +102,9 @@ void boundClusters(const SolidIndex& index, const detail::PointSet& ps, const Fi
     detail::shrinkPasses(index, ps, min_edge, o, &best->spheres, &bs, res);
     res->seconds.shrink += secondsSince(t);
   }
+  const std::vector<Vec3> interior(ps.points.begin(), ps.points.begin() + ps.interior);
   if (variational && o.refine) {
     t = FitClock::now();
-    const std::vector<Vec3> interior(ps.points.begin(), ps.points.begin() + ps.interior);
     const detail::RefineStats rs =
         detail::refineCoverage(index, interior, detail::kRefineSpacing * surface_spacing, min_edge,
                                res->points, &best->spheres);
@@ -114,10 +112,8 @@ void boundClusters(const SolidIndex& index, const detail::PointSet& ps, const Fi
     if (rs.kept) res->refine_points = rs.points;
     res->seconds.refine += secondsSince(t);
   }
-  if (variational && o.optimal_radii) {
-    const std::vector<Vec3> interior(ps.points.begin(), ps.points.begin() + ps.interior);
+  if (variational && o.optimal_radii)
     detail::runOptimalRadii(index, interior, min_edge, &best->spheres, res);
-  }
   res->bounding_enlarged = bs.enlarged;
   t = FitClock::now();
   detail::boundInteriorPasses(index, &best->spheres, res);

@@ -63,8 +63,6 @@ constexpr int kMaxNodes = 2000;
 // The exact bound of the solution stops splitting a piece whose cheapest growth is within this
 // fraction of the bound's edge of the least any split could ask (bound.hpp).
 constexpr double kBoundGrowthTolerance = 0.25;
-// Requirements get this fraction of the bounding-box diagonal on top (as the bound's slack).
-constexpr double kSlackRel = 1e-12;
 // A column above this is taken as set.
 constexpr double kSetThreshold = 0.5;
 
@@ -142,7 +140,7 @@ std::vector<double> sphereLevels(std::vector<double> v, double radius) {
 Program buildProgram(const SolidIndex& index, const std::vector<Sphere>& sp,
                      const std::vector<Unit>& units, RadiiStats* st) {
   const int n = static_cast<int>(sp.size());
-  const double slack = kSlackRel * index.bounds().diagonal();
+  const double slack = kBoundSlackRel * index.bounds().diagonal();
   const SphereGrid grid(sp);
   const size_t nu = units.size();
   // Candidates and requirements per unit.

@@ -27,23 +27,20 @@ constexpr int kSelectionNodes = 2000;
 
 // The selection among `pool` (the restarts' spheres; `start`: the best restart's, as indices)
 // ended as a fit ends. Replaces best's spheres when the result has less outside volume than
-// best->energy (before padding). Adds its queries and passes to *best.
-void selectAmongRestarts(const SolidIndex& index, const FitOptions& o,
-                         const std::vector<Sphere>& pool, const std::vector<int32_t>& group_of,
-                         const std::vector<int32_t>& start, FitResult* best) {
+// best->energy (before padding). Adds its queries and passes to *best. Returns the seconds of
+// its optimal-radii program (FitOptions::optimal_radii), whether or not it replaced best's.
+double selectAmongRestarts(const SolidIndex& index, const FitOptions& o,
+                           const std::vector<Sphere>& pool, const std::vector<int32_t>& group_of,
+                           const std::vector<int32_t>& start, FitResult* best) {
   const int n = o.num_spheres;
   const int64_t target =
       o.target_points > 0 ? o.target_points : std::max<int64_t>(5000, 100 * int64_t{n});
   const PointSet ps = samplePoints(index, target, o.interior_share, o.seed);
-  // The bound's smallest pieces, as fit.cpp sizes them.
-  const double surface_spacing =
-      std::sqrt(surfaceArea(index.mesh()) /
-                std::max<double>(1.0, static_cast<double>(ps.points.size()) - ps.interior));
-  const double min_edge = 0.5 * std::min(surface_spacing, ps.spacing);
+  const double min_edge = boundMinEdge(index, ps);
   const std::vector<Vec3> interior(ps.points.begin(), ps.points.begin() + ps.interior);
   const CoverProblem problem = coverProblem(index, pool, group_of, interior, min_edge);
   const Selection sel = selectCover(problem, n, start, kSelectionNodes);
-  if (sel.chosen.empty()) return;
+  if (sel.chosen.empty()) return 0.0;
   std::vector<Sphere> sp;
   for (int32_t c : sel.chosen) sp.push_back(pool[c]);
   FitResult res = *best;
@@ -51,16 +48,19 @@ void selectAmongRestarts(const SolidIndex& index, const FitOptions& o,
   res.bounding_queries += bs.queries;
   if (o.shrink_passes > 0) shrinkPasses(index, ps, min_edge, o, &sp, &bs, &res);
   res.radii = {};  // the restart's program does not apply to the selection
+  const double radii_before = res.seconds.radii;
   if (o.optimal_radii) runOptimalRadii(index, interior, min_edge, &sp, &res);
+  const double radii_seconds = res.seconds.radii - radii_before;
   res.bounding_enlarged = bs.enlarged;
   boundInteriorPasses(index, &sp, &res);
   if (o.original) boundSurface(index, &sp, min_edge, nullptr, o.original);
   const std::vector<double> sov = outsideVolumes(index, sp);
-  if (!(totalOf(sov) < best->energy)) return;
+  if (!(totalOf(sov) < best->energy)) return radii_seconds;
   res.spheres = std::move(sp);
   res.outside_volume = sov;
   res.energy = totalOf(sov);
   *best = std::move(res);
+  return radii_seconds;
 }
 
 }  // namespace
@@ -102,9 +102,7 @@ Expected<FitResult> fitWithRestarts(const SolidIndex& index, const FitOptions& o
   }
   if (o.select_among_restarts) {
     const auto ts = FitClock::now();
-    const double radii_before = best->seconds.radii;
-    selectAmongRestarts(index, o, pool, group_of, start, &*best);
-    sum.radii += best->seconds.radii - radii_before;
+    sum.radii += selectAmongRestarts(index, o, pool, group_of, start, &*best);
     for (Sphere& s : best->spheres) s.radius += o.padding;
     best->outside_volume = outsideVolumes(index, best->spheres);
     best->energy = totalOf(best->outside_volume);

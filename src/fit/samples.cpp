@@ -246,4 +246,13 @@ PointSet samplePoints(const SolidIndex& index, int64_t target, double interior_s
   return ps;
 }
 
+double surfaceSpacing(const SolidIndex& index, const PointSet& ps) {
+  const double surface = static_cast<double>(ps.points.size()) - static_cast<double>(ps.interior);
+  return std::sqrt(surfaceArea(index.mesh()) / std::max(1.0, surface));
+}
+
+double boundMinEdge(const SolidIndex& index, const PointSet& ps) {
+  return 0.5 * std::min(surfaceSpacing(index, ps), ps.spacing);
+}
+
 }  // namespace sphereset::detail

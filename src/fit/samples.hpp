@@ -37,6 +37,12 @@ struct PointSet {
   PointGrid grid;     // over `points`, cells of size `cell`
 };
 
+// The spacing of the surface samples of `ps`, sqrt(surface area / their count) (the area's
+// square root when there are none), and the bound's smallest pieces as the fit sizes them: half
+// the smaller of it and the interior grid's spacing.
+double surfaceSpacing(const SolidIndex& index, const PointSet& ps);
+double boundMinEdge(const SolidIndex& index, const PointSet& ps);
+
 // (Re)builds the adjacency: neighbours are points closer than 1.8 cells.
 void buildAdjacency(PointSet* ps, double cell);
 
