@@ -163,7 +163,7 @@ double gapToUnion(const SphereGrid& grid, const Vec3& p) {
 }
 
 int leastGrowth(const SphereGrid& grid, const Vec3* pts, int n, int count,
-                std::pair<double, int32_t>* out) {
+                std::pair<double, int32_t>* out, double reach) {
   count = std::min(count, static_cast<int>(grid.spheres().size()));
   int m = 0;
   auto consider = [&](int32_t i) {
@@ -179,7 +179,8 @@ int leastGrowth(const SphereGrid& grid, const Vec3* pts, int n, int count,
     out[k] = c;
   };
   // A sphere not met within `reach` of pts[0] needs more than `reach` of growth.
-  for (double reach = grid.cell(); count > 0; reach *= 2.0) {
+  if (!(reach > 0.0)) reach = grid.cell();
+  for (; count > 0; reach *= 2.0) {
     grid.forEachWithin(pts[0], reach, consider);
     if ((m == count && out[m - 1].first <= reach) || grid.coveredBy(pts[0], reach)) break;
   }

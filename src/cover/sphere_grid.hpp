@@ -83,8 +83,10 @@ double gapToUnion(const SphereGrid& grid, const Vec3& p);
 
 // The `count` spheres (at most 8) that need the least radius increase to hold all the points,
 // as (increase, index) in increasing order (ties: lower index); fewer if there are fewer
-// spheres. Returns how many were written.
+// spheres. Returns how many were written. The search looks within a reach of pts[0] that starts
+// at `reach` (0: one grid cell) and doubles until it holds the answer, which is therefore the
+// same from any start; a start at a known sphere's increase saves the doubling.
 int leastGrowth(const SphereGrid& grid, const Vec3* pts, int n, int count,
-                std::pair<double, int32_t>* out);
+                std::pair<double, int32_t>* out, double reach = 0.0);
 
 }  // namespace sphereset::detail

@@ -33,10 +33,15 @@ struct Request {
 struct TriangleRequests {
   std::vector<Request> grow;                                    // one per sphere
   std::vector<std::pair<int32_t, std::array<Vec3, 3>>> pieces;  // (sphere, piece) if wanted
+  std::vector<std::pair<int32_t, Vec3>> centroids;              // or only their centroids
+  int64_t count = 0;
 
-  void add(const Request& r, const std::array<Vec3, 3>& piece, bool keep_piece) {
+  void add(const Request& r, const std::array<Vec3, 3>& piece, const SurfaceBoundOptions& o) {
     ++count;
-    if (keep_piece) pieces.emplace_back(r.sphere, piece);
+    if (o.held && o.held_centroids)
+      centroids.emplace_back(r.sphere, (piece[0] + piece[1] + piece[2]) / 3.0);
+    else if (o.held)
+      pieces.emplace_back(r.sphere, piece);
     for (Request& g : grow)
       if (g.sphere == r.sphere) {
         g.radius = std::max(g.radius, r.radius);
@@ -44,16 +49,32 @@ struct TriangleRequests {
       }
     grow.push_back(r);
   }
-  int64_t count = 0;
 };
 
 // The sphere whose outside volume grows least, to first order (dSOV/dr times the radius
 // increase), when enlarged to hold the points; among the kCandidates needing the least radius
 // increase. Writes its index and new radius (-1 when there are no spheres).
+// `near`, if given: the candidates of a nearby piece (-1: none yet), replaced by these. The
+// largest increase they need for these points is a reach at which the search (leastGrowth)
+// already holds kCandidates spheres, so it stops there instead of growing from one grid cell;
+// the answer is the same.
 void cheapestGrowth(const SphereGrid& grid, const std::vector<double>& sov_dr, const Vec3* pts,
-                    int npts, double slack, int32_t* sphere, double* radius) {
+                    int npts, double slack, int32_t* sphere, double* radius,
+                    std::array<int32_t, kCandidates>* near = nullptr) {
+  double reach = 0.0;
+  if (near && (*near)[kCandidates - 1] >= 0)
+    for (int32_t i : *near) {
+      const Sphere& s = grid.spheres()[i];
+      double need = 0.0;
+      for (int k = 0; k < npts; ++k) need = std::max(need, (pts[k] - s.center).norm());
+      reach = std::max(reach, need - s.radius);
+    }
   std::array<std::pair<double, int32_t>, kCandidates> cand;
-  const int m = leastGrowth(grid, pts, npts, kCandidates, cand.data());
+  const int m = leastGrowth(grid, pts, npts, kCandidates, cand.data(), reach);
+  if (near) {
+    near->fill(-1);
+    for (int k = 0; k < m; ++k) (*near)[k] = cand[k].second;
+  }
   double best_inc = std::numeric_limits<double>::infinity();
   *sphere = -1;
   // Candidates come in increasing order of radius growth, so a strict comparison breaks
@@ -116,34 +137,17 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
   const std::vector<double> sov_dr = radiusRates(index, sp, &st);
   const SphereGrid grid(sp);
   std::vector<TriangleRequests> req(nt);
-  const bool keep = o.held != nullptr;
   tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
     const auto& tri = mesh.triangles[t];
-    const auto request = [&](const std::array<Vec3, 3>& v) {
-      Request r;
-      cheapestGrowth(grid, sov_dr, v.data(), 3, slack, &r.sphere, &r.radius);
-      return r;
-    };
+    std::array<int32_t, kCandidates> near;  // the last small piece's candidates
+    near.fill(-1);
     splitPieces(
         mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], o.min_edge,
+        [&](const std::array<Vec3, 3>& v) { return oneSphereHolds(grid, v.data(), 3); },
         [&](const std::array<Vec3, 3>& v) {
-          if (oneSphereHolds(grid, v.data(), 3)) return true;
-          if (o.growth_tolerance < 0.0) return false;
-          // Every vertex must join some sphere, so no split of the piece asks any sphere for
-          // less growth than the largest gap of a vertex to the union; within the tolerance of
-          // that, the piece goes whole. Where the spheres leave a region uncovered this stops
-          // at its first pieces instead of splitting them all to min_edge.
-          const Request r = request(v);
-          if (r.sphere < 0) return false;
-          double least = 0.0;
-          for (const Vec3& p : v) least = std::max(least, gapToUnion(grid, p));
-          if (r.radius - sp[r.sphere].radius - slack > least + o.growth_tolerance) return false;
-          req[t].add(r, v, keep);
-          return true;
-        },
-        [&](const std::array<Vec3, 3>& v) {
-          const Request r = request(v);
-          if (r.sphere >= 0) req[t].add(r, v, keep);
+          Request r;
+          cheapestGrowth(grid, sov_dr, v.data(), 3, slack, &r.sphere, &r.radius, &near);
+          if (r.sphere >= 0) req[t].add(r, v, o);
         });
   });
   if (o.held) o.held->assign(sp.size(), {});
@@ -152,13 +156,9 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
   for (int64_t t = 0; t < nt; ++t) {
     st.pieces += req[t].count;
     for (const Request& r : req[t].grow) radius[r.sphere] = std::max(radius[r.sphere], r.radius);
-    for (const auto& [i, v] : req[t].pieces) {
-      auto& out = (*o.held)[i];
-      if (o.held_centroids)
-        out.push_back((v[0] + v[1] + v[2]) / 3.0);
-      else
-        out.insert(out.end(), v.begin(), v.end());
-    }
+    for (const auto& [i, v] : req[t].pieces)
+      (*o.held)[i].insert((*o.held)[i].end(), v.begin(), v.end());
+    for (const auto& [i, c] : req[t].centroids) (*o.held)[i].push_back(c);
   }
   growTo(&sp, radius, &st);
   return st;

@@ -60,10 +60,6 @@ double splitPieceCount(const Mesh& mesh, double edge);
 struct SurfaceBoundOptions {
   // Pieces are split until their longest edge is at most this (absolute units).
   double min_edge = 0.0;
-  // Adaptive stop (< 0: off): a piece no single sphere holds goes whole to its cheapest sphere
-  // as soon as the growth that sphere needs is within growth_tolerance of the largest gap of
-  // the piece's vertices to the union, a growth no split of the piece can go below.
-  double growth_tolerance = -1.0;
   // If given, (*held)[i] receives the vertices of the pieces sphere i was enlarged for (or
   // their centroids, with held_centroids).
   std::vector<std::vector<Vec3>>* held = nullptr;
@@ -74,14 +70,13 @@ struct SurfaceBoundOptions {
 
 // Enlarges spheres until every point of every triangle lies in some sphere: each triangle is
 // split in four until each piece has its three vertices in one sphere (then the piece is
-// inside it, by convexity) or is shorter than `min_edge` (or the adaptive stop takes it); such a
-// piece is given to the sphere whose outside volume grows least when enlarged to hold its
-// vertices. The evaluation's certificate splits the same way, as deep (kSurfaceSplitDepth), so
-// it confirms what the bound proves: every piece given to a sphere is a node of its tree.
+// inside it, by convexity) or is shorter than `min_edge`; such a piece is given to the sphere whose
+// outside volume grows least when enlarged to hold its vertices. The evaluation's certificate
+// splits the same way, as deep (kSurfaceSplitDepth), so it confirms what the bound proves: every
+// piece given to a sphere is a node of its tree.
 BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
                         const SurfaceBoundOptions& options);
 
-// The same with the adaptive stop off.
 inline BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
                                double min_edge, std::vector<std::vector<Vec3>>* held = nullptr,
                                const Mesh* surface = nullptr) {

@@ -60,9 +60,6 @@ constexpr double kGrowWindow = 0.25;
 // Branch-and-bound nodes at most per program (a node limit, not a time limit, keeps the result
 // independent of the machine's speed).
 constexpr int kMaxNodes = 2000;
-// The exact bound of the solution stops splitting a piece whose cheapest growth is within this
-// fraction of the bound's edge of the least any split could ask (bound.hpp).
-constexpr double kBoundGrowthTolerance = 0.25;
 // A column above this is taken as set.
 constexpr double kSetThreshold = 0.5;
 
@@ -307,10 +304,7 @@ RadiiStats optimalRadii(const SolidIndex& index, const std::vector<Vec3>& interi
   st.solved = true;
   std::vector<Sphere> cand = *sp;
   for (int j = 0; j < n; ++j) cand[j].radius = chosen[j];
-  SurfaceBoundOptions bo;
-  bo.min_edge = bound_edge;
-  bo.growth_tolerance = kBoundGrowthTolerance * bound_edge;
-  const BoundStats bs = boundSurface(index, &cand, bo);
+  const BoundStats bs = boundSurface(index, &cand, bound_edge);
   st.queries += bs.queries + n;
   const double e = totalOf(outsideVolumes(index, cand));
   if (e < before) {

@@ -54,15 +54,10 @@ constexpr int kPenaltyStages = 4;
 constexpr int kPenaltyEvaluations = 60;
 // The exact bound of the result splits pieces down to kRefineFineEdge (refine.hpp) times the
 // fit's `min_edge`; pieces still in no single sphere add their centroids to the points and the
-// last stage runs again, at most kDensifyRounds times.
+// last stage runs again, at most kDensifyRounds times. The bound keeps only those centroids (a
+// region the penalty left uncovered can split into a million pieces: 920 679 on ur5_upperarm at
+// n = 32, 192 MB peak when each kept its vertices and its request, 90 MB now).
 constexpr int kDensifyRounds = 2;
-// That bound's adaptive stop (bound.hpp), as a fraction of its pieces' edge: where the penalty
-// left a region uncovered, its pieces go whole to a sphere once no split could ask less than
-// this much less growth. Without it the first bound split 920 679 pieces to the fine edge on
-// ur5_upperarm at n = 32 (192 MB peak, 0.23 s; 63 MB with it). E_r at n = 32, seed 1, against
-// none: 1.0 was 4 to 14 % worse on the robot collision meshes; 0.25 was +2.2 % on spot and
-// +2.3 % on fandisk; 0.05 is +1.4 %, +0.9 % and -0.8 % on spot, fandisk and ur5_upperarm.
-constexpr double kFineGrowthTolerance = 0.05;
 // The surface's points come from at most this many pieces per clustered point (the triangles
 // are split coarser if needed), and the points with those the densification adds are at most
 // as many: the points' cost stays in proportion to the clustering's.
@@ -136,14 +131,24 @@ struct PointState {
   double gap = 0.0;
 };
 
-PointState pointState(const SphereGrid& grid, const Vec3& p) {
+// `hint`: the sphere that held p at the previous evaluation, or was nearest to it (-1: none),
+// tried first and updated. Neither changes the answer: only whether p is held matters, and the
+// nearest sphere's search (leastGrowth) ends at the same sphere from any starting reach; the
+// last nearest sphere's gap is a reach that holds the answer at once.
+PointState pointState(const SphereGrid& grid, const Vec3& p, int32_t* hint) {
   PointState s;
-  if (oneSphereHolds(grid, &p, 1)) return s;
+  const auto& sp = grid.spheres();
+  const int32_t last = *hint;
+  if (last >= 0 && sp[last].contains(p)) return s;
+  if (holders(grid, &p, 1, hint) > 0) return s;
+  double reach = 0.0;
+  if (last >= 0) reach = (p - sp[last].center).norm() - sp[last].radius;
   std::pair<double, int32_t> least{0.0, -1};
-  if (leastGrowth(grid, &p, 1, 1, &least) > 0 && least.first > 0.0) {
+  if (leastGrowth(grid, &p, 1, 1, &least, reach) > 0 && least.first > 0.0) {
     s.sphere = least.second;
     s.gap = least.first;
   }
+  *hint = least.second;
   return s;
 }
 
@@ -162,8 +167,9 @@ class PenalisedEnergy {
     queries += n;
     const SphereGrid grid(sp);
     std::vector<PointState> st(points.size());
+    hints_.resize(points.size(), -1);
     tbb::parallel_for(size_t{0}, points.size(),
-                      [&](size_t k) { st[k] = pointState(grid, points[k]); });
+                      [&](size_t k) { st[k] = pointState(grid, points[k], &hints_[k]); });
     double f = 0.0;  // summed in a fixed order, whatever the threads
     for (int i = 0; i < n; ++i) {
       f += ov[i].volume;
@@ -200,6 +206,7 @@ class PenalisedEnergy {
 
  private:
   const SolidIndex& index_;
+  std::vector<int32_t> hints_;  // per point, the sphere that last held it
 };
 
 // L-BFGS from x at the energy's weight; x becomes the best point evaluated.
@@ -268,7 +275,6 @@ RefineStats refineCoverage(const SolidIndex& index, const std::vector<Vec3>& int
     std::vector<std::vector<Vec3>> held;
     SurfaceBoundOptions bo;
     bo.min_edge = kRefineFineEdge * min_edge;
-    bo.growth_tolerance = kFineGrowthTolerance * bo.min_edge;
     bo.held = &held;
     bo.held_centroids = true;
     const BoundStats bs = boundSurface(index, &cand, bo);
