@@ -113,8 +113,9 @@ struct FitTimings {
 struct RadiiCertificate {
   double objective = 0.0;    // Σ outside volume of the program's best solution
   double lower_bound = 0.0;  // its proven lower bound (branch and bound)
-  double gap = -1.0;         // (objective - lower_bound) / objective; 0: optimal; -1: not run
-  double start = 0.0;        // Σ outside volume of the set the program started from
+  double gap =
+      -1.0;  // (objective - lower_bound) / objective; 0: optimal; -1: not run (or too large)
+  double start = 0.0;  // Σ outside volume of the set the program started from
   int64_t units = 0, rows = 0;
   bool kept = false;  // its bounded solution had less outside volume and replaced the set
 };

@@ -60,6 +60,9 @@ constexpr double kGrowWindow = 0.25;
 // Branch-and-bound nodes at most per program (a node limit, not a time limit, keeps the result
 // independent of the machine's speed).
 constexpr int kMaxNodes = 2000;
+// Coverage rows (after reduction) above which the program is not attempted: its linear
+// relaxations would take longer than the fit (the selection's ILP stops at 200 000 classes).
+constexpr size_t kMaxRows = 100000;
 // A column above this is taken as set.
 constexpr double kSetThreshold = 0.5;
 
@@ -214,12 +217,14 @@ std::vector<std::vector<int>> coverRows(const Program& p, std::vector<int>* forc
 }
 
 // Solves the program from the start `radii`; writes the radii of its best solution (the largest
-// level set per sphere) and the objective and bound to *st. False when CBC found no solution.
+// level set per sphere) and the objective and bound to *st. False when CBC found no solution or
+// the program has more than kMaxRows rows.
 bool solveProgram(const Program& p, const std::vector<double>& radii, std::vector<double>* out,
                   RadiiStats* st) {
   const int n = static_cast<int>(p.level.size());
   std::vector<int> forced;
   const std::vector<std::vector<int>> rows = coverRows(p, &forced);
+  if (rows.size() > kMaxRows) return false;
   double max_cost = 0.0;
   for (int j = 0; j < n; ++j) max_cost = std::max(max_cost, p.sov[j].back());
   const double scale = max_cost > 0.0 ? 1.0 / max_cost : 1.0;  // costs of order 1 for CBC
