@@ -88,6 +88,17 @@ struct TableArgs {
 void addTableOptions(CLI::App* cmd, TableArgs* a, std::span<const OptionSpec> table,
                      std::initializer_list<std::string_view> skip = {});
 
+// What every door that reads a robot takes: --package-path (repeatable) and --collision-group
+// (an MJCF's collision geoms by group), as RobotLoadOptions.
+struct RobotLoadArgs {
+  std::vector<std::string> package_paths;
+  int collision_group = -1;
+  bool given() const { return !package_paths.empty() || collision_group != -1; }
+};
+// `when` opens each option's help ("Robot: ", "With a robot as MESH: ").
+void addRobotLoadArgs(CLI::App* cmd, RobotLoadArgs* a, const std::string& when);
+RobotLoadOptions robotLoadOptions(const RobotLoadArgs& a);
+
 struct MeshArgs {
   std::string path;
   TableArgs repair;  // the rows of repairOptionTable() given (weld tolerance, repair, wrap)

@@ -25,7 +25,7 @@ namespace {
 struct EvalArgs {
   MeshArgs mesh;
   std::string spheres_path, link;
-  std::vector<std::string> package_paths;  // MESH a URDF: where its package:// meshes are
+  RobotLoadArgs load;  // MESH a robot: where its package:// meshes are, its collision group
   TableArgs eval;                          // the rows of evalOptionTable()
   TableArgs robot;                         // the robot table's link_solid(_for) rows
   bool json = false;
@@ -74,8 +74,7 @@ int runEval(EvalArgs a) {
     if (a.link.empty())
       return fail(Error{ErrorCode::kInvalidArgument,
                         a.mesh.path + ": a URDF needs --link LINK (the link to measure)"});
-    RobotLoadOptions lo;
-    lo.package_paths = a.package_paths;
+    const RobotLoadOptions lo = robotLoadOptions(a.load);
     auto robot = loadRobot(a.mesh.path, lo);
     if (!robot) return fail(robot.error());
     const RobotLink* link = nullptr;
@@ -175,8 +174,7 @@ Command registerEval(CLI::App& app) {
   cmd->add_option("--link", a->link,
                   "The link to measure, in a file of several (a robot's YAML from `robot`); "
                   "with a URDF as MESH, also the link whose geometry is measured");
-  cmd->add_option("--package-path", a->package_paths,
-                  "With a URDF as MESH: folder searched for package://NAME/ paths (repeatable)");
+  addRobotLoadArgs(cmd, &a->load, "With a robot as MESH: ");
   cmd->add_flag("--json", a->json, "Print one JSON object");
   addTableOptions(cmd, &a->eval, evalOptionTable());
   // With a URDF as MESH: the link's solid, as `sphereset robot` takes it.

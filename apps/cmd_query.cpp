@@ -104,7 +104,7 @@ int otherQuery(const QueryArgs& a, const SphereTree& qa, nlohmann::json* out) {
 }
 
 int runQuery(const QueryArgs& a) {
-  const bool robot_options = !a.robot.spheres.empty() || !a.robot.package_paths.empty() ||
+  const bool robot_options = !a.robot.spheres.empty() || a.robot.load.given() ||
                              !a.robot.joint_positions.empty() || !a.robot.trajectory.empty() ||
                              !a.robot.points.empty() || !a.robot.obstacle_spheres.empty();
   if (isRobotDescriptionPath(a.path)) {
@@ -164,8 +164,7 @@ Command registerQuery(CLI::App& app) {
                   "tx,ty,tz,qw,qx,qy,qz: rigid pose of the second set (default identity)")
       ->delimiter(',')
       ->expected(7);
-  cmd->add_option("--package-path", a->robot.package_paths,
-                  "Robot: folder searched for package://NAME/ paths (repeatable)");
+  addRobotLoadArgs(cmd, &a->robot.load, "Robot: ");
   auto* joints = cmd->add_option("--joint-positions", a->robot.joint_positions,
                                  "Robot: JOINT=VALUE,... (default: all joints at 0)");
   cmd->add_option("--trajectory", a->robot.trajectory,

@@ -137,8 +137,7 @@ int runRobotQuery(const RobotQueryArgs& a) {
     return fail(Error{ErrorCode::kInvalidArgument,
                       a.urdf + ": a robot query needs the robot's spheres (query ROBOT.urdf "
                                "SPHERES ...)"});
-  RobotLoadOptions lo;
-  lo.package_paths = a.package_paths;
+  const RobotLoadOptions lo = robotLoadOptions(a.load);
   auto robot = loadRobot(a.urdf, lo);
   if (!robot) return fail(robot.error());
   auto spheres = robotSpheres(a, lo);

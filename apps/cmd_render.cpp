@@ -25,7 +25,7 @@ namespace {
 struct RenderArgs {
   MeshArgs mesh;
   std::string spheres, out, size = "1200x900", views = "front,side,top,three-quarter", up = "y";
-  std::vector<std::string> package_paths;
+  RobotLoadArgs robot_load;
   std::string joint_positions, link;
   bool up_given = false;
   RenderOptions ro;
@@ -70,8 +70,7 @@ Status renderOptions(const RenderArgs& a, RenderOptions* ro) {
 // spheres in the link frames, e.g. robot's YAML) moved to the root frame; or, with --link, one
 // link alone in its own frame.
 int renderRobot(const RenderArgs& a, RenderOptions ro) {
-  RobotLoadOptions lo;
-  lo.package_paths = a.package_paths;
+  const RobotLoadOptions lo = robotLoadOptions(a.robot_load);
   auto robot = loadRobot(a.mesh.path, lo);
   if (!robot) return fail(robot.error());
   auto joints = parseJointPositions(a.joint_positions, *robot);
@@ -220,8 +219,7 @@ Command registerRender(CLI::App& app) {
   cmd->add_option("mesh", a->mesh.path,
                   "Mesh file, or a robot (.urdf) drawn posed with per-link spheres")
       ->required();
-  cmd->add_option("--package-path", a->package_paths,
-                  "Robot: folder searched for package://NAME/ paths (repeatable)");
+  addRobotLoadArgs(cmd, &a->robot_load, "Robot: ");
   cmd->add_option("--joint-positions", a->joint_positions,
                   "Robot: JOINT=VALUE,... (default: all joints at 0)");
   cmd->add_option("--link", a->link, "Robot: draw this link alone, in its own frame");

@@ -1,8 +1,9 @@
-// sphereset robot: collision spheres for every link of a robot described by a URDF, in the link
+// sphereset robot: collision spheres for every link of a robot described by a URDF or an MJCF, in the link
 // frames (fitRobot, robot_fit.hpp, does the fitting), and the link pairs a planner may skip,
 // found by sampling the joint space (sampleSelfCollisions, robot_collision.hpp). Outputs, one or
 // more (-o repeated), by the name's ending: cuRobo's YAML with the self-collision ignore list,
-// Lula's robot description, MoveIt's SRDF, the URDF with sphere collisions, a JSON report.
+// Lula's robot description, MoveIt's SRDF, the URDF with sphere collisions, the robot as an MJCF
+// with sphere geoms (MuJoCo), a JSON report.
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -37,19 +38,19 @@ struct RobotArgs {
   TableArgs fit;        // --quality and --seed
   TableArgs robot;      // the rows of robotFitOptionTable()
   TableArgs collision;  // the rows of collisionSamplingOptionTable() but default_pose
-  std::vector<std::string> package_paths;
+  RobotLoadArgs load;
   MeshArgs repair;  // repair options only (no mesh path)
   bool quiet = false, json = false;
 };
 
-enum class RobotOutput { kCurobo, kLula, kSrdf, kUrdf, kJson, kHtml };
+enum class RobotOutput { kCurobo, kLula, kSrdf, kUrdf, kMjcf, kJson, kHtml };
 
 bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
 // The format of an output by its name's ending (letter case ignored): .lula.yml/.lula.yaml
-// (Lula), .yml/.yaml (cuRobo), .srdf, .urdf, .json, .html (the view's page, static).
+// (Lula), .yml/.yaml (cuRobo), .srdf, .urdf, .xml (MJCF), .json, .html (the view's page, static).
 Expected<RobotOutput> robotOutput(const std::string& path) {
   std::string name = path;
   for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -57,12 +58,13 @@ Expected<RobotOutput> robotOutput(const std::string& path) {
   if (endsWith(name, ".yml") || endsWith(name, ".yaml")) return RobotOutput::kCurobo;
   if (endsWith(name, ".srdf")) return RobotOutput::kSrdf;
   if (endsWith(name, ".urdf")) return RobotOutput::kUrdf;
+  if (endsWith(name, ".xml")) return RobotOutput::kMjcf;
   if (endsWith(name, ".json")) return RobotOutput::kJson;
   if (endsWith(name, ".html")) return RobotOutput::kHtml;
   return Error{ErrorCode::kInvalidArgument,
                path +
                    ": robot output is .yml/.yaml (cuRobo), .lula.yml/.lula.yaml (Lula), "
-                   ".srdf, .urdf, .json or .html"};
+                   ".srdf, .urdf, .xml (MJCF), .json or .html"};
 }
 
 nlohmann::json collisionJson(const CollisionMatrix& m) {
@@ -171,6 +173,13 @@ Status writeRobotOutput(const RobotArgs& a, const std::string& path, RobotOutput
       return writeTextFile(path, jsonText(robotJson(a, robot, fit, fo, matrix), 1) + "\n");
     case RobotOutput::kUrdf:
       return writeSphereUrdf(a.urdf, path, spheres);
+    case RobotOutput::kMjcf: {
+      // <contact><exclude> for every pair the sampling disabled (MuJoCo's own filter aside).
+      const SelfCollisionPairs pairs = ignoredPairs(matrix);
+      std::vector<std::array<std::string, 2>> exclude = pairs.adjacent;
+      exclude.insert(exclude.end(), pairs.overlapping.begin(), pairs.overlapping.end());
+      return writeSphereMjcf(a.urdf, path, spheres, exclude, robotLoadOptions(a.load));
+    }
     case RobotOutput::kSrdf:
       return writeSrdf(path, robot, matrix);
     case RobotOutput::kLula:
@@ -220,8 +229,7 @@ int runRobot(const RobotArgs& a) {
   if (!formats) return fail(formats.error());
   if (std::find(formats->begin(), formats->end(), RobotOutput::kHtml) != formats->end())
     if (int code = requirePage(); code != kOk) return code;
-  RobotLoadOptions lo;
-  lo.package_paths = a.package_paths;
+  const RobotLoadOptions lo = robotLoadOptions(a.load);
   auto robot = loadRobot(a.urdf, lo);
   if (!robot) return fail(robot.error());
   auto joints = parseJointPositions(a.joint_positions, *robot);
@@ -299,13 +307,16 @@ int runRobot(const RobotArgs& a) {
 Command registerRobot(CLI::App& app) {
   auto a = std::make_shared<RobotArgs>();
   CLI::App* cmd =
-      app.add_subcommand("robot", "Fit collision spheres to every link of a URDF robot");
-  cmd->add_option("urdf", a->urdf, "Robot description (URDF)")->required();
+      app.add_subcommand("robot", "Fit collision spheres to every link of a URDF or MJCF robot");
+  cmd->add_option("urdf", a->urdf, "Robot description (.urdf, or .xml: an MJCF read by MuJoCo)")
+      ->required();
   cmd->add_option("-o,--output", a->outputs,
                   "Output, repeatable (one fit, several files), by the name's ending: "
                   ".yml/.yaml (cuRobo collision_spheres and self_collision_ignore), "
                   ".lula.yml/.lula.yaml (Lula robot description), .srdf (MoveIt: chain group "
-                  "and disable_collisions), .urdf (the input with sphere collisions), .json "
+                  "and disable_collisions), .urdf (the input with sphere collisions), .xml (MJCF: the "
+                  "robot with sphere geoms, as MuJoCo loads it, and <contact><exclude> for the "
+                  "pairs found never in contact), .json "
                   "(per link, and the self-collision pairs) or .html (a page of the robot and "
                   "its spheres with their certificates, as `sphereset view --html` writes it)")
       ->required()
@@ -313,8 +324,7 @@ Command registerRobot(CLI::App& app) {
   cmd->add_option("--joint-positions", a->joint_positions,
                   "JOINT=VALUE,...: the default pose (rad or m): its collisions are disabled as "
                   "\"Default\", and it is Lula's default_q (default: all joints at 0)");
-  cmd->add_option("--package-path", a->package_paths,
-                  "Folder searched for package://NAME/ paths (repeatable; then ROS_PACKAGE_PATH)");
+  addRobotLoadArgs(cmd, &a->load, "");
   addTableOptions(cmd, &a->robot, robotFitOptionTable());
   // The sampling of self-collision pairs; its default pose is --joint-positions.
   addTableOptions(cmd, &a->collision, collisionSamplingOptionTable(), {"default_pose"});

@@ -34,7 +34,7 @@ namespace {
 struct ViewArgs {
   MeshArgs mesh;  // MESH or ROBOT.urdf, and the repair options
   std::string spheres_path, host = "127.0.0.1", output, html;
-  std::vector<std::string> package_paths;
+  RobotLoadArgs load;
   TableArgs robot;  // the robot table's link_solid and link_solid_for rows
   int port = 0;
   int level = -1;
@@ -151,7 +151,7 @@ int runView(const ViewArgs& a) {
     if (Status st = setRobotFitOption(&ro, name, text); !st) return fail(st.error());
   lo.link_solid = ro.link_solid;
   lo.link_solid_for = ro.link_solid_for;
-  lo.package_paths = a.package_paths;
+  lo.robot_load = robotLoadOptions(a.load);
   lo.level = a.level;
   lo.output = a.output;
   lo.page_file = !a.html.empty();
@@ -198,8 +198,7 @@ Command registerView(CLI::App& app) {
   addRepairArgs(cmd, &a->mesh);
   addTableOptions(cmd, &a->robot, robotFitOptionTable(),
                   {"budget", "default_link_spheres", "link_spheres", "padding", "link_padding"});
-  cmd->add_option("--package-path", a->package_paths,
-                  "With a URDF: folder searched for package://NAME/ paths (repeatable)");
+  addRobotLoadArgs(cmd, &a->load, "With a robot: ");
   cmd->add_option("--port", a->port, "Port to listen on (default 0: any free port)")
       ->check(CLI::Range(0, 65535));
   cmd->add_option("--host", a->host, "Address to listen on (default 127.0.0.1: this machine only)");

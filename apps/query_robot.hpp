@@ -9,7 +9,7 @@ namespace sphereset::cli {
 
 struct RobotQueryArgs {
   std::string urdf, spheres;  // the robot and its spheres (cuRobo YAML, JSON, ... or sphere URDF)
-  std::vector<std::string> package_paths;
+  RobotLoadArgs load;
   std::string joint_positions, trajectory;
   std::string points, obstacle_spheres;  // exactly one of them
   bool json = false;

@@ -67,7 +67,11 @@ if(NOT sphereset_FIND_COMPONENTS OR "render" IN_LIST _sphereset_wanted)
 endif()
 if(NOT sphereset_FIND_COMPONENTS OR "robot" IN_LIST _sphereset_wanted)
   find_dependency(urdfdom)
+  if(@SPHERESET_WITH_MUJOCO@)
+    find_dependency(mujoco)
+  endif()
 endif()]])
+  string(CONFIGURE "${SPHERESET_STATIC_DEPENDENCIES}" SPHERESET_STATIC_DEPENDENCIES @ONLY)
   set(SPHERESET_STATIC_REPAIR_DEPENDENCIES "find_dependency(CGAL 5.5)")
 endif()
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/spheresetConfig.cmake.in
@@ -91,6 +95,9 @@ else()
   set(SPHERESET_PC_REQUIRES "eigen3 ${SPHERESET_PC_DEPENDENCIES}")
   set(SPHERESET_PC_REQUIRES_PRIVATE "")
   set(SPHERESET_PC_LIBS "${SPHERESET_PC_LIBRARIES}")
+  if(SPHERESET_WITH_MUJOCO)
+    string(APPEND SPHERESET_PC_LIBS " -lmujoco")  # MuJoCo has no pkg-config file
+  endif()
 endif()
 # Relocatable: the prefix is found from the .pc file's own folder.
 file(RELATIVE_PATH SPHERESET_PC_TO_PREFIX

@@ -49,6 +49,13 @@ inline constexpr int64_t kMaxBones = 100000;
 inline constexpr int kMaxXmlDepth = 256;
 inline constexpr int64_t kMaxObstacles = int64_t{1} << 21;
 inline constexpr int64_t kMaxWaypoints = 1000000;
+// MJCF (read by MuJoCo): bytes of any file it names (includes, meshes, textures, height fields),
+// pixels or samples along one side of a texture or height field, bodies and geoms of the
+// compiled model. <composite> elements are refused whatever their count.
+inline constexpr int64_t kMaxMjcfFileBytes = int64_t{512} * 1024 * 1024;  // 512 MiB
+inline constexpr int kMaxMjcfGridSide = 16384;
+inline constexpr int kMaxMjcfBodies = 10000;
+inline constexpr int kMaxMjcfGeoms = 100000;
 
 // The view's server (`sphereset view`): bytes of one request's body.
 inline constexpr int64_t kMaxViewRequestBytes = int64_t{4} * 1024 * 1024;  // 4 MiB

@@ -65,8 +65,8 @@ struct ViewSolid {
 
 enum class ViewKind { kMesh, kRobot };
 // How a save writes: a sphere set, a tree (its levels back in their slots), a robot's links as
-// cuRobo's YAML, or the URDF with sphere collisions.
-enum class ViewSaveFormat { kSet, kTree, kRobotYaml, kRobotUrdf };
+// cuRobo's YAML, the URDF with sphere collisions, or the robot as an MJCF with sphere geoms.
+enum class ViewSaveFormat { kSet, kTree, kRobotYaml, kRobotUrdf, kRobotMjcf };
 
 struct ViewScene {
   ViewKind kind = ViewKind::kMesh;
@@ -76,7 +76,8 @@ struct ViewScene {
   // Robots: the robot, the joint values a user set (jointState completes them), every joint's
   // value, and the links of the sphere file in its order (saved with the solids' sets).
   std::shared_ptr<const Robot> robot;
-  std::string urdf_path;
+  std::string urdf_path;           // the robot's description (URDF or MJCF)
+  RobotLoadOptions robot_load;     // how it was read (an MJCF save reads it again)
   std::map<std::string, double> joint_input;
   std::map<std::string, double> joint_values;
   std::vector<LinkSpheres> file_links;
@@ -94,8 +95,7 @@ struct ViewLoadOptions {
   RepairOptions repair;                         // how a mesh (or a link's geometry) is made a solid
   LinkSolid link_solid = LinkSolid::kEnvelope;  // a link's solid, as the robot command fits it
   std::map<std::string, LinkSolid> link_solid_for;  // link -> its solid instead of link_solid
-  std::vector<std::string> package_paths;           // a URDF's package:// folders
-  bool use_ros_package_path = true;
+  RobotLoadOptions robot_load;  // a URDF's package:// folders, an MJCF's collision group
   int level = -1;      // a tree's level shown first; -1: the leaves
   std::string output;  // where saves go; empty: the sphere file itself
   // For a page file (--html): no save path is set up or checked (a save is refused).

@@ -21,6 +21,12 @@ const char* geometryKind(LinkGeometry::Kind k) {
       return "cylinder";
     case LinkGeometry::Kind::kSphere:
       return "sphere";
+    case LinkGeometry::Kind::kCapsule:
+      return "capsule";
+    case LinkGeometry::Kind::kEllipsoid:
+      return "ellipsoid";
+    case LinkGeometry::Kind::kTriangles:
+      return "triangles";
   }
   return "mesh";
 }
@@ -82,17 +88,27 @@ geometry when a link has none), joints, forward kinematics.)doc")
               }
               if (g.kind == LinkGeometry::Kind::kBox)
                 d["size"] = py::make_tuple(g.box_size.x(), g.box_size.y(), g.box_size.z());
-              if (g.kind == LinkGeometry::Kind::kCylinder || g.kind == LinkGeometry::Kind::kSphere)
+              using K = LinkGeometry::Kind;
+              if (g.kind == K::kCylinder || g.kind == K::kSphere || g.kind == K::kCapsule)
                 d["radius"] = g.radius;
-              if (g.kind == LinkGeometry::Kind::kCylinder) d["length"] = g.length;
+              if (g.kind == K::kCylinder || g.kind == K::kCapsule) d["length"] = g.length;
+              if (g.kind == K::kEllipsoid)
+                d["radii"] = py::make_tuple(g.radii.x(), g.radii.y(), g.radii.z());
+              if (g.kind == K::kTriangles && g.triangles)
+                d["triangles"] = static_cast<int64_t>(g.triangles->triangles.size());
               d["from_visual"] = l.from_visual;
               out.append(d);
             }
             return out;
           },
           py::arg("link"),
-          "The link's geometry elements as dicts (kind, origin 4x4, mesh_path/scale, size, "
-          "radius, length, from_visual).")
+          "The link's geometry elements as dicts (kind: mesh, box, cylinder, sphere, capsule, "
+          "ellipsoid or triangles (an MJCF mesh as MuJoCo compiled it); origin 4x4, "
+          "mesh_path/scale, size, radius, length, radii, triangles (their count), from_visual).")
+      .def_property_readonly(
+          "excluded_pairs", [](const Robot& r) { return pairList(r.excluded_pairs); },
+          "Link pairs the description itself never checks (an MJCF's collision filter and "
+          "<contact><exclude>), as (a, b) tuples; empty for a URDF.")
       .def_property_readonly(
           "joints",
           [](const Robot& r) {
@@ -107,6 +123,8 @@ geometry when a link has none), joints, forward kinematics.)doc")
               d["axis"] = py::make_tuple(j.axis.x(), j.axis.y(), j.axis.z());
               d["lower"] = j.lower;
               d["upper"] = j.upper;
+              d["anchor"] = py::make_tuple(j.anchor.x(), j.anchor.y(), j.anchor.z());
+              d["reference"] = j.reference;
               if (j.mimic)
                 d["mimic"] = py::make_tuple(j.mimic->joint, j.mimic->multiplier, j.mimic->offset);
               else
@@ -116,7 +134,8 @@ geometry when a link has none), joints, forward kinematics.)doc")
             return out;
           },
           "Joints in file order, as dicts (name, parent, child, type, origin, axis, lower, "
-          "upper, mimic: (leader, multiplier, offset) or None).")
+          "upper, anchor and reference (an MJCF joint's pos and ref), mimic: (leader, "
+          "multiplier, offset) or None).")
       .def(
           "link_mesh",
           [](const Robot& r, const std::string& link, int cylinder_segments) {
@@ -180,18 +199,22 @@ geometry when a link has none), joints, forward kinematics.)doc")
   m.def(
       "load_robot",
       [](const Path& urdf_arg, const std::vector<std::string>& package_paths,
-         bool use_ros_package_path) {
+         bool use_ros_package_path, int collision_group) {
         const std::string urdf = urdf_arg.string();
         RobotLoadOptions lo;
         lo.package_paths = package_paths;
         lo.use_ros_package_path = use_ros_package_path;
+        lo.mjcf_collision_group = collision_group;
         py::gil_scoped_release release;
         return std::make_shared<Robot>(unwrap(loadRobot(urdf, lo)));
       },
       py::arg("urdf"), py::kw_only(), py::arg("package_paths") = std::vector<std::string>{},
-      py::arg("use_ros_package_path") = true,
+      py::arg("use_ros_package_path") = true, py::arg("collision_group") = -1,
       "Reads a URDF and resolves its mesh paths (relative, absolute, file://, package:// through "
-      "package_paths then ROS_PACKAGE_PATH).");
+      "package_paths then ROS_PACKAGE_PATH), or an MJCF (.xml) through MuJoCo: its collision "
+      "geoms are those MuJoCo collides, or those of collision_group (0-5).");
+  m.def("mujoco_available", &mujocoAvailable,
+        "Whether this build reads and writes MJCF (MuJoCo).");
 
   m.def(
       "write_robot_spheres",
@@ -232,6 +255,23 @@ geometry when a link has none), joints, forward kinematics.)doc")
         return unwrap(formatSphereUrdf(in_urdf, linkSpheresFrom(links)));
       },
       py::arg("in_urdf"), py::arg("links"), "The text write_sphere_urdf writes.");
+  m.def(
+      "write_sphere_mjcf",
+      [](const Path& in_arg, const Path& out_arg, const py::object& links,
+         const std::vector<std::array<std::string, 2>>& exclude, int collision_group) {
+        const std::string in = in_arg.string(), out = out_arg.string();
+        const std::vector<LinkSpheres> l = linkSpheresFrom(links);
+        RobotLoadOptions lo;
+        lo.mjcf_collision_group = collision_group;
+        py::gil_scoped_release release;
+        check(writeSphereMjcf(in, out, l, exclude, lo));
+      },
+      py::arg("in_robot"), py::arg("out_path"), py::arg("links"), py::kw_only(),
+      py::arg("exclude") = std::vector<std::array<std::string, 2>>{},
+      py::arg("collision_group") = -1,
+      "Writes the robot (MJCF or URDF) as an MJCF that MuJoCo loads, the collision geoms of the "
+      "given links replaced by sphere geoms, with a <contact><exclude> per pair of `exclude` "
+      "that MuJoCo does not already filter.");
 
   m.def(
       "split_budget",

@@ -33,7 +33,8 @@ namespace {
 using PosesByLink = std::map<std::string, Eigen::Isometry3d>;
 
 // Pairs (by index into the robot's links, first < second) joined by a joint, or through links
-// not in `has_geometry` (MoveIt's rule: a link without geometry joins its neighbours).
+// not in `has_geometry` (MoveIt's rule: a link without geometry joins its neighbours), and the
+// description's own excluded pairs (Robot::excluded_pairs: an MJCF's filter).
 std::set<std::pair<size_t, size_t>> adjacentPairs(const Robot& robot,
                                                   const std::map<std::string, size_t>& index,
                                                   const std::vector<bool>& has_geometry) {
@@ -51,6 +52,12 @@ std::set<std::pair<size_t, size_t>> adjacentPairs(const Robot& robot,
     for (size_t x : around)
       for (size_t y : around)
         if (x != y) next[x].insert(y);
+  }
+  for (const auto& [x, y] : robot.excluded_pairs) {
+    const auto a = index.find(x), b = index.find(y);
+    if (a == index.end() || b == index.end() || a->second == b->second) continue;
+    next[a->second].insert(b->second);
+    next[b->second].insert(a->second);
   }
   std::set<std::pair<size_t, size_t>> out;
   for (size_t a = 0; a < next.size(); ++a)

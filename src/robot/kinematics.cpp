@@ -1,6 +1,7 @@
 // Forward kinematics of a robot's joint tree: the pose of every link frame in the root frame
-// for given joint values (revolute and continuous joints rotate about their axis, prismatic
-// ones slide along it; fixed and other joints stay at their origin). Reference: the URDF
+// for given joint values (revolute and continuous joints rotate about their axis, through the
+// anchor of an MJCF joint, prismatic ones slide along it, both by the value less the joint's
+// reference; fixed and other joints stay at their origin). Reference: the URDF
 // specification (wiki.ros.org/urdf/XML/joint): limits, and <mimic> with
 // value = multiplier · value(leader) + offset.
 #include <algorithm>
@@ -60,7 +61,7 @@ Expected<JointState> jointState(const Robot& robot,
     }
     const auto v = joint_values.find(j.name);
     state.values[j.name] =
-        clampToLimits(j, v == joint_values.end() ? 0.0 : v->second, &state.notes);
+        clampToLimits(j, v == joint_values.end() ? j.reference : v->second, &state.notes);
   }
   // Mimic joints, leaders first: each round settles those whose leader is settled; a round that
   // settles none leaves a cycle.
@@ -113,10 +114,12 @@ Expected<std::map<std::string, Eigen::Isometry3d>> linkPoses(
       switch (j->type) {
         case RobotJoint::Type::kRevolute:
         case RobotJoint::Type::kContinuous:
-          motion.linear() = Eigen::AngleAxisd(q, j->axis).toRotationMatrix();
+          // About the axis through the anchor (MJCF; the origin in a URDF).
+          motion.linear() = Eigen::AngleAxisd(q - j->reference, j->axis).toRotationMatrix();
+          motion.translation() = j->anchor - motion.linear() * j->anchor;
           break;
         case RobotJoint::Type::kPrismatic:
-          motion.translation() = q * j->axis;
+          motion.translation() = (q - j->reference) * j->axis;
           break;
         case RobotJoint::Type::kFixed:
         case RobotJoint::Type::kOther:

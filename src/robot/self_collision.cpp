@@ -38,12 +38,14 @@ Expected<SelfCollisionPairs> selfCollisionPairs(const Robot& robot,
 
   SelfCollisionPairs out;
   std::set<std::pair<size_t, size_t>> adjacent;
-  for (const RobotJoint& j : robot.joints) {
-    const auto p = index.find(j.parent);
-    const auto c = index.find(j.child);
-    if (p == index.end() || c == index.end() || p->second == c->second) continue;
+  auto join = [&](const std::string& x, const std::string& y) {
+    const auto p = index.find(x);
+    const auto c = index.find(y);
+    if (p == index.end() || c == index.end() || p->second == c->second) return;
     adjacent.emplace(std::min(p->second, c->second), std::max(p->second, c->second));
-  }
+  };
+  for (const RobotJoint& j : robot.joints) join(j.parent, j.child);
+  for (const auto& [x, y] : robot.excluded_pairs) join(x, y);
   for (const auto& [a, b] : adjacent)
     out.adjacent.push_back({robot.links[a].name, robot.links[b].name});
 

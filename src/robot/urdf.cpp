@@ -30,7 +30,10 @@
 #include "sphereset/limits.hpp"
 #include "sphereset/robot.hpp"
 #include "util/number_text.hpp"
+#include "util/read_file.hpp"
 #include "util/utf8.hpp"
+#include "robot/mjcf.hpp"
+#include "robot/xml_text.hpp"
 
 namespace sphereset {
 namespace {
@@ -323,82 +326,13 @@ urdf::ModelInterfaceSharedPtr parseQuietly(const std::string& xml, std::string& 
   return model;
 }
 
-// The deepest nesting of elements in `xml` (a scan that skips comments, CDATA, declarations and
-// quoted attribute values), stopping once it passes `limit`. TinyXML and urdfdom recurse once
-// per level: tens of thousands of nested elements overflow the stack.
-int xmlDepth(const std::string& xml, int limit) {
-  int depth = 0, deepest = 0;
-  size_t i = 0;
-  auto skipPast = [&](const char* end) {
-    const size_t e = xml.find(end, i);
-    i = e == std::string::npos ? xml.size() : e + std::strlen(end);
-  };
-  while (i < xml.size() && deepest <= limit) {
-    if (xml[i] != '<') {
-      ++i;
-      continue;
-    }
-    if (xml.compare(i, 4, "<!--") == 0) {
-      skipPast("-->");
-    } else if (xml.compare(i, 9, "<![CDATA[") == 0) {
-      skipPast("]]>");
-    } else if (i + 1 < xml.size() && (xml[i + 1] == '?' || xml[i + 1] == '!')) {
-      skipPast(">");
-    } else if (i + 1 < xml.size() && xml[i + 1] == '/') {
-      --depth;
-      skipPast(">");
-    } else {
-      // An opening tag: to its '>' outside quotes; "/>" closes it at once.
-      char quote = 0;
-      size_t j = i + 1;
-      for (; j < xml.size(); ++j) {
-        if (quote != 0) {
-          if (xml[j] == quote) quote = 0;
-        } else if (xml[j] == '"' || xml[j] == '\'') {
-          quote = xml[j];
-        } else if (xml[j] == '>') {
-          break;
-        }
-      }
-      if (j >= xml.size() || xml[j - 1] != '/') deepest = std::max(deepest, ++depth);
-      i = j + 1;
-    }
-  }
-  return deepest;
-}
-
 }  // namespace
 
 Expected<Robot> loadRobot(const std::string& urdf_path, const RobotLoadOptions& options) {
-  std::ifstream in(urdf_path, std::ios::binary);
-  if (!in || isDirectory(urdf_path)) {
-    return Error{ErrorCode::kUnreadable, urdf_path + ": cannot open the URDF file"};
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string xml = buffer.str();
-  // TinyXML 2.6 steps over the end of its buffer on some malformed multibyte sequences (found
-  // by fuzzing: ASan, heap-buffer-overflow in TiXmlBase::ReadName on a 0xff byte), and a URDF is
-  // UTF-8 text: anything else is refused before it is parsed.
-  if (const size_t bad = detail::firstInvalidUtf8(xml); bad != std::string::npos) {
-    char hex[8];
-    std::snprintf(hex, sizeof hex, "0x%02x", static_cast<unsigned char>(xml[bad]));
-    return Error{ErrorCode::kInvalidData, urdf_path + ": not UTF-8 text (byte " + hex +
-                                              " at offset " + std::to_string(bad) + ")"};
-  }
-  if (xmlDepth(xml, limits::kMaxXmlDepth) > limits::kMaxXmlDepth)
-    return Error{ErrorCode::kInvalidData, urdf_path + ": elements nested more than " +
-                                              std::to_string(limits::kMaxXmlDepth) +
-                                              " deep (the limit)"};
-  // A document type declaration (internal entities, as in "billion laughs", or external ones):
-  // no URDF needs one and the XML readers do not expand entities, so the file is refused by
-  // name instead of failing later as "Could not find the 'robot' element".
-  if (xml.find("<!DOCTYPE") != std::string::npos || xml.find("<!ENTITY") != std::string::npos)
-    return Error{ErrorCode::kInvalidData,
-                 urdf_path +
-                     ": a document type declaration (<!DOCTYPE> or <!ENTITY>): entities "
-                     "are not read in a URDF"};
-
+  if (detail::extensionOf(urdf_path) == ".xml") return detail::loadMjcf(urdf_path, options);
+  auto text = detail::readXmlText(urdf_path, "URDF");
+  if (!text) return text.error();
+  const std::string& xml = *text;
   std::string message, bad_link;
   const urdf::ModelInterfaceSharedPtr model = parseQuietly(xml, message, bad_link);
   if (!model) {
@@ -482,7 +416,7 @@ bool isRobotDescriptionPath(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".urdf";
+  return ext == ".urdf" || ext == ".xml";
 }
 
 bool isMovable(const RobotJoint& j) {

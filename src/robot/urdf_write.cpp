@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/atomic_write.hpp"
+#include "robot/sphere_writers.hpp"
 #include "sphereset/robot.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "util/read_file.hpp"
@@ -68,12 +69,13 @@ void replaceCollisions(TiXmlElement* link, const std::vector<Sphere>& spheres) {
 
 }  // namespace
 
-Expected<std::string> formatSphereUrdf(const std::string& in_urdf,
-                                       const std::vector<LinkSpheres>& spheres) {
+namespace detail {
+
+Expected<std::map<std::string, const std::vector<Sphere>*>> spheresByLink(
+    const std::string& in_path, const std::vector<LinkSpheres>& spheres) {
   const auto invalid = [&](ErrorCode code, const std::string& what) {
-    return Error{code, oneLine(in_urdf + ": " + what)};
+    return Error{code, oneLine(in_path + ": " + what)};
   };
-  // The spheres by link name, checked before the file is read.
   std::map<std::string, const std::vector<Sphere>*> by_link;
   for (const LinkSpheres& ls : spheres) {
     if (!by_link.emplace(ls.link, &ls.spheres).second)
@@ -86,6 +88,20 @@ Expected<std::string> formatSphereUrdf(const std::string& in_urdf,
       if (s.radius < 0.0) return invalid(ErrorCode::kInvalidData, where + ": negative radius");
     }
   }
+  return by_link;
+}
+
+}  // namespace detail
+
+Expected<std::string> formatSphereUrdf(const std::string& in_urdf,
+                                       const std::vector<LinkSpheres>& spheres) {
+  const auto invalid = [&](ErrorCode code, const std::string& what) {
+    return Error{code, oneLine(in_urdf + ": " + what)};
+  };
+  // The spheres by link name, checked before the file is read.
+  auto listed = detail::spheresByLink(in_urdf, spheres);
+  if (!listed) return listed.error();
+  const std::map<std::string, const std::vector<Sphere>*>& by_link = *listed;
 
   auto text = detail::readFileText(in_urdf);
   if (!text) return Error{text.error().code, oneLine(text.error().message)};

@@ -203,13 +203,16 @@ Expected<int64_t> saveViewScene(const ViewScene& scene) {
       break;
     }
     case ViewSaveFormat::kRobotYaml:
-    case ViewSaveFormat::kRobotUrdf: {
+    case ViewSaveFormat::kRobotUrdf:
+    case ViewSaveFormat::kRobotMjcf: {
       std::vector<LinkSpheres> links = scene.file_links;
       for (LinkSpheres& l : links)
         for (const ViewSolid& s : scene.solids)
           if (s.link == l.link) l.spheres = s.spheres();
       if (scene.save_format == ViewSaveFormat::kRobotUrdf)
         st = writeSphereUrdf(scene.urdf_path, scene.save_path, links);
+      else if (scene.save_format == ViewSaveFormat::kRobotMjcf)
+        st = writeSphereMjcf(scene.urdf_path, scene.save_path, links, {}, scene.robot_load);
       else if (!scene.save_source.empty())
         st = rewriteLinkSpheres(scene.save_source, scene.save_path, links);
       else

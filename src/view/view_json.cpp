@@ -19,6 +19,8 @@ const char* saveFormatName(const ViewScene& scene) {
       return "yaml";
     case ViewSaveFormat::kRobotUrdf:
       return "urdf";
+    case ViewSaveFormat::kRobotMjcf:
+      return "mjcf";
     case ViewSaveFormat::kSet:
     case ViewSaveFormat::kTree:
       break;

@@ -106,7 +106,7 @@ Expected<ViewScene> loadMeshScene(const std::string& mesh_path, const std::strin
 // collisions (each link's sphere primitives).
 Expected<std::vector<LinkSpheres>> robotSphereFile(const std::string& path,
                                                    const RobotLoadOptions& lo) {
-  if (extensionOf(path) != ".urdf") return readLinkSpheres(path);
+  if (!isRobotDescriptionPath(path)) return readLinkSpheres(path);
   auto with_spheres = loadRobot(path, lo);
   if (!with_spheres) return with_spheres.error();
   // The links whose collisions are all spheres: those `sphereset robot` wrote (a link of
@@ -131,6 +131,7 @@ Expected<ViewScene> robotSceneOf(Robot robot, const std::string& urdf,
   scene.kind = ViewKind::kRobot;
   scene.title = robot.name;
   scene.urdf_path = urdf;
+  scene.robot_load = o.robot_load;
   if (o.level >= 0)
     return Error{ErrorCode::kInvalidArgument,
                  source + ": a robot's sets have no levels (--level is for trees)"};
@@ -166,9 +167,7 @@ Expected<ViewScene> robotSceneOf(Robot robot, const std::string& urdf,
 
 Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& spheres_path,
                                    const ViewLoadOptions& o) {
-  RobotLoadOptions lo;
-  lo.package_paths = o.package_paths;
-  lo.use_ros_package_path = o.use_ros_package_path;
+  const RobotLoadOptions& lo = o.robot_load;
   auto robot = loadRobot(urdf, lo);
   if (!robot) return robot.error();
   auto links = robotSphereFile(spheres_path, lo);
@@ -182,6 +181,8 @@ Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& s
   const std::string path = o.output.empty() ? spheres_path : o.output;
   if (endsWithLower(path, ".urdf")) {
     scene->save_format = ViewSaveFormat::kRobotUrdf;
+  } else if (endsWithLower(path, ".xml")) {
+    scene->save_format = ViewSaveFormat::kRobotMjcf;
   } else if (endsWithLower(path, ".yml") || endsWithLower(path, ".yaml")) {
     // A save keeps the YAML file's own layout and other keys (rewriteLinkSpheres); Lula's file
     // comes only from a Lula file.
@@ -198,7 +199,7 @@ Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& s
       scene->save_source = std::filesystem::absolute(spheres_path).lexically_normal().string();
   } else {
     return Error{ErrorCode::kInvalidArgument,
-                 path + ": a robot's spheres are saved as .yml/.yaml (cuRobo) or .urdf"};
+                 path + ": a robot's spheres are saved as .yml/.yaml (cuRobo), .urdf or .xml (MJCF)"};
   }
   scene->save_path = std::filesystem::absolute(path).lexically_normal().string();
   if (Status st = checkOutputPath(scene->save_path, {urdf}); !st) return st.error();

@@ -23,7 +23,7 @@ cli_test(robot_missing_package 3 ARGS robot ${robot}/three_link.urdf -o ${work}/
 cli_test(robot_small_budget 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --budget 2 -o ${work}/never32.yml -q STDERR "budget of" FORBID ${work}/never32.yml)
 cli_test(robot_bad_extension 2 ARGS robot ${robot}/three_link.urdf -o ${work}/never33.txt -q
-         STDERR "robot output is .yml/.yaml .cuRobo., .lula.yml/.lula.yaml .Lula., .srdf, .urdf, .json or .html"
+         STDERR "robot output is .yml/.yaml .cuRobo., .lula.yml/.lula.yaml .Lula., .srdf, .urdf, .xml .MJCF., .json or .html"
          FORBID ${work}/never33.txt)
 cli_test(robot_yaml_ignore 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --budget 12 --quality fast --joint-positions joint1=0.5,joint2=-0.3 -o ${work}/three_ignore.yml -q

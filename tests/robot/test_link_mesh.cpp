@@ -36,7 +36,7 @@ TEST(LinkMesh, BoxIsAClosedSolidOfTheBoxVolume) {
   EXPECT_LT((d.bbox.max - Vec3(0.1, 0.15, 0.1)).norm(), kLinkMeshTol);
 }
 
-TEST(LinkMesh, CylinderIsAPrismOverTheInscribedPolygon) {
+TEST(LinkMesh, CylinderIsAPrismOverTheCircumscribedPolygon) {
   const Robot r = test::threeLinkRobot();
   constexpr double kRadius = 0.05, kLength = 0.4;
   for (int segments : {3, 16, 48}) {
@@ -44,10 +44,11 @@ TEST(LinkMesh, CylinderIsAPrismOverTheInscribedPolygon) {
     ASSERT_TRUE(m.ok()) << m.error().message;
     const MeshDiagnosis d = diagnoseMesh(*m);
     EXPECT_TRUE(d.isSolid()) << segments;
+    // The polygon holds the circle: its area is segments · r² · tan(π / segments) ≥ π r².
     const double polygon_area =
-        0.5 * segments * kRadius * kRadius * std::sin(2.0 * std::numbers::pi / segments);
+        segments * kRadius * kRadius * std::tan(std::numbers::pi / segments);
     EXPECT_NEAR(d.volume, polygon_area * kLength, kLinkMeshTol) << segments;
-    EXPECT_LE(d.volume, std::numbers::pi * kRadius * kRadius * kLength);
+    EXPECT_GE(d.volume, std::numbers::pi * kRadius * kRadius * kLength);
     EXPECT_NEAR(d.bbox.min.z(), 0.0, kLinkMeshTol);
     EXPECT_NEAR(d.bbox.max.z(), kLength, kLinkMeshTol);
   }
@@ -100,9 +101,11 @@ TEST(LinkMesh, SpherePrimitivesAsExactSpheresAndADrawing) {
   const MeshDiagnosis d = diagnoseMesh(*m);
   EXPECT_TRUE(d.isSolid());
   const double ball = 4.0 / 3.0 * std::numbers::pi * std::pow(0.03, 3);
-  EXPECT_LT(d.volume, ball);
-  EXPECT_GT(d.volume, 0.9 * ball);
-  for (const Vec3& v : m->vertices) EXPECT_NEAR((v - spheres[0].center).norm(), 0.03, kLinkMeshTol);
+  // The drawing holds the ball (tests/robot/test_primitive_mesh.cpp proves it face by face), and
+  // not by much.
+  EXPECT_GT(d.volume, ball);
+  EXPECT_LT(d.volume, 1.1 * ball);
+  for (const Vec3& v : m->vertices) EXPECT_GE((v - spheres[0].center).norm(), 0.03);
 }
 
 TEST(LinkMesh, ElementsAreConcatenated) {

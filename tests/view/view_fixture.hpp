@@ -83,8 +83,8 @@ class ViewTest : public TempDirTest {
   // the wrapping, GPL repair).
   static ViewLoadOptions robotOptions() {
     ViewLoadOptions o;
-    o.package_paths = {robotDir()};
-    o.use_ros_package_path = false;
+    o.robot_load.package_paths = {robotDir()};
+    o.robot_load.use_ros_package_path = false;
     o.link_solid = LinkSolid::kWalls;
     return o;
   }
