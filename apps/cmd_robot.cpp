@@ -173,13 +173,10 @@ Status writeRobotOutput(const RobotArgs& a, const std::string& path, RobotOutput
       return writeTextFile(path, jsonText(robotJson(a, robot, fit, fo, matrix), 1) + "\n");
     case RobotOutput::kUrdf:
       return writeSphereUrdf(a.urdf, path, spheres);
-    case RobotOutput::kMjcf: {
-      // <contact><exclude> for every pair the sampling disabled (MuJoCo's own filter aside).
-      const SelfCollisionPairs pairs = ignoredPairs(matrix);
-      std::vector<std::array<std::string, 2>> exclude = pairs.adjacent;
-      exclude.insert(exclude.end(), pairs.overlapping.begin(), pairs.overlapping.end());
-      return writeSphereMjcf(a.urdf, path, spheres, exclude, robotLoadOptions(a.load));
-    }
+    case RobotOutput::kMjcf:
+      // <contact><exclude> for the pairs the sampling found never in contact (pairs in contact
+      // somewhere, adjacent ones too, keep their contacts, as the geoms had them).
+      return writeSphereMjcf(a.urdf, path, spheres, neverPairs(matrix), robotLoadOptions(a.load));
     case RobotOutput::kSrdf:
       return writeSrdf(path, robot, matrix);
     case RobotOutput::kLula:

@@ -130,6 +130,10 @@ Expected<CollisionMatrix> sampleSelfCollisions(const Robot& robot,
 // (default, always, never) in `overlapping`.
 SelfCollisionPairs ignoredPairs(const CollisionMatrix& matrix);
 
+// The pairs found in collision in none of the samples ("Never"): those an MJCF's
+// <contact><exclude> may skip without losing a contact the links can make.
+std::vector<std::array<std::string, 2>> neverPairs(const CollisionMatrix& matrix);
+
 // The serial chain a planning group is made of: the path from the root to the link reached
 // through the most movable joints that are not mimic joints (ties: the link first in the
 // file), from the parent of its first movable joint to the child of its last. Nullopt when the

@@ -321,6 +321,13 @@ std::map<std::string, double> collisionSampleConfiguration(const Robot& robot, u
   return sampledConfiguration(sampledJoints(robot), seed, i);
 }
 
+std::vector<std::array<std::string, 2>> neverPairs(const CollisionMatrix& matrix) {
+  std::vector<std::array<std::string, 2>> out;
+  for (const DisabledPair& p : matrix.disabled)
+    if (p.reason == DisableReason::kNever) out.push_back({p.link1, p.link2});
+  return out;
+}
+
 SelfCollisionPairs ignoredPairs(const CollisionMatrix& matrix) {
   SelfCollisionPairs out;
   for (const DisabledPair& p : matrix.disabled)

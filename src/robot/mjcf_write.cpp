@@ -12,9 +12,11 @@
 #include <charconv>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -76,10 +78,14 @@ void collectBodies(TiXmlElement* parent, std::vector<TiXmlElement*>& out) {
 void replaceGeoms(const mjModel& m, int b, const std::string& link,
                   const std::vector<TiXmlElement*>& geoms, const std::vector<Sphere>& spheres,
                   const RobotLoadOptions& options, TiXmlElement* body) {
+  // Planes and height fields are not fitted (they are not solids): they stay.
   std::vector<TiXmlElement*> old;
-  for (size_t k = 0; k < geoms.size(); ++k)
-    if (detail::isCollisionGeom(m, m.body_geomadr[b] + static_cast<int>(k), options))
+  for (size_t k = 0; k < geoms.size(); ++k) {
+    const int g = m.body_geomadr[b] + static_cast<int>(k);
+    if (detail::isCollisionGeom(m, g, options) && m.geom_type[g] != mjGEOM_PLANE &&
+        m.geom_type[g] != mjGEOM_HFIELD)
       old.push_back(geoms[k]);
+  }
   for (size_t i = 0; i < spheres.size(); ++i) {
     TiXmlElement geom("geom");
     geom.SetAttribute("name", link + "_sphere_" + std::to_string(i));
@@ -96,6 +102,64 @@ void replaceGeoms(const mjModel& m, int b, const std::string& link,
     }
   }
   for (TiXmlElement* g : old) body->RemoveChild(g);
+}
+
+// The child elements of `parent` whose tag is one of `tags`, in document order.
+std::vector<TiXmlElement*> childElements(TiXmlElement* parent,
+                                         std::initializer_list<std::string_view> tags) {
+  std::vector<TiXmlElement*> out;
+  for (TiXmlElement* e = parent->FirstChildElement(); e != nullptr; e = e->NextSiblingElement())
+    for (std::string_view t : tags)
+      if (e->ValueStr() == t) out.push_back(e);
+  return out;
+}
+
+// MuJoCo 2.2.2 writes numbers with six significant digits (a stream's default precision):
+// body `b`'s frame, its joints, its sites and its primitive geoms get back the compiled
+// model's doubles. (A mesh geom's compiled frame includes the mesh's re-centring, which the
+// written file does not: its six digits stay. Replaced geoms are written in full anyway.)
+void restorePrecision(const mjModel& m, int b, TiXmlElement* body) {
+  if (b > 0) {
+    body->SetAttribute("pos", mjcfNumbers(m.body_pos + 3 * b, 3));
+    body->SetAttribute("quat", mjcfNumbers(m.body_quat + 4 * b, 4));
+  }
+  const std::vector<TiXmlElement*> joints = childElements(body, {"joint", "freejoint"});
+  if (static_cast<int>(joints.size()) == m.body_jntnum[b])
+    for (int k = 0; k < m.body_jntnum[b]; ++k) {
+      const int j = m.body_jntadr[b] + k;
+      TiXmlElement* e = joints[static_cast<size_t>(k)];
+      if (m.jnt_type[j] == mjJNT_FREE) continue;
+      e->SetAttribute("pos", mjcfNumbers(m.jnt_pos + 3 * j, 3));
+      if (m.jnt_type[j] != mjJNT_BALL) e->SetAttribute("axis", mjcfNumbers(m.jnt_axis + 3 * j, 3));
+      if (e->Attribute("range") != nullptr)
+        e->SetAttribute("range", mjcfNumbers(m.jnt_range + 2 * j, 2));
+      if (e->Attribute("ref") != nullptr && m.jnt_type[j] != mjJNT_BALL)
+        e->SetAttribute("ref", mjcfNumber(m.qpos0[m.jnt_qposadr[j]]));
+    }
+  const std::vector<TiXmlElement*> geoms = childElements(body, {"geom"});
+  if (static_cast<int>(geoms.size()) == m.body_geomnum[b])
+    for (int k = 0; k < m.body_geomnum[b]; ++k) {
+      const int g = m.body_geomadr[b] + k;
+      const int type = m.geom_type[g];
+      if (type == mjGEOM_MESH || type == mjGEOM_HFIELD) continue;
+      TiXmlElement* e = geoms[static_cast<size_t>(k)];
+      const int sizes = type == mjGEOM_SPHERE                                   ? 1
+                        : (type == mjGEOM_CAPSULE || type == mjGEOM_CYLINDER) ? 2
+                                                                               : 3;
+      e->RemoveAttribute("fromto");
+      e->SetAttribute("pos", mjcfNumbers(m.geom_pos + 3 * g, 3));
+      e->SetAttribute("quat", mjcfNumbers(m.geom_quat + 4 * g, 4));
+      e->SetAttribute("size", mjcfNumbers(m.geom_size + 3 * g, sizes));
+    }
+  std::vector<int> sites;
+  for (int s = 0; s < m.nsite; ++s)
+    if (m.site_bodyid[s] == b) sites.push_back(s);
+  const std::vector<TiXmlElement*> site_elements = childElements(body, {"site"});
+  if (site_elements.size() == sites.size())
+    for (size_t k = 0; k < sites.size(); ++k) {
+      site_elements[k]->SetAttribute("pos", mjcfNumbers(m.site_pos + 3 * sites[k], 3));
+      site_elements[k]->SetAttribute("quat", mjcfNumbers(m.site_quat + 4 * sites[k], 4));
+    }
 }
 
 // Body `b`'s compiled inertia as an explicit <inertial> (replacing any), when it has mass.
@@ -291,11 +355,13 @@ Expected<std::string> formatSphereMjcf(const std::string& in_robot, const std::s
                    in_robot + ": MuJoCo wrote " + std::to_string(geoms.size()) +
                        " geoms of its " + std::to_string(m.body_geomnum[b]) + " in body " +
                        std::to_string(b)};
+    restorePrecision(m, b, bodies[b]);
     const std::string name = detail::mujocoName(m, mjOBJ_BODY, b, "body");
     const auto it = listed->find(name);
     if (it != listed->end()) {
       found.insert(name);
-      if (!urdf) replaceGeoms(m, b, name, geoms, *it->second, options, bodies[b]);
+      // (From a URDF, the body's geoms are already these spheres, in six digits.)
+      replaceGeoms(m, b, name, geoms, *it->second, options, bodies[b]);
     }
     if (b > 0) writeInertial(m, b, bodies[b]);
   }
