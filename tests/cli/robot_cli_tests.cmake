@@ -233,3 +233,34 @@ cli_test(robot_render_unknown_link_spheres 4 ARGS render ${robot}/three_link.urd
          --package-path ${robot} -o ${q}/never_elbow.png
          STDERR "elbow.yml: link 'elbow' is not a link of robot 'three_link'"
          FORBID ${q}/never_elbow.png)
+
+# MJCF robots (MuJoCo): in and out, with the written model read back by eval, view and query; a
+# bad MJCF gives MuJoCo's own message with its line (exit 4) and nothing is written. Without
+# MuJoCo in the build, an .xml robot is refused with the reason (exit 3).
+set(mjcf ${robot}/mjcf/arm.xml)
+if(SPHERESET_WITH_MUJOCO)
+  cli_test(robot_mjcf 0 ARGS robot ${mjcf} --default-link-spheres 4 --quality fast
+           --collision-samples 500 -o ${work}/arm_spheres.xml -o ${work}/arm_spheres.yml --json -q
+           FILE ${work}/arm_spheres.xml
+           STDOUT "\"link\":\"wrist\".*\"covered\":true.*\"never\":[1-9]")
+  cli_test(robot_mjcf_eval_link 0 ARGS eval ${mjcf} ${work}/arm_spheres.yml --link wrist
+           --samples 1000 --segments 0 --shadow-resolution 0 STDOUT "surface covered  yes")
+  set_tests_properties(cli.robot_mjcf_eval_link PROPERTIES DEPENDS cli.robot_mjcf)
+  cli_test(robot_mjcf_view_page 0 ARGS view ${mjcf} ${work}/arm_spheres.xml
+           --html ${work}/arm_spheres.html FILE ${work}/arm_spheres.html)
+  set_tests_properties(cli.robot_mjcf_view_page PROPERTIES DEPENDS cli.robot_mjcf)
+  cli_test(robot_mjcf_group 0 ARGS robot ${mjcf} --collision-group 2 --default-link-spheres 2
+           --quality fast --collision-samples 100 -o ${work}/arm_group.json -q
+           FILE ${work}/arm_group.json)
+  cli_test(robot_mjcf_bad_group 2 ARGS robot ${mjcf} --collision-group 9 -o ${work}/never36.xml -q
+           STDERR "collision group must be from 0 to 5" FORBID ${work}/never36.xml)
+  file(WRITE ${work}/broken_mjcf.xml "<mujoco>\n<worldbody>\n<geom type='box' size='1 1'>\n</worldbody></mujoco>\n")
+  cli_test(robot_mjcf_broken 4 ARGS robot ${work}/broken_mjcf.xml -o ${work}/never37.xml -q
+           STDERR "broken_mjcf.xml: MuJoCo: .*Line number=3" FORBID ${work}/never37.xml)
+  cli_test(robot_urdf_to_mjcf 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+           --default-link-spheres 3 --quality fast --collision-samples 200
+           -o ${work}/three_spheres.xml -q FILE ${work}/three_spheres.xml)
+else()
+  cli_test(robot_mjcf_missing 3 ARGS robot ${mjcf} -o ${work}/never36.yml -q
+           STDERR "arm.xml: this build of sphereset reads no MJCF" FORBID ${work}/never36.yml)
+endif()
