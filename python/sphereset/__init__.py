@@ -47,6 +47,7 @@ from ._sphereset import (  # noqa: F401  (re-exported)
     format_sphere_urdf,
     format_spheres,
     load_robot,
+    mujoco_available,
     read_link_spheres,
     read_sphere_tree,
     read_spheres,
@@ -58,6 +59,7 @@ from ._sphereset import (  # noqa: F401  (re-exported)
     write_robot_spheres,
     write_sphere_mesh,
     write_sphere_tree,
+    write_sphere_mjcf,
     write_sphere_urdf,
     write_spheres,
 )
@@ -73,6 +75,7 @@ __all__ = [
     "write_spheres", "format_spheres", "sphere_format", "read_link_spheres", "write_link_spheres",
     "read_sphere_tree", "write_sphere_tree", "format_sphere_tree", "write_sphere_mesh",
     "load_robot", "write_robot_spheres", "write_sphere_urdf", "format_sphere_urdf",
+    "write_sphere_mjcf", "mujoco_available",
     "split_budget", "curve_volume", "Animation", "AnimateResult", "mean_value_coordinates",
     "mean_value_weights", "point_bone_weights", "skin_points", "load_animation", "animate",
     "RobotLinkFit", "RobotFitResult", "fit_robot", "robot_contacts", "trajectory_contacts",
@@ -513,11 +516,14 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
               link_spheres: Optional[Dict[str, int]] = None,
               padding: float = 0.0, link_padding: Optional[Dict[str, float]] = None,
               package_paths: Sequence[PathLike] = (), use_ros_package_path: bool = True,
+              collision_group: int = -1,
               seed: int = 1, quality: str = "default", link_solid: str = "envelope",
               link_solid_for: Optional[Dict[str, str]] = None,
               repair_options: Dict[str, Any]) -> RobotFitResult:
-    """Fits collision spheres to every link of a URDF robot, like ``sphereset robot`` (the same
-    library call, options and defaults, so the same spheres for the same seed).
+    """Fits collision spheres to every link of a URDF or MJCF (.xml, read by MuJoCo) robot, like
+    ``sphereset robot`` (the same library call, options and defaults, so the same spheres for
+    the same seed). An MJCF's collision geoms are those MuJoCo collides, or those of
+    ``collision_group`` (0-5).
 
     ``budget`` spheres over the whole robot, sphere primitives included (0:
     ``default_link_spheres`` per link not fixed by ``link_spheres``), split over the links by what lowers the total outside volume
@@ -541,7 +547,7 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
                    link_solid_for=dict(link_solid_for or {}))
     d = _core._fit_robot(os.fspath(urdf), options, dict(quality=quality, seed=seed),
                          [os.fspath(p) for p in package_paths], bool(use_ros_package_path),
-                         *_repair_args(repair_options).values())
+                         int(collision_group), *_repair_args(repair_options).values())
     d["links"] = [RobotLinkFit(**lf) for lf in d["links"]]
     return RobotFitResult(**d)
 

@@ -53,7 +53,7 @@ void bindRobotFit(py::module_& m) {
       "_fit_robot",
       [](const Path& urdf_arg, const py::dict& options, const py::dict& fit_options,
          const std::vector<std::string>& package_paths, bool use_ros_package_path,
-         const std::string& repair, const py::object& weld, bool fill, double alpha, double offset,
+         int collision_group, const std::string& repair, const py::object& weld, bool fill, double alpha, double offset,
          const std::string& openings) {
         const std::string urdf = urdf_arg.string();
         // The rows of the robot table and the fit table's quality and seed, parsed and checked
@@ -80,6 +80,7 @@ void bindRobotFit(py::module_& m) {
         RobotLoadOptions lo;
         lo.package_paths = package_paths;
         lo.use_ros_package_path = use_ros_package_path;
+        lo.mjcf_collision_group = collision_group;
         Robot robot;
         RobotFitResult r;
         {
@@ -97,7 +98,8 @@ void bindRobotFit(py::module_& m) {
         return d;
       },
       py::arg("urdf"), py::arg("options"), py::arg("fit_options"), py::arg("package_paths"),
-      py::arg("use_ros_package_path"), py::arg("repair"), py::arg("weld_tolerance"),
+      py::arg("use_ros_package_path"), py::arg("collision_group"), py::arg("repair"),
+      py::arg("weld_tolerance"),
       py::arg("fill_cavities"), py::arg("wrap_alpha"), py::arg("wrap_offset"),
       py::arg("fill_openings"));
   m.def("_robot_option_table", [] { return optionTable(robotFitOptionTable()); });

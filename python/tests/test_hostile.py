@@ -107,6 +107,8 @@ def test_every_door_gives_the_same_status_and_message(case, tmp_path):
     exe = cli_path()
     if exe is None:
         pytest.skip("the sphereset command-line tool is not available (set SPHERESET_CLI)")
+    if case.get("mujoco") and not ss.mujoco_available():
+        pytest.skip("built without MuJoCo")
     files = [str((HOSTILE / f).resolve()) for f in case["inputs"]]
     code, error_class = STATUS[case["code"]]
     out = tmp_path / "out"

@@ -287,3 +287,33 @@ def test_fit_robot_honours_ctrl_c():
     r = ss.fit_robot(urdf, link_spheres={"base_link": 1, "link1": 1, "link2": 1},
                      package_paths=[DATA / "robot"], quality="fast")
     assert r.covered
+
+
+@pytest.mark.skipif(not ss.mujoco_available(), reason="built without MuJoCo")
+def test_mjcf_robot_fit_and_written_back(cli, tmp_path):
+    """An MJCF robot (read by MuJoCo): load_robot and fit_robot take it as the command does, and
+    write_sphere_mjcf writes a model whose sphere geoms load_robot reads back as the spheres."""
+    xml = DATA / "robot" / "mjcf" / "arm.xml"
+    r = ss.load_robot(xml)
+    assert "wrist/wx" in r.links and ("finger_left", "finger_right") in r.excluded_pairs
+    j2 = next(j for j in r.joints if j["name"] == "j2")
+    assert j2["reference"] == pytest.approx(np.radians(10.0))
+    assert [g["kind"] for g in r.link_geometry("wrist")] == ["ellipsoid", "cylinder"]
+    out = tmp_path / "arm.json"
+    cli("robot", xml, "--quality", "fast", "--default-link-spheres", 3, "--collision-samples",
+        100, "-o", out, "-q")
+    fit = ss.fit_robot(xml, default_link_spheres=3, quality="fast", link_solid="walls")
+    ref = json.loads(out.read_text())
+    assert [lf.link for lf in fit.links] == [lf["link"] for lf in ref["links"]]
+    assert fit.covered
+    model = tmp_path / "arm_spheres.xml"
+    ss.write_sphere_mjcf(xml, model, fit.spheres)
+    back = ss.load_robot(model)
+    for link, spheres in fit.spheres.items():
+        kinds = [g["kind"] for g in back.link_geometry(link)]
+        assert kinds == ["sphere"] * len(spheres), link
+    with pytest.raises(ss.InvalidArgumentError, match="no body named 'elbow'"):
+        ss.write_sphere_mjcf(xml, tmp_path / "never.xml", {"elbow": np.zeros((1, 4))})
+    assert not (tmp_path / "never.xml").exists()
+    with pytest.raises(ss.InvalidDataError, match="composites are not read"):
+        ss.load_robot(DATA.parent / "hostile" / "mjcf_composite.xml")

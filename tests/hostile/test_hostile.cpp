@@ -193,6 +193,7 @@ TEST(Hostile, EveryCaseEndsInItsStatusAndMessage) {
 #ifndef SPHERESET_TEST_REPAIR
     if (c.value("repair", false)) continue;
 #endif
+    if (c.value("mujoco", false) && !mujocoAvailable()) continue;
     const Status st = runCase(c);
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().code, codeNamed(c.at("code")));

@@ -13,6 +13,7 @@
 
 #include "robot/mujoco_oracle.hpp"
 #include "robot/robot_data.hpp"
+#include "sphereset/limits.hpp"
 #include "sphereset/robot.hpp"
 #include "sphereset/robot_collision.hpp"
 #include "test_support.hpp"
@@ -216,6 +217,18 @@ TEST(Mjcf, BadFilesAreRefusedWithTheirReason) {
   }
   expectError(loadRobot(tempPath("absent.xml").string()), ErrorCode::kUnreadable, "absent.xml",
               "cannot open the MJCF file");
+}
+
+TEST(Mjcf, TenThousandBodiesAreRefusedWithoutACrash) {
+  std::string text = "<mujoco><worldbody>";
+  for (int i = 0; i <= limits::kMaxMjcfBodies; ++i) text += "<body><geom size='.1'/></body>";
+  text += "</worldbody></mujoco>";
+  const std::string path = writeModel("many.xml", text);
+  auto r = loadRobot(path);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().code, ErrorCode::kInvalidData);
+  EXPECT_NE(r.error().message.find(path), std::string::npos) << r.error().message;
+  std::filesystem::remove(path);
 }
 
 TEST(Mjcf, DeepNestingIsRefusedBeforeMuJoCo) {
