@@ -14,7 +14,7 @@ root=$PWD
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 seconds=${FUZZ_SECONDS:-6}
 seed=${FUZZ_SEED:-1}
-targets=${FUZZ_TARGETS:-"off ply stl obj spheres_txt spheres_json spheres_sph spheres_yaml tree repair urdf animation trajectory point_cloud view_request planner"}
+targets=${FUZZ_TARGETS:-"off ply stl obj spheres_txt spheres_json spheres_sph spheres_yaml tree repair urdf mjcf animation trajectory point_cloud view_request planner"}
 
 launcher=()
 if command -v ccache > /dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
@@ -34,6 +34,7 @@ seed_data() {
   case $target in
     stl) cp "$root"/tests/data/*.stl "$dir"/ 2> /dev/null || true ;;
     spheres_yaml) cp "$root"/tests/data/*.yml "$dir"/ 2> /dev/null || true ;;
+    mjcf) cp "$root"/tests/data/robot/mjcf/*.xml "$root"/tests/hostile/mjcf_*.xml "$dir"/ ;;
     tree)
       for f in "$root"/tests/data/*.yml; do
         [ -e "$f" ] && { printf '\003'; cat "$f"; } > "$dir/$(basename "$f").tree"

@@ -11,6 +11,7 @@ build=${BUILD_DIR:-build}
 # are not part of the tests: off here (bench/*.sh turn them on; CI builds them after the tests).
 # Later arguments ("$@") override these.
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DSPHERESET_BUILD_TESTS=ON \
-  -DSPHERESET_BUILD_BENCH=OFF -DSPHERESET_VIEW_PAGE=ON -USPHERESET_BUILD_PYTHON "$@"
+  -DSPHERESET_BUILD_BENCH=OFF -DSPHERESET_VIEW_PAGE=ON -DSPHERESET_WITH_MUJOCO=ON \
+  -USPHERESET_BUILD_PYTHON "$@"
 cmake --build "$build" -j "$(nproc)"
 ctest --test-dir "$build" -j "$(nproc)" --output-on-failure
