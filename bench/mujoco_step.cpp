@@ -1,13 +1,16 @@
 // mj_step of a robot's sphere model against its mesh model, in a scene with contacts: the
-// robot, a table beside it and a floor, released from its reference pose under gravity so that
-// it falls onto the table and onto itself. One CSV row per model (bench/mujoco_step.sh):
-// name, variant, collision geoms, steps, seconds, microseconds per step, mean contacts per
-// step, the share of steps with a contact between two robot bodies.
+// robot, a table beside it and a floor; the mesh model released from a start pose under gravity
+// falls onto the table and folds onto itself, and one mj_step of each model is timed from each
+// state of that fall (the same states for both). One CSV row per model (bench/mujoco_step.sh):
+// name, variant, collision geoms, steps, seconds, microseconds per step, microseconds of
+// collision detection alone (mj_collision) per step, mean contacts per step, the share of steps with a contact against the table, and with a contact between two
+// robot bodies that are not welded together and not parent and child (self-contact).
 //   mujoco_step --header
-//   mujoco_step NAME MESH_MODEL SPHERE_MODEL STEPS TABLE_X TABLE_Z
+//   mujoco_step NAME MESH_MODEL SPHERE_MODEL STEPS TABLE_X TABLE_Z [JOINT=VALUE,...]
 //   mujoco_step --mesh-model ROBOT.urdf PACKAGE_DIR OUT.xml   (the URDF as MuJoCo reads it)
 #include <mujoco/mujoco.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +18,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "sphereset/robot.hpp"
 
@@ -46,42 +50,107 @@ mjModel* withTable(const std::string& path, double table_x, double table_z) {
   return m;
 }
 
-void run(const std::string& name, const char* variant, const std::string& path, int steps,
-         double table_x, double table_z) {
-  mjModel* m = withTable(path, table_x, table_z);
-  if (m == nullptr) std::exit(1);
+// Whether a contact joins two robot bodies that are neither welded together nor parent and
+// child (those touch at every joint).
+bool selfContact(const mjModel* m, const mjContact& c) {
+  const int a = m->geom_bodyid[c.geom1], b = m->geom_bodyid[c.geom2];
+  if (a == 0 || b == 0 || m->body_weldid[a] == 0 || m->body_weldid[b] == 0) return false;
+  const int wa = m->body_weldid[a], wb = m->body_weldid[b];
+  return wa != wb && m->body_weldid[m->body_parentid[wa]] != wb &&
+         m->body_weldid[m->body_parentid[wb]] != wa;
+}
+
+// The start pose: qpos0 with the hinge and slide joints of "J=V,..." set.
+void startPose(const mjModel* m, mjData* d, const std::string& pose) {
+  mj_resetData(m, d);
+  std::stringstream in(pose);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    const size_t eq = item.find('=');
+    if (eq == std::string::npos) continue;
+    const int j = mj_name2id(m, mjOBJ_JOINT, item.substr(0, eq).c_str());
+    if (j >= 0) d->qpos[m->jnt_qposadr[j]] = std::atof(item.c_str() + eq + 1);
+  }
+}
+
+// The states of the mesh model's own fall from the start pose (qpos, qvel per step).
+struct Trajectory {
+  std::vector<mjtNum> qpos, qvel;
+  int steps = 0;
+};
+
+Trajectory fall(const mjModel* m, int steps, const std::string& pose) {
+  mjData* d = mj_makeData(m);
+  startPose(m, d, pose);
+  Trajectory t;
+  t.steps = steps;
+  for (int i = 0; i < steps; ++i) {
+    t.qpos.insert(t.qpos.end(), d->qpos, d->qpos + m->nq);
+    t.qvel.insert(t.qvel.end(), d->qvel, d->qvel + m->nv);
+    mj_step(m, d);
+  }
+  mj_deleteData(d);
+  return t;
+}
+
+// One mj_step from each state of `t`: the same states for both models, so that the times
+// compare the collision work of the same poses and not two diverging falls.
+void run(const std::string& name, const char* variant, const mjModel* m, const Trajectory& t) {
   mjData* d = mj_makeData(m);
   int collision_geoms = 0;
   for (int g = 0; g < m->ngeom; ++g)
     collision_geoms += (m->geom_contype[g] != 0 || m->geom_conaffinity[g] != 0) ? 1 : 0;
-  for (int i = 0; i < 20; ++i) mj_step(m, d);  // warm-up
-  mj_resetData(m, d);
-  double contacts = 0.0;
-  int self_steps = 0;
-  const auto t0 = std::chrono::steady_clock::now();
-  for (int i = 0; i < steps; ++i) {
+  const int table = mj_name2id(m, mjOBJ_GEOM, "bench_table");
+  auto set = [&](int i) {
+    d->time = 0.0;
+    std::copy_n(t.qpos.begin() + static_cast<std::ptrdiff_t>(i) * m->nq, m->nq, d->qpos);
+    std::copy_n(t.qvel.begin() + static_cast<std::ptrdiff_t>(i) * m->nv, m->nv, d->qvel);
+  };
+  for (int i = 0; i < std::min(t.steps, 50); ++i) {  // warm-up
+    set(i);
     mj_step(m, d);
-    contacts += d->ncon;
-    bool self = false;
-    for (int c = 0; c < d->ncon && !self; ++c)
-      self = m->geom_bodyid[d->contact[c].geom1] != 0 && m->geom_bodyid[d->contact[c].geom2] != 0;
-    self_steps += self ? 1 : 0;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = 0; i < t.steps; ++i) {
+    set(i);
+    mj_step(m, d);
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("%s,%s,%d,%d,%.4f,%.2f,%.2f,%.3f\n", name.c_str(), variant, collision_geoms, steps,
-              seconds, 1e6 * seconds / steps, contacts / steps,
-              static_cast<double>(self_steps) / steps);
+  // The contacts, and the collision detection alone (mj_collision after mj_kinematics), in a
+  // second pass (the timed one above is mj_step alone).
+  double contacts = 0.0, collision_seconds = 0.0;
+  int table_steps = 0, self_steps = 0;
+  for (int i = 0; i < t.steps; ++i) {
+    set(i);
+    mj_kinematics(m, d);
+    const auto c0 = std::chrono::steady_clock::now();
+    mj_collision(m, d);
+    collision_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
+    contacts += d->ncon;
+    bool on_table = false, self = false;
+    for (int c = 0; c < d->ncon; ++c) {
+      on_table = on_table || d->contact[c].geom1 == table || d->contact[c].geom2 == table;
+      self = self || selfContact(m, d->contact[c]);
+    }
+    table_steps += on_table ? 1 : 0;
+    self_steps += self ? 1 : 0;
+  }
+  std::printf("%s,%s,%d,%d,%.4f,%.2f,%.2f,%.2f,%.3f,%.3f\n", name.c_str(), variant,
+              collision_geoms, t.steps, seconds, 1e6 * seconds / t.steps,
+              1e6 * collision_seconds / t.steps, contacts / t.steps,
+              static_cast<double>(table_steps) / t.steps, static_cast<double>(self_steps) / t.steps);
   mj_deleteData(d);
-  mj_deleteModel(m);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc == 2 && std::string(argv[1]) == "--header") {
-    std::puts("robot,model,collision_geoms,steps,seconds,us_per_step,contacts_per_step,"
-              "self_contact_share");
+    std::puts("robot,model,collision_geoms,steps,seconds,us_per_step,collision_us_per_step,"
+              "contacts_per_step,"
+              "table_contact_share,self_contact_share");
     return 0;
   }
   if (argc == 5 && std::string(argv[1]) == "--mesh-model") {
@@ -91,13 +160,25 @@ int main(int argc, char** argv) {
     if (!st) std::fprintf(stderr, "mujoco_step: %s\n", st.error().message.c_str());
     return st ? 0 : 1;
   }
-  if (argc != 7) {
-    std::fprintf(stderr, "usage: mujoco_step NAME MESH_MODEL SPHERE_MODEL STEPS TABLE_X TABLE_Z\n");
+  if (argc != 7 && argc != 8) {
+    std::fprintf(stderr, "usage: mujoco_step NAME MESH_MODEL SPHERE_MODEL STEPS TABLE_X TABLE_Z "
+                         "[JOINT=VALUE,...]\n");
     return 2;
   }
   const int steps = std::atoi(argv[4]);
   const double x = std::atof(argv[5]), z = std::atof(argv[6]);
-  run(argv[1], "meshes", argv[2], steps, x, z);
-  run(argv[1], "spheres", argv[3], steps, x, z);
+  const std::string pose = argc == 8 ? argv[7] : "";
+  mjModel* meshes = withTable(argv[2], x, z);
+  mjModel* spheres = withTable(argv[3], x, z);
+  if (meshes == nullptr || spheres == nullptr) return 1;
+  if (meshes->nq != spheres->nq || meshes->nv != spheres->nv) {
+    std::fprintf(stderr, "mujoco_step: the two models have different joints\n");
+    return 1;
+  }
+  const Trajectory t = fall(meshes, steps, pose);
+  run(argv[1], "meshes", meshes, t);
+  run(argv[1], "spheres", spheres, t);
+  mj_deleteModel(meshes);
+  mj_deleteModel(spheres);
   return 0;
 }

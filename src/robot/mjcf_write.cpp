@@ -247,7 +247,8 @@ Expected<Start> urdfStart(const std::string& in, const std::vector<LinkSpheres>&
       TiXmlElement* g = c->FirstChildElement("geometry");
       TiXmlElement* mesh = g ? g->FirstChildElement("mesh") : nullptr;
       if (mesh != nullptr && k < it->second->geometry.size())
-        mesh->SetAttribute("filename", it->second->geometry[k].mesh_path);
+        mesh->SetAttribute("filename",
+                           fs::absolute(it->second->geometry[k].mesh_path).lexically_normal().string());
     }
   }
   while (TiXmlElement* old = root->FirstChildElement("mujoco")) root->RemoveChild(old);
