@@ -109,11 +109,13 @@ Expected<SolidInput> loadSolid(const MeshArgs& a) {
 // --joint-positions j1=v1,j2=v2 (radians or metres), for joints of the robot.
 void addRobotLoadArgs(CLI::App* cmd, RobotLoadArgs* a, const std::string& when) {
   cmd->add_option("--package-path", a->package_paths,
-                  when + "folder searched for package://NAME/ paths (repeatable; then "
-                         "ROS_PACKAGE_PATH)");
+                  when +
+                      "folder searched for package://NAME/ paths (repeatable; then "
+                      "ROS_PACKAGE_PATH)");
   cmd->add_option("--collision-group", a->collision_group,
-                  when + "an MJCF's collision geoms are those of this group (0-5) instead of those "
-                         "MuJoCo collides (non-zero contype or conaffinity)");
+                  when +
+                      "an MJCF's collision geoms are those of this group (0-5) instead of those "
+                      "MuJoCo collides (non-zero contype or conaffinity)");
 }
 
 RobotLoadOptions robotLoadOptions(const RobotLoadArgs& a) {

@@ -26,8 +26,8 @@ struct EvalArgs {
   MeshArgs mesh;
   std::string spheres_path, link;
   RobotLoadArgs load;  // MESH a robot: where its package:// meshes are, its collision group
-  TableArgs eval;                          // the rows of evalOptionTable()
-  TableArgs robot;                         // the robot table's link_solid(_for) rows
+  TableArgs eval;      // the rows of evalOptionTable()
+  TableArgs robot;     // the robot table's link_solid(_for) rows
   bool json = false;
 };
 

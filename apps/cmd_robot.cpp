@@ -1,7 +1,7 @@
-// sphereset robot: collision spheres for every link of a robot described by a URDF or an MJCF, in the link
-// frames (fitRobot, robot_fit.hpp, does the fitting), and the link pairs a planner may skip,
-// found by sampling the joint space (sampleSelfCollisions, robot_collision.hpp). Outputs, one or
-// more (-o repeated), by the name's ending: cuRobo's YAML with the self-collision ignore list,
+// sphereset robot: collision spheres for every link of a robot described by a URDF or an MJCF, in
+// the link frames (fitRobot, robot_fit.hpp, does the fitting), and the link pairs a planner may
+// skip, found by sampling the joint space (sampleSelfCollisions, robot_collision.hpp). Outputs, one
+// or more (-o repeated), by the name's ending: cuRobo's YAML with the self-collision ignore list,
 // Lula's robot description, MoveIt's SRDF, the URDF with sphere collisions, the robot as an MJCF
 // with sphere geoms (MuJoCo), a JSON report.
 #include <algorithm>
@@ -307,15 +307,16 @@ Command registerRobot(CLI::App& app) {
       app.add_subcommand("robot", "Fit collision spheres to every link of a URDF or MJCF robot");
   cmd->add_option("urdf", a->urdf, "Robot description (.urdf, or .xml: an MJCF read by MuJoCo)")
       ->required();
-  cmd->add_option("-o,--output", a->outputs,
-                  "Output, repeatable (one fit, several files), by the name's ending: "
-                  ".yml/.yaml (cuRobo collision_spheres and self_collision_ignore), "
-                  ".lula.yml/.lula.yaml (Lula robot description), .srdf (MoveIt: chain group "
-                  "and disable_collisions), .urdf (the input with sphere collisions), .xml (MJCF: the "
-                  "robot with sphere geoms, as MuJoCo loads it, and <contact><exclude> for the "
-                  "pairs found never in contact), .json "
-                  "(per link, and the self-collision pairs) or .html (a page of the robot and "
-                  "its spheres with their certificates, as `sphereset view --html` writes it)")
+  cmd->add_option(
+         "-o,--output", a->outputs,
+         "Output, repeatable (one fit, several files), by the name's ending: "
+         ".yml/.yaml (cuRobo collision_spheres and self_collision_ignore), "
+         ".lula.yml/.lula.yaml (Lula robot description), .srdf (MoveIt: chain group "
+         "and disable_collisions), .urdf (the input with sphere collisions), .xml (MJCF: the "
+         "robot with sphere geoms, as MuJoCo loads it, and <contact><exclude> for the "
+         "pairs found never in contact), .json "
+         "(per link, and the self-collision pairs) or .html (a page of the robot and "
+         "its spheres with their certificates, as `sphereset view --html` writes it)")
       ->required()
       ->allow_extra_args(false);
   cmd->add_option("--joint-positions", a->joint_positions,

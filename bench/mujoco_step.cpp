@@ -3,8 +3,9 @@
 // falls onto the table and folds onto itself, and one mj_step of each model is timed from each
 // state of that fall (the same states for both). One CSV row per model (bench/mujoco_step.sh):
 // name, variant, collision geoms, steps, seconds, microseconds per step, microseconds of
-// collision detection alone (mj_collision) per step, mean contacts per step, the share of steps with a contact against the table, and with a contact between two
-// robot bodies that are not welded together and not parent and child (self-contact).
+// collision detection alone (mj_collision) per step, mean contacts per step, the share of steps
+// with a contact against the table, and with a contact between two robot bodies that are not welded
+// together and not parent and child (self-contact).
 //   mujoco_step --header
 //   mujoco_step NAME MESH_MODEL SPHERE_MODEL STEPS TABLE_X TABLE_Z [JOINT=VALUE,...]
 //   mujoco_step --mesh-model ROBOT.urdf PACKAGE_DIR OUT.xml   (the URDF as MuJoCo reads it)
@@ -41,7 +42,8 @@ mjModel* withTable(const std::string& path, double table_x, double table_z) {
                 "<geom name=\"bench_floor\" type=\"plane\" size=\"3 3 0.1\" pos=\"0 0 -0.5\"/>",
                 table_x, table_z - 0.02);
   xml.insert(at, table);
-  const fs::path scene = fs::path(path).parent_path() / (".bench_scene_" + fs::path(path).filename().string());
+  const fs::path scene =
+      fs::path(path).parent_path() / (".bench_scene_" + fs::path(path).filename().string());
   std::ofstream(scene) << xml;
   char error[1024] = "";
   mjModel* m = mj_loadXML(scene.c_str(), nullptr, error, sizeof error);
@@ -137,10 +139,10 @@ void run(const std::string& name, const char* variant, const mjModel* m, const T
     table_steps += on_table ? 1 : 0;
     self_steps += self ? 1 : 0;
   }
-  std::printf("%s,%s,%d,%d,%.4f,%.2f,%.2f,%.2f,%.3f,%.3f\n", name.c_str(), variant,
-              collision_geoms, t.steps, seconds, 1e6 * seconds / t.steps,
-              1e6 * collision_seconds / t.steps, contacts / t.steps,
-              static_cast<double>(table_steps) / t.steps, static_cast<double>(self_steps) / t.steps);
+  std::printf("%s,%s,%d,%d,%.4f,%.2f,%.2f,%.2f,%.3f,%.3f\n", name.c_str(), variant, collision_geoms,
+              t.steps, seconds, 1e6 * seconds / t.steps, 1e6 * collision_seconds / t.steps,
+              contacts / t.steps, static_cast<double>(table_steps) / t.steps,
+              static_cast<double>(self_steps) / t.steps);
   mj_deleteData(d);
 }
 
@@ -148,9 +150,10 @@ void run(const std::string& name, const char* variant, const mjModel* m, const T
 
 int main(int argc, char** argv) {
   if (argc == 2 && std::string(argv[1]) == "--header") {
-    std::puts("robot,model,collision_geoms,steps,seconds,us_per_step,collision_us_per_step,"
-              "contacts_per_step,"
-              "table_contact_share,self_contact_share");
+    std::puts(
+        "robot,model,collision_geoms,steps,seconds,us_per_step,collision_us_per_step,"
+        "contacts_per_step,"
+        "table_contact_share,self_contact_share");
     return 0;
   }
   if (argc == 5 && std::string(argv[1]) == "--mesh-model") {
@@ -161,8 +164,9 @@ int main(int argc, char** argv) {
     return st ? 0 : 1;
   }
   if (argc != 7 && argc != 8) {
-    std::fprintf(stderr, "usage: mujoco_step NAME MESH_MODEL SPHERE_MODEL STEPS TABLE_X TABLE_Z "
-                         "[JOINT=VALUE,...]\n");
+    std::fprintf(stderr,
+                 "usage: mujoco_step NAME MESH_MODEL SPHERE_MODEL STEPS TABLE_X TABLE_Z "
+                 "[JOINT=VALUE,...]\n");
     return 2;
   }
   const int steps = std::atoi(argv[4]);

@@ -1,6 +1,7 @@
-// Robot descriptions (URDF, and MJCF through MuJoCo where the build has it): the links with their collision geometry in the link frame, the
-// joint tree, each link's geometry as one mesh, and forward kinematics. Plain data and free
-// functions; the URDF parser (urdfdom) stays behind this header.
+// Robot descriptions (URDF, and MJCF through MuJoCo where the build has it): the links with their
+// collision geometry in the link frame, the joint tree, each link's geometry as one mesh, and
+// forward kinematics. Plain data and free functions; the URDF parser (urdfdom) stays behind this
+// header.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -46,7 +47,7 @@ struct LinkGeometry {
   Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();  // element frame in the link frame
   Vec3 box_size = Vec3::Zero();  // kBox: full edge lengths along x, y, z, centred on the origin
   double radius = 0.0;           // kCylinder, kSphere, kCapsule
-  double length = 0.0;  // kCylinder, kCapsule (between the caps' centres): along z, centred
+  double length = 0.0;        // kCylinder, kCapsule (between the caps' centres): along z, centred
   Vec3 radii = Vec3::Zero();  // kEllipsoid: semi-axes along x, y, z
   // kTriangles: the mesh itself (an MJCF mesh as MuJoCo compiled it: scaled and re-centred into
   // the geom's frame), shared by the geoms that use it.
@@ -163,11 +164,11 @@ Expected<SolidInput> linkSolid(const RobotLink& link, const RepairOptions& optio
 
 // A configuration of the robot from the values a user gave (joint -> radians or metres):
 // every joint's value, with joints not given at their reference (0 in a URDF), revolute and
-// prismatic values clamped to their limits, and mimic joints following their leaders. Errors (kInvalidArgument): a name
-// that is not a joint of the robot, a value that is not a finite number, a value for a mimic
-// joint that differs from what its leader gives; kInvalidData: a mimic of a joint that does not
-// exist, or mimics in a cycle. `notes` says what was changed ("joint 'joint1': 100 is beyond
-// its upper limit 2.97, clamped"), one line each, for the doors to show as warnings.
+// prismatic values clamped to their limits, and mimic joints following their leaders. Errors
+// (kInvalidArgument): a name that is not a joint of the robot, a value that is not a finite number,
+// a value for a mimic joint that differs from what its leader gives; kInvalidData: a mimic of a
+// joint that does not exist, or mimics in a cycle. `notes` says what was changed ("joint 'joint1':
+// 100 is beyond its upper limit 2.97, clamped"), one line each, for the doors to show as warnings.
 struct JointState {
   std::map<std::string, double> values;  // every joint of the robot
   std::vector<std::string> notes;

@@ -76,8 +76,8 @@ struct ViewScene {
   // Robots: the robot, the joint values a user set (jointState completes them), every joint's
   // value, and the links of the sphere file in its order (saved with the solids' sets).
   std::shared_ptr<const Robot> robot;
-  std::string urdf_path;           // the robot's description (URDF or MJCF)
-  RobotLoadOptions robot_load;     // how it was read (an MJCF save reads it again)
+  std::string urdf_path;        // the robot's description (URDF or MJCF)
+  RobotLoadOptions robot_load;  // how it was read (an MJCF save reads it again)
   std::map<std::string, double> joint_input;
   std::map<std::string, double> joint_values;
   std::vector<LinkSpheres> file_links;
@@ -96,8 +96,8 @@ struct ViewLoadOptions {
   LinkSolid link_solid = LinkSolid::kEnvelope;  // a link's solid, as the robot command fits it
   std::map<std::string, LinkSolid> link_solid_for;  // link -> its solid instead of link_solid
   RobotLoadOptions robot_load;  // a URDF's package:// folders, an MJCF's collision group
-  int level = -1;      // a tree's level shown first; -1: the leaves
-  std::string output;  // where saves go; empty: the sphere file itself
+  int level = -1;               // a tree's level shown first; -1: the leaves
+  std::string output;           // where saves go; empty: the sphere file itself
   // For a page file (--html): no save path is set up or checked (a save is refused).
   bool page_file = false;
 };

@@ -213,8 +213,7 @@ geometry when a link has none), joints, forward kinematics.)doc")
       "Reads a URDF and resolves its mesh paths (relative, absolute, file://, package:// through "
       "package_paths then ROS_PACKAGE_PATH), or an MJCF (.xml) through MuJoCo: its collision "
       "geoms are those MuJoCo collides, or those of collision_group (0-5).");
-  m.def("mujoco_available", &mujocoAvailable,
-        "Whether this build reads and writes MJCF (MuJoCo).");
+  m.def("mujoco_available", &mujocoAvailable, "Whether this build reads and writes MJCF (MuJoCo).");
 
   m.def(
       "write_robot_spheres",

@@ -53,8 +53,8 @@ void bindRobotFit(py::module_& m) {
       "_fit_robot",
       [](const Path& urdf_arg, const py::dict& options, const py::dict& fit_options,
          const std::vector<std::string>& package_paths, bool use_ros_package_path,
-         int collision_group, const std::string& repair, const py::object& weld, bool fill, double alpha, double offset,
-         const std::string& openings) {
+         int collision_group, const std::string& repair, const py::object& weld, bool fill,
+         double alpha, double offset, const std::string& openings) {
         const std::string urdf = urdf_arg.string();
         // The rows of the robot table and the fit table's quality and seed, parsed and checked
         // by the library (its messages) before anything is read.
@@ -99,9 +99,8 @@ void bindRobotFit(py::module_& m) {
       },
       py::arg("urdf"), py::arg("options"), py::arg("fit_options"), py::arg("package_paths"),
       py::arg("use_ros_package_path"), py::arg("collision_group"), py::arg("repair"),
-      py::arg("weld_tolerance"),
-      py::arg("fill_cavities"), py::arg("wrap_alpha"), py::arg("wrap_offset"),
-      py::arg("fill_openings"));
+      py::arg("weld_tolerance"), py::arg("fill_cavities"), py::arg("wrap_alpha"),
+      py::arg("wrap_offset"), py::arg("fill_openings"));
   m.def("_robot_option_table", [] { return optionTable(robotFitOptionTable()); });
   m.def(
       "_sample_self_collisions",

@@ -186,10 +186,9 @@ constexpr int64_t kMinProgressBlock = 256;
 // number of threads), in blocks between progress calls. A sample that cannot be posed is an
 // error naming the first such sample, never a sample skipped: a skipped sample would make pairs
 // that collide "Never".
-Expected<std::vector<int64_t>> countCollisions(const Robot& robot, const Participants& who,
-                                               int samples, uint64_t seed,
-                                               const std::function<void(const RobotProgress&)>&
-                                                   progress) {
+Expected<std::vector<int64_t>> countCollisions(
+    const Robot& robot, const Participants& who, int samples, uint64_t seed,
+    const std::function<void(const RobotProgress&)>& progress) {
   const std::vector<const RobotJoint*> joints = sampledJoints(robot);
   const PairIndex pair_index(who);
   tbb::enumerable_thread_specific<std::vector<int64_t>> local(

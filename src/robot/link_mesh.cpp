@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "sphereset/load.hpp"
 #include "robot/primitive_mesh.hpp"
+#include "sphereset/load.hpp"
 #include "sphereset/robot.hpp"
 
 namespace sphereset {

@@ -7,6 +7,8 @@
 // about the axis through its anchor (hinge) or slides along it, by qpos − qpos0. Reference for
 // the pairs: mj_collision's filter (engine_collision_driver.c): bodies welded together or to a
 // welded parent, contype/conaffinity masks that never match, and <contact><exclude>.
+#include "robot/mjcf.hpp"
+
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
@@ -20,7 +22,6 @@
 #include <utility>
 #include <vector>
 
-#include "robot/mjcf.hpp"
 #include "robot/mujoco_model.hpp"
 #include "robot/xml_text.hpp"
 #include "sphereset/limits.hpp"
@@ -38,7 +39,8 @@ namespace fs = std::filesystem;
 Eigen::Isometry3d mjPose(const mjtNum* pos, const mjtNum* quat) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.translation() = Vec3(pos[0], pos[1], pos[2]);
-  t.linear() = Eigen::Quaterniond(quat[0], quat[1], quat[2], quat[3]).normalized().toRotationMatrix();
+  t.linear() =
+      Eigen::Quaterniond(quat[0], quat[1], quat[2], quat[3]).normalized().toRotationMatrix();
   return t;
 }
 
@@ -49,8 +51,7 @@ std::shared_ptr<const Mesh> compiledMesh(const mjModel& m, int id) {
   const int f0 = m.mesh_faceadr[id], nf = m.mesh_facenum[id];
   mesh->vertices.reserve(nv);
   for (int v = v0; v < v0 + nv; ++v)
-    mesh->vertices.emplace_back(m.mesh_vert[3 * v], m.mesh_vert[3 * v + 1],
-                                m.mesh_vert[3 * v + 2]);
+    mesh->vertices.emplace_back(m.mesh_vert[3 * v], m.mesh_vert[3 * v + 1], m.mesh_vert[3 * v + 2]);
   mesh->triangles.reserve(nf);
   for (int f = f0; f < f0 + nf; ++f)
     mesh->triangles.push_back({m.mesh_face[3 * f], m.mesh_face[3 * f + 1], m.mesh_face[3 * f + 2]});
@@ -164,13 +165,13 @@ bool filteredPair(const mjModel& m, int a, int b, const std::vector<std::vector<
 Expected<Robot> robotFromModel(const mjModel& m, const std::string& path,
                                const RobotLoadOptions& options) {
   if (m.nbody > limits::kMaxMjcfBodies || m.ngeom > limits::kMaxMjcfGeoms)
-    return Error{ErrorCode::kInvalidData,
-                 path + ": " + std::to_string(m.nbody) + " bodies and " + std::to_string(m.ngeom) +
-                     " geoms (read up to " + std::to_string(limits::kMaxMjcfBodies) + " and " +
-                     std::to_string(limits::kMaxMjcfGeoms) + ")"};
+    return Error{ErrorCode::kInvalidData, path + ": " + std::to_string(m.nbody) + " bodies and " +
+                                              std::to_string(m.ngeom) + " geoms (read up to " +
+                                              std::to_string(limits::kMaxMjcfBodies) + " and " +
+                                              std::to_string(limits::kMaxMjcfGeoms) + ")"};
   Robot robot;
   robot.name = m.names != nullptr && m.names[0] != '\0' ? std::string(m.names)
-                                                       : fs::path(path).stem().string();
+                                                        : fs::path(path).stem().string();
   std::vector<std::string> names(m.nbody);
   for (int b = 0; b < m.nbody; ++b) names[b] = mujocoName(m, mjOBJ_BODY, b, "body");
   robot.root = names[0];
@@ -210,7 +211,8 @@ Expected<Robot> robotFromModel(const mjModel& m, const std::string& path,
     for (int b = a + 1; b < m.nbody; ++b)
       if (!collision[a].empty() && !collision[b].empty() &&
           filteredPair(m, a, b, collision, options.mjcf_collision_group >= 0))
-        robot.excluded_pairs.push_back({robot.links[link_of[a]].name, robot.links[link_of[b]].name});
+        robot.excluded_pairs.push_back(
+            {robot.links[link_of[a]].name, robot.links[link_of[b]].name});
   return robot;
 }
 

@@ -36,8 +36,9 @@ std::string noMujocoMessage(const std::string& path) {
 Status checkMjcfText(const std::string& path, const std::string& xml, const std::string& dir) {
   if (xml.find("<composite") != std::string::npos)
     return Error{ErrorCode::kInvalidData,
-                 path + ": a <composite> element: composites are not read (write their bodies "
-                        "out, e.g. with MuJoCo's mj_saveLastXML)"};
+                 path +
+                     ": a <composite> element: composites are not read (write their bodies "
+                     "out, e.g. with MuJoCo's mj_saveLastXML)"};
   for (const char* side : {"width", "height", "nrow", "ncol"})
     for (const std::string& v : attributeValues(xml, side)) {
       char* end = nullptr;
@@ -67,10 +68,10 @@ Status checkMjcfText(const std::string& path, const std::string& xml, const std:
                      path + ": file=\"" + file + "\" names " + c.string() + ", not a file"};
       const auto bytes = fs::file_size(c, ec);
       if (!ec && bytes > static_cast<uintmax_t>(limits::kMaxMjcfFileBytes))
-        return Error{ErrorCode::kInvalidData,
-                     path + ": file=\"" + file + "\" has " + std::to_string(bytes) +
-                         " bytes (files an MJCF names are read up to " +
-                         std::to_string(limits::kMaxMjcfFileBytes) + ")"};
+        return Error{ErrorCode::kInvalidData, path + ": file=\"" + file + "\" has " +
+                                                  std::to_string(bytes) +
+                                                  " bytes (files an MJCF names are read up to " +
+                                                  std::to_string(limits::kMaxMjcfFileBytes) + ")"};
     }
   }
   return {};

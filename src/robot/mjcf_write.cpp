@@ -143,9 +143,9 @@ void restorePrecision(const mjModel& m, int b, TiXmlElement* body) {
       const int type = m.geom_type[g];
       if (type == mjGEOM_MESH || type == mjGEOM_HFIELD) continue;
       TiXmlElement* e = geoms[static_cast<size_t>(k)];
-      const int sizes = type == mjGEOM_SPHERE                                   ? 1
+      const int sizes = type == mjGEOM_SPHERE                                 ? 1
                         : (type == mjGEOM_CAPSULE || type == mjGEOM_CYLINDER) ? 2
-                                                                               : 3;
+                                                                              : 3;
       e->RemoveAttribute("fromto");
       e->SetAttribute("pos", mjcfNumbers(m.geom_pos + 3 * g, 3));
       e->SetAttribute("quat", mjcfNumbers(m.geom_quat + 4 * g, 4));
@@ -201,8 +201,8 @@ void relocateAssets(TiXmlElement* root, const fs::path& model_dir, const fs::pat
         fs::path found = file;
         if (!file.is_absolute()) {
           found = model_dir / dirs[own] / file;
-          for (const fs::path& c : {model_dir / dirs[own] / file, model_dir / dirs["assetdir"] / file,
-                                    model_dir / file})
+          for (const fs::path& c : {model_dir / dirs[own] / file,
+                                    model_dir / dirs["assetdir"] / file, model_dir / file})
             if (fs::exists(c, ec)) {
               found = c;
               break;
@@ -247,8 +247,9 @@ Expected<Start> urdfStart(const std::string& in, const std::vector<LinkSpheres>&
       TiXmlElement* g = c->FirstChildElement("geometry");
       TiXmlElement* mesh = g ? g->FirstChildElement("mesh") : nullptr;
       if (mesh != nullptr && k < it->second->geometry.size())
-        mesh->SetAttribute("filename",
-                           fs::absolute(it->second->geometry[k].mesh_path).lexically_normal().string());
+        mesh->SetAttribute(
+            "filename",
+            fs::absolute(it->second->geometry[k].mesh_path).lexically_normal().string());
     }
   }
   while (TiXmlElement* old = root->FirstChildElement("mujoco")) root->RemoveChild(old);
@@ -308,8 +309,7 @@ Expected<std::string> addExcludes(TiXmlDocument& doc, const mjModel& m,
   if (pairs.empty()) return std::string();
   TiXmlElement* root = doc.RootElement();
   TiXmlElement* contact = root->FirstChildElement("contact");
-  if (contact == nullptr)
-    contact = root->InsertEndChild(TiXmlElement("contact"))->ToElement();
+  if (contact == nullptr) contact = root->InsertEndChild(TiXmlElement("contact"))->ToElement();
   for (const auto& [a, b] : pairs) {
     TiXmlElement e("exclude");
     e.SetAttribute("body1", detail::mujocoName(m, mjOBJ_BODY, a, "body"));
@@ -337,14 +337,15 @@ Expected<std::string> formatSphereMjcf(const std::string& in_robot, const std::s
   TiXmlElement* root = doc.RootElement();
   TiXmlElement* world = root ? root->FirstChildElement("worldbody") : nullptr;
   if (doc.Error() || world == nullptr)
-    return Error{ErrorCode::kInvalidData, in_robot + ": MuJoCo wrote the model without a "
-                                                     "<worldbody>"};
+    return Error{ErrorCode::kInvalidData, in_robot +
+                                              ": MuJoCo wrote the model without a "
+                                              "<worldbody>"};
   std::vector<TiXmlElement*> bodies = {world};
   collectBodies(world, bodies);
   if (static_cast<int>(bodies.size()) != m.nbody)
     return Error{ErrorCode::kInvalidData, in_robot + ": MuJoCo wrote " +
-                                              std::to_string(bodies.size()) +
-                                              " bodies of its " + std::to_string(m.nbody)};
+                                              std::to_string(bodies.size()) + " bodies of its " +
+                                              std::to_string(m.nbody)};
   std::set<std::string> found;
   for (int b = 0; b < m.nbody; ++b) {
     std::vector<TiXmlElement*> geoms;
@@ -353,9 +354,8 @@ Expected<std::string> formatSphereMjcf(const std::string& in_robot, const std::s
       geoms.push_back(g);
     if (static_cast<int>(geoms.size()) != m.body_geomnum[b])
       return Error{ErrorCode::kInvalidData,
-                   in_robot + ": MuJoCo wrote " + std::to_string(geoms.size()) +
-                       " geoms of its " + std::to_string(m.body_geomnum[b]) + " in body " +
-                       std::to_string(b)};
+                   in_robot + ": MuJoCo wrote " + std::to_string(geoms.size()) + " geoms of its " +
+                       std::to_string(m.body_geomnum[b]) + " in body " + std::to_string(b)};
     restorePrecision(m, b, bodies[b]);
     const std::string name = detail::mujocoName(m, mjOBJ_BODY, b, "body");
     const auto it = listed->find(name);

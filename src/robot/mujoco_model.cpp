@@ -6,6 +6,8 @@
 // goes on with its own default), and nothing is printed or logged.
 #include "robot/mujoco_model.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -13,9 +15,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-
-#include <unistd.h>
-
 #include <vector>
 
 namespace sphereset::detail {

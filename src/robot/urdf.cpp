@@ -27,13 +27,13 @@
 #include <utility>
 #include <vector>
 
+#include "robot/mjcf.hpp"
+#include "robot/xml_text.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/robot.hpp"
 #include "util/number_text.hpp"
 #include "util/read_file.hpp"
 #include "util/utf8.hpp"
-#include "robot/mjcf.hpp"
-#include "robot/xml_text.hpp"
 
 namespace sphereset {
 namespace {

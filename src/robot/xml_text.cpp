@@ -68,8 +68,8 @@ Expected<std::string> readXmlText(const std::string& path, const char* kind) {
   if (const size_t bad = firstInvalidUtf8(xml); bad != std::string::npos) {
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02x", static_cast<unsigned char>(xml[bad]));
-    return Error{ErrorCode::kInvalidData, path + ": not UTF-8 text (byte " + hex +
-                                              " at offset " + std::to_string(bad) + ")"};
+    return Error{ErrorCode::kInvalidData, path + ": not UTF-8 text (byte " + hex + " at offset " +
+                                              std::to_string(bad) + ")"};
   }
   if (xmlDepth(xml, limits::kMaxXmlDepth) > limits::kMaxXmlDepth)
     return Error{ErrorCode::kInvalidData, path + ": elements nested more than " +

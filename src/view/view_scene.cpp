@@ -198,8 +198,9 @@ Expected<ViewScene> loadRobotScene(const std::string& urdf, const std::string& s
     if (in == ".yml" || in == ".yaml")
       scene->save_source = std::filesystem::absolute(spheres_path).lexically_normal().string();
   } else {
-    return Error{ErrorCode::kInvalidArgument,
-                 path + ": a robot's spheres are saved as .yml/.yaml (cuRobo), .urdf or .xml (MJCF)"};
+    return Error{
+        ErrorCode::kInvalidArgument,
+        path + ": a robot's spheres are saved as .yml/.yaml (cuRobo), .urdf or .xml (MJCF)"};
   }
   scene->save_path = std::filesystem::absolute(path).lexically_normal().string();
   if (Status st = checkOutputPath(scene->save_path, {urdf}); !st) return st.error();

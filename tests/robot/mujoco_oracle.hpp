@@ -73,8 +73,8 @@ struct MjScene {
   }
 
   // Body-name pairs in contact after pose(q, true).
-  std::set<std::pair<std::string, std::string>> contactPairs(const std::set<int>& skip_geoms = {})
-      const {
+  std::set<std::pair<std::string, std::string>> contactPairs(
+      const std::set<int>& skip_geoms = {}) const {
     std::set<std::pair<std::string, std::string>> out;
     for (int i = 0; i < data->ncon; ++i) {
       const mjContact& c = data->contact[i];
@@ -142,8 +142,8 @@ inline std::vector<Vec3> geomSurface(const mjModel& m, int g, int count, std::mt
       }
       case mjGEOM_MESH: {
         const int id = m.geom_dataid[g];
-        const int f = m.mesh_faceadr[id] + static_cast<int>(u(rng) * m.mesh_facenum[id]) %
-                                               m.mesh_facenum[id];
+        const int f =
+            m.mesh_faceadr[id] + static_cast<int>(u(rng) * m.mesh_facenum[id]) % m.mesh_facenum[id];
         double b1 = u(rng), b2 = u(rng);
         if (b1 + b2 > 1.0) b1 = 1.0 - b1, b2 = 1.0 - b2;
         const float* v = m.mesh_vert + 3 * m.mesh_vertadr[id];

@@ -233,12 +233,14 @@ TEST(MjcfWrite, KeepsAttributesVisualsDynamicsAndTheExcludedPairs) {
     if (p < 0 || q < 0) continue;
     bool excluded = false;
     for (int e = 0; e < b.nexclude; ++e)
-      excluded = excluded || b.exclude_signature[e] == ((std::min(p, q) + 1) << 16) + std::max(p, q) + 1 ||
+      excluded = excluded ||
+                 b.exclude_signature[e] == ((std::min(p, q) + 1) << 16) + std::max(p, q) + 1 ||
                  b.exclude_signature[e] == ((std::max(p, q) + 1) << 16) + std::min(p, q) + 1;
     const int wp = b.body_weldid[p], wq = b.body_weldid[q];
-    const bool welded = wp == wq || (wp != 0 && wq != 0 &&
-                                     (wp == b.body_weldid[b.body_parentid[wq]] ||
-                                      wq == b.body_weldid[b.body_parentid[wp]]));
+    const bool welded =
+        wp == wq ||
+        (wp != 0 && wq != 0 &&
+         (wp == b.body_weldid[b.body_parentid[wq]] || wq == b.body_weldid[b.body_parentid[wp]]));
     EXPECT_TRUE(excluded || welded) << x << " - " << y;
   }
   // The assets resolve from the output's folder, which is not the input's.

@@ -84,7 +84,8 @@ TEST(PrimitiveMesh, CylinderMeshHoldsTheCylinder) {
       if (uniform(rng, 0.0, 1.0) < 0.5)  // the side
         return Vec3(r * std::cos(a), r * std::sin(a), uniform(rng, -0.5, 0.5) * length);
       const double rho = r * std::sqrt(uniform(rng, 0.0, 1.0));  // a cap
-      return Vec3(rho * std::cos(a), rho * std::sin(a), (uniform(rng, 0, 1) < 0.5 ? -0.5 : 0.5) * length);
+      return Vec3(rho * std::cos(a), rho * std::sin(a),
+                  (uniform(rng, 0, 1) < 0.5 ? -0.5 : 0.5) * length);
     });
     // The circumscribed polygon's prism: segments · r² · tan(π / segments) · length.
     EXPECT_NEAR(diagnoseMesh(m).volume,
