@@ -17,7 +17,6 @@ demo_packages=(
   libyaml-cpp-dev      # YAML sphere files (cuRobo)
   liburdfdom-dev       # robot descriptions (URDF parser)
   libmujoco-dev        # MJCF robots in and out, read and checked by MuJoCo itself (Apache-2.0)
-  libqhull-dev         # named by libmujoco-dev's CMake target (its include folder), not a dependency
   libtinyxml-dev       # URDF elements read and rewritten (the XML library urdfdom uses)
   libnlopt-cxx-dev     # derivative-free and gradient optimisers
   coinor-libcbc-dev    # integer programs: the best preset's selection among its restarts' spheres

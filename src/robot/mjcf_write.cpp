@@ -180,7 +180,7 @@ void writeInertial(const mjModel& m, int b, TiXmlElement* body) {
 
 // Every asset file named by a path that resolves from `out_dir` (relative where one exists),
 // found from the model's folder through the compiler's meshdir, texturedir and assetdir, which
-// are then dropped.
+// are then dropped, as is a strippath that would cut those paths.
 void relocateAssets(TiXmlElement* root, const fs::path& model_dir, const fs::path& out_dir) {
   std::map<std::string, std::string> dirs;
   for (TiXmlElement* c = root->FirstChildElement("compiler"); c != nullptr;
@@ -189,6 +189,10 @@ void relocateAssets(TiXmlElement* root, const fs::path& model_dir, const fs::pat
       if (const char* v = c->Attribute(a)) dirs[a] = v;
       c->RemoveAttribute(a);
     }
+  // The paths written are the ones to follow (strippath would keep their file names alone).
+  for (TiXmlElement* c = root->FirstChildElement("compiler"); c != nullptr;
+       c = c->NextSiblingElement("compiler"))
+    if (c->Attribute("strippath") != nullptr) c->SetAttribute("strippath", "false");
   std::error_code ec;
   const fs::path out_abs = fs::weakly_canonical(fs::absolute(out_dir), ec);
   for (TiXmlElement* asset = root->FirstChildElement("asset"); asset != nullptr;

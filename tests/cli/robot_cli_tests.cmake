@@ -249,6 +249,13 @@ if(SPHERESET_WITH_MUJOCO)
   cli_test(robot_mjcf_view_page 0 ARGS view ${mjcf} ${work}/arm_spheres.xml
            --html ${work}/arm_spheres.html FILE ${work}/arm_spheres.html)
   set_tests_properties(cli.robot_mjcf_view_page PROPERTIES DEPENDS cli.robot_mjcf)
+  cli_test(robot_mjcf_query 0 ARGS query ${mjcf} ${work}/arm_spheres.xml --points ${q}/cloud.xyz
+           --joint-positions j1=0.3,fl=0.02
+           STDOUT "world: .*base: .*wrist: .*finger_left: .*robot: ")
+  set_tests_properties(cli.robot_mjcf_query PROPERTIES DEPENDS cli.robot_mjcf)
+  cli_test(robot_mjcf_render 0 ARGS render ${mjcf} ${work}/arm_spheres.yml
+           -o ${work}/arm_spheres.png --joint-positions j2=0.5 FILE ${work}/arm_spheres.png)
+  set_tests_properties(cli.robot_mjcf_render PROPERTIES DEPENDS cli.robot_mjcf)
   cli_test(robot_mjcf_group 0 ARGS robot ${mjcf} --collision-group 2 --default-link-spheres 2
            --quality fast --collision-samples 100 -o ${work}/arm_group.json -q
            FILE ${work}/arm_group.json)

@@ -66,7 +66,7 @@ TEST(PrimitiveMesh, SphereMeshHoldsTheBallWithEveryFacePlaneOutsideIt) {
     EXPECT_TRUE(diagnoseMesh(m).isSolid()) << segments;
     expectConvex(m);
     for (const Plane& p : facePlanes(m)) EXPECT_GE(p.d, r) << segments;
-    expectHolds(m, [&](std::mt19937_64& rng) { return r * unitVector(rng); });
+    expectHolds(m, [&](std::mt19937_64& rng) -> Vec3 { return r * unitVector(rng); });
     if (segments == 48) {
       EXPECT_LT(diagnoseMesh(m).volume, 1.01 * 4.0 / 3.0 * std::numbers::pi * r * r * r);
     }
@@ -79,7 +79,7 @@ TEST(PrimitiveMesh, CylinderMeshHoldsTheCylinder) {
     const Mesh m = detail::cylinderMesh(r, length, segments);
     EXPECT_TRUE(diagnoseMesh(m).isSolid());
     expectConvex(m);
-    expectHolds(m, [&](std::mt19937_64& rng) {
+    expectHolds(m, [&](std::mt19937_64& rng) -> Vec3 {
       const double a = uniform(rng, 0.0, 2.0 * std::numbers::pi);
       if (uniform(rng, 0.0, 1.0) < 0.5)  // the side
         return Vec3(r * std::cos(a), r * std::sin(a), uniform(rng, -0.5, 0.5) * length);
@@ -99,7 +99,7 @@ TEST(PrimitiveMesh, CapsuleMeshHoldsTheCapsule) {
     const Mesh m = detail::capsuleMesh(r, length, segments);
     EXPECT_TRUE(diagnoseMesh(m).isSolid()) << segments;
     expectConvex(m);
-    expectHolds(m, [&](std::mt19937_64& rng) {
+    expectHolds(m, [&](std::mt19937_64& rng) -> Vec3 {
       const Vec3 u = unitVector(rng);
       if (uniform(rng, 0.0, 1.0) < 0.5)  // the side
         return Vec3(r * u.x() / std::hypot(u.x(), u.y()), r * u.y() / std::hypot(u.x(), u.y()),
@@ -120,7 +120,8 @@ TEST(PrimitiveMesh, EllipsoidMeshHoldsTheEllipsoid) {
     const Mesh m = detail::ellipsoidMesh(radii, segments);
     EXPECT_TRUE(diagnoseMesh(m).isSolid());
     expectConvex(m);
-    expectHolds(m, [&](std::mt19937_64& rng) { return Vec3(unitVector(rng).cwiseProduct(radii)); });
+    expectHolds(
+        m, [&](std::mt19937_64& rng) -> Vec3 { return Vec3(unitVector(rng).cwiseProduct(radii)); });
   }
 }
 
