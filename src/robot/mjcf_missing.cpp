@@ -19,13 +19,13 @@ Expected<std::string> formatSphereMjcf(const std::string&, const std::string& ou
                                        const std::vector<LinkSpheres>&,
                                        const std::vector<std::array<std::string, 2>>&,
                                        const RobotLoadOptions&) {
-  return Error{ErrorCode::kUnreadable, noMujocoMessage(out_path)};
+  return Error{ErrorCode::kUnreadable, detail::noMujocoMessage(out_path)};
 }
 
 Status writeSphereMjcf(const std::string&, const std::string& out_path,
                        const std::vector<LinkSpheres>&,
                        const std::vector<std::array<std::string, 2>>&, const RobotLoadOptions&) {
-  return Error{ErrorCode::kUnreadable, noMujocoMessage(out_path)};
+  return Error{ErrorCode::kUnreadable, detail::noMujocoMessage(out_path)};
 }
 
 }  // namespace sphereset
