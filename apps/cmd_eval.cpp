@@ -52,6 +52,13 @@ void printEval(const EvalResult& r, const EvalOptions& eo) {
         "  original covered %s (max gap %.3g of the diagonal, %lld triangles not covered)\n",
         r.original_covered ? "yes" : "no", r.max_original_gap,
         static_cast<long long>(r.original_uncovered_triangles));
+  if (r.protrusion_sphere >= 0)
+    std::printf(
+        "  protrusion       %.6g certified (%.4g of the diagonal); a point %.6g out in sphere "
+        "%d at (%.6g, %.6g, %.6g)\n",
+        r.protrusion, r.protrusion / r.bbox_diagonal, r.protrusion_witness_distance,
+        r.protrusion_sphere, r.protrusion_witness.x(), r.protrusion_witness.y(),
+        r.protrusion_witness.z());
   std::printf("  proximity error  %.6f of the diagonal (%d segments)\n", r.proximity_error,
               eo.proximity_segments);
   if (eo.shadow_resolution > 0)

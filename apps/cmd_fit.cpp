@@ -48,16 +48,18 @@ void printFitSummary(const FitArgs& a, const FitResult& r, const EvalResult& ev,
   std::fprintf(stderr,
                "%s: %zu spheres -> %s\n"
                "  E_r summed %.4f (%.4f before bounding), E_r union %.4f +- %.4f\n"
-               "  surface covered %s, interior covered %s\n"
+               "  surface covered %s, interior covered %s, protrusion %.4g (certified; %.4g of "
+               "the diagonal)\n"
                "  %lld points (%lld interior), %d rounds%s, %d teleports (%d kept), %lld SOV "
                "queries in assignment (%lld culled)\n"
                "  time %.2f s (sampling %.2f, assignment %.2f, update %.2f, teleport %.2f, "
                "bounding %.2f: bound %.2f, shrink %.2f, refine %.2f, radii %.2f)\n",
                a.mesh.path.c_str(), r.spheres.size(), a.out_path.c_str(), r.energy / ev.mesh_volume,
                r.energy_before_bounding / ev.mesh_volume, ev.er_union, ev.er_union_stderr,
-               ev.surface_covered ? "yes" : "NO", ev.interior_covered ? "yes" : "NO",
-               static_cast<long long>(r.points), static_cast<long long>(r.interior_points),
-               r.iterations, r.converged ? " (converged)" : "", r.teleports, r.teleports_accepted,
+               ev.surface_covered ? "yes" : "NO", ev.interior_covered ? "yes" : "NO", ev.protrusion,
+               ev.protrusion / ev.bbox_diagonal, static_cast<long long>(r.points),
+               static_cast<long long>(r.interior_points), r.iterations,
+               r.converged ? " (converged)" : "", r.teleports, r.teleports_accepted,
                static_cast<long long>(r.sov_queries), static_cast<long long>(r.sov_queries_culled),
                r.seconds.total, r.seconds.sampling, r.seconds.assignment, r.seconds.update,
                r.seconds.teleport, r.seconds.bounding, r.seconds.bound, r.seconds.shrink,

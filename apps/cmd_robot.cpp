@@ -109,13 +109,15 @@ nlohmann::json robotJson(const RobotArgs& a, const Robot& robot, const RobotFitR
 }
 
 void printSummary(const RobotFitResult& r, const CollisionMatrix& m, double seconds) {
-  std::fprintf(stderr, "%-28s %9s %-10s %9s %7s %9s %9s %7s %7s\n", "link", "triangles", "repair",
-               "openings", "spheres", "E_r", "E_r walls", "covered", "time s");
+  std::fprintf(stderr, "%-28s %9s %-10s %9s %7s %9s %9s %10s %7s %7s\n", "link", "triangles",
+               "repair", "openings", "spheres", "E_r", "E_r walls", "protrusion", "covered",
+               "time s");
   for (const RobotLinkFit& j : r.links)
-    std::fprintf(stderr, "%-28s %9zu %-10s %9.3g %7zu %9.4f %9.4f %7s %7.2f\n", j.link.c_str(),
-                 j.fitted ? j.repair.original.triangles.size() : size_t{0},
+    std::fprintf(stderr, "%-28s %9zu %-10s %9.3g %7zu %9.4f %9.4f %10.4g %7s %7.2f\n",
+                 j.link.c_str(), j.fitted ? j.repair.original.triangles.size() : size_t{0},
                  j.fitted ? repairName(j.repair.kind) : "-", j.repair.fill_openings,
                  j.spheres.size(), j.fitted ? j.eval.er_sum : 0.0, j.fitted ? j.eval.er_walls : 0.0,
+                 j.fitted ? j.eval.protrusion + j.padding : 0.0,
                  j.skipped   ? "skipped"
                  : j.covered ? "yes"
                              : "NO",

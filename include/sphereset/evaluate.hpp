@@ -21,6 +21,9 @@ struct EvalOptions {
   int proximity_segments = 3000;   // random surface-to-surface segments (paper Sec. 7)
   int surface_max_depth = kSurfaceSplitDepth;    // 4^depth sub-triangles at most per triangle
   int interior_max_depth = kInteriorSplitDepth;  // octree refinement below an 8³ grid of the bounds
+  // The protrusion's tolerance (sphereProtrusion below), as a fraction of the solid's bounding
+  // box diagonal: its certified bound is within this of a witness's distance. 0 skips it.
+  double protrusion_tolerance = 1e-3;
   // Shadow comparison on a ground plane under the object (paper Sec. 7): the up axis
   // (0 x, 1 y, 2 z), pixels per side of the plane and directional lights over the upper
   // hemisphere. A resolution of 0 skips it.
@@ -74,6 +77,16 @@ struct EvalResult {
   // above): uniform sky light (ambient occlusion) and each directional light on its own.
   double shadow_error_sky = 0.0;
   double shadow_error_lights = 0.0;
+  // Protrusion (sphereProtrusion, length units): no point of the union is farther than
+  // `protrusion` from the solid, and `protrusion_witness` (in ball `protrusion_sphere`) is
+  // `protrusion_witness_distance` from it; `sphere_protrusion`: each ball's bound. Zeros and
+  // sphere -1 when skipped (protrusion_tolerance 0).
+  double protrusion = 0.0;
+  double protrusion_witness_distance = 0.0;
+  Vec3 protrusion_witness = Vec3::Zero();
+  int protrusion_sphere = -1;
+  std::vector<double> sphere_protrusion;
+  bool protrusion_converged = true;
   double seconds = 0.0;
 };
 
@@ -108,6 +121,38 @@ Status checkEvalOptions(const EvalOptions& options);
 // value.
 Expected<EvalResult> evaluateSpheres(const SolidIndex& index, const std::vector<Sphere>& spheres,
                                      const EvalOptions& options = {});
+
+// Protrusion of a set from a solid: the largest distance from a point of the union of the
+// balls to the solid (0 inside it), i.e. the one-sided Hausdorff distance from the union to the
+// solid, certified by branch and bound over each ball (protrusion.cpp): `upper` bounds the
+// distance of every point of the union, `lower` is the distance of `witness`, a point of ball
+// `sphere`; upper - lower <= tolerance unless a ball ran out of cells (converged false, upper
+// still valid). Per ball the same, for the bounds per sphere and per link.
+struct ProtrusionOptions {
+  double tolerance = 0.0;       // length units, above 0: the bound's slack over the witness
+  int64_t max_cells = 1000000;  // octree cells per ball at most
+};
+struct SphereProtrusionBound {
+  double lower = 0.0, upper = 0.0;
+  Vec3 witness = Vec3::Zero();
+  int64_t cells = 0;
+  bool converged = true;
+};
+struct ProtrusionResult {
+  double upper = 0.0;
+  double lower = 0.0;
+  Vec3 witness = Vec3::Zero();
+  int sphere = -1;
+  std::vector<SphereProtrusionBound> spheres;
+  int64_t cells = 0;
+  bool converged = true;
+  double seconds = 0.0;
+};
+// Errors (kInvalidArgument): a tolerance that is not a finite length above 0, max_cells below
+// 1, a sphere with a NaN, infinite or negative value. The solid must be closed.
+Expected<ProtrusionResult> sphereProtrusion(const SolidIndex& solid,
+                                            const std::vector<Sphere>& spheres,
+                                            const ProtrusionOptions& options);
 
 // Shadows of the mesh and of the spheres on a ground plane just under the mesh's lowest point
 // (a square 3 times the object's largest extent, resolution² pixels), lit by `lights`

@@ -254,6 +254,7 @@ def evaluate(mesh: MeshLike, spheres: Any, *, seed: Optional[int] = None,
              up: Optional[str] = None, shadow_resolution: Optional[int] = None,
              shadow_lights: Optional[int] = None, surface_max_depth: Optional[int] = None,
              interior_max_depth: Optional[int] = None,
+             protrusion_tolerance: Optional[float] = None,
              repair_options: Dict[str, Any]) -> EvalResult:
     """Measures (N, 4) ``spheres`` against the solid with the options and defaults of
     ``sphereset eval`` (the library's evaluation table; None keeps a default, see
@@ -262,12 +263,15 @@ def evaluate(mesh: MeshLike, spheres: Any, *, seed: Optional[int] = None,
     ``samples`` Monte Carlo samples for the union's E_r, ``segments`` random segments for the
     proximity error, ``shadow_resolution`` (0 skips the shadows) and ``shadow_lights`` for the
     shadow errors on a ground plane under the object along ``up``. The coverage check
-    ``sphereset fit`` runs is ``samples=100000, segments=0, shadow_resolution=0``.
+    ``sphereset fit`` runs is ``samples=100000, segments=0, shadow_resolution=0``. The result's
+    ``protrusion`` (``bound``, ``witness``, ``witness_distance``, ``sphere``, ``per_sphere``) is
+    certified to within ``protrusion_tolerance`` times the bounding-box diagonal (0 skips it).
     """
     # Checked by the library's table (the command line's messages) before any repair.
     options = dict(seed=seed, samples=samples, segments=segments, up=up,
                    shadow_resolution=shadow_resolution, shadow_lights=shadow_lights,
-                   surface_max_depth=surface_max_depth, interior_max_depth=interior_max_depth)
+                   surface_max_depth=surface_max_depth, interior_max_depth=interior_max_depth,
+                   protrusion_tolerance=protrusion_tolerance)
     _core._check_eval_options(options)
     s = solid(mesh, **repair_options)
     return EvalResult(**_core._evaluate(s, spheres, options))

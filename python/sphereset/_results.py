@@ -140,6 +140,8 @@ class EvalResult:
     """the interior is certified covered"""
     max_interior_gap: float
     """largest interior gap found / diagonal"""
+    protrusion: Dict[str, Any]
+    """bound: certified: no point of the union is farther than this from the solid (length); witness_distance: a point of the union this far from the solid was found; witness: that point; sphere: the ball it is in (-1: not run); per_sphere: each ball's certified bound; converged: bound within the tolerance of the witness (else a looser bound, still valid)"""
     interior_uncertified_cells: int
     """finest cells at the surface left undecided"""
     proximity_error: float
@@ -273,6 +275,8 @@ class RobotLinkFit:
     """E_r of the same against the walls"""
     outside_volume: float
     """Σ outside volume of the fitted spheres"""
+    protrusion: float
+    """certified: no point of the link's spheres (padded) is farther than this from the fitted solid (length)"""
     padding: float
     """added to every radius"""
     budget_curve: Dict[str, np.ndarray]

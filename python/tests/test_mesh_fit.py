@@ -90,6 +90,22 @@ def test_mesh_from_arrays_fitted_and_evaluated():
     assert e.outside_volume.shape == (4,)
     # Every vertex of the cube is inside some sphere (the bound is guaranteed).
     assert ss.contains(r.spheres, v).all()
+    # The protrusion: a certified bound, its witness in a ball at the distance it says from the
+    # cube (closed form: the excess over the box, per axis), and the bound no nearer than the
+    # sphere that sticks out most along an axis.
+    p = e.protrusion
+    lo, hi = np.array([1.0, -1.0, 0.5]), np.array([3.0, 1.0, 2.5])
+    w = np.array(p["witness"])
+    assert np.linalg.norm(np.maximum(np.maximum(lo - w, w - hi), 0)) == pytest.approx(
+        p["witness_distance"], abs=1e-12)
+    assert p["witness_distance"] <= p["bound"] <= p["witness_distance"] + 1e-3 * e.bbox_diagonal
+    c, rad = r.spheres[:, :3], r.spheres[:, 3]
+    axis_out = np.max(np.maximum(np.maximum(lo - (c.T - rad).T, (c.T + rad).T - hi), 0))
+    assert p["bound"] >= axis_out - 1e-12
+    assert len(p["per_sphere"]) == 4 and max(p["per_sphere"]) == p["bound"]
+    quick = ss.evaluate(m, r.spheres, samples=1000, segments=0, shadow_resolution=0,
+                        protrusion_tolerance=0)
+    assert quick.protrusion["sphere"] == -1
 
 
 def test_arrays_and_file_give_the_same_fit(tmp_path):

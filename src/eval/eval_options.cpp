@@ -65,6 +65,15 @@ constexpr OptionSpec kEvalOptions[] = {
      {},
      "5",
      "Octree levels below the 8x8x8 grid of the interior certificate, at most"},
+    {"protrusion_tolerance",
+     "--protrusion-tolerance",
+     OptionType::kReal,
+     0,
+     1,
+     {},
+     "0.001",
+     "Slack of the certified protrusion over its witness, a fraction of the bounding-box "
+     "diagonal (0 skips the protrusion)"},
 };
 
 }  // namespace
@@ -85,6 +94,7 @@ Status setEvalOption(EvalOptions* o, const std::string& name, const std::string&
   if (n == "shadow_lights") o->shadow_lights = integer;
   if (n == "surface_max_depth") o->surface_max_depth = integer;
   if (n == "interior_max_depth") o->interior_max_depth = integer;
+  if (n == "protrusion_tolerance") o->protrusion_tolerance = v->real;
   return {};
 }
 
@@ -100,6 +110,10 @@ Status checkEvalOptions(const EvalOptions& o) {
     if (Status st = checkTableValue(kEvalOptions, "evaluation", name, static_cast<double>(value));
         !st)
       return st;
+  if (Status st = checkTableValue(kEvalOptions, "evaluation", "protrusion_tolerance",
+                                  o.protrusion_tolerance);
+      !st)
+    return st;
   if (Status st = limits::checkRange("poll_interval", o.poll_interval, 0.0, 3600.0); !st) return st;
   if (o.up_axis < 0 || o.up_axis > 2)
     return Error{ErrorCode::kInvalidArgument,

@@ -204,6 +204,19 @@ Expected<EvalResult> evaluateSpheres(const SolidIndex& index, const std::vector<
   if (options.proximity_segments > 0 && n > 0)
     res.proximity_error = proximityError(index, spheres, options, diag);
 
+  if (options.protrusion_tolerance > 0.0 && n > 0) {
+    ProtrusionOptions po;
+    po.tolerance = options.protrusion_tolerance * diag;
+    auto p = sphereProtrusion(index, spheres, po);
+    if (!p) return p.error();
+    res.protrusion = p->upper;
+    res.protrusion_witness_distance = p->lower;
+    res.protrusion_witness = p->witness;
+    res.protrusion_sphere = p->sphere;
+    res.protrusion_converged = p->converged;
+    for (const SphereProtrusionBound& b : p->spheres) res.sphere_protrusion.push_back(b.upper);
+  }
+
   if (options.shadow_resolution > 0 && n > 0) {
     const ShadowResult sh = compareShadows(index, spheres, options.up_axis,
                                            options.shadow_resolution, options.shadow_lights);

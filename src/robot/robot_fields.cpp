@@ -28,6 +28,9 @@ std::vector<ResultField> robotLinkFields(const RobotLinkFit& j) {
        "E_r of the fitted spheres against the fitted solid, before padding"},
       {"er_walls", j.fitted ? j.eval.er_walls : 0.0, "E_r of the same against the walls"},
       {"outside_volume", j.outside_volume, "Σ outside volume of the fitted spheres"},
+      {"protrusion", j.fitted ? j.eval.protrusion + j.padding : 0.0,
+       "certified: no point of the link's spheres (padded) is farther than this from the "
+       "fitted solid (length)"},
       {"padding", j.padding, "added to every radius"},
       {"budget_curve.counts", counts, "under a budget: the quick fits' sphere counts"},
       {"budget_curve.outside_volume", j.curve.outside_volume, "and their outside volumes"},

@@ -130,7 +130,7 @@ cli_test(robot_second_output_unwritable 6 ARGS robot ${robot}/three_link.urdf --
 
 cli_test(robot_skip_link 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres link1=0 --link-spheres tool=0 --quality fast -o ${work}/three_skip.yml
-         STDERR "link1 +0 - +0 +0 +0.0000 +0.0000 +skipped.*tool +0 - +0 +0 +0.0000 +0.0000 +skipped")
+         STDERR "link1 +0 - +0 +0 +0.0000 +0.0000 +0 +skipped.*tool +0 - +0 +0 +0.0000 +0.0000 +0 +skipped")
 cli_test(robot_fractional_count 2 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres link1=2.5 -o ${work}/never35.yml -q
          STDERR "link_spheres .link1=2.5.: expected LINK=VALUE, VALUE an integer from 0 to 1000000" FORBID ${work}/never35.yml)

@@ -31,7 +31,8 @@ TEST(OptionTables, UnknownNamesListTheirTable) {
                 "restarts, decimation, padding, optimizer, init, method)");
   expectRefused(setEvalOption(&e, "lights", "4"),
                 "unknown evaluation option 'lights' (expected seed, samples, segments, up, "
-                "shadow_resolution, shadow_lights, surface_max_depth, interior_max_depth)");
+                "shadow_resolution, shadow_lights, surface_max_depth, interior_max_depth, "
+                "protrusion_tolerance)");
   expectRefused(setRepairOption(&r, "weld", "0.1"),
                 "unknown repair option 'weld' (expected repair, weld_tolerance, wrap_alpha, "
                 "wrap_offset, fill_openings)");
