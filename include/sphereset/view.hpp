@@ -38,6 +38,12 @@ struct ViewCertificate {
   // value) for an empty set.
   std::optional<double> max_gap;
   std::vector<int64_t> uncovered_triangles;  // indices into the displayed mesh
+  // The certified protrusion of the set from the solid (evaluate.hpp, sphereProtrusion, within
+  // 1e-3 of the diagonal; length units), a witness point, and each sphere's bound; unknown for
+  // an empty set.
+  std::optional<double> protrusion;
+  Vec3 protrusion_witness = Vec3::Zero();
+  std::vector<double> sphere_protrusion;
   double seconds = 0.0;
 };
 

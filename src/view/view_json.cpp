@@ -48,6 +48,10 @@ nlohmann::json certificate(const ViewCertificate& c) {
           {"covered", c.covered},
           {"max_gap", c.max_gap ? nlohmann::json(*c.max_gap) : nlohmann::json()},
           {"uncovered_triangles", c.uncovered_triangles},
+          {"protrusion", c.protrusion ? nlohmann::json(*c.protrusion) : nlohmann::json()},
+          {"protrusion_witness",
+           {c.protrusion_witness.x(), c.protrusion_witness.y(), c.protrusion_witness.z()}},
+          {"sphere_protrusion", c.sphere_protrusion},
           {"seconds", c.seconds}};
 }
 

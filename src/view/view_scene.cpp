@@ -2,6 +2,7 @@
 // each solid made as `sphereset fit` (or `sphereset robot`) makes it, and its certificate.
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -245,6 +246,18 @@ ViewCertificate viewCertificate(const ViewSolid& solid) {
   c.uncovered_triangles =
       solid.input->original() ? e.original_uncovered_triangles : e.uncovered_triangles;
   c.seconds = e.seconds;
+  ProtrusionOptions po;
+  po.tolerance = EvalOptions{}.protrusion_tolerance * solid.index->bounds().diagonal();
+  if (po.tolerance > 0.0) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto p = sphereProtrusion(*solid.index, solid.spheres(), po);
+    if (p) {
+      c.protrusion = p->upper;
+      c.protrusion_witness = p->witness;
+      for (const SphereProtrusionBound& b : p->spheres) c.sphere_protrusion.push_back(b.upper);
+    }
+    c.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
   return c;
 }
 

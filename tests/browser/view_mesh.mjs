@@ -70,6 +70,14 @@ await runTest(async (args, browser) => {
   check(near(evaluated.er_sum, pageEr, 1e-6),
     `sphereset eval of the saved file: E_r ${evaluated.er_sum}, the page ${pageEr}`);
   check(evaluated.surface_covered && evaluated.interior_covered, 'sphereset eval: the saved set covers');
+  // The certified protrusion: the same bound from the page's server and from eval, and shown.
+  const pageProtrusion = (await hooks(() => window.sphereset.certificate(0))).protrusion;
+  check(evaluated.protrusion.bound === pageProtrusion,
+    `protrusion: eval ${evaluated.protrusion.bound}, the page ${pageProtrusion}`);
+  const panelRows = await page.$$eval('#certificate tr', (rows) => rows.map((r) => r.textContent));
+  const row = panelRows.find((t) => t.startsWith('protrusion'));
+  check(row !== undefined && row.includes(String(Number(pageProtrusion.toPrecision(4)))),
+    `the panel shows the protrusion (${row})`);
 
   const message = await pageMessage(page);
   check(!message.error, `no error on the message line (${message.text})`);

@@ -44,13 +44,15 @@ export function showCertificate(solids, current, redCounts) {
     ['interior covered', yesNo(c.interior_covered)],
     ['original covered', yesNo(c.original_covered)],
     ['largest gap', Number.isFinite(c.max_gap) ? `${number(c.max_gap, 4)} of the diagonal` : 'n/a'],
+    ['protrusion', Number.isFinite(c.protrusion) ? `${number(c.protrusion, 4)} (certified)` : 'n/a'],
     ['red triangles', String(redCounts[current])],
     ['covered', yesNo(c.covered)],
   ];
   if (solids.length > 1) {
     const total = solids.reduce((sum, s) => sum + (s.certificate ? s.certificate.er_sum : 0), 0);
     const coveredCount = solids.filter((s) => s.certificate && s.certificate.covered).length;
-    rows.push(['all solids', `${coveredCount} of ${solids.length} covered, E_r ${number(total)}`]);
+    const worst = solids.reduce((m, s) => Math.max(m, s.certificate && Number.isFinite(s.certificate.protrusion) ? s.certificate.protrusion : 0), 0);
+    rows.push(['all solids', `${coveredCount} of ${solids.length} covered, E_r ${number(total)}, protrusion ${number(worst, 4)}`]);
   }
   const table = $('certificate');
   table.replaceChildren(...rows.map(([name, value]) => {
