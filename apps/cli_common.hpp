@@ -43,6 +43,7 @@ enum Exit {
   kUncovered = kExitUncovered,
   kItemsFailed = kExitItemsFailed,
   kNoPage = kExitNoPage,
+  kToleranceNotMet = kExitToleranceNotMet,
 };
 
 // Progress of a long command on stderr, "COMMAND: STAGE done/total, ITEM (elapsed)": on a

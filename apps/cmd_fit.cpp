@@ -20,6 +20,9 @@ namespace {
 
 struct FitCommandArgs {
   FitArgs fit;
+  TableArgs tolerance;  // the rows of toleranceOptionTable()
+  std::string curve;    // --curve CSV
+  bool best_effort = false;
   bool json = false;
 };
 
@@ -75,14 +78,112 @@ void printFitSummary(const FitArgs& a, const FitResult& r, const EvalResult& ev,
                  in.repair.fill_openings, ev.er_walls);
 }
 
+// The counts a tolerance search tried, as CSV: n, E_r, certified protrusion, covered, meets,
+// seconds (atomically written).
+Status writeCurve(const std::string& path, const ToleranceFitResult& t) {
+  std::string text = "n,er_sum,protrusion,covered,meets,seconds\n";
+  for (const CurvePoint& p : t.curve) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%d,%d,%.3f\n", p.n, p.er_sum, p.protrusion,
+                  p.covered ? 1 : 0, p.meets ? 1 : 0, p.seconds);
+    text += line;
+  }
+  return writeTextFile(path, text);
+}
+
+// fit with a tolerance: the fewest spheres that meet it (fitToTolerance), the curve on request,
+// exit 10 when no count up to the cap meets it (the best set written only with --best-effort).
+int runToleranceFit(const FitCommandArgs& c, const ToleranceOptions& tolerance) {
+  const FitArgs& a = c.fit;
+  if (const auto n = a.fit.options.find("n"); n != a.fit.options.end() && n->second->count() > 0)
+    return fail(Error{ErrorCode::kInvalidArgument,
+                      "-n and a tolerance (--max-protrusion, --max-er) exclude each other: the "
+                      "tolerance chooses the count"});
+  auto request = fitRequest(a);
+  if (!request) return fail(request.error());
+  auto m = loadSolid(a.mesh);
+  if (!m) return fail(m.error());
+  const SolidIndex index(m->repair.solid);
+  ToleranceOptions to = tolerance;
+  to.original = m->original();
+  to.walls = m->walls();
+  ProgressLine progress("fit");
+  if (!a.quiet)
+    to.progress = [&progress](const CurvePoint& p) {
+      char what[128];
+      std::snprintf(what, sizeof what, "n %d: protrusion %.4g, E_r %.4f%s", p.n, p.protrusion,
+                    p.er_sum, p.meets ? ", meets it" : "");
+      progress.show("tolerance search", p.n, p.n, what);
+    };
+  auto t = fitToTolerance(index, *request, to);
+  if (!t) return fail(Error{t.error().code, a.mesh.path + ": " + t.error().message});
+  if (!c.curve.empty())
+    if (Status st = writeCurve(c.curve, *t); !st) return fail(st.error());
+  if (t->met || c.best_effort) {
+    SphereFileMeta meta;
+    meta.name =
+        a.link_name.empty() ? std::filesystem::path(a.mesh.path).stem().string() : a.link_name;
+    meta.source_mesh = a.mesh.path;
+    if (Status st = writeSpheres(a.out_path, t->fit.spheres, meta); !st) return fail(st.error());
+  }
+  FitOptions fo = fitOptionsFor(*request);
+  if (c.json) {
+    nlohmann::json j = fitJson(a, fo, t->fit, t->eval, m->repair);
+    j["tolerance"] = {{"met", t->met},
+                      {"n", t->n},
+                      {"protrusion_limit", t->protrusion_limit},
+                      {"max_er", tolerance.max_er},
+                      {"seconds", t->seconds}};
+    nlohmann::json curve = nlohmann::json::array();
+    for (const CurvePoint& p : t->curve)
+      curve.push_back({{"n", p.n},
+                       {"er_sum", p.er_sum},
+                       {"protrusion", p.protrusion},
+                       {"covered", p.covered},
+                       {"meets", p.meets}});
+    j["tolerance"]["curve"] = curve;
+    std::cout << jsonText(j) << '\n';
+  }
+  if (!a.quiet) {
+    std::fprintf(stderr,
+                 "%s: %d counts tried in %.2f s; %s n = %d: protrusion %.6g (certified), "
+                 "E_r %.4f\n",
+                 a.mesh.path.c_str(), static_cast<int>(t->curve.size()), t->seconds,
+                 t->met ? "the fewest that meet the tolerance:" : "none meets it; the best,", t->n,
+                 t->eval.protrusion, t->eval.er_sum);
+  }
+  if (!t->met) {
+    std::fprintf(stderr,
+                 "sphereset: %s: no count up to %d meets the tolerance (best: n = %d, protrusion "
+                 "%.6g, E_r %.4f)%s\n",
+                 a.mesh.path.c_str(), tolerance.max_spheres, t->n, t->eval.protrusion,
+                 t->eval.er_sum,
+                 c.best_effort ? "; its spheres are written (--best-effort)" : "; nothing written");
+    return kToleranceNotMet;
+  }
+  return coverageExit(a.mesh.path, "the fitted spheres", a.out_path, t->eval);
+}
+
 int runFit(const FitCommandArgs& c) {
   const FitArgs& a = c.fit;
   auto format = sphereFormatFromPath(a.out_path);
   if (!format) return fail(format.error());
   // Before any work: the output is not the input, and its folder accepts it.
   if (Status st = checkOutputPath(a.out_path, {a.mesh.path}); !st) return fail(st.error());
+  ToleranceOptions tolerance;
+  for (const auto& [name, text] : c.tolerance.given())
+    if (Status st = setToleranceOption(&tolerance, name, text); !st) return fail(st.error());
+  if (!c.curve.empty() || c.best_effort)
+    if (!tolerance.active())
+      return fail(Error{ErrorCode::kInvalidArgument,
+                        "--curve and --best-effort go with a tolerance (--max-protrusion, "
+                        "--max-er)"});
+  if (!c.curve.empty())
+    if (Status st = checkOutputPath(c.curve, {a.mesh.path, a.out_path}); !st)
+      return fail(st.error());
   auto options = fitOptions(a);  // bad options are refused before any loading
   if (!options) return fail(options.error());
+  if (tolerance.active()) return runToleranceFit(c, tolerance);
   auto m = loadSolid(a.mesh);
   if (!m) return fail(m.error());
   FitOptions fo = std::move(options).value();
@@ -115,6 +216,12 @@ Command registerFit(CLI::App& app) {
   cmd->add_option("--name", c->fit.link_name,
                   "Link name for .yaml output (default: the mesh's stem)");
   cmd->add_flag("--json", c->json, "Print the summary as one JSON object on stdout");
+  addTableOptions(cmd, &c->tolerance, toleranceOptionTable());
+  cmd->add_option("--curve", c->curve,
+                  "With a tolerance: write every count tried as CSV (n, E_r, protrusion, "
+                  "covered, meets, seconds)");
+  cmd->add_flag("--best-effort", c->best_effort,
+                "With a tolerance no count meets: write the best set anyway (exit 10 still)");
   return {cmd, [c] { return runFit(*c); }};
 }
 

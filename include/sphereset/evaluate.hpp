@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sphereset/cover.hpp"
+#include "sphereset/fit.hpp"
 #include "sphereset/options.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere.hpp"
@@ -153,6 +154,51 @@ struct ProtrusionResult {
 Expected<ProtrusionResult> sphereProtrusion(const SolidIndex& solid,
                                             const std::vector<Sphere>& spheres,
                                             const ProtrusionOptions& options);
+
+// The fewest spheres that meet a tolerance: a certified protrusion of at most max_protrusion
+// (length) or max_protrusion_fraction of the bounding-box diagonal (the smaller when both), and
+// an E_r of at most max_er, each 0 for no limit, capped at max_spheres (tolerance_fit.cpp:
+// independent fits at 1, 2, 4, ... spheres until one meets it, then bisection). The result is
+// the fit and check of the smallest count tried that met it (met), or else of the best count
+// tried (covered first, then the smaller protrusion, or E_r without a protrusion limit), and
+// every count tried (`curve`, in the order tried). `original` and `walls` as EvalOptions'.
+struct CurvePoint {
+  int n = 0;
+  double er_sum = 0.0;
+  double protrusion = 0.0;  // certified bound
+  bool covered = false;
+  bool meets = false;
+  double seconds = 0.0;
+};
+struct ToleranceOptions {
+  double max_protrusion = 0.0;
+  double max_protrusion_fraction = 0.0;
+  double max_er = 0.0;
+  int max_spheres = 256;
+  const Mesh* original = nullptr;
+  const Mesh* walls = nullptr;
+  std::function<void(const CurvePoint&)> progress;  // after each count tried
+  bool active() const;                              // some limit is set
+};
+struct ToleranceFitResult {
+  bool met = false;
+  int n = 0;
+  double protrusion_limit = 0.0;  // the length the protrusion was held to (0: none)
+  FitResult fit;
+  EvalResult eval;
+  std::vector<CurvePoint> curve;
+  double seconds = 0.0;
+};
+// The table of the tolerance options (options.hpp): max_protrusion (a trailing % makes it a
+// percentage of the diagonal), max_er, max_spheres; the fit command's flags and Python's
+// keywords. setToleranceOption sets one from a user's text (kInvalidArgument as parseOption).
+std::span<const OptionSpec> toleranceOptionTable();
+Status setToleranceOption(ToleranceOptions* options, const std::string& name,
+                          const std::string& text);
+// Errors: no limit set, max_spheres out of range, the request's own (checkFitRequest), those
+// of fitSpheres and evaluateSpheres.
+Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
+                                            const ToleranceOptions& options);
 
 // Shadows of the mesh and of the spheres on a ground plane just under the mesh's lowest point
 // (a square 3 times the object's largest extent, resolution² pixels), lit by `lights`

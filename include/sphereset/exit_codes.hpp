@@ -10,14 +10,15 @@ namespace sphereset {
 enum ExitCode : int {
   kExitOk = 0,
   kExitInternal = 1,
-  kExitUsage = 2,       // bad options (ErrorCode::kInvalidArgument)
-  kExitUnreadable = 3,  // ErrorCode::kUnreadable
-  kExitInvalid = 4,     // ErrorCode::kInvalidData
-  kExitNotSolid = 5,    // ErrorCode::kNotSolid
-  kExitWrite = 6,       // ErrorCode::kWriteFailed
-  kExitUncovered = 7,   // fit, tree, batch: a result failed its own coverage check (written)
-  kExitItemsFailed = 8,  // batch: some items failed (each is reported; the others are written)
-  kExitNoPage = 9,       // view: this build has no page (web/ was not built)
+  kExitUsage = 2,             // bad options (ErrorCode::kInvalidArgument)
+  kExitUnreadable = 3,        // ErrorCode::kUnreadable
+  kExitInvalid = 4,           // ErrorCode::kInvalidData
+  kExitNotSolid = 5,          // ErrorCode::kNotSolid
+  kExitWrite = 6,             // ErrorCode::kWriteFailed
+  kExitUncovered = 7,         // fit, tree, batch: a result failed its own coverage check (written)
+  kExitItemsFailed = 8,       // batch: some items failed (each is reported; the others are written)
+  kExitNoPage = 9,            // view: this build has no page (web/ was not built)
+  kExitToleranceNotMet = 10,  // fit: no count up to the cap meets the tolerance asked for
 };
 
 constexpr int exitCodeFor(ErrorCode code) {
@@ -42,6 +43,8 @@ inline constexpr const char* kExitCodesHelp =
     "4 invalid data, 5 mesh is not a closed solid, 6 output could not be written,\n"
     "7 the result failed its own coverage check (fit, tree: the file is still written),\n"
     "8 some items of a batch failed (batch: the others are written; see report.jsonl),\n"
-    "9 this build has no page for `view` (web/ was not built).";
+    "9 this build has no page for `view` (web/ was not built),\n"
+    "10 no count up to --max-spheres meets fit's tolerance (the best set is written only with\n"
+    "--best-effort).";
 
 }  // namespace sphereset

@@ -333,3 +333,23 @@ if(SPHERESET_WITH_REPAIR)
   cli_test(wrap_offset_too_many_triangles 2 ARGS check ${work}/open.off --wrap-offset 10
            STDOUT "fit will +refuse it: .*would make about .* triangles .the limit is 1e.06.")
 endif()
+
+# fit with a tolerance: the fewest spheres whose certified protrusion is within 12 % of the
+# diagonal (the count tried below it did not meet it), the curve on request; a tolerance no
+# count up to the cap meets is exit 10 with nothing written, or the best set with
+# --best-effort; -n with a tolerance, and bad tolerances, are exit 2.
+cli_test(fit_tolerance 0 ARGS fit ${link} --max-protrusion 12% --quality fast --curve
+         ${work}/link_curve.csv -o ${work}/link_tol.json --json -q
+         FILE ${work}/link_curve.csv STDOUT "\"tolerance\":\\{\"curve\":.*\"met\":true")
+cli_test(fit_tolerance_not_met 10 ARGS fit ${link} --max-protrusion 0.0000001 --max-spheres 4
+         --quality fast -o ${work}/never_tol.json -q
+         STDERR "no count up to 4 meets the tolerance .best: n = [0-9]+, protrusion" FORBID ${work}/never_tol.json)
+cli_test(fit_tolerance_best_effort 10 ARGS fit ${link} --max-protrusion 0.0000001 --max-spheres 2
+         --quality fast --best-effort -o ${work}/best_effort.json -q FILE ${work}/best_effort.json)
+cli_test(fit_tolerance_with_n 2 ARGS fit ${link} -n 8 --max-er 0.5 -o ${work}/never_tol2.json
+         STDERR "-n and a tolerance" FORBID ${work}/never_tol2.json)
+cli_test(fit_tolerance_nan 2 ARGS fit ${link} --max-er nan -o ${work}/never_tol3.json
+         STDERR "max_er 'nan': expected a number from 0 to 1000000" FORBID ${work}/never_tol3.json)
+cli_test(fit_curve_without_tolerance 2 ARGS fit ${link} -n 4 --curve ${work}/never_curve.csv
+         -o ${work}/never_tol4.json STDERR "--curve and --best-effort go with a tolerance"
+         FORBID ${work}/never_tol4.json)

@@ -1,0 +1,172 @@
+// The fewest spheres that meet a tolerance (evaluate.hpp, fitToTolerance): a protrusion bound
+// (certified, sphereProtrusion) and/or an E_r, found by fitting at 1, 2, 4, ... spheres until a
+// count meets it (or the cap), then bisecting between the last count that did not and the first
+// that did. Each count is an independent fit (fitSpheres with the request's options at that
+// count) checked as `sphereset fit` checks its result (fitCheckEvalOptions). Independent fits
+// are not monotone in their count, so the count found is the smallest of those tried that
+// meets the tolerance, with every count tried in the curve.
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/limits.hpp"
+#include "sphereset/solid_index.hpp"
+
+namespace sphereset {
+namespace {
+
+constexpr const char* kPercentWord = "%";
+
+constexpr OptionSpec kToleranceOptions[] = {
+    {"max_protrusion",
+     "--max-protrusion",
+     OptionType::kReal,
+     0,
+     limits::kMaxCoordinate,
+     {},
+     "0",
+     "The fewest spheres whose certified protrusion is at most this (a length; with a trailing "
+     "%, a percentage of the bounding-box diagonal); 0: no limit"},
+    {"max_er",
+     "--max-er",
+     OptionType::kReal,
+     0,
+     1e6,
+     {},
+     "0",
+     "The fewest spheres whose E_r (summed outside volume / volume) is at most this; 0: no limit"},
+    {"max_spheres",
+     "--max-spheres",
+     OptionType::kInteger,
+     1,
+     limits::kMaxSpheres,
+     {},
+     "256",
+     "The most spheres a tolerance search tries"},
+};
+
+// One count: the fit at n and its check.
+struct Trial {
+  FitResult fit;
+  EvalResult eval;
+  CurvePoint point;
+};
+
+}  // namespace
+
+std::span<const OptionSpec> toleranceOptionTable() { return kToleranceOptions; }
+
+Status setToleranceOption(ToleranceOptions* o, const std::string& name, const std::string& text) {
+  // A trailing '%' on max_protrusion: a percentage of the diagonal.
+  std::string value = text;
+  const bool percent = name == "max_protrusion" && !value.empty() && value.back() == '%';
+  if (percent) value.pop_back();
+  auto parsed = parseTableOption(kToleranceOptions, "tolerance", name, value);
+  if (!parsed) return parsed.error();
+  const std::string_view n = parsed->spec->name;
+  if (n == "max_protrusion") {
+    o->max_protrusion = percent ? 0.0 : parsed->value.real;
+    o->max_protrusion_fraction = percent ? parsed->value.real / 100.0 : 0.0;
+  }
+  if (n == "max_er") o->max_er = parsed->value.real;
+  if (n == "max_spheres") o->max_spheres = static_cast<int>(parsed->value.integer);
+  (void)kPercentWord;
+  return {};
+}
+
+bool ToleranceOptions::active() const {
+  return max_protrusion > 0.0 || max_protrusion_fraction > 0.0 || max_er > 0.0;
+}
+
+Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
+                                            const ToleranceOptions& t) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!t.active())
+    return Error{ErrorCode::kInvalidArgument,
+                 "a tolerance search needs max_protrusion or max_er above 0"};
+  if (t.max_spheres < 1 || t.max_spheres > limits::kMaxSpheres)
+    return Error{ErrorCode::kInvalidArgument,
+                 "max_spheres must be from 1 to " + std::to_string(limits::kMaxSpheres)};
+  if (Status st = checkFitRequest(request); !st) return st.error();
+  const double diag = index.bounds().diagonal();
+  double limit = t.max_protrusion > 0.0 ? t.max_protrusion : 0.0;
+  if (t.max_protrusion_fraction > 0.0) {
+    const double relative = t.max_protrusion_fraction * diag;
+    limit = limit > 0.0 ? std::min(limit, relative) : relative;
+  }
+  ToleranceFitResult out;
+  out.protrusion_limit = limit;
+  Trial best;
+  bool have_best = false;
+  // Whether b is a better fallback than a (when nothing meets the tolerance): covered first,
+  // then the smaller protrusion (or E_r, with no protrusion limit).
+  auto better = [&](const Trial& a, const Trial& b) {
+    if (a.point.covered != b.point.covered) return b.point.covered;
+    return limit > 0.0 ? b.point.protrusion < a.point.protrusion : b.point.er_sum < a.point.er_sum;
+  };
+  auto run = [&](int n) -> Expected<Trial> {
+    const auto s0 = std::chrono::steady_clock::now();
+    FitRequest r = request;
+    r.num_spheres = n;
+    FitOptions fo = fitOptionsFor(r);
+    fo.original = t.original;
+    auto fit = fitSpheres(index, fo);
+    if (!fit) return fit.error();
+    auto ev =
+        evaluateSpheres(index, fit->spheres, fitCheckEvalOptions(fo.seed, t.original, t.walls));
+    if (!ev) return ev.error();
+    Trial trial{std::move(fit).value(), std::move(ev).value(), {}};
+    CurvePoint& p = trial.point;
+    p.n = n;
+    p.er_sum = trial.eval.er_sum;
+    p.protrusion = trial.eval.protrusion;
+    p.covered =
+        trial.eval.surface_covered && trial.eval.interior_covered && trial.eval.original_covered;
+    p.meets = p.covered && (limit <= 0.0 || p.protrusion <= limit) &&
+              (t.max_er <= 0.0 || p.er_sum <= t.max_er);
+    p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
+    out.curve.push_back(p);
+    if (t.progress) t.progress(p);
+    return trial;
+  };
+  auto keep = [&](Trial&& trial) {
+    if (!have_best || (trial.point.meets && (!best.point.meets || trial.point.n < best.point.n)) ||
+        (!best.point.meets && !trial.point.meets && better(best, trial))) {
+      best = std::move(trial);
+      have_best = true;
+    }
+  };
+  // Doubling: the first count that meets the tolerance, or the cap.
+  int lo = 0, hi = 0;
+  for (int n = 1;; n = std::min(2 * n, t.max_spheres)) {
+    auto trial = run(n);
+    if (!trial) return trial.error();
+    const bool meets = trial->point.meets;
+    keep(std::move(trial).value());
+    if (meets) {
+      hi = n;
+      break;
+    }
+    lo = n;
+    if (n == t.max_spheres) break;
+  }
+  // Bisection between the last count that did not meet it and the first that did.
+  while (hi > 0 && hi - lo > 1) {
+    const int mid = lo + (hi - lo) / 2;
+    auto trial = run(mid);
+    if (!trial) return trial.error();
+    const bool meets = trial->point.meets;
+    keep(std::move(trial).value());
+    (meets ? hi : lo) = mid;
+  }
+  out.met = best.point.meets;
+  out.n = best.point.n;
+  out.fit = std::move(best.fit);
+  out.eval = std::move(best.eval);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace sphereset

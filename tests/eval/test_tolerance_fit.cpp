@@ -1,0 +1,103 @@
+// The fewest spheres that meet a tolerance (fitToTolerance): the count found meets it with a
+// certified protrusion, no smaller count tried met it, the doubling and the bisection are in the
+// curve, a tolerance no count meets gives the best count tried, and bad requests are refused.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/solid_index.hpp"
+#include "test_meshes.hpp"
+
+namespace sphereset {
+namespace {
+
+FitRequest fastRequest() {
+  FitRequest r;
+  r.quality = FitQuality::kFast;
+  return r;
+}
+
+TEST(ToleranceFit, TheCountFoundMeetsItAndNoSmallerCountTriedDid) {
+  const SolidIndex index(test::robotLink());
+  ToleranceOptions t;
+  t.max_protrusion_fraction = 0.06;
+  t.max_spheres = 64;
+  auto r = fitToTolerance(index, fastRequest(), t);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_TRUE(r->met);
+  const double limit = 0.06 * index.bounds().diagonal();
+  EXPECT_DOUBLE_EQ(r->protrusion_limit, limit);
+  EXPECT_LE(r->eval.protrusion, limit);
+  EXPECT_EQ(static_cast<int>(r->fit.spheres.size()), r->n);
+  EXPECT_TRUE(r->eval.surface_covered && r->eval.interior_covered);
+  // The protrusion reported is the certified one of the set returned.
+  ProtrusionOptions po;
+  po.tolerance = 1e-3 * index.bounds().diagonal();
+  auto p = sphereProtrusion(index, r->fit.spheres, po);
+  ASSERT_TRUE(p.ok());
+  EXPECT_EQ(p->upper, r->eval.protrusion);
+  std::set<int> tried;
+  for (const CurvePoint& c : r->curve) {
+    EXPECT_TRUE(tried.insert(c.n).second) << "count " << c.n << " tried twice";
+    EXPECT_EQ(c.meets, c.covered && c.protrusion <= limit) << c.n;
+    if (c.n < r->n) {
+      EXPECT_FALSE(c.meets) << c.n;
+    }
+  }
+  // Doubling from 1 up to the first count that met it, then bisection below it.
+  for (int n = 1; n < r->n; n *= 2) EXPECT_EQ(tried.count(n), 1u) << n;
+  // The bisection ends next to it: the count below it was tried and did not meet it.
+  EXPECT_TRUE(r->n == 1 || tried.count(r->n - 1) == 1);
+}
+
+TEST(ToleranceFit, AToleranceNoCountMeetsGivesTheBestTried) {
+  const SolidIndex index(test::makeBox(Vec3::Zero(), Vec3(1.0, 0.2, 0.1)));
+  ToleranceOptions t;
+  t.max_protrusion = 1e-6;  // a thin box: never that tight with 4 spheres
+  t.max_spheres = 4;
+  auto r = fitToTolerance(index, fastRequest(), t);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_FALSE(r->met);
+  ASSERT_EQ(r->curve.size(), 3u);  // 1, 2, 4
+  double best = r->curve[0].protrusion;
+  for (const CurvePoint& c : r->curve) best = std::min(best, c.protrusion);
+  EXPECT_EQ(r->eval.protrusion, best);
+}
+
+TEST(ToleranceFit, BothLimitsTogether) {
+  const SolidIndex index(test::makeTorus(1.0, 0.3, 24, 12));
+  ToleranceOptions t;
+  t.max_er = 0.8;
+  t.max_protrusion_fraction = 0.1;
+  t.max_spheres = 64;
+  auto r = fitToTolerance(index, fastRequest(), t);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_TRUE(r->met);
+  EXPECT_LE(r->eval.er_sum, 0.8);
+  EXPECT_LE(r->eval.protrusion, 0.1 * index.bounds().diagonal());
+}
+
+TEST(ToleranceFit, BadRequestsAreRefused) {
+  const SolidIndex index(test::makeBox(Vec3::Zero(), Vec3::Ones()));
+  ToleranceOptions t;
+  EXPECT_EQ(fitToTolerance(index, fastRequest(), t).error().code, ErrorCode::kInvalidArgument);
+  t.max_er = 0.5;
+  t.max_spheres = 0;
+  EXPECT_FALSE(fitToTolerance(index, fastRequest(), t).ok());
+  ToleranceOptions o;
+  EXPECT_TRUE(setToleranceOption(&o, "max_protrusion", "5%").ok());
+  EXPECT_DOUBLE_EQ(o.max_protrusion_fraction, 0.05);
+  EXPECT_EQ(o.max_protrusion, 0.0);
+  EXPECT_TRUE(setToleranceOption(&o, "max_protrusion", "0.01").ok());
+  EXPECT_DOUBLE_EQ(o.max_protrusion, 0.01);
+  EXPECT_EQ(o.max_protrusion_fraction, 0.0);
+  for (const char* bad : {"nan", "-1", "5%%", "%", "inf", "1e40"})
+    EXPECT_FALSE(setToleranceOption(&o, "max_protrusion", bad).ok()) << bad;
+  EXPECT_FALSE(setToleranceOption(&o, "max_er", "-0.1").ok());
+  EXPECT_FALSE(setToleranceOption(&o, "max_spheres", "0").ok());
+}
+
+}  // namespace
+}  // namespace sphereset
