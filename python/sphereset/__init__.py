@@ -79,7 +79,7 @@ __all__ = [
     "split_budget", "curve_volume", "Animation", "AnimateResult", "mean_value_coordinates",
     "mean_value_weights", "point_bone_weights", "skin_points", "load_animation", "animate",
     "RobotLinkFit", "RobotFitResult", "fit_robot", "robot_contacts", "trajectory_contacts",
-    "sample_self_collisions",
+    "sample_self_collisions", "fit_to_tolerance",
 ]
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -246,6 +246,28 @@ def fit(mesh: MeshLike, n: int = 32, *, seed: int = 1, quality: str = "default",
     s = solid(mesh, **repair_options)
     d = _core._fit(s, options, progress)
     return FitResult(**d)
+
+
+@_repair_keywords
+def fit_to_tolerance(mesh: MeshLike, *, max_protrusion: Union[float, str, None] = None,
+                     max_er: Optional[float] = None, max_spheres: Optional[int] = None,
+                     seed: int = 1, quality: str = "default", padding: float = 0.0,
+                     repair_options: Dict[str, Any]) -> Dict[str, Any]:
+    """The fewest spheres that meet a tolerance, as ``sphereset fit --max-protrusion D --max-er
+    X`` finds them (the same library call): ``max_protrusion`` a length, or "P%" of the
+    bounding-box diagonal, bounding the certified protrusion; ``max_er`` bounding E_r;
+    ``max_spheres`` the cap (256). Returns {"met", "n", "protrusion_limit", "fit" (a FitResult),
+    "eval" (the check's fields, ``protrusion`` included), "curve" (every count tried: n, er_sum,
+    protrusion, covered, meets, seconds), "seconds"}; when no count up to the cap meets it,
+    "met" is False and "fit" is the best count tried (the command exits 10 instead).
+    """
+    tolerance = dict(max_protrusion=max_protrusion, max_er=max_er, max_spheres=max_spheres)
+    options = dict(quality=quality, seed=seed, padding=padding)
+    _core._check_fit_options(options)
+    s = solid(mesh, **repair_options)
+    d = _core._fit_to_tolerance(s, options, tolerance)
+    d["fit"] = FitResult(**d["fit"])
+    return d
 
 
 @_repair_keywords

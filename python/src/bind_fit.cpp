@@ -170,6 +170,51 @@ void bindFit(py::module_& m) {
       },
       py::arg("solid"), py::arg("options"), py::arg("progress"));
   m.def(
+      "_fit_to_tolerance",
+      [](const std::shared_ptr<PySolid>& solid, const py::dict& options,
+         const py::dict& tolerance) {
+        const FitRequest rq = fitRequest(options);
+        ToleranceOptions to;
+        setOptions(tolerance, [&](const std::string& name, const std::string& text) {
+          return setToleranceOption(&to, name, text);
+        });
+        to.original = solid->original();
+        to.walls = solid->walls();
+        Expected<ToleranceFitResult> r = Error{ErrorCode::kInvalidArgument, "not run"};
+        {
+          py::gil_scoped_release release;
+          r = fitToTolerance(*solid->index, rq, to);
+        }
+        if (!r) raise(r.error().code, solid->name + ": " + r.error().message);
+        py::dict fit = fitResultDict(r->fit, signedVolume(solid->repair.solid));
+        FitRequest at = rq;
+        at.num_spheres = r->n;
+        fit["options"] = optionsDict(fitOptionsFor(at));
+        fit["repair"] = repairDict(solid->repair);
+        py::list curve;
+        for (const CurvePoint& c : r->curve) {
+          py::dict p;
+          p["n"] = c.n;
+          p["er_sum"] = c.er_sum;
+          p["protrusion"] = c.protrusion;
+          p["covered"] = c.covered;
+          p["meets"] = c.meets;
+          p["seconds"] = c.seconds;
+          curve.append(p);
+        }
+        py::dict d;
+        d["met"] = r->met;
+        d["n"] = r->n;
+        d["protrusion_limit"] = r->protrusion_limit;
+        d["fit"] = fit;
+        d["eval"] = fieldsDict(evalResultFields(r->eval));
+        d["curve"] = curve;
+        d["seconds"] = r->seconds;
+        return d;
+      },
+      py::arg("solid"), py::arg("options"), py::arg("tolerance"));
+  m.def("_tolerance_option_table", [] { return optionTable(toleranceOptionTable()); });
+  m.def(
       "_check_fit_options", [](const py::dict& options) { fitRequest(options); },
       py::arg("options"));
   m.def("_fit_option_table", [] { return optionTable(fitRequestOptions()); });

@@ -361,3 +361,20 @@ def test_a_number_option_is_read_by_one_rule():
         ss.fit(m, 4, padding=True)
     with pytest.raises(ss.InvalidArgumentError, match="n '4.5'"):
         ss.fit(m, 4.5)
+
+
+def test_fit_to_tolerance_same_as_the_command(cli, tmp_path):
+    """fit_to_tolerance finds the count `sphereset fit --max-protrusion` finds, with the same
+    spheres and curve; a tolerance no count meets is met=False with the best count tried."""
+    out = tmp_path / "tol.json"
+    r = cli("fit", LINK, "--max-protrusion", "12%", "--quality", "fast", "-o", out, "--json", "-q")
+    ref = json.loads(r.stdout)
+    t = ss.fit_to_tolerance(LINK, max_protrusion="12%", quality="fast")
+    assert t["met"] and t["n"] == ref["tolerance"]["n"] == len(t["fit"].spheres)
+    assert [c["n"] for c in t["curve"]] == [c["n"] for c in ref["tolerance"]["curve"]]
+    np.testing.assert_array_equal(t["fit"].spheres, ss.read_spheres(out))
+    assert t["eval"]["protrusion"]["bound"] <= t["protrusion_limit"]
+    none = ss.fit_to_tolerance(LINK, max_protrusion=1e-7, max_spheres=2, quality="fast")
+    assert not none["met"] and [c["n"] for c in none["curve"]] == [1, 2]
+    with pytest.raises(ss.InvalidArgumentError, match="max_er 'nan'"):
+        ss.fit_to_tolerance(LINK, max_er=float("nan"))
