@@ -38,7 +38,7 @@ nlohmann::json fitJson(const FitArgs& a, const FitOptions& fo, const FitResult& 
   // The fit's own check (fitCheckEvalOptions): the union's E_r and the certificates.
   const nlohmann::json e = fieldsJson(evalResultFields(ev));
   for (const char* name : {"er_union", "er_union_stderr", "surface_covered", "interior_covered",
-                           "original_covered", "walls_volume", "er_walls"})
+                           "original_covered", "walls_volume", "er_walls", "protrusion"})
     j[name] = e.at(name);
   return j;
 }
