@@ -246,8 +246,15 @@ ViewCertificate viewCertificate(const ViewSolid& solid) {
   c.uncovered_triangles =
       solid.input->original() ? e.original_uncovered_triangles : e.uncovered_triangles;
   c.seconds = e.seconds;
+  // Every edit certifies again, so the view's protrusion is looser than eval's: within
+  // kViewProtrusionTolerance of the diagonal, at most kViewProtrusionCells cells per ball (a
+  // bound still valid past it). A ball much larger than the solid would otherwise take seconds
+  // (found by fuzz_view_request).
+  constexpr double kViewProtrusionTolerance = 1e-2;  // of the bounding-box diagonal
+  constexpr int64_t kViewProtrusionCells = 5000;
   ProtrusionOptions po;
-  po.tolerance = EvalOptions{}.protrusion_tolerance * solid.index->bounds().diagonal();
+  po.tolerance = kViewProtrusionTolerance * solid.index->bounds().diagonal();
+  po.max_cells = kViewProtrusionCells;
   if (po.tolerance > 0.0) {
     const auto t0 = std::chrono::steady_clock::now();
     auto p = sphereProtrusion(*solid.index, solid.spheres(), po);

@@ -61,6 +61,7 @@ ProtrusionResult run(const Mesh& mesh, const std::vector<Sphere>& spheres, doubl
   const SolidIndex index(mesh);
   ProtrusionOptions o;
   o.tolerance = tol;
+  o.max_cells = 2000000;  // these tolerances are 10 times the default's, relative to the size
   auto r = sphereProtrusion(index, spheres, o);
   EXPECT_TRUE(r.ok());
   return r.ok() ? *r : ProtrusionResult{};
@@ -82,6 +83,17 @@ TEST(Protrusion, ClosedFormsOnACube) {
   EXPECT_LE(r.lower, 0.5 + 1e-12);
   EXPECT_GE(r.upper, 0.5 - 1e-12);
   EXPECT_LE(r.upper - r.lower, kProtrusionTol);
+  // With the default cap of cells, the bound is looser but still holds.
+  {
+    ProtrusionOptions o;
+    o.tolerance = kProtrusionTol;
+    auto capped = sphereProtrusion(SolidIndex(cube), {{Vec3(0.5, 0.5, 0.5), 1.0}}, o);
+    ASSERT_TRUE(capped.ok());
+    EXPECT_GE(capped->upper, 0.5 - 1e-12);
+    EXPECT_LE(capped->lower, 0.5 + 1e-12);
+    EXPECT_FALSE(capped->converged);
+    EXPECT_LE(capped->cells, 8 + o.max_cells);
+  }
   // A ball inside: nothing out.
   r = run(cube, {{Vec3(0.5, 0.5, 0.5), 0.3}}, kProtrusionTol);
   EXPECT_EQ(r.lower, 0.0);
