@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -241,5 +242,42 @@ Expected<std::vector<Sphere>> boundSpheres(const SolidIndex& index, std::vector<
 // Fits options.num_spheres spheres to the closed solid behind `index`. Errors:
 // kInvalidArgument (n < 1, n larger than the points, bad options), kNotSolid (zero volume).
 Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& options);
+
+// Progressive fitting (beyond the paper; src/fit/progressive.cpp): the fits of one solid at
+// increasing sphere counts, each clustering started from the one before it, so that one run
+// gives the whole curve of outside volume against n at about the cost of one fit at the largest
+// count (docs/benchmarks.md, "Progressive fitting"). A class because each fit reuses the points
+// and the clusterings of the earlier ones; not for use from two threads at once.
+class ProgressiveFit {
+ public:
+  // A run for counts up to options.num_spheres. Errors: those of fitSpheres for these options,
+  // and kInvalidArgument for options it cannot honour: a method other than the variational
+  // one, restarts > 1 or decimation > 0 (each count is one clustering, warm-started).
+  static Expected<ProgressiveFit> start(const SolidIndex& index, const FitOptions& options);
+  ProgressiveFit(ProgressiveFit&&) noexcept;
+  ProgressiveFit& operator=(ProgressiveFit&&) noexcept;
+  ~ProgressiveFit();
+
+  // The fit at `count` spheres (1 to maxCount()), as fitSpheres ends one (bound, shrinking,
+  // refinement, padding). Its clustering starts from the clustering of the largest count
+  // already fitted below `count`: the clusters whose split in two lowers the outside volume most
+  // are split (2-means, both halves refitted) until there are `count`, then the rounds and
+  // teleports of the clustering run again (fewer of them than a fit from seeds gets). A count
+  // fitted before returns its fit again; with no count below it, the clustering starts from
+  // seeds as fitSpheres does. The points are those of a fit at the largest count asked so far:
+  // options.target_points are the largest count's (0: the default), scaled for a count as the
+  // default scales (max(5000, 100 n)), which a quality preset's points follow too. The same calls in the same order give the same spheres for any thread count.
+  // FitResult::seconds is this call's.
+  // Errors: kInvalidArgument for a count out of range or clusters that cannot all be placed.
+  // options.progress is called as fitSpheres calls it (FitProgress::spheres = count), and may
+  // throw to cancel.
+  Expected<FitResult> fit(int count);
+  int maxCount() const;
+
+ private:
+  struct Impl;
+  explicit ProgressiveFit(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace sphereset

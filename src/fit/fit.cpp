@@ -28,42 +28,16 @@
 #include <utility>
 
 #include "fit/baselines.hpp"
-#include "fit/bound_refit.hpp"
 #include "fit/decimate.hpp"
 #include "fit/fit_common.hpp"
-#include "fit/optimal_radii.hpp"
-#include "fit/refine.hpp"
+#include "fit/finish.hpp"
 #include "fit/restarts.hpp"
 #include "fit/samples.hpp"
 #include "fit/seeding.hpp"
-#include "fit/shrink.hpp"
 #include "sphereset/limits.hpp"
 
 namespace sphereset {
 namespace {
-
-Status checkOptions(const SolidIndex& index, const FitOptions& o) {
-  using limits::checkRange;
-  for (Status st :
-       {checkRange("num_spheres", o.num_spheres, 1, limits::kMaxSpheres),
-        checkRange("target_points", static_cast<double>(o.target_points), 0,
-                   static_cast<double>(limits::kMaxPoints)),
-        checkRange("interior_share", o.interior_share, 0.0, 1.0),
-        checkRange("max_iterations", o.max_iterations, 0, limits::kMaxIterations),
-        checkRange("tolerance", o.tolerance, 0.0, 1.0),
-        checkRange("max_failed_teleports", o.max_failed_teleports, 0, limits::kMaxIterations),
-        checkRange("optimizer_evaluations", o.optimizer_evaluations, 0,
-                   limits::kMaxOptimizerEvaluations),
-        checkRange("padding", o.padding, 0.0, limits::kMaxCoordinate),
-        checkRange("shrink_passes", o.shrink_passes, 0, limits::kMaxIterations),
-        checkRange("decimation", o.decimation, 0.0, limits::kMaxDecimation),
-        checkRange("restarts", o.restarts, 1, limits::kMaxRestarts),
-        checkRange("progress_interval", o.progress_interval, 0.0, 3600.0)})
-    if (!st) return st;
-  if (!(signedVolume(index.mesh()) > 0.0))
-    return Error{ErrorCode::kNotSolid, "the mesh encloses no volume"};
-  return {};
-}
 
 // The comparison methods: their clusters and minimal balls (no cluster points are kept).
 detail::Clustering baselineClusters(const SolidIndex& index, const detail::PointSet& ps, int n,
@@ -85,55 +59,10 @@ detail::Clustering baselineClusters(const SolidIndex& index, const detail::Point
   return c;
 }
 
-// Everything after the clustering: the exact bound with refits, the shrinking passes, the
-// refinement, the interior passes and the original triangles; each part timed.
-void boundClusters(const SolidIndex& index, const detail::PointSet& ps, const FitOptions& o,
-                   detail::Clustering* best, FitResult* res) {
-  using detail::FitClock, detail::secondsSince;
-  const bool variational = o.method == FitMethod::kVariational;
-  const double surface_spacing = detail::surfaceSpacing(index, ps);
-  const double min_edge = detail::boundMinEdge(index, ps);
-  auto t = FitClock::now();
-  detail::BoundStats bs =
-      detail::boundWithRefits(index, &best->spheres, &best->members, min_edge, variational, o, res);
-  res->seconds.bound += secondsSince(t);
-  if (variational && o.shrink_passes > 0) {
-    t = FitClock::now();
-    detail::shrinkPasses(index, ps, min_edge, o, &best->spheres, &bs, res);
-    res->seconds.shrink += secondsSince(t);
-  }
-  const std::vector<Vec3> interior(ps.points.begin(), ps.points.begin() + ps.interior);
-  if (variational && o.refine) {
-    t = FitClock::now();
-    const detail::RefineStats rs =
-        detail::refineCoverage(index, interior, detail::kRefineSpacing * surface_spacing, min_edge,
-                               res->points, &best->spheres);
-    res->bounding_queries += rs.queries;
-    if (rs.kept) res->refine_points = rs.points;
-    res->seconds.refine += secondsSince(t);
-  }
-  if (variational && o.optimal_radii)
-    detail::runOptimalRadii(index, interior, min_edge, &best->spheres, res);
-  res->bounding_enlarged = bs.enlarged;
-  t = FitClock::now();
-  detail::boundInteriorPasses(index, &best->spheres, res);
-  if (o.original) {
-    // A repaired solid's input triangles: the wrap holds them strictly inside and a union or
-    // capped solid holds them on or inside its boundary, so this pass rarely grows a sphere;
-    // it makes their coverage exact rather than implied.
-    const detail::BoundStats ob =
-        detail::boundSurface(index, &best->spheres, min_edge, nullptr, o.original);
-    res->bounding_enlarged += ob.enlarged;
-    res->bounding_pieces += ob.pieces;
-    res->bounding_queries += ob.queries;
-  }
-  res->seconds.bound += secondsSince(t);
-}
-
 }  // namespace
 
 Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
-  if (Status st = checkOptions(index, o); !st) return st.error();
+  if (Status st = detail::checkFitOptions(index, o); !st) return st.error();
   if (o.restarts > 1) return detail::fitWithRestarts(index, o);
   const auto t0 = detail::FitClock::now();
   FitResult res;
@@ -143,9 +72,8 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
 
   // Preprocessing (paper Sec. 5): the points to cluster.
   report("sampling", 0, 0.0);
-  const int64_t target =
-      o.target_points > 0 ? o.target_points : std::max<int64_t>(5000, 100 * int64_t{n});
-  const detail::PointSet ps = detail::samplePoints(index, target, o.interior_share, o.seed);
+  const detail::PointSet ps =
+      detail::samplePoints(index, detail::fitTargetPoints(o), o.interior_share, o.seed);
   res.points = static_cast<int64_t>(ps.points.size());
   res.interior_points = ps.interior;
   res.seconds.sampling = detail::secondsSince(t0);
@@ -174,11 +102,7 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& o) {
   // are already inside the sphere of their cluster (each radius encloses its points).
   report("bounding", res.iterations, best.energy);
   const auto tb = detail::FitClock::now();
-  boundClusters(index, ps, o, &best, &res);
-  for (Sphere& s : best.spheres) s.radius += o.padding;
-  res.spheres = std::move(best.spheres);
-  res.outside_volume = detail::outsideVolumes(index, res.spheres);
-  res.energy = detail::totalOf(res.outside_volume);
+  detail::finishFit(index, ps, o, &best, &res);
   res.seconds.bounding = detail::secondsSince(tb);
   res.seconds.total = detail::secondsSince(t0);
   report("done", res.iterations, res.energy);

@@ -3,6 +3,10 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+
+#include "sphereset/limits.hpp"
+
 namespace sphereset::detail {
 
 ProgressScope::ProgressScope(const FitOptions& options, FitClock::time_point start)
@@ -50,6 +54,34 @@ Vec3 farthestFrom(const std::vector<Vec3>& pts, const Vec3& q) {
       best = p;
     }
   return best;
+}
+
+Status checkFitOptions(const SolidIndex& index, const FitOptions& o) {
+  using limits::checkRange;
+  for (Status st :
+       {checkRange("num_spheres", o.num_spheres, 1, limits::kMaxSpheres),
+        checkRange("target_points", static_cast<double>(o.target_points), 0,
+                   static_cast<double>(limits::kMaxPoints)),
+        checkRange("interior_share", o.interior_share, 0.0, 1.0),
+        checkRange("max_iterations", o.max_iterations, 0, limits::kMaxIterations),
+        checkRange("tolerance", o.tolerance, 0.0, 1.0),
+        checkRange("max_failed_teleports", o.max_failed_teleports, 0, limits::kMaxIterations),
+        checkRange("optimizer_evaluations", o.optimizer_evaluations, 0,
+                   limits::kMaxOptimizerEvaluations),
+        checkRange("padding", o.padding, 0.0, limits::kMaxCoordinate),
+        checkRange("shrink_passes", o.shrink_passes, 0, limits::kMaxIterations),
+        checkRange("decimation", o.decimation, 0.0, limits::kMaxDecimation),
+        checkRange("restarts", o.restarts, 1, limits::kMaxRestarts),
+        checkRange("progress_interval", o.progress_interval, 0.0, 3600.0)})
+    if (!st) return st;
+  if (!(signedVolume(index.mesh()) > 0.0))
+    return Error{ErrorCode::kNotSolid, "the mesh encloses no volume"};
+  return {};
+}
+
+int64_t fitTargetPoints(const FitOptions& o) {
+  return o.target_points > 0 ? o.target_points
+                             : std::max<int64_t>(5000, 100 * int64_t{o.num_spheres});
 }
 
 }  // namespace sphereset::detail

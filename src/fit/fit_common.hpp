@@ -52,6 +52,12 @@ class ProgressScope {
   PollScope poll_;
 };
 
+// The options of fitSpheres within their limits, and a solid of positive volume.
+Status checkFitOptions(const SolidIndex& index, const FitOptions& o);
+
+// Points the fit clusters: o.target_points, or max(5000, 100 n) when it is 0.
+int64_t fitTargetPoints(const FitOptions& o);
+
 // Outside volume of each sphere (in parallel).
 std::vector<double> outsideVolumes(const SolidIndex& index, const std::vector<Sphere>& sp);
 

@@ -55,6 +55,8 @@ class LloydClustering {
   }
 
   Clustering run(const std::function<void(int, double)>& report);
+  // A complete state to start from, the best so far.
+  void setBest(Clustering start) { out_ = std::move(start); }
 
  private:
   Round lloydRound();
@@ -219,6 +221,16 @@ Clustering clusterPoints(const SolidIndex& index, const PointSet& ps,
                          const std::vector<Vec3>& centres, const FitOptions& o, int max_failed,
                          FitResult* res, const std::function<void(int, double)>& report) {
   return LloydClustering(index, ps, centres, o, max_failed, res).run(report);
+}
+
+Clustering clusterFrom(const SolidIndex& index, const PointSet& ps, Clustering start,
+                       const FitOptions& o, int max_failed, FitResult* res,
+                       const std::function<void(int, double)>& report) {
+  std::vector<Vec3> centres;
+  for (const Sphere& s : start.spheres) centres.push_back(s.center);
+  LloydClustering lc(index, ps, centres, o, max_failed, res);
+  lc.setBest(std::move(start));
+  return lc.run(report);
 }
 
 }  // namespace sphereset::detail

@@ -28,4 +28,11 @@ Clustering clusterPoints(const SolidIndex& index, const PointSet& ps,
                          const std::vector<Vec3>& centres, const FitOptions& o, int max_failed,
                          FitResult* res, const std::function<void(int, double)>& report);
 
+// The same from a complete state (`start`: spheres, their clusters' points and energy), which
+// counts as the best state so far: the rounds start from its centres, and it is returned if no
+// round or teleport beats it.
+Clustering clusterFrom(const SolidIndex& index, const PointSet& ps, Clustering start,
+                       const FitOptions& o, int max_failed, FitResult* res,
+                       const std::function<void(int, double)>& report);
+
 }  // namespace sphereset::detail

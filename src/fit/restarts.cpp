@@ -33,9 +33,7 @@ double selectAmongRestarts(const SolidIndex& index, const FitOptions& o,
                            const std::vector<Sphere>& pool, const std::vector<int32_t>& group_of,
                            const std::vector<int32_t>& start, FitResult* best) {
   const int n = o.num_spheres;
-  const int64_t target =
-      o.target_points > 0 ? o.target_points : std::max<int64_t>(5000, 100 * int64_t{n});
-  const PointSet ps = samplePoints(index, target, o.interior_share, o.seed);
+  const PointSet ps = samplePoints(index, fitTargetPoints(o), o.interior_share, o.seed);
   const double min_edge = boundMinEdge(index, ps);
   const std::vector<Vec3> interior(ps.points.begin(), ps.points.begin() + ps.interior);
   const CoverProblem problem = coverProblem(index, pool, group_of, interior, min_edge);

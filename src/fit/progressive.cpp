@@ -1,0 +1,236 @@
+// Progressive fitting (beyond the paper). Reference: Wang et al. 2006, Sec. 5 fits one count
+// from seeds; its teleportation (Sec. 5, "Sphere Teleportation") splits a cluster in two from
+// "the two points farthest from each other". Here a fit at n + k starts from the clustering of
+// a fit at n: the k splits that lower the outside volume most (each cluster split by 2-means
+// from its farthest pair, both halves refitted as in the sphere update, Eq. 5) give the extra
+// seeds, and the paper's rounds and teleports run again from there, the split state counting as
+// the best so far. The points are those fitSpheres samples for the largest count asked so far,
+// sampled again when a larger count needs more (a clustering carries over: its clusters hold
+// positions, not indices); a fit at a lower count may so cluster more points than fitSpheres
+// would give it. Each count ends as fitSpheres ends (finish.cpp), so every fit of the curve is
+// bounded; its clustering, before the bound, is what a larger count starts from.
+//
+// Deviation from an independent fit at each count: a warm-started clustering gets fewer rounds
+// (kWarmRounds) and fewer teleports that may fail in a row (kWarmFailedTeleports): its clusters
+// start settled, and the splits are the moves a teleport would try. docs/benchmarks.md,
+// "Progressive fitting", compares both on the shared meshes.
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fit/finish.hpp"
+#include "fit/fit_common.hpp"
+#include "fit/lloyd.hpp"
+#include "fit/samples.hpp"
+#include "fit/seeding.hpp"
+#include "fit/sphere_update.hpp"
+#include "fit/teleport.hpp"
+#include "sphereset/fit.hpp"
+
+namespace sphereset {
+namespace {
+
+// A warm-started clustering: at most this many rounds (or the options' fewer), and this many
+// teleports in a row that may fail before it is taken as settled (or the options' fewer).
+constexpr int kWarmRounds = 40;
+constexpr int kWarmFailedTeleports = 3;
+
+// A cluster while the seeds of the next count are chosen: its points, its sphere's centre and
+// outside volume, and (once known) its best split: the gain and the two halves.
+struct Piece {
+  std::vector<Vec3> points;
+  Sphere sphere;  // encloses `points`
+  double sov = 0.0;
+  bool split_known = false;
+  double gain = -std::numeric_limits<double>::infinity();
+  std::vector<Vec3> a, b;
+  detail::SphereUpdate ua, ub;
+};
+
+// The split of every piece not yet measured (in parallel, deterministic per piece).
+void measureSplits(const SolidIndex& index, const FitOptions& o, std::vector<Piece>* pieces,
+                   FitResult* res) {
+  std::vector<int64_t> queries(pieces->size(), 0);
+  tbb::parallel_for(size_t{0}, pieces->size(), [&](size_t i) {
+    detail::pollCancel();
+    Piece& p = (*pieces)[i];
+    if (p.split_known) return;
+    p.split_known = true;
+    if (p.points.size() < 2) return;
+    detail::splitTwoMeans(p.points, &p.a, &p.b);
+    if (p.a.empty() || p.b.empty()) return;
+    p.ua = detail::updateSphere(index, p.a, detail::centroid(p.a), o.optimizer,
+                                o.optimizer_evaluations);
+    p.ub = detail::updateSphere(index, p.b, detail::centroid(p.b), o.optimizer,
+                                o.optimizer_evaluations);
+    p.gain = p.sov - (p.ua.sov + p.ub.sov);
+    queries[i] = p.ua.queries + p.ub.queries;
+  });
+  res->optimizer_queries += std::accumulate(queries.begin(), queries.end(), int64_t{0});
+}
+
+// The clustering of `count` spheres made from clustering `c` (fewer spheres): the pieces whose
+// split gains most are split, as many at once as are still missing, until there are `count` (a
+// half can be split again in a later pass). Fewer spheres only if no piece can be split.
+detail::Clustering splitClusters(const SolidIndex& index, const detail::Clustering& c, int count,
+                                 const FitOptions& o, FitResult* res) {
+  const auto tt = detail::FitClock::now();
+  const std::vector<double> sov = detail::outsideVolumes(index, c.spheres);
+  std::vector<Piece> pieces(c.spheres.size());
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    pieces[i].points = c.members[i];
+    pieces[i].sphere = c.spheres[i];
+    pieces[i].sov = sov[i];
+  }
+  while (static_cast<int>(pieces.size()) < count) {
+    measureSplits(index, o, &pieces, res);
+    std::vector<size_t> order;
+    for (size_t i = 0; i < pieces.size(); ++i)
+      if (std::isfinite(pieces[i].gain)) order.push_back(i);
+    if (order.empty()) break;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t x, size_t y) { return pieces[x].gain > pieces[y].gain; });
+    order.resize(std::min(order.size(), static_cast<size_t>(count) - pieces.size()));
+    for (size_t i : order) {
+      Piece& p = pieces[i];
+      Piece half;
+      half.points = std::move(p.b);
+      half.sphere = p.ub.sphere;
+      half.sov = p.ub.sov;
+      p.points = std::move(p.a);
+      p.sphere = p.ua.sphere;
+      p.sov = p.ua.sov;
+      p.split_known = false;
+      p.gain = -std::numeric_limits<double>::infinity();
+      pieces.push_back(std::move(half));
+    }
+  }
+  detail::Clustering out;
+  out.energy = 0.0;
+  for (Piece& p : pieces) {
+    out.spheres.push_back(p.sphere);
+    out.members.push_back(std::move(p.points));
+    out.energy += p.sov;
+  }
+  res->seconds.teleport += detail::secondsSince(tt);
+  return out;
+}
+
+}  // namespace
+
+struct ProgressiveFit::Impl {
+  const SolidIndex& index;
+  FitOptions options;
+  detail::PointSet ps;  // sampled for `sampled_for` spheres (0: not yet)
+  int sampled_for = 0;
+  std::map<int, detail::Clustering> clusterings;  // by count: each fit's, before its bound
+  std::map<int, FitResult> fits;                  // by count
+};
+
+ProgressiveFit::ProgressiveFit(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+ProgressiveFit::ProgressiveFit(ProgressiveFit&&) noexcept = default;
+ProgressiveFit& ProgressiveFit::operator=(ProgressiveFit&&) noexcept = default;
+ProgressiveFit::~ProgressiveFit() = default;
+
+int ProgressiveFit::maxCount() const { return impl_->options.num_spheres; }
+
+Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const FitOptions& options) {
+  if (Status st = detail::checkFitOptions(index, options); !st) return st.error();
+  if (options.method != FitMethod::kVariational || options.restarts != 1 ||
+      options.decimation != 0.0)
+    return Error{ErrorCode::kInvalidArgument,
+                 "progressive fitting takes the variational method with one restart and no "
+                 "decimation"};
+  return ProgressiveFit(std::unique_ptr<Impl>(new Impl{index, options, {}, 0, {}, {}}));
+}
+
+namespace {
+
+// The points of a fit at `count`: the options' for the largest count, scaled as fitSpheres'
+// default scales with the count (max(5000, 100 n)); the default itself when they are 0.
+int64_t targetPoints(const FitOptions& o, int count) {
+  FitOptions at = o;
+  at.num_spheres = count;
+  if (o.target_points == 0) return detail::fitTargetPoints(at);
+  at.target_points = 0;
+  FitOptions top = at;
+  top.num_spheres = o.num_spheres;
+  return std::max<int64_t>(
+      1, o.target_points * detail::fitTargetPoints(at) / detail::fitTargetPoints(top));
+}
+
+// The clustering of `count` spheres: from seeds when no smaller count was clustered, else
+// from the largest smaller count's, split (splitClusters) and clustered again.
+detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet& ps,
+                                const std::map<int, detail::Clustering>& done, int count,
+                                const FitOptions& o, FitResult* res, detail::ProgressScope* scope) {
+  const auto progress = [&](int it, double e) { scope->report("clustering", it, e); };
+  auto below = done.lower_bound(count);
+  if (below == done.begin()) {
+    scope->report("clustering", 0, 0.0);
+    return detail::clusterPoints(index, ps, detail::initialCentres(ps, count, o.init, o.seed), o,
+                                 o.max_failed_teleports, res, progress);
+  }
+  --below;
+  scope->report("splitting", 0, below->second.energy);
+  detail::Clustering split = splitClusters(index, below->second, count, o, res);
+  if (static_cast<int>(split.spheres.size()) != count) return {};
+  FitOptions warm = o;
+  warm.max_iterations = std::min(o.max_iterations, kWarmRounds);
+  return detail::clusterFrom(index, ps, std::move(split), warm,
+                             std::min(o.max_failed_teleports, kWarmFailedTeleports), res, progress);
+}
+
+}  // namespace
+
+Expected<FitResult> ProgressiveFit::fit(int count) {
+  Impl& m = *impl_;
+  if (count < 1 || count > m.options.num_spheres)
+    return Error{ErrorCode::kInvalidArgument, "count " + std::to_string(count) +
+                                                  " is outside 1 to " +
+                                                  std::to_string(m.options.num_spheres)};
+  if (auto it = m.fits.find(count); it != m.fits.end()) return it->second;
+  const auto t0 = detail::FitClock::now();
+  FitOptions o = m.options;
+  o.num_spheres = count;
+  FitResult res;
+  detail::ProgressScope scope(o, t0);
+  // The points of a fit at the largest count asked so far.
+  if (m.sampled_for == 0 || (count > m.sampled_for && targetPoints(m.options, count) >
+                                                          targetPoints(m.options, m.sampled_for))) {
+    scope.report("sampling", 0, 0.0);
+    m.ps = detail::samplePoints(m.index, targetPoints(m.options, count), o.interior_share, o.seed);
+    m.sampled_for = count;
+    res.seconds.sampling = detail::secondsSince(t0);
+  }
+  res.points = static_cast<int64_t>(m.ps.points.size());
+  res.interior_points = m.ps.interior;
+  if (res.points < count)
+    return Error{ErrorCode::kInvalidArgument,
+                 "asked for " + std::to_string(count) + " spheres but only " +
+                     std::to_string(res.points) + " points were sampled (raise --points)"};
+  detail::Clustering c = clusterCount(m.index, m.ps, m.clusterings, count, o, &res, &scope);
+  res.converged = c.converged;
+  if (c.spheres.empty())
+    return Error{ErrorCode::kInvalidArgument,
+                 "could not place " + std::to_string(count) + " non-empty clusters"};
+  res.energy_before_bounding = c.energy;
+  m.clusterings[count] = c;
+  scope.report("bounding", res.iterations, c.energy);
+  const auto tb = detail::FitClock::now();
+  detail::finishFit(m.index, m.ps, o, &c, &res);
+  res.seconds.bounding = detail::secondsSince(tb);
+  res.seconds.total = detail::secondsSince(t0);
+  scope.report("done", res.iterations, res.energy);
+  m.fits[count] = res;
+  return res;
+}
+
+}  // namespace sphereset
