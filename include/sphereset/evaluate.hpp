@@ -160,8 +160,9 @@ Expected<ProtrusionResult> sphereProtrusion(const SolidIndex& solid,
 
 // The fewest spheres that meet a tolerance: a certified protrusion of at most max_protrusion
 // (length) or max_protrusion_fraction of the bounding-box diagonal (the smaller when both), and
-// an E_r of at most max_er, each 0 for no limit, capped at max_spheres (tolerance_fit.cpp:
-// independent fits at 1, 2, 4, ... spheres until one meets it, then bisection). The result is
+// an E_r of at most max_er, each 0 for no limit, capped at max_spheres (tolerance_fit.cpp: fits
+// at 1, 2, 4, ... spheres until one meets it, then bisection; the fits of one progressive run,
+// ProgressiveFit, when the request allows one, else independent fits). The result is
 // the fit and check of the smallest count tried that met it (met), or else of the best count
 // tried (covered first, then the smaller protrusion, or E_r without a protrusion limit), and
 // every count tried (`curve`, in the order tried). `original` and `walls` as EvalOptions'.
@@ -190,6 +191,7 @@ struct ToleranceFitResult {
   FitResult fit;
   EvalResult eval;
   std::vector<CurvePoint> curve;
+  bool progressive = false;  // the counts were fits of one progressive run
   double seconds = 0.0;
 };
 // The table of the tolerance options (options.hpp): max_protrusion (a trailing % makes it a

@@ -250,7 +250,10 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& option
 // and the clusterings of the earlier ones; not for use from two threads at once.
 class ProgressiveFit {
  public:
-  // A run for counts up to options.num_spheres. Errors: those of fitSpheres for these options,
+  // Whether start() takes these options: the variational method, one restart, no decimation.
+  static bool allows(const FitOptions& options);
+  // A run for counts up to options.num_spheres; samples the points of a fit at that count.
+  // Errors: those of fitSpheres for these options,
   // and kInvalidArgument for options it cannot honour: a method other than the variational
   // one, restarts > 1 or decimation > 0 (each count is one clustering, warm-started).
   static Expected<ProgressiveFit> start(const SolidIndex& index, const FitOptions& options);
@@ -264,9 +267,8 @@ class ProgressiveFit {
   // are split (2-means, both halves refitted) until there are `count`, then the rounds and
   // teleports of the clustering run again (fewer of them than a fit from seeds gets). A count
   // fitted before returns its fit again; with no count below it, the clustering starts from
-  // seeds as fitSpheres does. The points are those of a fit at the largest count asked so far:
-  // options.target_points are the largest count's (0: the default), scaled for a count as the
-  // default scales (max(5000, 100 n)), which a quality preset's points follow too. The same calls in the same order give the same spheres for any thread count.
+  // seeds as fitSpheres does. Every count clusters the points of a fit at options.num_spheres,
+  // sampled by start(). The same calls in the same order give the same spheres for any thread count.
   // FitResult::seconds is this call's.
   // Errors: kInvalidArgument for a count out of range or clusters that cannot all be placed.
   // options.progress is called as fitSpheres calls it (FitProgress::spheres = count), and may

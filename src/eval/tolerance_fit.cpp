@@ -1,12 +1,16 @@
 // The fewest spheres that meet a tolerance (evaluate.hpp, fitToTolerance): a protrusion bound
 // (certified, sphereProtrusion) and/or an E_r, found by fitting at 1, 2, 4, ... spheres until a
 // count meets it (or the cap), then bisecting between the last count that did not and the first
-// that did. Each count is an independent fit (fitSpheres with the request's options at that
-// count) checked as `sphereset fit` checks its result (fitCheckEvalOptions). Independent fits
-// are not monotone in their count, so the count found is the smallest of those tried that
-// meets the tolerance, with every count tried in the curve.
+// that did. The counts are fits of one progressive run (fit.hpp, ProgressiveFit: each clustering
+// warm-started from the largest count below it) when the request allows one (the variational
+// method, one restart, no decimation), else independent fits (fitSpheres with the request's
+// options at that count); each is checked as `sphereset fit` checks its result
+// (fitCheckEvalOptions). Fits are not monotone in their count, so the count found is the
+// smallest of those tried that meets the tolerance, with every count tried in the curve.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "sphereset/evaluate.hpp"
@@ -17,7 +21,10 @@
 namespace sphereset {
 namespace {
 
-constexpr const char* kPercentWord = "%";
+// The progressive runs of a search: the first for up to this many spheres, each next one for up
+// to this many times the count that passed the last (the cap at most).
+constexpr int kFirstWindow = 64;
+constexpr int kWindowGrowth = 4;
 
 constexpr OptionSpec kToleranceOptions[] = {
     {"max_protrusion",
@@ -72,7 +79,6 @@ Status setToleranceOption(ToleranceOptions* o, const std::string& name, const st
   }
   if (n == "max_er") o->max_er = parsed->value.real;
   if (n == "max_spheres") o->max_spheres = static_cast<int>(parsed->value.integer);
-  (void)kPercentWord;
   return {};
 }
 
@@ -106,13 +112,33 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
     if (a.point.covered != b.point.covered) return b.point.covered;
     return limit > 0.0 ? b.point.protrusion < a.point.protrusion : b.point.er_sum < a.point.er_sum;
   };
+  // Progressive runs when the request allows them: a run samples the points of its largest
+  // count, so the first is for up to kFirstWindow spheres and, when the doubling passes it, the
+  // next for up to kWindowGrowth times the count (its first count starts from seeds).
+  FitOptions any = fitOptionsFor(request);
+  const bool allowed = ProgressiveFit::allows(any);
+  std::optional<ProgressiveFit> progressive;
+  auto fitAt = [&](int n, const FitOptions& fo) -> Expected<FitResult> {
+    if (!allowed) return fitSpheres(index, fo);
+    if (!progressive || n > progressive->maxCount()) {
+      FitRequest top = request;
+      top.num_spheres = std::min(t.max_spheres, std::max(kFirstWindow, kWindowGrowth * n));
+      FitOptions top_options = fitOptionsFor(top);
+      top_options.original = t.original;
+      auto p = ProgressiveFit::start(index, top_options);
+      if (!p) return p.error();
+      progressive.emplace(std::move(p).value());
+    }
+    return progressive->fit(n);
+  };
+  out.progressive = allowed;
   auto run = [&](int n) -> Expected<Trial> {
     const auto s0 = std::chrono::steady_clock::now();
     FitRequest r = request;
     r.num_spheres = n;
     FitOptions fo = fitOptionsFor(r);
     fo.original = t.original;
-    auto fit = fitSpheres(index, fo);
+    auto fit = fitAt(n, fo);
     if (!fit) return fit.error();
     auto ev =
         evaluateSpheres(index, fit->spheres, fitCheckEvalOptions(fo.seed, t.original, t.walls));

@@ -4,11 +4,11 @@
 // a fit at n: the k splits that lower the outside volume most (each cluster split by 2-means
 // from its farthest pair, both halves refitted as in the sphere update, Eq. 5) give the extra
 // seeds, and the paper's rounds and teleports run again from there, the split state counting as
-// the best so far. The points are those fitSpheres samples for the largest count asked so far,
-// sampled again when a larger count needs more (a clustering carries over: its clusters hold
-// positions, not indices); a fit at a lower count may so cluster more points than fitSpheres
-// would give it. Each count ends as fitSpheres ends (finish.cpp), so every fit of the curve is
-// bounded; its clustering, before the bound, is what a larger count starts from.
+// the best so far. One point set, the one fitSpheres samples for the largest count, serves
+// every count: a fit at a lower count clusters more points than fitSpheres would give it (above
+// 50 spheres, where the default points grow with n). Each count ends as fitSpheres ends
+// (finish.cpp), so every fit of the curve is bounded; its clustering, before the bound, is what a
+// larger count starts from.
 //
 // Deviation from an independent fit at each count: a warm-started clustering gets fewer rounds
 // (kWarmRounds) and fewer teleports that may fail in a row (kWarmFailedTeleports): its clusters
@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -128,8 +129,7 @@ detail::Clustering splitClusters(const SolidIndex& index, const detail::Clusteri
 struct ProgressiveFit::Impl {
   const SolidIndex& index;
   FitOptions options;
-  detail::PointSet ps;  // sampled for `sampled_for` spheres (0: not yet)
-  int sampled_for = 0;
+  detail::PointSet ps;                            // sampled for options.num_spheres spheres
   std::map<int, detail::Clustering> clusterings;  // by count: each fit's, before its bound
   std::map<int, FitResult> fits;                  // by count
 };
@@ -139,32 +139,31 @@ ProgressiveFit::ProgressiveFit(ProgressiveFit&&) noexcept = default;
 ProgressiveFit& ProgressiveFit::operator=(ProgressiveFit&&) noexcept = default;
 ProgressiveFit::~ProgressiveFit() = default;
 
+bool ProgressiveFit::allows(const FitOptions& options) {
+  return options.method == FitMethod::kVariational && options.restarts == 1 &&
+         options.decimation == 0.0;
+}
+
 int ProgressiveFit::maxCount() const { return impl_->options.num_spheres; }
 
 Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const FitOptions& options) {
   if (Status st = detail::checkFitOptions(index, options); !st) return st.error();
-  if (options.method != FitMethod::kVariational || options.restarts != 1 ||
-      options.decimation != 0.0)
+  if (!allows(options))
     return Error{ErrorCode::kInvalidArgument,
                  "progressive fitting takes the variational method with one restart and no "
                  "decimation"};
-  return ProgressiveFit(std::unique_ptr<Impl>(new Impl{index, options, {}, 0, {}, {}}));
+  auto impl = std::unique_ptr<Impl>(new Impl{index, options, {}, {}, {}});
+  impl->ps = detail::samplePoints(index, detail::fitTargetPoints(options), options.interior_share,
+                                  options.seed);
+  const int64_t points = static_cast<int64_t>(impl->ps.points.size());
+  if (points < options.num_spheres)
+    return Error{ErrorCode::kInvalidArgument,
+                 "asked for up to " + std::to_string(options.num_spheres) + " spheres but only " +
+                     std::to_string(points) + " points were sampled (raise --points)"};
+  return ProgressiveFit(std::move(impl));
 }
 
 namespace {
-
-// The points of a fit at `count`: the options' for the largest count, scaled as fitSpheres'
-// default scales with the count (max(5000, 100 n)); the default itself when they are 0.
-int64_t targetPoints(const FitOptions& o, int count) {
-  FitOptions at = o;
-  at.num_spheres = count;
-  if (o.target_points == 0) return detail::fitTargetPoints(at);
-  at.target_points = 0;
-  FitOptions top = at;
-  top.num_spheres = o.num_spheres;
-  return std::max<int64_t>(
-      1, o.target_points * detail::fitTargetPoints(at) / detail::fitTargetPoints(top));
-}
 
 // The clustering of `count` spheres: from seeds when no smaller count was clustered, else
 // from the largest smaller count's, split (splitClusters) and clustered again.
@@ -202,20 +201,8 @@ Expected<FitResult> ProgressiveFit::fit(int count) {
   o.num_spheres = count;
   FitResult res;
   detail::ProgressScope scope(o, t0);
-  // The points of a fit at the largest count asked so far.
-  if (m.sampled_for == 0 || (count > m.sampled_for && targetPoints(m.options, count) >
-                                                          targetPoints(m.options, m.sampled_for))) {
-    scope.report("sampling", 0, 0.0);
-    m.ps = detail::samplePoints(m.index, targetPoints(m.options, count), o.interior_share, o.seed);
-    m.sampled_for = count;
-    res.seconds.sampling = detail::secondsSince(t0);
-  }
   res.points = static_cast<int64_t>(m.ps.points.size());
   res.interior_points = m.ps.interior;
-  if (res.points < count)
-    return Error{ErrorCode::kInvalidArgument,
-                 "asked for " + std::to_string(count) + " spheres but only " +
-                     std::to_string(res.points) + " points were sampled (raise --points)"};
   detail::Clustering c = clusterCount(m.index, m.ps, m.clusterings, count, o, &res, &scope);
   res.converged = c.converged;
   if (c.spheres.empty())

@@ -79,6 +79,38 @@ TEST(ToleranceFit, BothLimitsTogether) {
   EXPECT_LE(r->eval.protrusion, 0.1 * index.bounds().diagonal());
 }
 
+TEST(ToleranceFit, CountsAreOneProgressiveRunWhenTheRequestAllowsIt) {
+  const SolidIndex index(test::makeTorus(1.0, 0.3, 24, 12));
+  ToleranceOptions t;
+  t.max_er = 0.8;
+  t.max_spheres = 64;
+  auto r = fitToTolerance(index, fastRequest(), t);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_TRUE(r->progressive);
+  // The same counts in the same order through a ProgressiveFit give the same set.
+  FitRequest top = fastRequest();
+  top.num_spheres = 64;
+  auto run = ProgressiveFit::start(index, fitOptionsFor(top));
+  ASSERT_TRUE(run.ok());
+  Expected<FitResult> last = Error{ErrorCode::kInvalidArgument, "none"};
+  for (const CurvePoint& c : r->curve) {
+    auto f = run->fit(c.n);
+    ASSERT_TRUE(f.ok());
+    if (c.n == r->n) last = std::move(f);
+  }
+  ASSERT_TRUE(last.ok());
+  ASSERT_EQ(last->spheres.size(), r->fit.spheres.size());
+  for (size_t i = 0; i < last->spheres.size(); ++i)
+    EXPECT_EQ(last->spheres[i].center, r->fit.spheres[i].center);
+  // Restarts are not a progressive run's: independent fits.
+  FitRequest restarts = fastRequest();
+  restarts.restarts = 2;
+  t.max_spheres = 4;
+  auto ind = fitToTolerance(index, restarts, t);
+  ASSERT_TRUE(ind.ok());
+  EXPECT_FALSE(ind->progressive);
+}
+
 TEST(ToleranceFit, BadRequestsAreRefused) {
   const SolidIndex index(test::makeBox(Vec3::Zero(), Vec3::Ones()));
   ToleranceOptions t;

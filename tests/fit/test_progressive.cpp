@@ -34,8 +34,8 @@ TEST(ProgressiveFit, EveryCountBoundsTheSolidWithItsCount) {
 }
 
 TEST(ProgressiveFit, AFirstCountIsTheFitFromSeeds) {
-  // With no smaller count fitted, the clustering starts from seeds on the points fitSpheres
-  // samples for that count: the same spheres, bit for bit.
+  // With no smaller count fitted, the clustering starts from seeds as fitSpheres does; with the
+  // same points (both counts take 5000 below 50 spheres), the same spheres, bit for bit.
   const Mesh link = test::robotLink();
   const SolidIndex idx(link);
   FitOptions o = quickOptions(12);
@@ -113,23 +113,22 @@ TEST(ProgressiveFit, ACountAskedAgainIsTheSameFit) {
     EXPECT_EQ(a->spheres[i].center, c->spheres[i].center);
 }
 
-TEST(ProgressiveFit, PointsAreThoseOfTheLargestCountAskedSoFar) {
+TEST(ProgressiveFit, EveryCountClustersThePointsOfTheLargest) {
   const Mesh link = test::robotLink();
   const SolidIndex idx(link);
-  FitOptions o = fitPreset(80);  // max(5000, 100 n) points
+  FitOptions o;  // target_points 0: max(5000, 100 n)
+  o.num_spheres = 80;
   o.max_iterations = 2;
   o.refine = false;
   auto run = ProgressiveFit::start(idx, o);
+  ASSERT_TRUE(run.ok());
   auto a = run->fit(3);
   ASSERT_TRUE(a.ok());
-  EXPECT_NEAR(static_cast<double>(a->points), 5000.0, 500.0);
+  EXPECT_NEAR(static_cast<double>(a->points), 8000.0, 800.0);
   auto b = run->fit(80);
   ASSERT_TRUE(b.ok());
-  EXPECT_NEAR(static_cast<double>(b->points), 8000.0, 800.0);
-  auto c = run->fit(40);  // keeps the larger set
-  ASSERT_TRUE(c.ok());
-  EXPECT_EQ(c->points, b->points);
-  EXPECT_EQ(c->spheres.size(), 40u);
+  EXPECT_EQ(a->points, b->points);
+  EXPECT_EQ(b->spheres.size(), 80u);
 }
 
 TEST(ProgressiveFit, RefusesWhatItCannotHonour) {
