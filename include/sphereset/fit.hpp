@@ -256,7 +256,12 @@ class ProgressiveFit {
   // Errors: those of fitSpheres for these options,
   // and kInvalidArgument for options it cannot honour: a method other than the variational
   // one, restarts > 1 or decimation > 0 (each count is one clustering, warm-started).
-  static Expected<ProgressiveFit> start(const SolidIndex& index, const FitOptions& options);
+  // With `warm_from` (a run on the same solid, e.g. a quicker one), its clusterings are this
+  // run's as if it had made them (their clusters are positions, so they carry over to this
+  // run's points): a count it clustered is only ended (bound, refinement...) with this run's
+  // options, and larger counts start from them; its fits are not taken.
+  static Expected<ProgressiveFit> start(const SolidIndex& index, const FitOptions& options,
+                                        const ProgressiveFit* warm_from = nullptr);
   ProgressiveFit(ProgressiveFit&&) noexcept;
   ProgressiveFit& operator=(ProgressiveFit&&) noexcept;
   ~ProgressiveFit();

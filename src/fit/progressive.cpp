@@ -40,8 +40,8 @@ namespace {
 
 // A warm-started clustering: at most this many rounds (or the options' fewer), and this many
 // teleports in a row that may fail before it is taken as settled (or the options' fewer).
-constexpr int kWarmRounds = 40;
-constexpr int kWarmFailedTeleports = 3;
+constexpr int kWarmRounds = 30;
+constexpr int kWarmFailedTeleports = 2;
 
 // A cluster while the seeds of the next count are chosen: its points, its sphere's centre and
 // outside volume, and (once known) its best split: the gain and the two halves.
@@ -146,7 +146,8 @@ bool ProgressiveFit::allows(const FitOptions& options) {
 
 int ProgressiveFit::maxCount() const { return impl_->options.num_spheres; }
 
-Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const FitOptions& options) {
+Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const FitOptions& options,
+                                               const ProgressiveFit* warm_from) {
   if (Status st = detail::checkFitOptions(index, options); !st) return st.error();
   if (!allows(options))
     return Error{ErrorCode::kInvalidArgument,
@@ -160,18 +161,27 @@ Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const Fi
     return Error{ErrorCode::kInvalidArgument,
                  "asked for up to " + std::to_string(options.num_spheres) + " spheres but only " +
                      std::to_string(points) + " points were sampled (raise --points)"};
+  if (warm_from) {
+    if (&warm_from->impl_->index != &index)
+      return Error{ErrorCode::kInvalidArgument,
+                   "a progressive run can start only from a run on the same solid"};
+    for (const auto& [count, c] : warm_from->impl_->clusterings)
+      if (count <= options.num_spheres) impl->clusterings.emplace(count, c);
+  }
   return ProgressiveFit(std::move(impl));
 }
 
 namespace {
 
-// The clustering of `count` spheres: from seeds when no smaller count was clustered, else
-// from the largest smaller count's, split (splitClusters) and clustered again.
+// The clustering of `count` spheres: the one adopted from another run (start's warm_from) if
+// there is one, else from seeds when no smaller count was clustered, else from the largest
+// smaller count's, split (splitClusters) and clustered again.
 detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet& ps,
                                 const std::map<int, detail::Clustering>& done, int count,
                                 const FitOptions& o, FitResult* res, detail::ProgressScope* scope) {
   const auto progress = [&](int it, double e) { scope->report("clustering", it, e); };
   auto below = done.lower_bound(count);
+  if (below != done.end() && below->first == count) return below->second;  // adopted
   if (below == done.begin()) {
     scope->report("clustering", 0, 0.0);
     return detail::clusterPoints(index, ps, detail::initialCentres(ps, count, o.init, o.seed), o,

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,11 +32,14 @@ namespace {
 // fewer and leave its spheres to another. On the Kinova at a budget of 60, 2 gave 2.7 % less
 // outside volume than 1 but took 1.23 times as long (docs/benchmarks.md).
 constexpr int kCandidateSpread = 1;
-// Sphere counts at which each free link is fitted to measure its curve for the budget split.
+// Sphere counts at which each free link is fitted to measure its curve for the budget split: up
+// to the first at or above kCurveReach times the even split's share (beyond it the split
+// extrapolates the last piece of the curve, budget.cpp), and never above the budget.
 constexpr int kCurveCounts[] = {1, 2, 4, 8, 16, 32};
+constexpr double kCurveReach = 2.0;
 // The curve fits are quick ones: fewer points and rounds than the final fit.
 constexpr int64_t kCurvePoints = 3000;
-constexpr int kCurveRounds = 20;
+constexpr int kCurveRounds = 10;
 
 // One link to fit: its solid (repaired), its exact sphere primitives, and the results.
 struct Job {
@@ -48,6 +52,8 @@ struct Job {
   bool skipped = false;  // fixed at 0: not fitted
   double padding = 0.0;
   LinkFitCurve curve;
+  // Under a budget: the curve's progressive run, whose clusterings the link's fits start from.
+  std::unique_ptr<ProgressiveFit> curve_run;
   int count = 0;         // the count chosen
   int split_count = -1;  // under a budget: the curve split's count and the even split's
   int even_count = -1;
@@ -104,27 +110,56 @@ FitOptions linkFitOptions(const RobotFitOptions& o, const Job& j, int n, bool qu
   return fo;
 }
 
+// Whether a link has geometry to fit (anything but sphere primitives).
+bool hasFittedGeometry(const RobotLink& link) {
+  for (const LinkGeometry& g : link.geometry)
+    if (g.kind != LinkGeometry::Kind::kSphere) return true;
+  return false;
+}
+// A free link's curve for the budget split: one progressive run of quick fits through the
+// curve's counts up to `reach` (each clustering warm-started from the count before it; the fast
+// preset has one restart and no decimation), kept in j->curve_run for the link's fits to start
+// from.
+void measureCurve(const RobotFitOptions& o, Job* j, double reach) {
+  int top = 0;
+  for (int k : kCurveCounts)
+    if (k <= o.budget && top < reach) top = k;
+  auto run = ProgressiveFit::start(*j->index, linkFitOptions(o, *j, top, true));
+  for (int k : kCurveCounts) {
+    if (!run || k > top) break;
+    auto f = run->fit(k);
+    if (!f) break;
+    j->curve.counts.push_back(k);
+    j->curve.outside_volume.push_back(f->energy);
+  }
+  if (run) j->curve_run = std::make_unique<ProgressiveFit>(std::move(run).value());
+  j->index->forgetAnswers();  // memory per link in flight, not per link (a 1000-link chain)
+}
 // Loads, repairs and indexes every link with geometry, the links in parallel (the wrap is
-// single-threaded); the first error in link order is reported.
+// single-threaded), and under a budget measures each free link's curve as soon as it is ready
+// (each fit is parallel too, and gives the same spheres for any thread count); the first error
+// in link order is reported.
 Expected<std::vector<Job>> prepareLinks(const RobotFitOptions& o, const Robot& robot) {
   std::vector<Job> jobs;
+  int64_t free_links = 0;
   for (const RobotLink& link : robot.links)
     if (!link.geometry.empty()) {
       jobs.emplace_back();
       jobs.back().link = &link;
+      free_links += hasFittedGeometry(link) && !o.link_spheres.contains(link.name);
     }
+  const bool curves = o.budget > 0 && free_links > 0;
+  const double reach = curves ? kCurveReach * o.budget / static_cast<double>(free_links) : 0.0;
+  StepReporter steps(o, "link curves", free_links);
   std::vector<Status> status(jobs.size());
   tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t i) {
     Job& j = jobs[i];
     const RobotLink& link = *j.link;
     const std::string name = o.name + ": link '" + link.name + "'";
     j.primitives = linkSpheres(link);
-    bool fitted = false;
-    for (const LinkGeometry& g : link.geometry) {
+    for (const LinkGeometry& g : link.geometry)
       if (g.kind == LinkGeometry::Kind::kMesh) j.files.push_back(g.mesh_path);
-      fitted = fitted || g.kind != LinkGeometry::Kind::kSphere;
-    }
-    if (!fitted) return;  // sphere primitives only
+    if (!hasFittedGeometry(link)) return;  // sphere primitives only
     if (auto it = o.link_spheres.find(link.name); it != o.link_spheres.end() && it->second == 0)
       return;  // skipped: not worth repairing
     // The options were checked by fitRobot (checkRobotFitOptions).
@@ -136,6 +171,10 @@ Expected<std::vector<Job>> prepareLinks(const RobotFitOptions& o, const Robot& r
     }
     j.repair = std::move(solid->repair);
     j.index = std::make_unique<SolidIndex>(j.repair.solid);
+    if (curves && !o.link_spheres.contains(link.name)) {
+      measureCurve(o, &j, reach);
+      steps.done(link.name);
+    }
   });
   for (const Status& st : status)
     if (!st) return st.error();
@@ -162,24 +201,6 @@ Status chooseCounts(const RobotFitOptions& o, std::vector<Job>* jobs) {
                                                     std::to_string(total)};
     return {};
   }
-  // Curves of the free links, the links in parallel (each fit is parallel too, and gives the
-  // same spheres for any thread count).
-  int64_t free_links = 0;
-  for (const Job& j : *jobs) free_links += j.fixed < 0;
-  StepReporter steps(o, "link curves", free_links);
-  tbb::parallel_for(size_t{0}, jobs->size(), [&](size_t i) {
-    Job& j = (*jobs)[i];
-    if (j.fixed >= 0) return;
-    for (int k : kCurveCounts) {
-      if (k > o.budget) break;
-      auto f = fitSpheres(*j.index, linkFitOptions(o, j, k, true));
-      if (!f) break;
-      j.curve.counts.push_back(k);
-      j.curve.outside_volume.push_back(f->energy);
-    }
-    j.index->forgetAnswers();  // memory per link in flight, not per link (a 1000-link chain)
-    steps.done(j.link->name);
-  });
   std::vector<LinkFitCurve> curves;
   std::vector<int> fixed;
   int primitives = 0;
@@ -209,41 +230,77 @@ Status chooseCounts(const RobotFitOptions& o, std::vector<Job>* jobs) {
   }
   return {};
 }
-// One fit of the link at `count` spheres, with eval's certificates of it.
-LinkFit fitLinkAt(const RobotFitOptions& o, const Job& j, int count) {
+// One fit of the link at `count` spheres, by the link's progressive run if it has one (its
+// certificates come later: evaluateLink).
+LinkFit fitLinkAt(const RobotFitOptions& o, const Job& j, int count, ProgressiveFit* run) {
   const auto t0 = std::chrono::steady_clock::now();
   LinkFit out;
   out.count = count;
   if (j.index && count > 0) {
-    auto f = fitSpheres(*j.index, linkFitOptions(o, j, count, false));
+    auto f = run ? run->fit(count) : fitSpheres(*j.index, linkFitOptions(o, j, count, false));
     if (!f) {
       out.error = f.error().message;
       return out;
     }
     out.spheres = f->spheres;
     out.outside_volume = f->energy;
-    EvalOptions eo;
-    eo.seed = o.seed;
-    eo.union_samples = 0;
-    eo.proximity_segments = 0;
-    eo.shadow_resolution = 0;
-    eo.original = originalTriangles(j.repair);
-    eo.walls = envelopeWalls(j.repair);
-    auto e = evaluateSpheres(*j.index, f->spheres, eo);
-    if (!e) {
-      out.error = e.error().message;
-      return out;
-    }
-    out.eval = std::move(e).value();
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
+// eval's certificates of the fit kept for a link (an empty fit has none); "" or the error.
+std::string evaluateLink(const RobotFitOptions& o, const Job& j, LinkFit* f) {
+  if (!j.index || f->count == 0) return {};
+  const auto t0 = std::chrono::steady_clock::now();
+  EvalOptions eo;
+  eo.seed = o.seed;
+  eo.union_samples = 0;
+  eo.proximity_segments = 0;
+  eo.shadow_resolution = 0;
+  eo.original = originalTriangles(j.repair);
+  eo.walls = envelopeWalls(j.repair);
+  auto e = evaluateSpheres(*j.index, f->spheres, eo);
+  if (!e) return e.error().message;
+  f->eval = std::move(e).value();
+  f->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return {};
+}
+// The fits of each link at its tasks' counts: per link, the counts in increasing order through
+// one progressive run when the options allow it (each clustering warm-started from the count
+// before, the first from the link's curve run), else independent fits; the links in parallel.
+// A link's index forgets its remembered answers after its last fit, so that memory follows the
+// links being fitted, not all of them (about 6.5 MB each, SolidIndex).
+std::vector<LinkFit> fitCandidates(const RobotFitOptions& o, const std::vector<Job>& jobs,
+                                   const std::vector<std::pair<size_t, int>>& tasks) {
+  std::vector<LinkFit> fits(tasks.size());
+  std::vector<std::vector<size_t>> of_link(jobs.size());
+  for (size_t t = 0; t < tasks.size(); ++t) of_link[tasks[t].first].push_back(t);
+  StepReporter steps(o, "link fits", static_cast<int64_t>(tasks.size()));
+  tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t i) {
+    const Job& j = jobs[i];
+    std::vector<size_t>& mine = of_link[i];
+    std::unique_ptr<ProgressiveFit> run;
+    std::stable_sort(mine.begin(), mine.end(),
+                     [&](size_t a, size_t b) { return tasks[a].second < tasks[b].second; });
+    if (j.index && !mine.empty() && tasks[mine.back()].second > 0) {
+      const FitOptions top = linkFitOptions(o, j, tasks[mine.back()].second, false);
+      if (ProgressiveFit::allows(top))
+        if (auto r = ProgressiveFit::start(*j.index, top, j.curve_run.get()))
+          run = std::make_unique<ProgressiveFit>(std::move(r).value());
+    }
+    for (size_t t : mine) {
+      fits[t] = fitLinkAt(o, j, tasks[t].second, run.get());
+      steps.done(j.link->name);
+    }
+    if (j.index) j.index->forgetAnswers();
+  });
+  return fits;
+}
 // Fits every link at its count, and free links under a budget at the curve split's count, the
-// even split's and those within kCandidateSpread of the split's (all fits in parallel); then keeps,
-// per link, the fit of whichever count gives the least total outside volume within the budget
-// (pickCandidates), so the result is never worse than either split. Fails with the first error in
-// link order.
+// even split's and those within kCandidateSpread of the split's (fitCandidates); then keeps, per
+// link, the fit of whichever count gives the least total outside volume within the budget
+// (pickCandidates), so the result is never worse than either split. Fails with the first error
+// in link order.
 Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
   std::vector<std::pair<size_t, int>> tasks;  // (link, count)
   for (size_t i = 0; i < jobs->size(); ++i) {
@@ -254,18 +311,7 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
     for (int k = std::max(1, j.count - kCandidateSpread); k <= j.count + kCandidateSpread; ++k)
       if (k != j.count && k != j.even_count) tasks.emplace_back(i, k);
   }
-  std::vector<LinkFit> fits(tasks.size());
-  // A link's index forgets its remembered answers after the link's last fit, so that memory
-  // follows the links being fitted, not all of them (about 6.5 MB each, SolidIndex).
-  std::vector<std::atomic<int>> unfinished(jobs->size());
-  for (const auto& task : tasks) ++unfinished[task.first];
-  StepReporter steps(o, "link fits", static_cast<int64_t>(tasks.size()));
-  tbb::parallel_for(size_t{0}, tasks.size(), [&](size_t t) {
-    const Job& j = (*jobs)[tasks[t].first];
-    fits[t] = fitLinkAt(o, j, tasks[t].second);
-    if (--unfinished[tasks[t].first] == 0 && j.index) j.index->forgetAnswers();
-    steps.done(j.link->name);
-  });
+  std::vector<LinkFit> fits = fitCandidates(o, *jobs, tasks);
   for (size_t t = 0; t < tasks.size(); ++t)
     if (!fits[t].error.empty())
       return Error{
@@ -282,9 +328,28 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
   for (const Job& j : *jobs) budget += j.count;
   auto pick = pickCandidates(cand, budget);
   if (!pick) return pick.error();
+  // What each split would have cost, for the report.
+  for (size_t i = 0; i < jobs->size(); ++i)
+    for (size_t t : fit_of[i]) {
+      Job& j = (*jobs)[i];
+      if (fits[t].count == j.split_count) j.split_volume = fits[t].outside_volume;
+      if (fits[t].count == j.even_count) j.even_volume = fits[t].outside_volume;
+    }
+  // eval's certificates of the fits kept only, the links in parallel.
+  std::vector<std::string> error(jobs->size());
+  tbb::parallel_for(size_t{0}, jobs->size(), [&](size_t i) {
+    const Job& j = (*jobs)[i];
+    LinkFit& f = fits[fit_of[i][(*pick)[i]]];
+    error[i] = evaluateLink(o, j, &f);
+    if (j.index) j.index->forgetAnswers();
+  });
+  for (size_t i = 0; i < jobs->size(); ++i)
+    if (!error[i].empty())
+      return Error{ErrorCode::kInvalidArgument,
+                   o.name + ": link '" + (*jobs)[i].link->name + "': " + error[i]};
   for (size_t i = 0; i < jobs->size(); ++i) {
     Job& j = (*jobs)[i];
-    LinkFit& f = fits[fit_of[i][(*pick)[i]]];
+    const LinkFit& f = fits[fit_of[i][(*pick)[i]]];
     j.count = f.count;
     j.spheres = j.primitives;
     j.spheres.insert(j.spheres.end(), f.spheres.begin(), f.spheres.end());
@@ -293,11 +358,7 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
     j.outside_volume = f.outside_volume;
     j.seconds = 0.0;
     for (size_t t : fit_of[i]) j.seconds += fits[t].seconds;
-    // What each split would have cost, for the report.
-    for (size_t t : fit_of[i]) {
-      if (fits[t].count == j.split_count) j.split_volume = fits[t].outside_volume;
-      if (fits[t].count == j.even_count) j.even_volume = fits[t].outside_volume;
-    }
+    j.curve_run.reset();
   }
   return {};
 }
