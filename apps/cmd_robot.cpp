@@ -41,6 +41,7 @@ struct RobotArgs {
   RobotLoadArgs load;
   MeshArgs repair;  // repair options only (no mesh path)
   bool quiet = false, json = false;
+  bool best_effort = false;  // --best-effort: write what was found when a limit is not met
 };
 
 enum class RobotOutput { kCurobo, kLula, kSrdf, kUrdf, kMjcf, kJson, kHtml };
@@ -126,6 +127,12 @@ void printSummary(const RobotFitResult& r, const CollisionMatrix& m, double seco
     if (j.from_visual)
       std::fprintf(stderr, "%s: no <collision> geometry, its <visual> geometry was used\n",
                    j.link.c_str());
+  if (r.tolerance)
+    for (const RobotLinkFit& j : r.links)
+      if (j.protrusion_limit > 0.0)
+        std::fprintf(stderr, "%s: protrusion %.4g of its limit %.4g: %s\n", j.link.c_str(),
+                     j.eval.protrusion + j.padding, j.protrusion_limit,
+                     j.limit_met ? "met" : "NOT met");
   if (r.budget_split)
     std::fprintf(stderr,
                  "budget: outside volume %.6g of the links it split (split by curves %.6g, "
@@ -244,6 +251,23 @@ int runRobot(const RobotArgs& a) {
   }
   auto fit = fitRobot(*robot, fo);
   if (!fit) return fail(fit.error());
+  if (fit->tolerance && !fit->tolerance_met) {
+    // The links over their protrusion limit, with what they reached.
+    std::string over;
+    for (const RobotLinkFit& j : fit->links)
+      if (!j.limit_met) {
+        char text[160];
+        std::snprintf(text, sizeof text, "%s%s %.4g > %.4g with %zu spheres",
+                      over.empty() ? "" : ", ", j.link.c_str(), j.eval.protrusion + j.padding,
+                      j.protrusion_limit, j.spheres.size());
+        over += text;
+      }
+    std::fprintf(
+        stderr, "sphereset: %s: the protrusion limit is not met (%s)%s\n", a.urdf.c_str(),
+        over.c_str(),
+        a.best_effort ? "; the spheres found are written (--best-effort)" : "; nothing written");
+    if (!a.best_effort) return kToleranceNotMet;
+  }
   std::vector<LinkSpheres> out;
   for (const RobotLinkFit& j : fit->links)
     if (!j.skipped) out.push_back({j.link, j.spheres});
@@ -290,6 +314,7 @@ int runRobot(const RobotArgs& a) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (a.json) std::cout << jsonText(robotJson(a, *robot, *fit, fo, *matrix)) << '\n';
   if (!a.quiet) printSummary(*fit, *matrix, seconds);
+  if (fit->tolerance && !fit->tolerance_met) return kToleranceNotMet;
   for (const RobotLinkFit& j : fit->links)
     if (!j.covered) {
       std::string written;
@@ -326,6 +351,9 @@ Command registerRobot(CLI::App& app) {
                   "\"Default\", and it is Lula's default_q (default: all joints at 0)");
   addRobotLoadArgs(cmd, &a->load, "");
   addTableOptions(cmd, &a->robot, robotFitOptionTable());
+  cmd->add_flag("--best-effort", a->best_effort,
+                "When a protrusion limit is not met: write the spheres found anyway (the exit "
+                "code is still 10)");
   // The sampling of self-collision pairs; its default pose is --joint-positions.
   addTableOptions(cmd, &a->collision, collisionSamplingOptionTable(), {"default_pose"});
   // --quality and --seed: the fit table's rows, parsed by the library.

@@ -278,7 +278,14 @@ class ProgressiveFit {
   // Errors: kInvalidArgument for a count out of range or clusters that cannot all be placed.
   // options.progress is called as fitSpheres calls it (FitProgress::spheres = count), and may
   // throw to cancel.
-  Expected<FitResult> fit(int count);
+  // With `split_first` (one value per sphere of the fit startCount(count) names), the first
+  // splits go to the clusters of the largest values instead, e.g. each sphere's certified
+  // protrusion (evaluate.hpp) to lower the set's; kInvalidArgument when its size does not match
+  // or the fit would not start from a smaller count.
+  Expected<FitResult> fit(int count, std::span<const double> split_first = {});
+  // The count fit(count) starts from: `count` itself if clustered, else the largest smaller
+  // count clustered, or 0 (from seeds).
+  int startCount(int count) const;
   int maxCount() const;
 
  private:

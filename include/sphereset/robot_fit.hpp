@@ -95,6 +95,15 @@ struct RobotFitOptions {
   // kEnvelope kept whatever its volume (RepairOptions::keep_envelope).
   std::map<std::string, LinkSolid> link_solid_for;
   int default_link_spheres = 8;
+  // Protrusion limits (a length; 0: none): the certified protrusion of a link's padded spheres
+  // from its solid (evaluate.hpp, sphereProtrusion, plus the padding) at most this, for every
+  // link fitted (max_protrusion) or for one (link_max_protrusion, instead). Without a budget, a
+  // link with a limit gets the fewest spheres that meet it (at most 256); with one, every free
+  // link needs a limit and the budget goes where the worst link's protrusion over its limit is
+  // largest (protrusion_split.cpp). Counts fixed by link_spheres stay fixed.
+  double max_protrusion = 0.0;
+  std::map<std::string, double> link_max_protrusion;
+  bool toleranceActive() const { return max_protrusion > 0.0 || !link_max_protrusion.empty(); }
   std::string name;  // prefixes messages (e.g. the URDF's path)
   // Each link fit's progress (fit.hpp), with the link's name. Called from the threads that fit
   // the links, several at once; it must be thread-safe. It may throw to cancel: the exception
@@ -107,7 +116,8 @@ struct RobotFitOptions {
 
 // RobotFitOptions' numbers as one table (options.hpp): budget, default_link_spheres,
 // link_spheres (keyed LINK=N), padding, link_padding (keyed LINK=R), link_solid and
-// link_solid_for (keyed LINK=envelope|walls). The command line's flags of `sphereset robot` and
+// link_solid_for (keyed LINK=envelope|walls), max_protrusion and link_max_protrusion (keyed
+// LINK=D). The command line's flags of `sphereset robot` and
 // Python's fit_robot keywords are made from it.
 // setRobotFitOption sets a row from the text a user typed (a keyed row adds or replaces its link's
 // entry); checkRobotFitOptions checks a struct against the rows with the same messages. (quality
@@ -147,6 +157,8 @@ struct RobotLinkFit {
   int split_count = -1, even_count = -1;         // under a budget: both splits' counts...
   double split_volume = 0.0, even_volume = 0.0;  // ...and their fits' outside volumes
   double seconds = 0.0;                          // fitting (all its fits), without repair
+  double protrusion_limit = 0.0;  // its limit (max_protrusion or link_max_protrusion; 0: none)
+  bool limit_met = true;          // covered and within its limit (true without a limit)
 };
 
 struct RobotFitResult {
@@ -154,6 +166,8 @@ struct RobotFitResult {
   bool budget_split = false;        // some link's count came from the budget
   // Totals over the links the budget split: as chosen, and for each split alone.
   double outside_volume = 0.0, split_outside_volume = 0.0, even_outside_volume = 0.0;
+  bool tolerance = false;     // some link had a protrusion limit...
+  bool tolerance_met = true;  // ...and every such link met it
   double seconds = 0.0;
 };
 

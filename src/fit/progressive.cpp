@@ -22,6 +22,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,9 +80,11 @@ void measureSplits(const SolidIndex& index, const FitOptions& o, std::vector<Pie
 
 // The clustering of `count` spheres made from clustering `c` (fewer spheres): the pieces whose
 // split gains most are split, as many at once as are still missing, until there are `count` (a
-// half can be split again in a later pass). Fewer spheres only if no piece can be split.
+// half can be split again in a later pass); in the first pass, with `first` (one value per
+// sphere of c), those of the largest values instead. Fewer spheres only if no piece can be split.
 detail::Clustering splitClusters(const SolidIndex& index, const detail::Clustering& c, int count,
-                                 const FitOptions& o, FitResult* res) {
+                                 std::span<const double> first, const FitOptions& o,
+                                 FitResult* res) {
   const auto tt = detail::FitClock::now();
   const std::vector<double> sov = detail::outsideVolumes(index, c.spheres);
   std::vector<Piece> pieces(c.spheres.size());
@@ -96,8 +99,10 @@ detail::Clustering splitClusters(const SolidIndex& index, const detail::Clusteri
     for (size_t i = 0; i < pieces.size(); ++i)
       if (std::isfinite(pieces[i].gain)) order.push_back(i);
     if (order.empty()) break;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](size_t x, size_t y) { return pieces[x].gain > pieces[y].gain; });
+    const bool by_first = first.size() == c.spheres.size() && pieces.size() == first.size();
+    std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) {
+      return by_first ? first[x] > first[y] : pieces[x].gain > pieces[y].gain;
+    });
     order.resize(std::min(order.size(), static_cast<size_t>(count) - pieces.size()));
     for (size_t i : order) {
       Piece& p = pieces[i];
@@ -178,7 +183,8 @@ namespace {
 // smaller count's, split (splitClusters) and clustered again.
 detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet& ps,
                                 const std::map<int, detail::Clustering>& done, int count,
-                                const FitOptions& o, FitResult* res, detail::ProgressScope* scope) {
+                                std::span<const double> split_first, const FitOptions& o,
+                                FitResult* res, detail::ProgressScope* scope) {
   const auto progress = [&](int it, double e) { scope->report("clustering", it, e); };
   auto below = done.lower_bound(count);
   if (below != done.end() && below->first == count) return below->second;  // adopted
@@ -189,7 +195,7 @@ detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet&
   }
   --below;
   scope->report("splitting", 0, below->second.energy);
-  detail::Clustering split = splitClusters(index, below->second, count, o, res);
+  detail::Clustering split = splitClusters(index, below->second, count, split_first, o, res);
   if (static_cast<int>(split.spheres.size()) != count) return {};
   FitOptions warm = o;
   warm.max_iterations = std::min(o.max_iterations, kWarmRounds);
@@ -199,7 +205,14 @@ detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet&
 
 }  // namespace
 
-Expected<FitResult> ProgressiveFit::fit(int count) {
+int ProgressiveFit::startCount(int count) const {
+  const auto& done = impl_->clusterings;
+  auto below = done.lower_bound(count);
+  if (below != done.end() && below->first == count) return count;
+  return below == done.begin() ? 0 : std::prev(below)->first;
+}
+
+Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split_first) {
   Impl& m = *impl_;
   if (count < 1 || count > m.options.num_spheres)
     return Error{ErrorCode::kInvalidArgument, "count " + std::to_string(count) +
@@ -213,7 +226,14 @@ Expected<FitResult> ProgressiveFit::fit(int count) {
   detail::ProgressScope scope(o, t0);
   res.points = static_cast<int64_t>(m.ps.points.size());
   res.interior_points = m.ps.interior;
-  detail::Clustering c = clusterCount(m.index, m.ps, m.clusterings, count, o, &res, &scope);
+  const int from = startCount(count);
+  if (!split_first.empty() &&
+      (from == 0 || from == count || split_first.size() != m.clusterings.at(from).spheres.size()))
+    return Error{ErrorCode::kInvalidArgument,
+                 "split_first needs one value per sphere of the count the fit starts from (" +
+                     std::to_string(from) + ")"};
+  detail::Clustering c =
+      clusterCount(m.index, m.ps, m.clusterings, count, split_first, o, &res, &scope);
   res.converged = c.converged;
   if (c.spheres.empty())
     return Error{ErrorCode::kInvalidArgument,

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "robot/link_keys.hpp"
+#include "robot/protrusion_split.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/robot_fit.hpp"
 #include "sphereset/solid_index.hpp"
@@ -49,6 +50,9 @@ struct Job {
   RepairResult repair;
   std::vector<Sphere> primitives;
   int fixed = -1;        // -1: from the budget
+  bool decided = false;  // fitted by its protrusion limit (applyProtrusionLimits)
+  double limit = 0.0;    // its protrusion limit (0: none)
+  bool limit_met = true;
   bool skipped = false;  // fixed at 0: not fitted
   double padding = 0.0;
   LinkFitCurve curve;
@@ -148,7 +152,7 @@ Expected<std::vector<Job>> prepareLinks(const RobotFitOptions& o, const Robot& r
       jobs.back().link = &link;
       free_links += hasFittedGeometry(link) && !o.link_spheres.contains(link.name);
     }
-  const bool curves = o.budget > 0 && free_links > 0;
+  const bool curves = o.budget > 0 && free_links > 0 && !o.toleranceActive();
   const double reach = curves ? kCurveReach * o.budget / static_cast<double>(free_links) : 0.0;
   StepReporter steps(o, "link curves", free_links);
   std::vector<Status> status(jobs.size());
@@ -186,6 +190,7 @@ Status chooseCounts(const RobotFitOptions& o, std::vector<Job>* jobs) {
   bool any_free = false;
   for (Job& j : *jobs) {
     if (!j.index) j.fixed = 0;  // only sphere primitives: nothing to fit
+    if (j.decided) j.fixed = j.count;
     any_free = any_free || j.fixed < 0;
   }
   if (o.budget <= 0 || !any_free) {
@@ -305,6 +310,7 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
   std::vector<std::pair<size_t, int>> tasks;  // (link, count)
   for (size_t i = 0; i < jobs->size(); ++i) {
     const Job& j = (*jobs)[i];
+    if (j.decided) continue;
     tasks.emplace_back(i, j.count);
     if (j.even_count >= 0 && j.even_count != j.count) tasks.emplace_back(i, j.even_count);
     if (j.split_count < 0) continue;
@@ -317,7 +323,8 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
       return Error{
           ErrorCode::kInvalidArgument,
           o.name + ": link '" + (*jobs)[tasks[t].first].link->name + "': " + fits[t].error};
-  // Candidates per link, in task order; links with one fit have one candidate.
+  // Candidates per link, in task order; links with one fit have one candidate. Links fitted by
+  // their protrusion limit have none: their single "candidate" is what they have.
   std::vector<std::vector<LinkCandidate>> cand(jobs->size());
   std::vector<std::vector<size_t>> fit_of(jobs->size());
   int budget = 0;
@@ -325,7 +332,9 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
     cand[tasks[t].first].push_back({fits[t].count, fits[t].outside_volume});
     fit_of[tasks[t].first].push_back(t);
   }
-  for (const Job& j : *jobs) budget += j.count;
+  for (size_t i = 0; i < jobs->size(); ++i)
+    if ((*jobs)[i].decided) cand[i].push_back({0, 0.0});  // counted outside this budget
+  for (const Job& j : *jobs) budget += j.decided ? 0 : j.count;
   auto pick = pickCandidates(cand, budget);
   if (!pick) return pick.error();
   // What each split would have cost, for the report.
@@ -339,6 +348,7 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
   std::vector<std::string> error(jobs->size());
   tbb::parallel_for(size_t{0}, jobs->size(), [&](size_t i) {
     const Job& j = (*jobs)[i];
+    if (j.decided) return;
     LinkFit& f = fits[fit_of[i][(*pick)[i]]];
     error[i] = evaluateLink(o, j, &f);
     if (j.index) j.index->forgetAnswers();
@@ -349,6 +359,7 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
                    o.name + ": link '" + (*jobs)[i].link->name + "': " + error[i]};
   for (size_t i = 0; i < jobs->size(); ++i) {
     Job& j = (*jobs)[i];
+    if (j.decided) continue;
     const LinkFit& f = fits[fit_of[i][(*pick)[i]]];
     j.count = f.count;
     j.spheres = j.primitives;
@@ -359,6 +370,76 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
     j.seconds = 0.0;
     for (size_t t : fit_of[i]) j.seconds += fits[t].seconds;
     j.curve_run.reset();
+  }
+  return {};
+}
+
+// Links with a protrusion limit (RobotFitOptions::max_protrusion, link_max_protrusion): fitted
+// here (protrusion_split.cpp) and marked decided; the others are left to the budget or their
+// counts. Under a budget every free link needs a limit and shares what the fixed counts and
+// the sphere primitives leave. The limit holds the padded spheres: the fit's protrusion is held
+// to the limit minus the link's padding.
+Status applyProtrusionLimits(const RobotFitOptions& o, std::vector<Job>* jobs) {
+  std::vector<detail::ProtrusionLink> links;
+  std::vector<Job*> limited;
+  int rest = o.budget;
+  for (Job& j : *jobs) {
+    rest -= static_cast<int>(j.primitives.size());
+    if (!j.index || j.fixed >= 0) {
+      rest -= std::max(0, j.fixed);
+      continue;
+    }
+    auto it = o.link_max_protrusion.find(j.link->name);
+    j.limit = it != o.link_max_protrusion.end() ? it->second : o.max_protrusion;
+    if (!(j.limit > 0.0)) {
+      if (o.budget > 0)
+        return Error{ErrorCode::kInvalidArgument,
+                     o.name + ": link '" + j.link->name +
+                         "' has no protrusion limit: with a budget, give max_protrusion for "
+                         "every link (or link_spheres for it)"};
+      continue;
+    }
+    if (!(j.limit > j.padding))
+      return Error{ErrorCode::kInvalidArgument,
+                   o.name + ": link '" + j.link->name + "': its padding " + optionText(j.padding) +
+                       " leaves nothing of its protrusion limit " + optionText(j.limit)};
+    detail::ProtrusionLink l;
+    l.name = j.link->name;
+    l.index = j.index.get();
+    l.original = originalTriangles(j.repair);
+    l.walls = envelopeWalls(j.repair);
+    l.limit = j.limit - j.padding;
+    links.push_back(std::move(l));
+    limited.push_back(&j);
+  }
+  if (links.empty()) return {};
+  if (o.budget > 0 && rest < static_cast<int>(links.size()))
+    return Error{ErrorCode::kInvalidArgument,
+                 o.name + ": budget " + std::to_string(o.budget) + " leaves " +
+                     std::to_string(std::max(0, rest)) + " spheres for the " +
+                     std::to_string(links.size()) + " links with a protrusion limit"};
+  const int cap =
+      o.budget > 0 ? rest - static_cast<int>(links.size()) + 1 : detail::kLinkToleranceCap;
+  for (size_t i = 0; i < links.size(); ++i)
+    links[i].options = linkFitOptions(o, *limited[i], cap, false);
+  StepReporter steps(o, "link tolerance", o.budget > 0 ? rest : static_cast<int64_t>(links.size()));
+  auto picks = detail::fitToProtrusion(links, o.budget > 0 ? rest : 0,
+                                       [&](const std::string& link, int units) {
+                                         for (int u = 0; u < units; ++u) steps.done(link);
+                                       });
+  if (!picks) return Error{picks.error().code, o.name + ": " + picks.error().message};
+  for (size_t i = 0; i < links.size(); ++i) {
+    Job& j = *limited[i];
+    detail::ProtrusionPick& p = (*picks)[i];
+    j.decided = true;
+    j.limit_met = p.met;
+    j.count = p.count;
+    j.spheres = j.primitives;
+    j.spheres.insert(j.spheres.end(), p.fit.spheres.begin(), p.fit.spheres.end());
+    for (Sphere& sp : j.spheres) sp.radius += j.padding;
+    j.eval = std::move(p.eval);
+    j.outside_volume = p.fit.energy;
+    j.seconds = p.seconds;
   }
   return {};
 }
@@ -374,6 +455,10 @@ Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) 
     return st.error();
   if (Status st = checkLinkSolids(robot, o.repair, o.link_solid, o.link_solid_for, o.name); !st)
     return st.error();
+  if (Status st =
+          detail::checkLinkKeys(robot, o.link_max_protrusion, "link_max_protrusion", o.name);
+      !st)
+    return st.error();
   auto jobs = prepareLinks(o, robot);
   if (!jobs) return jobs.error();
   for (Job& j : *jobs) {
@@ -386,6 +471,7 @@ Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) 
     auto p = o.link_padding.find(j.link->name);
     j.padding = p != o.link_padding.end() ? p->second : o.padding;
   }
+  if (Status s = applyProtrusionLimits(o, &*jobs); !s) return s.error();
   if (Status s = chooseCounts(o, &*jobs); !s) return s.error();
   if (Status s = fitLinks(o, &*jobs); !s) return s.error();
   RobotFitResult res;
@@ -410,6 +496,12 @@ Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) 
     l.split_volume = j.split_volume;
     l.even_volume = j.even_volume;
     l.seconds = j.seconds;
+    l.protrusion_limit = j.limit;
+    l.limit_met = j.limit_met;
+    if (j.limit > 0.0) {
+      res.tolerance = true;
+      res.tolerance_met = res.tolerance_met && j.limit_met;
+    }
     if (l.split_count >= 0) {
       res.budget_split = true;
       res.outside_volume += l.outside_volume;

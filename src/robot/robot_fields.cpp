@@ -39,6 +39,9 @@ std::vector<ResultField> robotLinkFields(const RobotLinkFit& j) {
       {"even_count", int64_t{j.even_count}, "the even split's count (-1: no budget)"},
       {"even_volume", j.even_volume, "its fit's outside volume"},
       {"seconds", j.seconds, "seconds fitting the link (all its fits), without repair"},
+      {"protrusion_limit", j.protrusion_limit,
+       "its protrusion limit (max_protrusion or link_max_protrusion; 0: none)"},
+      {"limit_met", j.limit_met, "covered and within its protrusion limit (true without one)"},
   };
 }
 
@@ -48,6 +51,8 @@ std::vector<ResultField> robotFitFields(const RobotFitResult& r) {
       {"outside_volume", r.outside_volume, "Σ outside volume of the links the budget split"},
       {"split_outside_volume", r.split_outside_volume, "the same for the curve split alone"},
       {"even_outside_volume", r.even_outside_volume, "the same for the even split alone"},
+      {"tolerance", r.tolerance, "some link had a protrusion limit"},
+      {"tolerance_met", r.tolerance_met, "every link with a protrusion limit met it"},
       {"seconds", r.seconds, "seconds in all"},
   };
 }

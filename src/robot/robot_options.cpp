@@ -60,6 +60,25 @@ constexpr OptionSpec kRobotOptions[] = {
      "none",
      "LINK=R: the link's padding instead; repeatable",
      "LINK"},
+    {"max_protrusion",
+     "--max-protrusion",
+     OptionType::kReal,
+     0,
+     limits::kMaxCoordinate,
+     {},
+     "0",
+     "The certified protrusion of every fitted link's padded spheres at most this (a length; 0: "
+     "no limit): alone, each link's fewest spheres that meet it; with a budget, the split that "
+     "keeps the worst link furthest under its limit"},
+    {"link_max_protrusion",
+     "--link-max-protrusion",
+     OptionType::kReal,
+     0,
+     limits::kMaxCoordinate,
+     {},
+     "none",
+     "LINK=D: the link's protrusion limit instead of max_protrusion (above 0); repeatable",
+     "LINK"},
     {"link_solid", "--link-solid", OptionType::kChoice, 0, 0, kLinkSolids, "envelope",
      "envelope: each link's walls with the hollow behind openings up to fill_openings (auto: "
      "the link's smallest extent, where that encloses a hollow) inside, what a planner treats "
@@ -74,6 +93,15 @@ constexpr OptionSpec kRobotOptions[] = {
 
 std::span<const OptionSpec> robotFitOptionTable() { return kRobotOptions; }
 
+namespace {
+
+Error zeroLimitError(const std::string& link) {
+  return Error{ErrorCode::kInvalidArgument,
+               "link_max_protrusion: link '" + link + "': a protrusion limit must be above 0"};
+}
+
+}  // namespace
+
 Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std::string& text) {
   auto parsed = parseTableOption(kRobotOptions, "robot", name, text);
   if (!parsed) return parsed.error();
@@ -82,7 +110,8 @@ Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std:
   // A link named twice in one keyed row used to keep the last value silently.
   const bool repeated = (n == "link_spheres" && o->link_spheres.count(v.key) > 0) ||
                         (n == "link_padding" && o->link_padding.count(v.key) > 0) ||
-                        (n == "link_solid_for" && o->link_solid_for.count(v.key) > 0);
+                        (n == "link_solid_for" && o->link_solid_for.count(v.key) > 0) ||
+                        (n == "link_max_protrusion" && o->link_max_protrusion.count(v.key) > 0);
   if (repeated)
     return Error{ErrorCode::kInvalidArgument,
                  std::string(n) + " '" + text + "': link '" + v.key + "' is given twice"};
@@ -91,6 +120,11 @@ Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std:
   if (n == "link_spheres") o->link_spheres[v.key] = static_cast<int>(v.integer);
   if (n == "padding") o->padding = v.real;
   if (n == "link_padding") o->link_padding[v.key] = v.real;
+  if (n == "max_protrusion") o->max_protrusion = v.real;
+  if (n == "link_max_protrusion") {
+    if (!(v.real > 0.0)) return zeroLimitError(v.key);
+    o->link_max_protrusion[v.key] = v.real;
+  }
   const LinkSolid solid = v.choice == "walls" ? LinkSolid::kWalls : LinkSolid::kEnvelope;
   if (n == "link_solid") o->link_solid = solid;
   if (n == "link_solid_for") o->link_solid_for[v.key] = solid;
@@ -119,7 +153,8 @@ Status checkRobotFitOptions(const RobotFitOptions& o) {
   // Each number as its text, through the same parser as every front door's.
   const std::pair<const char*, double> values[] = {{"budget", o.budget},
                                                    {"default_link_spheres", o.default_link_spheres},
-                                                   {"padding", o.padding}};
+                                                   {"padding", o.padding},
+                                                   {"max_protrusion", o.max_protrusion}};
   for (const auto& [name, value] : values)
     if (Status st = checkTableValue(kRobotOptions, "robot", name, value); !st) return st;
   for (const auto& [link, count] : o.link_spheres)
@@ -128,6 +163,16 @@ Status checkRobotFitOptions(const RobotFitOptions& o) {
   for (const auto& [link, padding] : o.link_padding)
     if (Status st = checkTableValue(kRobotOptions, "robot", "link_padding", padding, link); !st)
       return st;
+  for (const auto& [link, limit] : o.link_max_protrusion) {
+    if (Status st = checkTableValue(kRobotOptions, "robot", "link_max_protrusion", limit, link);
+        !st)
+      return st;
+    if (!(limit > 0.0)) return zeroLimitError(link);
+    if (o.link_spheres.contains(link))
+      return Error{ErrorCode::kInvalidArgument, "link '" + link +
+                                                    "' has both link_spheres and "
+                                                    "link_max_protrusion: give one"};
+  }
   for (const auto& [link, solid] : o.link_solid_for)
     if (auto v = parseTableOption(kRobotOptions, "robot", "link_solid_for",
                                   link + "=" + kLinkSolids[solid == LinkSolid::kWalls ? 1 : 0]);

@@ -10,6 +10,23 @@ cli_test(robot_budget 0 ARGS robot ${robot}/three_link.urdf --package-path ${rob
 cli_test(robot_progress 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot} --budget 12
          --quality fast --collision-samples 600 -o ${work}/three_progress.json
          STDERR "robot: link curves 3/3, link [a-z0-9_]+ .*robot: link fits [0-9]+/[0-9]+, link .*robot: self-collision 600/600 ")
+# Protrusion limits: each link's fewest spheres within its limit (JSON per link), a limit no
+# count meets under a budget (exit 10, nothing written; --best-effort writes and still exits 10).
+cli_test(robot_max_protrusion 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
+         --max-protrusion 0.05 --link-max-protrusion link2=0.06 --quality fast
+         -o ${work}/three_tol.json --json -q FILE ${work}/three_tol.json
+         STDOUT "\"protrusion_limit\":0.06.*\"tolerance\":true,\"tolerance_met\":true")
+cli_test(robot_max_protrusion_not_met 10 ARGS robot ${robot}/three_link.urdf --package-path
+         ${robot} --max-protrusion 0.000000001 --budget 6 --quality fast -o ${work}/never_tol.yml -q
+         STDERR "three_link.urdf: the protrusion limit is not met .base_link [0-9.e-]+ > 1e-09 with [0-9]+ spheres.*; nothing written"
+         FORBID ${work}/never_tol.yml)
+cli_test(robot_max_protrusion_best_effort 10 ARGS robot ${robot}/three_link.urdf --package-path
+         ${robot} --max-protrusion 0.000000001 --budget 6 --quality fast --best-effort
+         -o ${work}/three_best_effort.yml -q FILE ${work}/three_best_effort.yml)
+cli_test(robot_link_max_protrusion_zero 2 ARGS robot ${robot}/three_link.urdf --package-path
+         ${robot} --link-max-protrusion link2=0 -o ${work}/never_tol2.yml -q
+         STDERR "link_max_protrusion: link 'link2': a protrusion limit must be above 0"
+         FORBID ${work}/never_tol2.yml)
 cli_test(robot_link_counts 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres base_link=2 --link-spheres link1=0 --link-spheres link2=3 --quality fast
          -o ${work}/three.json -q FILE ${work}/three.json)

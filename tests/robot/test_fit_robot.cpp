@@ -86,6 +86,81 @@ TEST(FitRobot, FixedSkippedAndPaddedLinks) {
   EXPECT_NE(bad.error().message.find("'elbow'"), std::string::npos);
 }
 
+TEST(FitRobot, ProtrusionLimitGivesEachLinkItsFewestSpheresThatMeetIt) {
+  const Robot robot = test::threeLinkRobot();
+  RobotFitOptions o = fastOptions();
+  o.max_protrusion = 0.05;
+  o.link_max_protrusion = {{"link2", 0.06}};
+  o.link_padding = {{"link2", 0.005}};
+  auto r = fitRobot(robot, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_TRUE(r->tolerance);
+  EXPECT_TRUE(r->tolerance_met);
+  int limited = 0;
+  for (const RobotLinkFit& l : r->links) {
+    if (!l.fitted) continue;
+    ++limited;
+    const double limit = l.link == "link2" ? 0.06 : 0.05;
+    EXPECT_EQ(l.protrusion_limit, limit) << l.link;
+    EXPECT_TRUE(l.limit_met && l.covered) << l.link;
+    // The padded spheres' certified protrusion is within the limit.
+    EXPECT_LE(l.eval.protrusion + l.padding, limit) << l.link;
+    expectPointsCovered(l.repair.original, l.spheres);
+  }
+  EXPECT_GE(limited, 2);
+  // A limit no count meets within the cap: reported, not an error.
+  o.max_protrusion = 1e-9;
+  o.link_max_protrusion.clear();
+  o.link_padding.clear();
+  o.budget = 8;
+  auto tight = fitRobot(robot, o);
+  ASSERT_TRUE(tight.ok()) << tight.error().message;
+  EXPECT_TRUE(tight->tolerance);
+  EXPECT_FALSE(tight->tolerance_met);
+  size_t total = 0;
+  for (const RobotLinkFit& l : tight->links) {
+    total += l.spheres.size();
+    if (l.fitted) {
+      EXPECT_FALSE(l.limit_met) << l.link;
+    }
+    EXPECT_TRUE(l.covered) << l.link;
+  }
+  EXPECT_LE(total, 8u);  // within the budget
+}
+
+TEST(FitRobot, ProtrusionLimitsRefuseWhatCannotHold) {
+  const Robot robot = test::threeLinkRobot();
+  RobotFitOptions o = fastOptions();
+  o.link_max_protrusion = {{"link1", 0.02}};
+  o.link_spheres = {{"link1", 3}};
+  auto both = fitRobot(robot, o);
+  ASSERT_FALSE(both.ok());
+  EXPECT_NE(both.error().message.find("both link_spheres and link_max_protrusion"),
+            std::string::npos);
+  o.link_spheres.clear();
+  o.budget = 10;  // a budget needs a limit for every free link
+  auto partial = fitRobot(robot, o);
+  ASSERT_FALSE(partial.ok());
+  EXPECT_NE(partial.error().message.find("has no protrusion limit"), std::string::npos);
+  o.budget = 0;
+  o.link_padding = {{"link1", 0.05}};  // the padding alone is over the limit
+  auto padded = fitRobot(robot, o);
+  ASSERT_FALSE(padded.ok());
+  EXPECT_NE(padded.error().message.find("leaves nothing of its protrusion limit"),
+            std::string::npos);
+  o.link_padding.clear();
+  o.link_max_protrusion = {{"elbow", 0.02}};
+  auto unknown = fitRobot(robot, o);
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.error().message.find("'elbow'"), std::string::npos);
+  RobotFitOptions t;
+  EXPECT_FALSE(setRobotFitOption(&t, "link_max_protrusion", "link1=0").ok());
+  EXPECT_FALSE(setRobotFitOption(&t, "max_protrusion", "-1").ok());
+  EXPECT_FALSE(setRobotFitOption(&t, "max_protrusion", "nan").ok());
+  EXPECT_TRUE(setRobotFitOption(&t, "link_max_protrusion", "link1=0.01").ok());
+  EXPECT_FALSE(setRobotFitOption(&t, "link_max_protrusion", "link1=0.02").ok());  // twice
+}
+
 TEST(FitRobot, LinkSolidForDecidesOneLink) {
   const Robot robot = test::threeLinkRobot();
   RobotFitOptions o = fastOptions();
