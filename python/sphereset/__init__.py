@@ -545,6 +545,8 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
               collision_group: int = -1,
               seed: int = 1, quality: str = "default", link_solid: str = "envelope",
               link_solid_for: Optional[Dict[str, str]] = None,
+              max_protrusion: float = 0.0,
+              link_max_protrusion: Optional[Dict[str, float]] = None,
               repair_options: Dict[str, Any]) -> RobotFitResult:
     """Fits collision spheres to every link of a URDF or MJCF (.xml, read by MuJoCo) robot, like
     ``sphereset robot`` (the same library call, options and defaults, so the same spheres for
@@ -561,6 +563,11 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
     behind openings up to ``fill_openings`` (0 or "auto": the link's smallest extent) inside;
     "walls" fits the walls alone; ``link_solid_for`` {link: "envelope" or "walls"} instead for
     those links (an envelope chosen so is kept even where it encloses no hollow).
+    ``max_protrusion`` (a length; 0: none) holds every fitted link's padded spheres within that
+    certified protrusion, ``link_max_protrusion`` {link: length} instead for those links: alone,
+    each such link gets its fewest spheres that meet it; with ``budget``, every free link needs
+    a limit and the budget goes where the worst link is furthest over its limit. A limit not
+    met is not an error: see each link's ``limit_met`` and the result's ``tolerance_met``.
     Raises InvalidArgumentError (a link name the robot lacks, a budget too small), UnreadableError
     (the URDF or a mesh), NotSolidError (a link's geometry cannot be made a solid). The call
     releases the GIL; Ctrl-C raises KeyboardInterrupt at the next progress report of a link fit
@@ -570,7 +577,8 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
     options = dict(budget=budget, default_link_spheres=default_link_spheres,
                    link_spheres=dict(link_spheres or {}), padding=padding,
                    link_padding=dict(link_padding or {}), link_solid=link_solid,
-                   link_solid_for=dict(link_solid_for or {}))
+                   link_solid_for=dict(link_solid_for or {}), max_protrusion=max_protrusion,
+                   link_max_protrusion=dict(link_max_protrusion or {}))
     d = _core._fit_robot(os.fspath(urdf), options, dict(quality=quality, seed=seed),
                          [os.fspath(p) for p in package_paths], bool(use_ros_package_path),
                          int(collision_group), *_repair_args(repair_options).values())

@@ -291,6 +291,10 @@ class RobotLinkFit:
     """its fit's outside volume"""
     seconds: float
     """seconds fitting the link (all its fits), without repair"""
+    protrusion_limit: float
+    """its protrusion limit (max_protrusion or link_max_protrusion; 0: none)"""
+    limit_met: bool
+    """covered and within its protrusion limit (true without one)"""
     repair: Optional[Dict[str, Any]]
     """when fitted: what the repair did"""
     eval: Optional[Dict[str, Any]]
@@ -321,6 +325,10 @@ class RobotFitResult:
     """the same for the curve split alone"""
     even_outside_volume: float
     """the same for the even split alone"""
+    tolerance: bool
+    """some link had a protrusion limit"""
+    tolerance_met: bool
+    """every link with a protrusion limit met it"""
     seconds: float
     """seconds in all"""
 

@@ -247,6 +247,25 @@ def test_fit_robot_same_spheres_as_cli(cli, tmp_path):
                      quality="fast")
 
 
+def test_fit_robot_protrusion_limits():
+    # Each fitted link within its limit (the padded set's certified protrusion); a limit no
+    # count meets under a budget is reported per link, not raised.
+    urdf = DATA / "robot" / "three_link.urdf"
+    r = ss.fit_robot(urdf, package_paths=[DATA / "robot"], quality="fast",
+                     max_protrusion=0.05, link_max_protrusion={"link2": 0.06})
+    assert r.tolerance and r.tolerance_met
+    for lf in r.links:
+        if lf.fitted:
+            assert lf.protrusion_limit == (0.06 if lf.link == "link2" else 0.05)
+            assert lf.limit_met and lf.protrusion <= lf.protrusion_limit
+    tight = ss.fit_robot(urdf, package_paths=[DATA / "robot"], quality="fast", budget=6,
+                         max_protrusion=1e-9)
+    assert tight.tolerance and not tight.tolerance_met
+    assert sum(len(s) for s in tight.spheres.values()) <= 6
+    with pytest.raises(ss.InvalidArgumentError, match="a protrusion limit must be above 0"):
+        ss.fit_robot(urdf, package_paths=[DATA / "robot"], link_max_protrusion={"link2": 0})
+
+
 def test_fit_robot_link_solid_for():
     # link2's envelope at the size given, the other links' walls.
     urdf = DATA / "robot" / "three_link.urdf"

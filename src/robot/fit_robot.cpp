@@ -380,6 +380,7 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
 // the sphere primitives leave. The limit holds the padded spheres: the fit's protrusion is held
 // to the limit minus the link's padding.
 Status applyProtrusionLimits(const RobotFitOptions& o, std::vector<Job>* jobs) {
+  if (!o.toleranceActive()) return {};
   std::vector<detail::ProtrusionLink> links;
   std::vector<Job*> limited;
   int rest = o.budget;
