@@ -30,15 +30,17 @@ namespace {
 // and the exact pick (pickCandidates) chooses among all of them: a fit's outside volume is not
 // monotone in its count (a fit with more spheres can end in a worse local minimum: the Kinova's
 // base link envelope gives E_r 0.54 at 6 spheres and 0.74 at 8), so a link may do better with
-// fewer and leave its spheres to another. On the Kinova at a budget of 60, 2 gave 2.7 % less
-// outside volume than 1 but took 1.23 times as long (docs/benchmarks.md).
-constexpr int kCandidateSpread = 1;
+// fewer and leave its spheres to another. A link's candidates are one progressive run (each
+// warm-started from the count below it); on the Kinova at a budget of 60, seeds 1 to 3, 2 gave
+// 4.7 % less outside volume than 1 (geometric mean) for 1.21 times the time.
+constexpr int kCandidateSpread = 2;
 // Sphere counts at which each free link is fitted to measure its curve for the budget split: up
 // to the first at or above kCurveReach times the even split's share (beyond it the split
 // extrapolates the last piece of the curve, budget.cpp), and never above the budget.
 constexpr int kCurveCounts[] = {1, 2, 4, 8, 16, 32};
 constexpr double kCurveReach = 2.0;
-// The curve fits are quick ones: fewer points and rounds than the final fit.
+// The curve fits are quick ones: fewer points and rounds than the final fit (each count of the
+// curve's progressive run starts from the one below it, so few rounds settle it).
 constexpr int64_t kCurvePoints = 3000;
 constexpr int kCurveRounds = 10;
 

@@ -171,7 +171,7 @@ if(SPHERESET_WITH_REPAIR)
            --link-solid walls --fill-openings 0.05 --link-solid-for link2=envelope
            --link-spheres base_link=1 --link-spheres link1=2 --link-spheres link2=2
            --quality fast -o ${work}/solid_for.yml --json -q
-           STDOUT "\"fill_openings\":0.0,\"fitted\":true,\"from_visual\":false,\"link\":\"link1\".*\"fill_openings\":0.05,\"fitted\":true,\"from_visual\":false,\"link\":\"link2\"")
+           STDOUT "\"fill_openings\":0.0,\"fitted\":true,\"from_visual\":false,\"limit_met\":true,\"link\":\"link1\".*\"fill_openings\":0.05,\"fitted\":true,\"from_visual\":false,\"limit_met\":true,\"link\":\"link2\"")
   cli_test(robot_eval_link_solid_for 0 ARGS eval ${robot}/three_link.urdf ${work}/solid_for.yml
            --link link2 --package-path ${robot} --link-solid walls --fill-openings 0.05
            --link-solid-for link2=envelope --samples 1000 --segments 0 --shadow-resolution 0 --json
