@@ -26,7 +26,8 @@ namespace sphereset::cli {
 namespace {
 
 struct BatchArgs {
-  FitArgs fit;  // the fit options (mesh.path is the input, out_path the output folder)
+  FitArgs fit;          // the fit options (mesh.path is the input, out_path the output folder)
+  TableArgs tolerance;  // the rows of toleranceOptionTable(): every item's unless its line says
   std::string format = "json";
   int jobs = 1;
   bool force = false, dry_run = false, html = false;
@@ -119,6 +120,14 @@ int runBatch(const BatchArgs& c) {
   auto request = fitRequest(a);
   if (!request) return fail(request.error());
   options.fit = std::move(request).value();
+  for (const auto& [name, text] : c.tolerance.given())
+    if (Status st = setToleranceOption(&options.tolerance, name, text); !st)
+      return fail(st.error());
+  if (const auto n = a.fit.options.find("n");
+      options.tolerance.active() && n != a.fit.options.end() && n->second->count() > 0)
+    return fail(Error{ErrorCode::kInvalidArgument,
+                      "-n and a tolerance (--max-protrusion, --max-er) exclude each other: the "
+                      "tolerance chooses the count"});
   auto repair = repairOptions(a.mesh);
   if (!repair) return fail(repair.error());
   options.repair = std::move(repair).value();
@@ -222,6 +231,9 @@ Command registerBatch(CLI::App& app) {
   addRepairArgs(cmd, &a.mesh);
   // The fit's options (n included) are the defaults of items whose manifest line gives none.
   addFitTuningArgs(cmd, &a, true);
+  // A tolerance instead of n (the fewest spheres that meet it), every item's unless its line
+  // gives another.
+  addTableOptions(cmd, &c->tolerance, toleranceOptionTable());
   cmd->add_option("-j,--jobs", c->jobs,
                   "Items fitted at once (each fit is parallel already; more can help with many "
                   "small meshes)")

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/repair.hpp"
 #include "sphereset/status.hpp"
@@ -29,6 +30,10 @@ namespace sphereset {
 struct BatchOptions {
   // The fit of every item unless its manifest line says otherwise (n, quality, seed, ...).
   FitRequest fit;
+  // A tolerance for every item unless its manifest line says otherwise (max_protrusion,
+  // max_er, max_spheres; evaluate.hpp): when one is set, an item's count is the fewest that
+  // meet it (fitToTolerance), not n. Its original and walls are the item's own.
+  ToleranceOptions tolerance;
   // How a mesh that is not a clean solid is made one, as `sphereset fit --repair ...` does. The
   // union and the wrapping (operations) are not part of the core library: callers that link
   // sphereset_repair set them to cgalSolidOperations() (repair_cgal.hpp), as the CLI does;
@@ -58,6 +63,8 @@ struct BatchItem {
   FitRequest fit;
   // Where the item came from, for messages: "folder/a.obj" or "list.csv:7".
   std::string origin;
+  // Its tolerance: BatchOptions::tolerance with the line's values applied.
+  ToleranceOptions tolerance;
 };
 
 // The items of a batch, in the order they are run and reported. `input` is
@@ -78,6 +85,9 @@ struct BatchItem {
 //       quality, seed, points, iterations, restarts, decimation, padding, optimizer, init,
 //       method      the options of `sphereset fit` of the same names (an empty CSV field or a
 //                   JSON null keeps the batch's value)
+//       max_protrusion, max_er, max_spheres
+//                   a tolerance (toleranceOptionTable, `sphereset fit --max-protrusion ...`):
+//                   the item's count is the fewest that meet it; a line may not give n with one
 //     In the manifest, items are run in line order.
 // Errors: kUnreadable (input missing, not a folder, .csv or .jsonl, or unreadable),
 // kInvalidData (a bad manifest line: unknown column, missing mesh, a value out of range or not
@@ -101,7 +111,7 @@ struct BatchItemReport {
   std::string mesh;    // BatchItem::mesh
   std::string output;  // BatchItem::output
   BatchStatus status = BatchStatus::kError;
-  int num_spheres = 0;  // asked for (the request's n)
+  int num_spheres = 0;  // asked for (the request's n; 0 when a tolerance chose the count)
   int spheres = 0;      // written (0 on error)
   // E_r summed: Σ outside volume of the spheres / volume of the solid (exact), as er_sum of
   // `sphereset fit --json`; and E_r of their union (Monte Carlo). NaN on error.
@@ -110,6 +120,11 @@ struct BatchItemReport {
   // Eval's coverage certificate: surface, interior and (after a repair) the original triangles
   // covered, as `sphereset fit` checks before exiting 0.
   bool covered = false;
+  // The certified protrusion of the spheres written (evaluate.hpp; NaN on error), and whether the
+  // item's tolerance was met (true without one; an item whose tolerance no count meets is an
+  // error and writes nothing).
+  double protrusion = 0.0;
+  bool tolerance_met = true;
   std::string repair;  // repairName of what made the solid ("none", "welded", ...); "" on error
   // Wall time of the item: load, repair, fit, write, evaluation (of the run that fitted it).
   double seconds = 0.0;
@@ -121,8 +136,8 @@ struct BatchItemReport {
 };
 
 // The item's line of report.jsonl: one JSON object without the newline, keys in this order:
-// mesh, output, status, n, spheres, er_sum, er_union, covered, repair, seconds, error,
-// fingerprint (er_sum and er_union null on error).
+// mesh, output, status, n, spheres, er_sum, er_union, covered, protrusion, tolerance_met,
+// repair, seconds, error, fingerprint (er_sum, er_union and protrusion null on error).
 std::string reportLine(const BatchItemReport& report);
 
 // Reads a line written by reportLine. Errors: kInvalidData naming what is wrong.

@@ -44,11 +44,18 @@ def batch_options(n: int = 32, *, quality: str = "default", seed: int = 1, paddi
                   restarts: Optional[int] = None, decimation: Optional[float] = None,
                   optimizer: str = "powell", init: str = "fps", method: str = "variational",
                   format: str = "json", resume: bool = True,  # noqa: A002
-                  threads: int = 0, repair_options: Dict[str, Any]) -> Dict[str, Any]:
+                  threads: int = 0, max_protrusion: Any = None, max_er: Optional[float] = None,
+                  max_spheres: Optional[int] = None,
+                  repair_options: Dict[str, Any]) -> Dict[str, Any]:
     """The options of a batch as a plain dict (picklable, sent to the workers): the fit and
     repair options of ``sphereset fit``, the sphere file format, resuming, and the threads of
-    one item's fit (0: all of the worker's cores)."""
+    one item's fit (0: all of the worker's cores). A tolerance (``max_protrusion``, a length or
+    "P%" of the diagonal; ``max_er``; ``max_spheres``, the cap) makes each item's count the
+    fewest that meet it, as ``sphereset fit --max-protrusion`` does (a manifest line may give
+    its own; n and a tolerance on one line are refused)."""
     return {
+        "tolerance": {"max_protrusion": max_protrusion, "max_er": max_er,
+                      "max_spheres": max_spheres},
         # Parsed and checked by the library's fit table where the items are listed.
         "fit": {"n": n, "quality": quality, "seed": seed, "padding": padding,
                 "points": points, "iterations": iterations, "restarts": restarts,
@@ -148,6 +155,11 @@ def _parser() -> argparse.ArgumentParser:
         p.add_argument(*row["flag"].split(","), dest=row["name"], default=None,
                        metavar=row["type"].upper(),
                        help=f'{row["help"]} (default {row["default"]})')
+    # The tolerance's options: one per row of the library's tolerance table.
+    for row in _core._tolerance_option_table():
+        p.add_argument(*row["flag"].split(","), dest=row["name"], default=None,
+                       metavar=row["type"].upper(),
+                       help=f'{row["help"]} (default {row["default"]})')
     # The repair's options: one per row of the library's repair table, parsed by the library.
     for row in _core._repair_option_table():
         p.add_argument(*row["flag"].split(","), dest=row["name"], default=None,
@@ -202,8 +214,11 @@ def main(argv: Optional[List[str]] = None) -> int:
             return 2
     try:
         fit = {row["name"]: getattr(a, row["name"]) for row in _core._fit_option_table()}
+        tolerance = {row["name"]: getattr(a, row["name"])
+                     for row in _core._tolerance_option_table()}
         opts = batch_options(
-            **{k: v for k, v in fit.items() if v is not None}, **repair,
+            **{k: v for k, v in fit.items() if v is not None},
+            **{k: v for k, v in tolerance.items() if v is not None}, **repair,
             format=a.format,
             resume=not a.force, threads=threads)
         try:

@@ -27,12 +27,34 @@ py::dict requestDict(const FitRequest& r) {
 // The library's fit table parses the dict's values (fit_args.hpp), with its messages.
 FitRequest requestFrom(const py::dict& d) { return fitRequest(d); }
 
+// A tolerance as the texts its table parses ({max_protrusion: "0.01" or "5%", max_er,
+// max_spheres}), and back (setToleranceOption, its messages); None values keep the default.
+py::dict toleranceDict(const ToleranceOptions& t) {
+  py::dict d;
+  d["max_protrusion"] = t.max_protrusion_fraction > 0.0
+                            ? optionText(100.0 * t.max_protrusion_fraction) + "%"
+                            : optionText(t.max_protrusion);
+  d["max_er"] = optionText(t.max_er);
+  d["max_spheres"] = std::to_string(t.max_spheres);
+  return d;
+}
+ToleranceOptions toleranceFrom(const py::object& o) {
+  ToleranceOptions t;
+  if (o.is_none()) return t;
+  for (const auto& [key, value] : o.cast<py::dict>()) {
+    if (value.is_none()) continue;
+    check(setToleranceOption(&t, key.cast<std::string>(), py::str(value).cast<std::string>()));
+  }
+  return t;
+}
+
 py::dict itemDict(const BatchItem& i) {
   py::dict d;
   d["mesh"] = i.mesh;
   d["output"] = i.output;
   d["origin"] = i.origin;
   d["fit"] = requestDict(i.fit);
+  d["tolerance"] = toleranceDict(i.tolerance);
   return d;
 }
 
@@ -42,14 +64,17 @@ BatchItem itemFrom(const py::dict& d) {
   i.output = d["output"].cast<std::string>();
   i.origin = d["origin"].cast<std::string>();
   i.fit = requestFrom(d["fit"].cast<py::dict>());
+  if (d.contains("tolerance")) i.tolerance = toleranceFrom(d["tolerance"]);
   return i;
 }
 
-// Options dict: {"fit": request, "repair": "auto"/"off", "weld_tolerance", "fill_cavities",
-// "wrap_alpha", "wrap_offset", "fill_openings" (text), "format", "resume", "threads"}.
+// Options dict: {"fit": request, "tolerance": {max_protrusion, max_er, max_spheres} (optional),
+// "repair": "auto"/"off", "weld_tolerance", "fill_cavities", "wrap_alpha", "wrap_offset",
+// "fill_openings" (text), "format", "resume", "threads"}.
 BatchOptions optionsFrom(const py::dict& d) {
   BatchOptions o;
   o.fit = requestFrom(d["fit"].cast<py::dict>());
+  if (d.contains("tolerance")) o.tolerance = toleranceFrom(d["tolerance"]);
   o.repair = repairOptions(d["repair"].cast<std::string>(), d["weld_tolerance"].cast<double>(),
                            d["fill_cavities"].cast<bool>(), d["wrap_alpha"].cast<double>(),
                            d["wrap_offset"].cast<double>(), d["fill_openings"].cast<std::string>());
@@ -77,7 +102,7 @@ void bindBatch(py::module_& m) {
         return out;
       },
       py::arg("input"), py::arg("options"),
-      "The items of a batch (listBatchItems), as dicts {mesh, output, origin, fit}.");
+      "The items of a batch (listBatchItems), as dicts {mesh, output, origin, fit, tolerance}.");
   m.def(
       "_batch_process",
       [](const py::dict& item, const Path& out_dir_arg, const py::dict& options) {

@@ -80,6 +80,27 @@ def test_batch_items_and_bad_input(tmp_path):
         batch.list_items(str(tmp_path / "nothing"), batch.batch_options())
 
 
+def test_tolerance_crosses_to_the_workers(tmp_path):
+    # A batch-wide tolerance and a manifest line's own reach the item dicts the workers get; the
+    # report gives the count the tolerance chose and its certified protrusion.
+    src = tmp_path / "m"
+    src.mkdir()
+    shutil.copy(DATA / "fr3_link1_collision.stl", src / "a.stl")
+    shutil.copy(DATA / "fr3_link1_collision.stl", src / "b.stl")
+    (src / "list.csv").write_text("mesh,max_protrusion\na.stl,15%\nb.stl,\n")
+    opts = batch.batch_options(quality="fast", max_er=3.0, max_spheres=32)
+    items = batch.list_items(str(src / "list.csv"), opts)
+    assert items[0]["tolerance"] == {"max_protrusion": "15%", "max_er": "3", "max_spheres": "32"}
+    assert items[1]["tolerance"]["max_protrusion"] == "0"
+    out = tmp_path / "out"
+    for item in items:
+        line = json.loads(batch.process_item(item, str(out), opts))
+        assert line["status"] == "ok" and line["n"] == 0 and line["tolerance_met"]
+        assert line["spheres"] >= 1 and line["protrusion"] > 0 and line["covered"]
+    with pytest.raises(ss.InvalidArgumentError, match="max_er 'nan'"):
+        batch.list_items(str(src / "list.csv"), batch.batch_options(max_er=float("nan")))
+
+
 def test_command_line_local_workers(tmp_path):
     src = tmp_path / "one"
     src.mkdir()
@@ -177,7 +198,8 @@ def test_exit_codes_and_summary_come_from_the_library(tmp_path):
                                   ss.InvalidDataError, ss.NotSolidError, ss.WriteError)] == [
         1, 2, 3, 4, 5, 6]
     ok = ('{"mesh":"a.off","output":"a.json","status":"ok","n":2,"spheres":2,"er_sum":0.5,'
-          '"er_union":0.4,"covered":true,"repair":"none","seconds":1.0,"error":"",'
+          '"er_union":0.4,"covered":true,"protrusion":0.1,"tolerance_met":true,"repair":"none",'
+          '"seconds":1.0,"error":"",'
           '"fingerprint":"0123456789abcdef"}')
     bare = ss._core._batch_end([ok], "in", str(tmp_path))
     assert bare == {"summary": "1 items: 1 fitted, 0 skipped, 0 failed", "exit_code": 0,
@@ -187,7 +209,8 @@ def test_exit_codes_and_summary_come_from_the_library(tmp_path):
     assert end["exit_code"] == 7
     assert end["message"].startswith("in: 1 of 2 items failed the coverage check")
     failed = ('{"mesh":"b.off","output":"b.json","status":"error","n":2,"spheres":0,'
-              '"er_sum":null,"er_union":null,"covered":false,"repair":"","seconds":0.1,'
+              '"er_sum":null,"er_union":null,"covered":false,"protrusion":null,'
+              '"tolerance_met":true,"repair":"","seconds":0.1,'
               '"error":"b.off: no such file","fingerprint":""}')
     end = ss._core._batch_end([ok, uncovered, failed], "in", str(tmp_path))
     assert (end["summary"], end["exit_code"]) == ("3 items: 2 fitted, 0 skipped, 1 failed", 8)

@@ -33,7 +33,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Bumped when the meaning of the fingerprint's fields changes.
-constexpr int kFingerprintVersion = 1;
+constexpr int kFingerprintVersion = 2;
 
 // Folder of the item records inside the output folder.
 constexpr const char* kRecordDir = detail::kBatchStateFolder;
@@ -67,6 +67,11 @@ std::string fingerprintOf(const std::string& mesh_bytes, const BatchItem& item,
        " evaluations=" + std::to_string(f.optimizer_evaluations) + " padding=" + real(f.padding) +
        " shrink_passes=" + std::to_string(f.shrink_passes) + " decimation=" + real(f.decimation) +
        " restarts=" + std::to_string(f.restarts);
+  const ToleranceOptions& t = item.tolerance;
+  if (t.active())
+    s += "\ntolerance max_protrusion=" + real(t.max_protrusion) +
+         " max_protrusion_fraction=" + real(t.max_protrusion_fraction) +
+         " max_er=" + real(t.max_er) + " max_spheres=" + std::to_string(t.max_spheres);
   s += "\nrepair enabled=" + std::to_string(r.enabled) + " weld=" + real(r.weld_tolerance) +
        " fill_cavities=" + std::to_string(r.fill_cavities) + " wrap_alpha=" + real(r.wrap_alpha) +
        " wrap_offset=" + real(r.wrap_offset) +
@@ -134,8 +139,34 @@ Status fitItem(const BatchItem& item, const std::string& out_dir, const BatchOpt
   FitOptions fo = fitOptionsFor(item.fit);
   fo.original = solid->original();
   const SolidIndex index(solid->repair.solid);
-  auto fit = fitSpheres(index, fo);
-  if (!fit) return Error{fit.error().code, item.mesh + ": " + fit.error().message};
+  // The spheres and eval's check of them: a fit of n, or the fewest that meet the tolerance.
+  std::vector<Sphere> spheres;
+  double energy = 0.0;
+  std::optional<EvalResult> tolerance_check;
+  if (item.tolerance.active()) {
+    ToleranceOptions t = item.tolerance;
+    t.original = solid->original();
+    t.walls = solid->walls();
+    t.progress = nullptr;
+    auto found = fitToTolerance(index, item.fit, t);
+    if (!found) return Error{found.error().code, item.mesh + ": " + found.error().message};
+    if (!found->met) {
+      char what[200];
+      std::snprintf(what, sizeof what,
+                    ": no count up to %d meets the tolerance (best: n = %d, protrusion %.6g, "
+                    "E_r %.4f)",
+                    t.max_spheres, found->n, found->eval.protrusion, found->eval.er_sum);
+      return Error{ErrorCode::kInvalidArgument, item.mesh + what};
+    }
+    spheres = std::move(found->fit.spheres);
+    energy = found->fit.energy;
+    tolerance_check = std::move(found->eval);
+  } else {
+    auto fit = fitSpheres(index, fo);
+    if (!fit) return Error{fit.error().code, item.mesh + ": " + fit.error().message};
+    spheres = std::move(fit->spheres);
+    energy = fit->energy;
+  }
 
   const std::string out = outputPath(out_dir, item);
   std::error_code ec;
@@ -146,17 +177,21 @@ Status fitItem(const BatchItem& item, const std::string& out_dir, const BatchOpt
   SphereFileMeta meta;
   meta.name = fs::path(item.mesh).stem().string();
   meta.source_mesh = item.mesh;
-  if (Status st = writeSpheres(out, fit->spheres, meta); !st) return st;
+  if (Status st = writeSpheres(out, spheres, meta); !st) return st;
   auto d = fileDigest(out);
   if (!d) return Error{ErrorCode::kWriteFailed, out + ": cannot read back the file written"};
   files->output_digest = *d;
 
-  auto checked =
-      evaluateSpheres(index, fit->spheres, fitCheckEvalOptions(fo.seed, solid->original(), solid->walls()));
-  if (!checked) return Error{checked.error().code, item.mesh + ": " + checked.error().message};
-  const EvalResult& ev = *checked;
-  rep->spheres = static_cast<int>(fit->spheres.size());
-  rep->er_sum = fit->energy / ev.mesh_volume;
+  if (!tolerance_check) {
+    auto checked = evaluateSpheres(index, spheres,
+                                   fitCheckEvalOptions(fo.seed, solid->original(), solid->walls()));
+    if (!checked) return Error{checked.error().code, item.mesh + ": " + checked.error().message};
+    tolerance_check = std::move(checked).value();
+  }
+  const EvalResult& ev = *tolerance_check;
+  rep->spheres = static_cast<int>(spheres.size());
+  rep->er_sum = energy / ev.mesh_volume;
+  rep->protrusion = ev.protrusion;
   rep->er_union = ev.er_union;
   rep->covered = ev.surface_covered && ev.interior_covered && ev.original_covered;
   rep->status = BatchStatus::kOk;
@@ -189,7 +224,7 @@ std::optional<BatchItemReport> upToDate(const BatchItem& item, const std::string
     if (!digest.is_string() || fileDigest(path) != digest.get<std::string>()) return std::nullopt;
   BatchItemReport r = std::move(rec).value();
   r.mesh = item.mesh;
-  r.num_spheres = item.fit.num_spheres;
+  r.num_spheres = item.tolerance.active() ? 0 : item.fit.num_spheres;
   r.status = BatchStatus::kSkipped;
   return r;
 }
@@ -208,8 +243,8 @@ BatchItemReport runBatchItem(const BatchItem& item, const std::string& out_dir,
   BatchItemReport rep;
   rep.mesh = item.mesh;
   rep.output = item.output;
-  rep.num_spheres = item.fit.num_spheres;
-  rep.er_sum = rep.er_union = std::numeric_limits<double>::quiet_NaN();
+  rep.num_spheres = item.tolerance.active() ? 0 : item.fit.num_spheres;
+  rep.er_sum = rep.er_union = rep.protrusion = std::numeric_limits<double>::quiet_NaN();
   ItemFiles files;
   Status st;
   const auto body = [&] {
@@ -244,7 +279,8 @@ BatchItemReport runBatchItem(const BatchItem& item, const std::string& out_dir,
     rep.spheres = 0;
     rep.covered = false;
     rep.repair.clear();
-    rep.er_sum = rep.er_union = std::numeric_limits<double>::quiet_NaN();
+    rep.er_sum = rep.er_union = rep.protrusion = std::numeric_limits<double>::quiet_NaN();
+    rep.tolerance_met = !item.tolerance.active();
   }
   return rep;
 }

@@ -27,10 +27,14 @@ namespace fs = std::filesystem;
 namespace {
 
 // The manifest's columns: the mesh, its output, and the rows of the fit's option table.
-std::string columnList() { return "mesh, output, " + optionNames(fitRequestOptions()); }
+std::string columnList() {
+  return "mesh, output, " + optionNames(fitRequestOptions()) + ", " +
+         optionNames(toleranceOptionTable());
+}
 
 bool knownColumn(const std::string& name) {
-  return name == "mesh" || name == "output" || findOption(fitRequestOptions(), name) != nullptr;
+  return name == "mesh" || name == "output" || findOption(fitRequestOptions(), name) != nullptr ||
+         findOption(toleranceOptionTable(), name) != nullptr;
 }
 
 std::string lower(std::string s) {
@@ -75,6 +79,8 @@ std::string applyValue(const std::string& key, const std::string& text, BatchIte
       return quoted + ": the extension must be .txt, .xyzr, .json, .sph, .yaml or .yml";
     item->output = text;
     *output_given = true;
+  } else if (findOption(toleranceOptionTable(), key) != nullptr) {
+    if (Status st = setToleranceOption(&item->tolerance, key, text); !st) return st.error().message;
   } else {
     // The fit's options: parsed and checked by the library's table, as the command line's.
     if (Status st = setFitRequestOption(&item->fit, key, text); !st) return st.error().message;
@@ -86,7 +92,13 @@ std::string applyValue(const std::string& key, const std::string& text, BatchIte
 struct ManifestItem {
   BatchItem item;
   bool output_given = false;
+  bool n_given = false;
 };
+
+// A line that gives n while a tolerance (its own or the batch's) chooses the count.
+constexpr const char* kNWithTolerance =
+    "n and a tolerance (max_protrusion, max_er) exclude each other: the tolerance chooses the "
+    "count";
 
 // The fields of one CSV line; fields may be quoted ("a, b" with "" for a quote). Empty message
 // on success.
@@ -147,7 +159,7 @@ Error lineError(const std::string& path, size_t line, const std::string& what) {
 }
 
 Expected<std::vector<ManifestItem>> readCsv(const std::string& path, const std::string& text,
-                                            const FitRequest& defaults) {
+                                            const BatchOptions& defaults) {
   const std::vector<std::string> lines = splitLines(text);
   std::vector<std::string> header, fields;
   std::vector<ManifestItem> items;
@@ -175,20 +187,23 @@ Expected<std::vector<ManifestItem>> readCsv(const std::string& path, const std::
                        "expected " + std::to_string(header.size()) +
                            " fields as in the header, found " + std::to_string(fields.size()));
     ManifestItem mi;
-    mi.item.fit = defaults;
+    mi.item.fit = defaults.fit;
+    mi.item.tolerance = defaults.tolerance;
     mi.item.origin = path + ":" + std::to_string(ln + 1);
     for (size_t c = 0; c < header.size(); ++c) {
       if (fields[c].empty() && header[c] != "mesh") continue;  // the batch's value
       const std::string err = applyValue(header[c], fields[c], &mi.item, &mi.output_given);
       if (!err.empty()) return lineError(path, ln + 1, err);
+      mi.n_given = mi.n_given || header[c] == "n";
     }
+    if (mi.n_given && mi.item.tolerance.active()) return lineError(path, ln + 1, kNWithTolerance);
     items.push_back(std::move(mi));
   }
   return items;
 }
 
 Expected<std::vector<ManifestItem>> readJsonl(const std::string& path, const std::string& text,
-                                              const FitRequest& defaults) {
+                                              const BatchOptions& defaults) {
   const std::vector<std::string> lines = splitLines(text);
   std::vector<ManifestItem> items;
   for (size_t ln = 0; ln < lines.size(); ++ln) {
@@ -198,7 +213,8 @@ Expected<std::vector<ManifestItem>> readJsonl(const std::string& path, const std
     if (!j.is_object()) return lineError(path, ln + 1, "expected a JSON object");
     if (!j.contains("mesh")) return lineError(path, ln + 1, "no \"mesh\" key");
     ManifestItem mi;
-    mi.item.fit = defaults;
+    mi.item.fit = defaults.fit;
+    mi.item.tolerance = defaults.tolerance;
     mi.item.origin = path + ":" + std::to_string(ln + 1);
     for (const auto& [key, value] : j.items()) {
       if (!knownColumn(key))
@@ -214,7 +230,9 @@ Expected<std::vector<ManifestItem>> readJsonl(const std::string& path, const std
         return lineError(path, ln + 1, "\"" + key + "\": expected a string or a number");
       const std::string err = applyValue(key, v, &mi.item, &mi.output_given);
       if (!err.empty()) return lineError(path, ln + 1, err);
+      mi.n_given = mi.n_given || key == "n";
     }
+    if (mi.n_given && mi.item.tolerance.active()) return lineError(path, ln + 1, kNWithTolerance);
     items.push_back(std::move(mi));
   }
   return items;
@@ -277,6 +295,7 @@ Expected<std::vector<BatchItem>> listFolder(const std::string& input, const Batc
   for (size_t i = 0; i < rel.size(); ++i) {
     items[i].item.mesh = (root / rel[i]).string();
     items[i].item.fit = options.fit;
+    items[i].item.tolerance = options.tolerance;
     items[i].item.origin = items[i].item.mesh;
   }
   if (Status st = assignOutputs(&items, rel, options.format); !st) return st.error();
@@ -292,8 +311,7 @@ Expected<std::vector<BatchItem>> listManifest(const std::string& input, const st
   if (!text) return text.error();
   // A byte order mark, as spreadsheet programs write, is not part of the first column's name.
   if (text->rfind("\xEF\xBB\xBF", 0) == 0) text->erase(0, 3);
-  auto items =
-      ext == ".csv" ? readCsv(input, *text, options.fit) : readJsonl(input, *text, options.fit);
+  auto items = ext == ".csv" ? readCsv(input, *text, options) : readJsonl(input, *text, options);
   if (!items) return items.error();
   const fs::path dir = fs::path(input).parent_path();
   std::vector<std::string> rel;

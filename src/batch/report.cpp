@@ -54,6 +54,8 @@ std::string reportLine(const BatchItemReport& r) {
   j["er_sum"] = number(r.er_sum);
   j["er_union"] = number(r.er_union);
   j["covered"] = r.covered;
+  j["protrusion"] = number(r.protrusion);
+  j["tolerance_met"] = r.tolerance_met;
   j["repair"] = r.repair;
   j["seconds"] = number(r.seconds);
   j["error"] = r.error;
@@ -105,6 +107,10 @@ Expected<BatchItemReport> parseReportLine(const std::string& line) {
     bad = "er_union";
   else if (!j.contains("covered") || !j["covered"].is_boolean())
     bad = "covered";
+  else if (!real("protrusion", &r.protrusion))
+    bad = "protrusion";
+  else if (!j.contains("tolerance_met") || !j["tolerance_met"].is_boolean())
+    bad = "tolerance_met";
   else if (!str("repair", &r.repair))
     bad = "repair";
   else if (!real("seconds", &r.seconds))
@@ -117,6 +123,7 @@ Expected<BatchItemReport> parseReportLine(const std::string& line) {
     return Error{ErrorCode::kInvalidData,
                  std::string("report line: \"") + bad + "\" is missing or of the wrong type"};
   r.covered = j["covered"].get<bool>();
+  r.tolerance_met = j["tolerance_met"].get<bool>();
   bool known = false;
   for (int s = 0; s < 3; ++s)
     if (status == kStatusNames[s]) {

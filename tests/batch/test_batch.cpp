@@ -259,10 +259,62 @@ TEST_F(BatchTest, ItemGivesTheSpheresOfTheFit) {
   EXPECT_EQ(r.fingerprint, batchFingerprint(item, o).value());
 }
 
+TEST_F(BatchTest, ToleranceColumnsChooseTheCount) {
+  // A manifest's max_protrusion / max_er columns: the item's count is the fewest that meet its
+  // tolerance (fitToTolerance on the same solid gives the same spheres); its line's value wins
+  // over the batch's; n with a tolerance on one line is refused; a tolerance no count meets is
+  // the item's error and writes nothing.
+  box("a.off");
+  box("b.off", 2.0);
+  put("list.csv", "mesh,max_protrusion,max_spheres\na.off,12%,16\nb.off,,\n");
+  BatchOptions o = quickOptions();
+  ASSERT_TRUE(setToleranceOption(&o.tolerance, "max_er", "2").ok());
+  auto items = listBatchItems(path("list.csv"), o);
+  ASSERT_TRUE(items.ok()) << items.error().message;
+  ASSERT_EQ(items->size(), 2u);
+  EXPECT_DOUBLE_EQ((*items)[0].tolerance.max_protrusion_fraction, 0.12);
+  EXPECT_EQ((*items)[0].tolerance.max_spheres, 16);
+  EXPECT_EQ((*items)[1].tolerance.max_er, 2.0);  // the batch's
+  for (const BatchItem& item : *items) {
+    const BatchItemReport r = runBatchItem(item, path("out"), o);
+    ASSERT_EQ(r.status, BatchStatus::kOk) << r.error;
+    EXPECT_EQ(r.num_spheres, 0);  // no n asked: the tolerance chose
+    EXPECT_TRUE(r.tolerance_met && r.covered);
+    auto written = readSpheres(path("out/" + item.output));
+    ASSERT_TRUE(written.ok());
+    EXPECT_EQ(static_cast<int>(written->size()), r.spheres);
+    auto mesh = loadMesh(item.mesh);
+    ASSERT_TRUE(mesh.ok());
+    const SolidIndex index(mesh->mesh);
+    auto t = fitToTolerance(index, item.fit, item.tolerance);
+    ASSERT_TRUE(t.ok() && t->met);
+    EXPECT_EQ(t->n, r.spheres);
+    EXPECT_EQ(t->eval.protrusion, r.protrusion);
+    // The report line carries both fields and reads back.
+    auto back = parseReportLine(reportLine(r));
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    EXPECT_EQ(back->protrusion, r.protrusion);
+    EXPECT_TRUE(back->tolerance_met);
+  }
+  put("both.csv", "mesh,n,max_er\na.off,4,1\n");
+  test::expectError(listBatchItems(path("both.csv"), quickOptions()), ErrorCode::kInvalidData,
+                    "both.csv", ":2: n and a tolerance");
+  BatchItem never = (*items)[0];
+  never.output = "never.json";
+  never.tolerance = {};
+  ASSERT_TRUE(setToleranceOption(&never.tolerance, "max_protrusion", "0.0000001").ok());
+  ASSERT_TRUE(setToleranceOption(&never.tolerance, "max_spheres", "2").ok());
+  const BatchItemReport r = runBatchItem(never, path("out"), o);
+  EXPECT_EQ(r.status, BatchStatus::kError);
+  EXPECT_NE(r.error.find("no count up to 2 meets the tolerance"), std::string::npos) << r.error;
+  EXPECT_FALSE(r.tolerance_met);
+  EXPECT_FALSE(fs::exists(path("out/never.json")));
+}
+
 TEST_F(BatchTest, ItemRunsInAnArenaWithTheSameResult) {
   const std::string mesh = box("box.off");
   BatchOptions o = quickOptions();
-  BatchItem item{mesh, "one.txt", o.fit, "test"};
+  BatchItem item{mesh, "one.txt", o.fit, "test", {}};
   ASSERT_EQ(runBatchItem(item, path("out"), o).status, BatchStatus::kOk);
   o.threads = 1;
   item.output = "two.txt";
@@ -273,7 +325,7 @@ TEST_F(BatchTest, ItemRunsInAnArenaWithTheSameResult) {
 TEST_F(BatchTest, FailedItemsAreReportedNotThrown) {
   const std::string garbage = put("bad.stl", "not a mesh at all");
   BatchOptions o = quickOptions();
-  BatchItem item{garbage, "bad.json", o.fit, "test"};
+  BatchItem item{garbage, "bad.json", o.fit, "test", {}};
   BatchItemReport r = runBatchItem(item, path("out"), o);
   EXPECT_EQ(r.status, BatchStatus::kError);
   EXPECT_EQ(r.error_code, ErrorCode::kUnreadable);
@@ -286,14 +338,14 @@ TEST_F(BatchTest, FailedItemsAreReportedNotThrown) {
   const std::string sheet =
       put("sheet.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
   o.repair.enabled = false;
-  r = runBatchItem(BatchItem{sheet, "sheet.json", o.fit, "test"}, path("out"), o);
+  r = runBatchItem(BatchItem{sheet, "sheet.json", o.fit, "test", {}}, path("out"), o);
   EXPECT_EQ(r.status, BatchStatus::kError);
   EXPECT_EQ(r.error_code, ErrorCode::kNotSolid);
   EXPECT_NE(r.error.find("sheet.off"), std::string::npos) << r.error;
 
   // More spheres than points.
   o.repair.enabled = true;
-  BatchItem many{box("box.off"), "many.json", o.fit, "test"};
+  BatchItem many{box("box.off"), "many.json", o.fit, "test", {}};
   many.fit.points = 50;
   many.fit.num_spheres = 500;
   r = runBatchItem(many, path("out"), o);
@@ -476,7 +528,7 @@ TEST_F(BatchTest, UpToDateItemsAreSkippedAndChangedOnesRunAgain) {
 TEST_F(BatchTest, FailedRunOfADoneItemIsNotUpToDate) {
   const std::string mesh = box("box.off");
   const BatchOptions o = quickOptions();
-  const BatchItem item{mesh, "box.json", o.fit, "test"};
+  const BatchItem item{mesh, "box.json", o.fit, "test", {}};
   ASSERT_EQ(runBatchItem(item, path("out"), o).status, BatchStatus::kOk);
   ASSERT_TRUE(batchItemDone(item, path("out"), o));
   put("box.off", "garbage");
