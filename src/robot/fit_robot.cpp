@@ -292,7 +292,10 @@ std::vector<LinkFit> fitCandidates(const RobotFitOptions& o, const std::vector<J
     if (j.index && !mine.empty() && tasks[mine.back()].second > 0) {
       const FitOptions top = linkFitOptions(o, j, tasks[mine.back()].second, false);
       if (ProgressiveFit::allows(top))
-        if (auto r = ProgressiveFit::start(*j.index, top, j.curve_run.get()))
+        // Counts next to each other from the curve's settled clustering: each from the one
+        // below it (on the Kinova at 60, seeds 1-3: 3.5 % less outside volume than from at
+        // most half, in 0.87 times the time).
+        if (auto r = ProgressiveFit::start(*j.index, top, j.curve_run.get(), {.start_ratio = 1}))
           run = std::make_unique<ProgressiveFit>(std::move(r).value());
     }
     for (size_t t : mine) {

@@ -131,6 +131,25 @@ TEST(ProgressiveFit, EveryCountClustersThePointsOfTheLargest) {
   EXPECT_EQ(b->spheres.size(), 80u);
 }
 
+TEST(ProgressiveFit, ACountStartsFromAtMostHalfOrFromTheCountBelow) {
+  const Mesh link = test::robotLink();
+  const SolidIndex idx(link);
+  auto half = ProgressiveFit::start(idx, quickOptions(16));
+  auto below = ProgressiveFit::start(idx, quickOptions(16), nullptr, {.start_ratio = 1});
+  ASSERT_TRUE(half.ok() && below.ok());
+  for (ProgressiveFit* run : {&*half, &*below}) {
+    EXPECT_EQ(run->startCount(5), 0);  // nothing clustered: from seeds
+    ASSERT_TRUE(run->fit(2).ok());
+    ASSERT_TRUE(run->fit(8).ok());
+    EXPECT_EQ(run->startCount(8), 8);  // clustered: only ended again
+  }
+  EXPECT_EQ(half->startCount(12), 2);  // at most 6
+  EXPECT_EQ(below->startCount(12), 8);
+  EXPECT_EQ(half->startCount(3), 0);  // at most 1: none
+  EXPECT_EQ(below->startCount(3), 2);
+  EXPECT_FALSE(ProgressiveFit::start(idx, quickOptions(4), nullptr, {.start_ratio = 0}).ok());
+}
+
 TEST(ProgressiveFit, RefusesWhatItCannotHonour) {
   const Mesh box = test::makeBox(Vec3::Zero(), Vec3::Ones());
   const SolidIndex idx(box);
