@@ -28,13 +28,15 @@ py::dict requestDict(const FitRequest& r) {
 FitRequest requestFrom(const py::dict& d) { return fitRequest(d); }
 
 // A tolerance as the texts its table parses ({max_protrusion: "0.01" or "5%", max_er,
-// max_spheres}), and back (setToleranceOption, its messages); None values keep the default.
+// max_spheres}; None for a limit not set), and back (setToleranceOption, its messages).
 py::dict toleranceDict(const ToleranceOptions& t) {
   py::dict d;
-  d["max_protrusion"] = t.max_protrusion_fraction > 0.0
-                            ? optionText(100.0 * t.max_protrusion_fraction) + "%"
-                            : optionText(t.max_protrusion);
-  d["max_er"] = optionText(t.max_er);
+  d["max_protrusion"] =
+      t.max_protrusion_fraction > 0.0 ? py::object(py::str(
+                                            optionText(100.0 * t.max_protrusion_fraction) + "%"))
+      : t.max_protrusion > 0.0        ? py::object(py::str(optionText(t.max_protrusion)))
+                                      : py::object(py::none());
+  d["max_er"] = t.max_er > 0.0 ? py::object(py::str(optionText(t.max_er))) : py::object(py::none());
   d["max_spheres"] = std::to_string(t.max_spheres);
   return d;
 }

@@ -91,7 +91,7 @@ def test_tolerance_crosses_to_the_workers(tmp_path):
     opts = batch.batch_options(quality="fast", max_er=3.0, max_spheres=32)
     items = batch.list_items(str(src / "list.csv"), opts)
     assert items[0]["tolerance"] == {"max_protrusion": "15%", "max_er": "3", "max_spheres": "32"}
-    assert items[1]["tolerance"]["max_protrusion"] == "0"
+    assert items[1]["tolerance"]["max_protrusion"] is None
     out = tmp_path / "out"
     for item in items:
         line = json.loads(batch.process_item(item, str(out), opts))
@@ -99,6 +99,8 @@ def test_tolerance_crosses_to_the_workers(tmp_path):
         assert line["spheres"] >= 1 and line["protrusion"] > 0 and line["covered"]
     with pytest.raises(ss.InvalidArgumentError, match="max_er 'nan'"):
         batch.list_items(str(src / "list.csv"), batch.batch_options(max_er=float("nan")))
+    with pytest.raises(ss.InvalidArgumentError, match="max_er '0': a tolerance must be above 0"):
+        batch.list_items(str(src / "list.csv"), batch.batch_options(max_er=0))
 
 
 def test_command_line_local_workers(tmp_path):

@@ -73,6 +73,10 @@ Status setToleranceOption(ToleranceOptions* o, const std::string& name, const st
   auto parsed = parseTableOption(kToleranceOptions, "tolerance", name, value);
   if (!parsed) return parsed.error();
   const std::string_view n = parsed->spec->name;
+  if ((n == "max_protrusion" || n == "max_er") && !(parsed->value.real > 0.0))
+    return Error{ErrorCode::kInvalidArgument,
+                 std::string(n) + " '" + text +
+                     "': a tolerance must be above 0 (leave it out for none)"};
   if (n == "max_protrusion") {
     o->max_protrusion = percent ? 0.0 : parsed->value.real;
     o->max_protrusion_fraction = percent ? parsed->value.real / 100.0 : 0.0;

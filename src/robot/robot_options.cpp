@@ -120,7 +120,12 @@ Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std:
   if (n == "link_spheres") o->link_spheres[v.key] = static_cast<int>(v.integer);
   if (n == "padding") o->padding = v.real;
   if (n == "link_padding") o->link_padding[v.key] = v.real;
-  if (n == "max_protrusion") o->max_protrusion = v.real;
+  if (n == "max_protrusion") {
+    if (!(v.real > 0.0))
+      return Error{ErrorCode::kInvalidArgument,
+                   "max_protrusion '" + text + "': a limit must be above 0 (leave it out for none)"};
+    o->max_protrusion = v.real;
+  }
   if (n == "link_max_protrusion") {
     if (!(v.real > 0.0)) return zeroLimitError(v.key);
     o->link_max_protrusion[v.key] = v.real;

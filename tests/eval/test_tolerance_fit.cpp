@@ -125,9 +125,13 @@ TEST(ToleranceFit, BadRequestsAreRefused) {
   EXPECT_TRUE(setToleranceOption(&o, "max_protrusion", "0.01").ok());
   EXPECT_DOUBLE_EQ(o.max_protrusion, 0.01);
   EXPECT_EQ(o.max_protrusion_fraction, 0.0);
-  for (const char* bad : {"nan", "-1", "5%%", "%", "inf", "1e40"})
+  for (const char* bad : {"nan", "-1", "5%%", "%", "inf", "1e40", "0", "0%"})
     EXPECT_FALSE(setToleranceOption(&o, "max_protrusion", bad).ok()) << bad;
   EXPECT_FALSE(setToleranceOption(&o, "max_er", "-0.1").ok());
+  auto zero = setToleranceOption(&o, "max_er", "0");
+  ASSERT_FALSE(zero.ok());
+  EXPECT_NE(zero.error().message.find("max_er '0': a tolerance must be above 0"),
+            std::string::npos);
   EXPECT_FALSE(setToleranceOption(&o, "max_spheres", "0").ok());
 }
 

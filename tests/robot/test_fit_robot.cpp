@@ -157,6 +157,7 @@ TEST(FitRobot, ProtrusionLimitsRefuseWhatCannotHold) {
   EXPECT_FALSE(setRobotFitOption(&t, "link_max_protrusion", "link1=0").ok());
   EXPECT_FALSE(setRobotFitOption(&t, "max_protrusion", "-1").ok());
   EXPECT_FALSE(setRobotFitOption(&t, "max_protrusion", "nan").ok());
+  EXPECT_FALSE(setRobotFitOption(&t, "max_protrusion", "0").ok());
   EXPECT_TRUE(setRobotFitOption(&t, "link_max_protrusion", "link1=0.01").ok());
   EXPECT_FALSE(setRobotFitOption(&t, "link_max_protrusion", "link1=0.02").ok());  // twice
 }
