@@ -123,11 +123,8 @@ int runBatch(const BatchArgs& c) {
   for (const auto& [name, text] : c.tolerance.given())
     if (Status st = setToleranceOption(&options.tolerance, name, text); !st)
       return fail(st.error());
-  if (const auto n = a.fit.options.find("n");
-      options.tolerance.active() && n != a.fit.options.end() && n->second->count() > 0)
-    return fail(Error{ErrorCode::kInvalidArgument,
-                      "-n and a tolerance (--max-protrusion, --max-er) exclude each other: the "
-                      "tolerance chooses the count"});
+  if (Status st = checkToleranceRequest(options.fit, options.tolerance); !st)
+    return fail(st.error());
   auto repair = repairOptions(a.mesh);
   if (!repair) return fail(repair.error());
   options.repair = std::move(repair).value();

@@ -95,12 +95,9 @@ Status writeCurve(const std::string& path, const ToleranceFitResult& t) {
 // exit 10 when no count up to the cap meets it (the best set written only with --best-effort).
 int runToleranceFit(const FitCommandArgs& c, const ToleranceOptions& tolerance) {
   const FitArgs& a = c.fit;
-  if (const auto n = a.fit.options.find("n"); n != a.fit.options.end() && n->second->count() > 0)
-    return fail(Error{ErrorCode::kInvalidArgument,
-                      "-n and a tolerance (--max-protrusion, --max-er) exclude each other: the "
-                      "tolerance chooses the count"});
   auto request = fitRequest(a);
   if (!request) return fail(request.error());
+  if (Status st = checkToleranceRequest(*request, tolerance); !st) return fail(st.error());
   auto m = loadSolid(a.mesh);
   if (!m) return fail(m.error());
   const SolidIndex index(m->repair.solid);

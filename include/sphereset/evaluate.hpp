@@ -200,8 +200,13 @@ struct ToleranceFitResult {
 std::span<const OptionSpec> toleranceOptionTable();
 Status setToleranceOption(ToleranceOptions* options, const std::string& name,
                           const std::string& text);
-// Errors: no limit set, max_spheres out of range, the request's own (checkFitRequest), those
-// of fitSpheres and evaluateSpheres.
+// The one rule of a count and a tolerance: a request whose n was given (FitRequest::count_given)
+// and an active tolerance exclude each other (kInvalidArgument: "n and a tolerance
+// (max_protrusion, max_er) exclude each other: the tolerance chooses the count"). Every door
+// that takes both (fit, batch, Python) asks this before its work; fitToTolerance asks it too.
+Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& tolerance);
+// Errors: no limit set, max_spheres out of range, n given (checkToleranceRequest), the request's
+// own (checkFitRequest), those of fitSpheres and evaluateSpheres.
 Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
                                             const ToleranceOptions& options);
 

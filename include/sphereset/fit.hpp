@@ -173,6 +173,7 @@ FitOptions fitPreset(int num_spheres, FitQuality quality = FitQuality::kDefault)
 // keeps the preset's value.
 struct FitRequest {
   int num_spheres = 32;
+  bool count_given = false;  // n was given (setFitRequestOption "n"): no tolerance may choose it
   FitQuality quality = FitQuality::kDefault;
   uint64_t seed = 1;
   double padding = 0.0;              // absolute units, added to every radius

@@ -39,7 +39,7 @@ __all__ = ["batch_options", "list_items", "process_item", "run_batch", "main"]
 _SCHEDULER_TIMEOUT = "5s"
 
 @_repair_keywords
-def batch_options(n: int = 32, *, quality: str = "default", seed: int = 1, padding: float = 0.0,
+def batch_options(n: Optional[int] = None, *, quality: str = "default", seed: int = 1, padding: float = 0.0,
                   points: int = 0, iterations: Optional[int] = None,
                   restarts: Optional[int] = None, decimation: Optional[float] = None,
                   optimizer: str = "powell", init: str = "fps", method: str = "variational",
@@ -49,7 +49,8 @@ def batch_options(n: int = 32, *, quality: str = "default", seed: int = 1, paddi
                   repair_options: Dict[str, Any]) -> Dict[str, Any]:
     """The options of a batch as a plain dict (picklable, sent to the workers): the fit and
     repair options of ``sphereset fit``, the sphere file format, resuming, and the threads of
-    one item's fit (0: all of the worker's cores). A tolerance (``max_protrusion``, a length or
+    one item's fit (0: all of the worker's cores). ``n`` None: the library's default (32). A
+    tolerance (``max_protrusion``, a length or
     "P%" of the diagonal; ``max_er``; ``max_spheres``, the cap) makes each item's count the
     fewest that meet it, as ``sphereset fit --max-protrusion`` does (a manifest line may give
     its own; n and a tolerance on one line are refused)."""

@@ -10,7 +10,9 @@ namespace {
 
 py::dict requestDict(const FitRequest& r) {
   py::dict d;
-  d["n"] = r.num_spheres;
+  // n only when given, so that an item keeps "not given" across processes (a tolerance then
+  // chooses its count: checkToleranceRequest).
+  d["n"] = r.count_given ? py::object(py::int_(r.num_spheres)) : py::object(py::none());
   d["quality"] = fitQualityName(r.quality);
   d["seed"] = r.seed;
   d["padding"] = r.padding;
@@ -32,10 +34,10 @@ FitRequest requestFrom(const py::dict& d) { return fitRequest(d); }
 py::dict toleranceDict(const ToleranceOptions& t) {
   py::dict d;
   d["max_protrusion"] =
-      t.max_protrusion_fraction > 0.0 ? py::object(py::str(
-                                            optionText(100.0 * t.max_protrusion_fraction) + "%"))
-      : t.max_protrusion > 0.0        ? py::object(py::str(optionText(t.max_protrusion)))
-                                      : py::object(py::none());
+      t.max_protrusion_fraction > 0.0
+          ? py::object(py::str(optionText(100.0 * t.max_protrusion_fraction) + "%"))
+      : t.max_protrusion > 0.0 ? py::object(py::str(optionText(t.max_protrusion)))
+                               : py::object(py::none());
   d["max_er"] = t.max_er > 0.0 ? py::object(py::str(optionText(t.max_er))) : py::object(py::none());
   d["max_spheres"] = std::to_string(t.max_spheres);
   return d;
@@ -151,10 +153,10 @@ void bindBatch(py::module_& m) {
   m.def("_batch_report_path", &batchReportPath, py::arg("out_dir"));
   m.def(
       "_batch_end",
-      [](const std::vector<std::string>& lines, const std::string& input,
-         const Path& out_dir) {
+      [](const std::vector<std::string>& lines, const std::string& input, const Path& out_dir) {
         BatchTotals totals;
-        for (const std::string& line : lines) countBatchItem(unwrap(parseReportLine(line)), &totals);
+        for (const std::string& line : lines)
+          countBatchItem(unwrap(parseReportLine(line)), &totals);
         const BatchEnd end = batchEnd(totals, input, out_dir.string());
         py::dict d;
         d["summary"] = end.summary;

@@ -92,13 +92,7 @@ std::string applyValue(const std::string& key, const std::string& text, BatchIte
 struct ManifestItem {
   BatchItem item;
   bool output_given = false;
-  bool n_given = false;
 };
-
-// A line that gives n while a tolerance (its own or the batch's) chooses the count.
-constexpr const char* kNWithTolerance =
-    "n and a tolerance (max_protrusion, max_er) exclude each other: the tolerance chooses the "
-    "count";
 
 // The fields of one CSV line; fields may be quoted ("a, b" with "" for a quote). Empty message
 // on success.
@@ -194,9 +188,9 @@ Expected<std::vector<ManifestItem>> readCsv(const std::string& path, const std::
       if (fields[c].empty() && header[c] != "mesh") continue;  // the batch's value
       const std::string err = applyValue(header[c], fields[c], &mi.item, &mi.output_given);
       if (!err.empty()) return lineError(path, ln + 1, err);
-      mi.n_given = mi.n_given || header[c] == "n";
     }
-    if (mi.n_given && mi.item.tolerance.active()) return lineError(path, ln + 1, kNWithTolerance);
+    if (Status st = checkToleranceRequest(mi.item.fit, mi.item.tolerance); !st)
+      return lineError(path, ln + 1, st.error().message);
     items.push_back(std::move(mi));
   }
   return items;
@@ -230,9 +224,9 @@ Expected<std::vector<ManifestItem>> readJsonl(const std::string& path, const std
         return lineError(path, ln + 1, "\"" + key + "\": expected a string or a number");
       const std::string err = applyValue(key, v, &mi.item, &mi.output_given);
       if (!err.empty()) return lineError(path, ln + 1, err);
-      mi.n_given = mi.n_given || key == "n";
     }
-    if (mi.n_given && mi.item.tolerance.active()) return lineError(path, ln + 1, kNWithTolerance);
+    if (Status st = checkToleranceRequest(mi.item.fit, mi.item.tolerance); !st)
+      return lineError(path, ln + 1, st.error().message);
     items.push_back(std::move(mi));
   }
   return items;

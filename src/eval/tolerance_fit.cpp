@@ -74,9 +74,9 @@ Status setToleranceOption(ToleranceOptions* o, const std::string& name, const st
   if (!parsed) return parsed.error();
   const std::string_view n = parsed->spec->name;
   if ((n == "max_protrusion" || n == "max_er") && !(parsed->value.real > 0.0))
-    return Error{ErrorCode::kInvalidArgument,
-                 std::string(n) + " '" + text +
-                     "': a tolerance must be above 0 (leave it out for none)"};
+    return Error{
+        ErrorCode::kInvalidArgument,
+        std::string(n) + " '" + text + "': a tolerance must be above 0 (leave it out for none)"};
   if (n == "max_protrusion") {
     o->max_protrusion = percent ? 0.0 : parsed->value.real;
     o->max_protrusion_fraction = percent ? parsed->value.real / 100.0 : 0.0;
@@ -90,6 +90,14 @@ bool ToleranceOptions::active() const {
   return max_protrusion > 0.0 || max_protrusion_fraction > 0.0 || max_er > 0.0;
 }
 
+Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& tolerance) {
+  if (request.count_given && tolerance.active())
+    return Error{ErrorCode::kInvalidArgument,
+                 "n and a tolerance (max_protrusion, max_er) exclude each other: the tolerance "
+                 "chooses the count"};
+  return {};
+}
+
 Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
                                             const ToleranceOptions& t) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -100,6 +108,7 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
     return Error{ErrorCode::kInvalidArgument,
                  "max_spheres must be from 1 to " + std::to_string(limits::kMaxSpheres)};
   if (Status st = checkFitRequest(request); !st) return st.error();
+  if (Status st = checkToleranceRequest(request, t); !st) return st.error();
   const double diag = index.bounds().diagonal();
   double limit = t.max_protrusion > 0.0 ? t.max_protrusion : 0.0;
   if (t.max_protrusion_fraction > 0.0) {

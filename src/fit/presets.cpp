@@ -148,7 +148,10 @@ Status setFitRequestOption(FitRequest* r, const std::string& name, const std::st
   const OptionValue* v = &parsed->value;
   const std::string_view n = parsed->spec->name;
   const auto integer = static_cast<int>(v->integer);  // within the row's int bounds
-  if (n == "n") r->num_spheres = integer;
+  if (n == "n") {
+    r->num_spheres = integer;
+    r->count_given = true;
+  }
   if (n == "quality") r->quality = fitQualityFromName(v->choice).value();
   if (n == "seed") r->seed = v->unsigned_integer;
   if (n == "points") r->points = v->integer;

@@ -347,7 +347,7 @@ cli_test(fit_tolerance_not_met 10 ARGS fit ${link} --max-protrusion 0.0000001 --
 cli_test(fit_tolerance_best_effort 10 ARGS fit ${link} --max-protrusion 0.0000001 --max-spheres 2
          --quality fast --best-effort -o ${work}/best_effort.json -q FILE ${work}/best_effort.json)
 cli_test(fit_tolerance_with_n 2 ARGS fit ${link} -n 8 --max-er 0.5 -o ${work}/never_tol2.json
-         STDERR "-n and a tolerance" FORBID ${work}/never_tol2.json)
+         STDERR "n and a tolerance .max_protrusion, max_er. exclude each other" FORBID ${work}/never_tol2.json)
 cli_test(fit_tolerance_zero 2 ARGS fit ${link} --max-protrusion 0 -o ${work}/never_tol5.json
          STDERR "max_protrusion '0': a tolerance must be above 0" FORBID ${work}/never_tol5.json)
 cli_test(fit_tolerance_nan 2 ARGS fit ${link} --max-er nan -o ${work}/never_tol3.json
