@@ -245,7 +245,7 @@ Expected<std::vector<Sphere>> boundSpheres(const SolidIndex& index, std::vector<
 Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& options);
 
 // Progressive fitting (beyond the paper; src/fit/progressive.cpp): the fits of one solid at
-// increasing sphere counts, each clustering started from the one before it, so that one run
+// increasing sphere counts, each clustering started from a smaller count's, so that one run
 // gives the whole curve of outside volume against n at about the cost of one fit at the largest
 // count (docs/benchmarks.md, "Progressive fitting"). A class because each fit reuses the points
 // and the clusterings of the earlier ones; not for use from two threads at once.
@@ -283,8 +283,9 @@ class ProgressiveFit {
   // (ProgressiveOptions::start_ratio): the clusters whose split in two lowers the outside volume most
   // are split (2-means, both halves refitted) until there are `count`, then the rounds and
   // teleports of the clustering run again (fewer of them than a fit from seeds gets). A count
-  // fitted before returns its fit again; with no count below it, the clustering starts from
-  // seeds as fitSpheres does. Every count clusters the points of a fit at options.num_spheres,
+  // fitted before returns its fit again (split_first and seconds those of its first call); with
+  // no clustering to start from, the clustering starts from seeds as fitSpheres does (the same
+  // spheres when the run's points are that count's: up to 50 spheres by default). Every count clusters the points of a fit at options.num_spheres,
   // sampled by start(). The same calls in the same order give the same spheres for any thread count.
   // FitResult::seconds is this call's.
   // Errors: kInvalidArgument for a count out of range or clusters that cannot all be placed.

@@ -22,7 +22,8 @@ namespace sphereset {
 namespace {
 
 // The progressive runs of a search: the first for up to this many spheres, each next one for up
-// to this many times the count that passed the last (the cap at most).
+// to this many times the count that passed the last (the cap at most), started from the last
+// one's clusterings.
 constexpr int kFirstWindow = 64;
 constexpr int kWindowGrowth = 4;
 
@@ -134,11 +135,15 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
   auto fitAt = [&](int n, const FitOptions& fo) -> Expected<FitResult> {
     if (!allowed) return fitSpheres(index, fo);
     if (!progressive || n > progressive->maxCount()) {
+      // A run cannot hold more spheres than points: an explicit point count bounds the window.
       FitRequest top = request;
       top.num_spheres = std::min(t.max_spheres, std::max(kFirstWindow, kWindowGrowth * n));
+      if (request.points > 0)
+        top.num_spheres = static_cast<int>(
+            std::max<int64_t>(n, std::min<int64_t>(top.num_spheres, request.points)));
       FitOptions top_options = fitOptionsFor(top);
       top_options.original = t.original;
-      auto p = ProgressiveFit::start(index, top_options);
+      auto p = ProgressiveFit::start(index, top_options, progressive ? &*progressive : nullptr);
       if (!p) return p.error();
       progressive.emplace(std::move(p).value());
     }

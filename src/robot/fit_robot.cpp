@@ -425,9 +425,14 @@ Status applyProtrusionLimits(const RobotFitOptions& o, std::vector<Job>* jobs) {
                      std::to_string(std::max(0, rest)) + " spheres for the " +
                      std::to_string(links.size()) + " links with a protrusion limit"};
   const int cap =
-      o.budget > 0 ? rest - static_cast<int>(links.size()) + 1 : detail::kLinkToleranceCap;
-  for (size_t i = 0; i < links.size(); ++i)
-    links[i].options = linkFitOptions(o, *limited[i], cap, false);
+      std::min(detail::kLinkToleranceCap, o.budget > 0 ? rest - static_cast<int>(links.size()) + 1
+                                                       : detail::kLinkToleranceCap);
+  for (size_t i = 0; i < links.size(); ++i) {
+    links[i].cap = cap;
+    links[i].options_for = [&o, job = limited[i]](int n) {
+      return linkFitOptions(o, *job, n, false);
+    };
+  }
   StepReporter steps(o, "link tolerance", o.budget > 0 ? rest : static_cast<int64_t>(links.size()));
   auto picks = detail::fitToProtrusion(links, o.budget > 0 ? rest : 0,
                                        [&](const std::string& link, int units) {

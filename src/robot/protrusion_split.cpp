@@ -2,10 +2,12 @@
 // certified one-sided Hausdorff bound of src/eval/protrusion.cpp). Without a budget each link
 // gets the fewest spheres that meet its limit (the tolerance search of tolerance_fit.cpp). With
 // a budget the worst link's protrusion relative to its limit is made small greedily: the next
-// sphere always goes to the link furthest over its limit. Fits are not monotone in their count,
+// spheres always go to the link furthest over its limit. Fits are not monotone in their count,
 // so a link keeps the best fit among its counts; the greedy split is then a heuristic for the
-// min-max allocation, not its optimum. Each link's counts are fits of one progressive run
-// (ProgressiveFit), each clustering warm-started from the count before it.
+// min-max allocation, not its optimum. A link's counts are fits of progressive runs
+// (ProgressiveFit: each clustering warm-started from a smaller count's, its most protruding
+// spheres split first), in windows as tolerance_fit.cpp's (LinkFits); independent fits when the
+// options forbid a run (--quality best).
 #include "robot/protrusion_split.hpp"
 
 #include <tbb/parallel_for.h>
@@ -22,9 +24,10 @@ namespace sphereset::detail {
 namespace {
 
 // The budget's greedy split gives the worst link given / kStepFraction more spheres at a time
-// (at least 1): one at a time, a warm-started fit keeps most of its clusters and with them its
-// protrusion (on the Kinova's half_arm_1_link it stayed within 0.038 to 0.043 m from 4 to 31
-// spheres one by one, while the search without a budget, doubling, reached 0.014 m).
+// (at least 1): one at a time, each fit started from the one below it kept most of its clusters
+// and with them its protrusion (on the Kinova's half_arm_1_link it stayed within 0.038 to
+// 0.043 m from 4 to 31 spheres one by one, while the search without a budget, doubling,
+// reached 0.014 m).
 constexpr int kStepFraction = 4;
 
 double secondsSince(std::chrono::steady_clock::time_point t0) {
@@ -41,20 +44,50 @@ double overLimit(const ProtrusionPick& p, double limit) {
 // splits first (ProgressiveFit::fit's split_first), so that the spheres furthest out are split.
 using ProtrusionsByCount = std::map<int, std::vector<double>>;
 
-// The fit of `link` at `count` from its run, and its check.
-Expected<ProtrusionPick> pickAt(const ProtrusionLink& link, ProgressiveFit* run, int count,
+// The progressive runs of a link: the first for up to kFirstWindow spheres, the next for up to
+// kWindowGrowth times the count that passed the last (at most the link's cap), started from
+// its clusterings; a run samples the points of its largest count, so a small count does not
+// cluster the points of the cap. Independent fits when the options forbid a run.
+constexpr int kFirstWindow = 64;
+constexpr int kWindowGrowth = 4;
+class LinkFits {
+ public:
+  explicit LinkFits(const ProtrusionLink& link) : link_(link) {}
+  Expected<FitResult> fit(int count, const ProtrusionsByCount& seen) {
+    FitOptions o =
+        link_.options_for(std::min(link_.cap, std::max(kFirstWindow, kWindowGrowth * count)));
+    if (!ProgressiveFit::allows(o)) {
+      FitOptions one = link_.options_for(count);
+      return fitSpheres(*link_.index, one);
+    }
+    if (!run_ || count > run_->maxCount()) {
+      auto r = ProgressiveFit::start(*link_.index, o, run_.get());
+      if (!r) return r.error();
+      run_ = std::make_unique<ProgressiveFit>(std::move(r).value());
+    }
+    const int from = run_->startCount(count);
+    auto it = seen.find(from);
+    return from > 0 && from < count && it != seen.end() ? run_->fit(count, it->second)
+                                                        : run_->fit(count);
+  }
+
+ private:
+  const ProtrusionLink& link_;
+  std::unique_ptr<ProgressiveFit> run_;
+};
+
+// The fit of `link` at `count` and its check.
+Expected<ProtrusionPick> pickAt(const ProtrusionLink& link, LinkFits* fits, int count,
                                 ProtrusionsByCount* seen) {
   const auto t0 = std::chrono::steady_clock::now();
   ProtrusionPick p;
   p.count = count;
-  const int from = run->startCount(count);
-  auto it = seen->find(from);
-  auto f =
-      from > 0 && from < count && it != seen->end() ? run->fit(count, it->second) : run->fit(count);
+  auto f = fits->fit(count, *seen);
   if (!f) return f.error();
   p.fit = std::move(f).value();
-  auto e = evaluateSpheres(*link.index, p.fit.spheres,
-                           fitCheckEvalOptions(link.options.seed, link.original, link.walls));
+  auto e =
+      evaluateSpheres(*link.index, p.fit.spheres,
+                      fitCheckEvalOptions(link.options_for(count).seed, link.original, link.walls));
   if (!e) return e.error();
   p.eval = std::move(e).value();
   (*seen)[count] = p.eval.sphere_protrusion;
@@ -76,16 +109,12 @@ Expected<std::vector<ProtrusionPick>> fewestPerLink(
   tbb::parallel_for(size_t{0}, links.size(), [&](size_t i) {
     const ProtrusionLink& link = links[i];
     const auto t0 = std::chrono::steady_clock::now();
-    auto run = ProgressiveFit::start(*link.index, link.options);
-    if (!run) {
-      errors[i] = linkError(link, run.error());
-      return;
-    }
+    LinkFits fits(link);
     // Doubling until a count meets the limit, then bisection, as fitToTolerance searches.
     std::optional<ProtrusionPick> best;
     ProtrusionsByCount seen;
     auto tryCount = [&](int n) -> Expected<bool> {
-      auto p = pickAt(link, &*run, n, &seen);
+      auto p = pickAt(link, &fits, n, &seen);
       if (!p) return p.error();
       const bool met = p->met;
       if (!best || (met && (!best->met || n < best->count)) ||
@@ -94,7 +123,7 @@ Expected<std::vector<ProtrusionPick>> fewestPerLink(
       return met;
     };
     int lo = 0, hi = 0;
-    for (int n = 1;; n = std::min(2 * n, run->maxCount())) {
+    for (int n = 1;; n = std::min(2 * n, link.cap)) {
       auto met = tryCount(n);
       if (!met) {
         errors[i] = linkError(link, met.error());
@@ -105,7 +134,7 @@ Expected<std::vector<ProtrusionPick>> fewestPerLink(
         break;
       }
       lo = n;
-      if (n == run->maxCount()) break;
+      if (n == link.cap) break;
     }
     while (hi > 0 && hi - lo > 1) {
       const int mid = lo + (hi - lo) / 2;
@@ -131,18 +160,13 @@ Expected<std::vector<ProtrusionPick>> greedySplit(
     const std::vector<ProtrusionLink>& links, int budget,
     const std::function<void(const std::string&, int)>& done) {
   const size_t n = links.size();
-  std::vector<std::unique_ptr<ProgressiveFit>> runs(n);
+  std::vector<std::unique_ptr<LinkFits>> runs(n);
   std::vector<ProtrusionPick> best(n);
   std::vector<int> given(n, 1);
   std::vector<ProtrusionsByCount> seen(n);
   std::vector<std::optional<Error>> errors(n);
   tbb::parallel_for(size_t{0}, n, [&](size_t i) {
-    auto run = ProgressiveFit::start(*links[i].index, links[i].options);
-    if (!run) {
-      errors[i] = linkError(links[i], run.error());
-      return;
-    }
-    runs[i] = std::make_unique<ProgressiveFit>(std::move(run).value());
+    runs[i] = std::make_unique<LinkFits>(links[i]);
     auto p = pickAt(links[i], runs[i].get(), 1, &seen[i]);
     if (!p) {
       errors[i] = linkError(links[i], p.error());
@@ -156,13 +180,12 @@ Expected<std::vector<ProtrusionPick>> greedySplit(
   for (int left = budget - static_cast<int>(n); left > 0;) {
     size_t worst = n;
     for (size_t i = 0; i < n; ++i)
-      if (given[i] < runs[i]->maxCount() &&
-          (worst == n ||
-           overLimit(best[i], links[i].limit) > overLimit(best[worst], links[worst].limit)))
+      if (given[i] < links[i].cap && (worst == n || overLimit(best[i], links[i].limit) >
+                                                        overLimit(best[worst], links[worst].limit)))
         worst = i;
     if (worst == n) break;  // every link at its largest count
     const int step = std::min(
-        {left, runs[worst]->maxCount() - given[worst], std::max(1, given[worst] / kStepFraction)});
+        {left, links[worst].cap - given[worst], std::max(1, given[worst] / kStepFraction)});
     given[worst] += step;
     left -= step;
     auto p = pickAt(links[worst], runs[worst].get(), given[worst], &seen[worst]);

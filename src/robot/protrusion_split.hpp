@@ -12,12 +12,14 @@
 
 namespace sphereset::detail {
 
-// One link held to a protrusion limit: its solid, the fit options of its largest count (a
-// progressive run's, ProgressiveFit) and what eval checks it against.
+// One link held to a protrusion limit: its solid, its fit options for a largest count (a
+// progressive run's, ProgressiveFit, or an independent fit's when they forbid a run), the most
+// spheres it may get, and what eval checks it against.
 struct ProtrusionLink {
   std::string name;
   const SolidIndex* index = nullptr;
-  FitOptions options;
+  std::function<FitOptions(int max_count)> options_for;
+  int cap = 1;
   const Mesh* original = nullptr;
   const Mesh* walls = nullptr;
   double limit = 0.0;  // the certified protrusion allowed before the padding (length, > 0)
@@ -32,8 +34,9 @@ struct ProtrusionPick {
   double seconds = 0.0;
 };
 
-// Without a budget (budget 0): each link's fewest spheres that meet its limit (fitToTolerance's
-// search, capped at kLinkToleranceCap), the links in parallel. With one: every link starts at 1
+// Without a budget (budget 0): each link's fewest spheres that meet its limit (counts 1, 2, 4,
+// ... then a bisection, as fitToTolerance searches; at most the link's cap), the links in
+// parallel. With one: every link starts at 1
 // sphere, then the budget goes one sphere at a time to the link furthest over its limit (the
 // largest protrusion / limit; an uncovered fit first), so that the worst link's ratio is as
 // small as the greedy split makes it (in steps of a quarter of the link's count); each link

@@ -111,6 +111,25 @@ TEST(ToleranceFit, CountsAreOneProgressiveRunWhenTheRequestAllowsIt) {
   EXPECT_FALSE(ind->progressive);
 }
 
+TEST(ToleranceFit, FewPointsBoundTheRunsWindow) {
+  // A progressive run cannot hold more spheres than points: with 40 points the search still
+  // runs (its first run holds 40 spheres at most, not 64).
+  const SolidIndex index(test::robotLink());
+  FitRequest r = fastRequest();
+  r.points = 40;
+  ToleranceOptions t;
+  t.max_er = 50.0;
+  auto found = fitToTolerance(index, r, t);
+  ASSERT_TRUE(found.ok()) << found.error().message;
+  EXPECT_TRUE(found->met);
+  EXPECT_TRUE(found->progressive);
+  FitRequest given = fastRequest();
+  ASSERT_TRUE(setFitRequestOption(&given, "n", "8").ok());
+  auto both = fitToTolerance(index, given, t);
+  ASSERT_FALSE(both.ok());
+  EXPECT_NE(both.error().message.find("n and a tolerance"), std::string::npos);
+}
+
 TEST(ToleranceFit, BadRequestsAreRefused) {
   const SolidIndex index(test::makeBox(Vec3::Zero(), Vec3::Ones()));
   ToleranceOptions t;

@@ -150,6 +150,64 @@ TEST(ProgressiveFit, ACountStartsFromAtMostHalfOrFromTheCountBelow) {
   EXPECT_FALSE(ProgressiveFit::start(idx, quickOptions(4), nullptr, {.start_ratio = 0}).ok());
 }
 
+TEST(ProgressiveFit, WarmFromAdoptsAnotherRunsClusterings) {
+  const Mesh link = test::robotLink();
+  const SolidIndex idx(link);
+  auto quick = ProgressiveFit::start(idx, quickOptions(8));
+  ASSERT_TRUE(quick.ok());
+  ASSERT_TRUE(quick->fit(4).ok());
+  FitOptions full = fitPreset(8);
+  full.seed = 3;
+  auto run = ProgressiveFit::start(idx, full, &*quick);
+  ASSERT_TRUE(run.ok());
+  EXPECT_EQ(run->startCount(4), 4);  // adopted: only ended with this run's options
+  EXPECT_EQ(run->startCount(8), 4);
+  auto f = run->fit(8);
+  ASSERT_TRUE(f.ok());
+  EXPECT_EQ(f->spheres.size(), 8u);
+  EXPECT_EQ(test::uncoveredSurfacePoints(link, f->spheres, 20), 0);
+  const Mesh box = test::makeBox(Vec3::Zero(), Vec3::Ones());
+  const SolidIndex other(box);
+  EXPECT_FALSE(ProgressiveFit::start(other, quickOptions(8), &*quick).ok());  // another solid
+}
+
+TEST(ProgressiveFit, SplitFirstSplitsTheSpheresGiven) {
+  // From 4 to 5 spheres, each of the four singled out in turn: the split goes where it is told,
+  // so the fits differ (ignored, all four would be the same fit), and each bounds the solid.
+  const Mesh torus = test::makeTorus(1.0, 0.3, 24, 12);
+  const SolidIndex idx(torus);
+  const FitOptions o = quickOptions(8);
+  const ProgressiveOptions below{.start_ratio = 1};
+  auto run = ProgressiveFit::start(idx, o, nullptr, below);
+  ASSERT_TRUE(run.ok());
+  ASSERT_TRUE(run->fit(4).ok());
+  const std::vector<double> wrong(3, 1.0);
+  EXPECT_FALSE(run->fit(5, wrong).ok());  // one value per sphere of the count it starts from
+  std::vector<std::vector<Sphere>> fits;
+  for (int chosen = 0; chosen < 4; ++chosen) {
+    auto again = ProgressiveFit::start(idx, o, nullptr, below);
+    ASSERT_TRUE(again->fit(4).ok());
+    std::vector<double> first(4, 0.0);
+    first[chosen] = 1.0;
+    auto five = again->fit(5, first);
+    ASSERT_TRUE(five.ok()) << five.error().message;
+    ASSERT_EQ(five->spheres.size(), 5u);
+    EXPECT_EQ(test::uncoveredSurfacePoints(torus, five->spheres, 20), 0);
+    fits.push_back(five->spheres);
+  }
+  int distinct = 0;
+  for (size_t a = 0; a < fits.size(); ++a) {
+    bool same_as_earlier = false;
+    for (size_t b = 0; b < a; ++b) {
+      bool same = true;
+      for (size_t k = 0; k < 5; ++k) same = same && fits[a][k].center == fits[b][k].center;
+      same_as_earlier = same_as_earlier || same;
+    }
+    distinct += same_as_earlier ? 0 : 1;
+  }
+  EXPECT_GE(distinct, 2);
+}
+
 TEST(ProgressiveFit, RefusesWhatItCannotHonour) {
   const Mesh box = test::makeBox(Vec3::Zero(), Vec3::Ones());
   const SolidIndex idx(box);

@@ -3,9 +3,8 @@
 // fixed and skipped links are honoured, and the result does not depend on the thread count.
 // A long chain of boxes: memory follows the links being fitted, not the links.
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
-
 #include <sys/resource.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <map>
@@ -126,6 +125,23 @@ TEST(FitRobot, ProtrusionLimitGivesEachLinkItsFewestSpheresThatMeetIt) {
     EXPECT_TRUE(l.covered) << l.link;
   }
   EXPECT_LE(total, 8u);  // within the budget
+}
+
+TEST(FitRobot, ProtrusionLimitWithRestartsFitsEachCountAlone) {
+  // --quality best has restarts and decimation, which a progressive run cannot honour: the
+  // limited link's counts are independent fits, and the limit is met all the same.
+  const Robot robot = test::threeLinkRobot();
+  RobotFitOptions o = fastOptions();
+  o.quality = FitQuality::kBest;
+  o.link_spheres = {{"base_link", 1}, {"link2", 1}};
+  o.link_max_protrusion = {{"link1", 0.05}};
+  auto r = fitRobot(robot, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  const RobotLinkFit* link1 = find(*r, "link1");
+  ASSERT_NE(link1, nullptr);
+  EXPECT_TRUE(link1->limit_met && link1->covered);
+  EXPECT_LE(link1->eval.protrusion, 0.05);
+  EXPECT_TRUE(r->tolerance_met);
 }
 
 TEST(FitRobot, ProtrusionLimitsRefuseWhatCannotHold) {
