@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 
+#include "eval/count_search.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/limits.hpp"
@@ -182,29 +183,17 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
       have_best = true;
     }
   };
-  // Doubling: the first count that meets the tolerance, or the cap.
-  int lo = 0, hi = 0;
-  for (int n = 1;; n = std::min(2 * n, t.max_spheres)) {
-    auto trial = run(n);
-    if (!trial) return trial.error();
-    const bool meets = trial->point.meets;
-    keep(std::move(trial).value());
-    if (meets) {
-      hi = n;
-      break;
-    }
-    lo = n;
-    if (n == t.max_spheres) break;
-  }
-  // Bisection between the last count that did not meet it and the first that did.
-  while (hi > 0 && hi - lo > 1) {
-    const int mid = lo + (hi - lo) / 2;
-    auto trial = run(mid);
-    if (!trial) return trial.error();
-    const bool meets = trial->point.meets;
-    keep(std::move(trial).value());
-    (meets ? hi : lo) = mid;
-  }
+  // Doubling, then bisection (count_search.hpp).
+  if (Status st = detail::searchFewestCount(t.max_spheres,
+                                            [&](int n) -> Expected<bool> {
+                                              auto trial = run(n);
+                                              if (!trial) return trial.error();
+                                              const bool meets = trial->point.meets;
+                                              keep(std::move(trial).value());
+                                              return meets;
+                                            });
+      !st)
+    return st.error();
   out.met = best.point.meets;
   out.n = best.point.n;
   out.fit = std::move(best.fit);

@@ -20,6 +20,8 @@
 #include <optional>
 #include <utility>
 
+#include "eval/count_search.hpp"
+
 namespace sphereset::detail {
 namespace {
 
@@ -110,7 +112,7 @@ Expected<std::vector<ProtrusionPick>> fewestPerLink(
     const ProtrusionLink& link = links[i];
     const auto t0 = std::chrono::steady_clock::now();
     LinkFits fits(link);
-    // Doubling until a count meets the limit, then bisection, as fitToTolerance searches.
+    // Doubling until a count meets the limit, then bisection (count_search.hpp).
     std::optional<ProtrusionPick> best;
     ProtrusionsByCount seen;
     auto tryCount = [&](int n) -> Expected<bool> {
@@ -122,28 +124,9 @@ Expected<std::vector<ProtrusionPick>> fewestPerLink(
         best = std::move(p).value();
       return met;
     };
-    int lo = 0, hi = 0;
-    for (int n = 1;; n = std::min(2 * n, link.cap)) {
-      auto met = tryCount(n);
-      if (!met) {
-        errors[i] = linkError(link, met.error());
-        return;
-      }
-      if (*met) {
-        hi = n;
-        break;
-      }
-      lo = n;
-      if (n == link.cap) break;
-    }
-    while (hi > 0 && hi - lo > 1) {
-      const int mid = lo + (hi - lo) / 2;
-      auto met = tryCount(mid);
-      if (!met) {
-        errors[i] = linkError(link, met.error());
-        return;
-      }
-      (*met ? hi : lo) = mid;
+    if (Status st = searchFewestCount(link.cap, tryCount); !st) {
+      errors[i] = linkError(link, st.error());
+      return;
     }
     picks[i] = std::move(*best);
     picks[i].seconds = secondsSince(t0);
