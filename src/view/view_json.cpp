@@ -114,6 +114,54 @@ nlohmann::json scene(const ViewScene& sc) {
                        : nlohmann::json{{"path", sc.save_path}, {"format", saveFormatName(sc)}}}};
 }
 
+nlohmann::json kinematics(const Robot& robot) {
+  auto matrix = [](const Eigen::Isometry3d& m) {
+    nlohmann::json a = nlohmann::json::array();
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) a.push_back(m.matrix()(r, c));
+    return a;
+  };
+  auto vec = [](const Vec3& v) { return nlohmann::json{v.x(), v.y(), v.z()}; };
+  nlohmann::json joints_json = nlohmann::json::array();
+  for (const RobotJoint& j : robot.joints) {
+    const bool limited =
+        j.type == RobotJoint::Type::kRevolute || j.type == RobotJoint::Type::kPrismatic;
+    joints_json.push_back(
+        {{"name", j.name},
+         {"type", jointTypeName(j.type)},
+         {"parent", j.parent},
+         {"child", j.child},
+         {"origin", matrix(j.origin)},
+         {"axis", vec(j.axis)},
+         {"anchor", vec(j.anchor)},
+         {"reference", j.reference},
+         {"limits", limited ? nlohmann::json{std::min(j.lower, j.upper), std::max(j.lower, j.upper)}
+                            : nlohmann::json()},
+         {"mimic", j.mimic ? nlohmann::json{{"joint", j.mimic->joint},
+                                            {"multiplier", j.mimic->multiplier},
+                                            {"offset", j.mimic->offset}}
+                           : nlohmann::json()}});
+  }
+  return {{"root", robot.root}, {"joints", joints_json}};
+}
+
+nlohmann::json levelSets(const ViewSolid& s) {
+  nlohmann::json a = nlohmann::json::array();
+  for (size_t l = 0; l < s.sets.size(); ++l) {
+    ViewSolid level = s;
+    level.level = static_cast<int>(l);
+    level.engine = nullptr;
+    if (static_cast<int>(l) == s.level)
+      level.certificate = s.certificate;
+    else
+      certifyViewSolid(&level);
+    nlohmann::json c = certificate(level.certificate);
+    c["seconds"] = 0.0;
+    a.push_back({{"spheres", spheres(level.spheres())}, {"certificate", c}});
+  }
+  return a;
+}
+
 }  // namespace view_json
 
 namespace {
@@ -182,7 +230,11 @@ Expected<std::string> inlineViewData(std::string_view html, const ViewScene& sce
   for (size_t i = 0; i < scene.solids.size(); ++i) {
     data["solids"][i]["geometry"] = base64(viewGeometry(scene.solids[i]));
     data["solids"][i]["certificate"]["seconds"] = 0.0;
+    // A tree's every level with its certificate: changing the level is not an edit.
+    if (scene.solids[i].tree) data["solids"][i]["level_sets"] = view_json::levelSets(scene.solids[i]);
   }
+  // The robot's joint tree: the page poses the robot itself (posing is not an edit).
+  if (scene.robot) data["kinematics"] = view_json::kinematics(*scene.robot);
   // '<' only occurs inside JSON strings, where \u003c means the same: the text can then never
   // close the script element.
   std::string text;

@@ -16,5 +16,9 @@ nlohmann::json solid(const ViewSolid& s);                // one entry of "solids
 nlohmann::json joints(const ViewScene& scene);           // the movable joints
 nlohmann::json poses(const ViewScene& scene);            // 16 numbers per solid, row-major
 nlohmann::json scene(const ViewScene& scene);            // GET /api/scene
+// Static pages: the robot's joint tree (what linkPoses needs), and a tree's every level with its
+// certificate (certified here: a level not shown has none yet).
+nlohmann::json kinematics(const Robot& robot);
+nlohmann::json levelSets(const ViewSolid& s);
 
 }  // namespace sphereset::view_json

@@ -1,6 +1,5 @@
 // The view's API as a pure function (view.hpp, docs/view.md): the scene's fields, the geometry,
-// edits and their certificates, the bound, a tree's levels, a robot's poses, the save, the
-// static page; and every bad request refused with its status and nothing changed.
+// edits and their certificates, the bound, a tree's levels, a robot's poses, the save; and every bad request refused with its status and nothing changed.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -489,45 +488,6 @@ TEST_F(ViewTest, TheServersOwnNamesAreAccepted) {
   EXPECT_EQ(handleViewRequest(&scene, kAccess, page).status, viewPageAvailable() ? 200 : 500);
   page.query["token"] = "x";
   EXPECT_EQ(handleViewRequest(&scene, kAccess, page).status, 401);
-}
-
-TEST_F(ViewTest, TheStaticPageInlinesTheScene) {
-  ViewScene scene = boxScene();
-  scene.title = "a</script><b>";
-  auto page = inlineViewData("<html><!--SPHERESET_DATA--></html>", scene);
-  ASSERT_TRUE(page.ok()) << page.error().message;
-  const std::string open = "<script id=\"sphereset-data\" type=\"application/json\">";
-  const size_t at = page->find(open);
-  ASSERT_NE(at, std::string::npos);
-  const size_t end = page->find("</script>", at);
-  ASSERT_NE(end, std::string::npos);
-  EXPECT_EQ(page->substr(end), "</script></html>");  // the title did not close the element
-  const nlohmann::json j =
-      nlohmann::json::parse(page->substr(at + open.size(), end - at - open.size()));
-  EXPECT_EQ(j["title"], "a</script><b>");
-  EXPECT_EQ(j["solids"][0]["geometry"].get<std::string>().size(), (8u + 96u + 144u + 2u) / 3u * 4u);
-  EXPECT_FALSE(inlineViewData("<html></html>", scene).ok());
-  auto built = viewStaticPage(scene);
-  EXPECT_EQ(built.ok(), viewPageAvailable());
-  // A page file holds no timing and no save path: the same inputs give the same bytes.
-  EXPECT_TRUE(j["save"].is_null());
-  EXPECT_EQ(j["solids"][0]["certificate"]["seconds"], 0.0);
-}
-
-// A scene loaded for a page file sets up no save (nothing is written beside the sphere file),
-// and two loads give the same page.
-TEST_F(ViewTest, APageFilesSceneHasNoSaveAndIsTheSameEachTime) {
-  boxScene();  // writes the box and its set
-  ViewLoadOptions o;
-  o.page_file = true;
-  auto a = loadViewScene(path("box.off"), path("box.txt"), o);
-  auto b = loadViewScene(path("box.off"), path("box.txt"), o);
-  ASSERT_TRUE(a.ok() && b.ok());
-  EXPECT_TRUE(a->save_path.empty());
-  EXPECT_FALSE(saveViewScene(*a).ok());
-  EXPECT_EQ(a->solids.size(), 1u);
-  const std::string marker = "<!--SPHERESET_DATA-->";
-  EXPECT_EQ(*inlineViewData(marker, *a), *inlineViewData(marker, *b));
 }
 
 TEST_F(ViewTest, TokensAreFreshAndLongEnough) {

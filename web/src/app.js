@@ -1,8 +1,10 @@
 // The page's state and what its controls do. The scene JSON (docs/view.md) is the state; it
 // changes only by the server's answers, which are applied one at a time and in order, and an
 // answer older than the newest seen is dropped.
+import { sphereShade } from './colors.js';
 import { base64ToArrayBuffer, decodeGeometry } from './geometry.js';
 import { History, differenceEdits, inverseEdits } from './history.js';
+import { jointValues, solidPoses } from './kinematics.js';
 import * as panels from './panels.js';
 import { Viewer } from './viewer.js';
 
@@ -21,6 +23,8 @@ export class App {
     this.queue = Promise.resolve();
     this.redCounts = [];
     this.addMode = false;
+    this.colorScale = 'absolute';  // colors.js: 'absolute' or 'relative'
+    this.autoFrame = true;         // robots: frame the robot after a joint moves it
   }
 
   async start(container) {
@@ -39,13 +43,16 @@ export class App {
       geometries = await Promise.all(scene.solids.map((_, k) => this.api.geometry(k)));
     }
     this.scene = scene;
+    this.jointInput = Object.fromEntries((scene.joints || []).map((j) => [j.name, j.value]));
     this.newestVersion = Number.isFinite(scene.version) ? scene.version : -Infinity;
     this.viewer = new Viewer(container, { zUp: scene.kind === 'robot' });
     this.viewer.build(geometries, scene.poses);
     this.viewer.setGizmoEnabled(!this.staticMode);
     panels.setMode({ title: scene.title, staticMode: this.staticMode });
-    panels.showSolidChoice(scene.solids, this.current, (k) => { this.current = k; this.refresh(); });
-    panels.buildJoints(scene.joints || [], (name, value) => this.dragJoint(name, value), this.staticMode);
+    panels.showSolidChoice(scene.solids, this.current, (k) => this.showSolid(k));
+    // A static page poses its robot itself when it carries the joint tree.
+    const posable = !this.staticMode || Boolean(scene.kinematics);
+    panels.buildJoints(scene.joints || [], (name, value) => this.dragJoint(name, value), !posable);
     this.redrawAll();
     this.viewer.frame();
     this.viewer.renderNow();
@@ -147,10 +154,11 @@ export class App {
     });
   }
 
+  // A tree's level: from the server, or on a static page from the levels it carries (a level
+  // change is not an edit).
   level(k, level) {
     return this.run(async () => {
-      this.requireServer();
-      const answer = await this.api.level(k, level);
+      const answer = this.staticMode ? this.staticLevel(k, level) : await this.api.level(k, level);
       if (this.selection && this.selection.solid === k) this.select(null);
       if (this.applySet(k, answer)) {
         this.history.forget(k);
@@ -163,21 +171,46 @@ export class App {
     });
   }
 
+  staticLevel(k, level) {
+    const sets = this.solid(k).level_sets;
+    if (!Array.isArray(sets)) throw new Error('this static page holds one level only');
+    if (!Number.isInteger(level) || level < 0 || level >= sets.length) {
+      throw new Error(`level ${level} is not a level of this tree (0 to ${sets.length - 1})`);
+    }
+    return { spheres: sets[level].spheres, certificate: sets[level].certificate };
+  }
+
   setJoints(joints) {
     return this.run(() => this.pose(joints));
   }
 
+  // The robot posed by the server, or on a static page by its own kinematics.
   async pose(joints) {
-    this.requireServer();
-    const answer = await this.api.pose(joints);
+    const answer = this.staticMode ? this.staticPose(joints) : await this.api.pose(joints);
     if (this.accept(answer)) {
       this.scene.poses = answer.poses;
       this.scene.joints = answer.joints;
       this.viewer.setPoses(answer.poses);
+      if (this.autoFrame) this.viewer.keepInView();
       panels.showJoints(answer.joints);
       this.viewer.renderNow();
     }
     return answer;
+  }
+
+  staticPose(joints) {
+    const kinematics = this.scene.kinematics;
+    if (!kinematics) throw new Error('static snapshot: this page cannot pose its robot');
+    for (const [name, value] of Object.entries(joints)) {
+      if (!this.scene.joints.some((j) => j.name === name)) throw new Error(`no joint '${name}'`);
+      if (!Number.isFinite(value)) throw new Error(`joint '${name}': ${value} is not a number`);
+    }
+    this.jointInput = { ...this.jointInput, ...joints };
+    const values = jointValues(kinematics, this.jointInput);
+    return {
+      poses: solidPoses(kinematics, this.scene.solids, values),
+      joints: this.scene.joints.map((j) => ({ ...j, value: values[j.name] })),
+    };
   }
 
   // A slider being dragged: one request at a time, with the latest values.
@@ -204,6 +237,14 @@ export class App {
 
   // --- selection --------------------------------------------------------------------------
 
+  // The certificate panel shows solid k; a selection on another solid is dropped (its gizmo and
+  // fields would otherwise stand under the new solid's certificate).
+  showSolid(k) {
+    this.current = k;
+    if (this.selection && this.selection.solid !== k) this.select(null);
+    else this.refresh();
+  }
+
   select(selection) {
     this.selection = selection;
     if (selection) this.current = selection.solid;
@@ -225,9 +266,16 @@ export class App {
       panels.showSelection(null, null);
       return;
     }
-    const outside = (this.solid(s.solid).certificate || {}).outside_volume || [];
+    const solid = this.solid(s.solid);
+    const outside = (solid.certificate || {}).outside_volume || [];
     this.viewer.select(s.solid, sphere);
-    panels.showSelection(s.index, sphere, outside[s.index]);
+    panels.showSelection(s.index, sphere, outside[s.index], this.solidName(s.solid));
+  }
+
+  // What the page calls solid k: its link, else its name.
+  solidName(k) {
+    const solid = this.solid(k);
+    return solid.link || solid.name || `solid ${k}`;
   }
 
   // --- drawing ----------------------------------------------------------------------------
@@ -238,24 +286,31 @@ export class App {
     return solid;
   }
 
-  // Every solid's spheres on one colour scale, the red triangles, the panels.
+  // Every solid's spheres on one colour scale, the gap triangles, the panels.
   redrawAll() {
     const solids = this.scene.solids;
-    let scale = 0;
+    let largest = 0;
     for (const s of solids) {
       for (const v of (s.certificate && s.certificate.outside_volume) || []) {
-        if (Number.isFinite(v)) scale = Math.max(scale, v);
+        if (Number.isFinite(v)) largest = Math.max(largest, v);
       }
     }
     solids.forEach((s, k) => {
       const c = s.certificate || {};
+      const outside = c.outside_volume || [];
+      const shades = s.spheres.map((sphere, i) => sphereShade(sphere, outside[i], this.colorScale, largest));
       const layer = this.viewer.solids[k];
-      layer.spheres.update(s.spheres, c.outside_volume, scale);
+      layer.spheres.update(s.spheres, shades);
       this.redCounts[k] = layer.mesh.setUncovered(c.uncovered_triangles);
     });
-    panels.showLegend(scale);
+    panels.showLegend(this.colorScale, largest);
     this.showSelection();
     this.refresh();
+  }
+
+  setColorScale(scale) {
+    this.colorScale = scale === 'relative' ? 'relative' : 'absolute';
+    this.redrawAll();
   }
 
   refresh() {

@@ -1,6 +1,10 @@
-// The colour ramp of the spheres: each sphere by its own outside volume, from 0 (blue-green)
-// to the largest in the scene (red).
+// The colour ramp of the spheres, from 0 (blue) to 1 (red): by default each sphere's fraction of
+// its own volume outside the solid (an absolute scale: the same colour means the same waste
+// whatever the other spheres do), or, as an option, its outside volume over the largest in the
+// scene. The gaps (uncovered triangles) have a colour of their own, on no ramp.
 import { Color } from 'three';
+
+export const gapColor = 0xff00ff;  // magenta: neither blue, green, yellow nor red
 
 const stops = [
   [0.0, 0x2c7bb6],
@@ -22,8 +26,23 @@ export function rampColor(t, target = new Color()) {
   return target.setHex(stops[stops.length - 1][1]);
 }
 
+// The ramp's stops as [t, '#rrggbb'], for a canvas gradient.
+export function rampStops() {
+  return stops.map(([t, c]) => [t, `#${c.toString(16).padStart(6, '0')}`]);
+}
+
 // The same ramp as a CSS gradient, for the legend.
 export function rampGradient() {
   const parts = stops.map(([t, c]) => `#${c.toString(16).padStart(6, '0')} ${t * 100}%`);
   return `linear-gradient(to right, ${parts.join(', ')})`;
+}
+
+// Where sphere [x,y,z,r] with `outside` volume outside the solid sits on the ramp: 'absolute',
+// its fraction outside (0 to 1); 'relative', outside over `largest`.
+export function sphereShade(sphere, outside, scale, largest) {
+  const v = Number.isFinite(outside) ? outside : 0;
+  if (scale === 'relative') return largest > 0 ? v / largest : 0;
+  const r = sphere[3];
+  const volume = (4 / 3) * Math.PI * r * r * r;
+  return volume > 0 ? Math.min(1, v / volume) : 0;
 }

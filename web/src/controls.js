@@ -1,5 +1,6 @@
 // The mouse, keyboard and buttons: clicks select spheres or (in Add mode) add one on the surface,
 // the gizmo drags a centre, Shift + wheel scales a radius, keys delete, undo and redo.
+import { rampStops } from './colors.js';
 import * as panels from './panels.js';
 
 const $ = (id) => document.getElementById(id);
@@ -9,6 +10,8 @@ export function wireControls(app, container) {
   const viewer = app.viewer;
   wireButtons(app, viewer);
   wirePicking(app, viewer);
+  wireViewOptions(app);
+  wireHelp();
   if (app.staticMode) return;
   wireGizmo(app, viewer);
   wireWheel(app, viewer, container);
@@ -26,10 +29,78 @@ function wireButtons(app, viewer) {
   $('frame').onclick = () => viewer.frame();
   $('png').onclick = () => {
     const link = document.createElement('a');
-    link.href = viewer.pngDataUrl();
+    link.href = pagePicture(app);
     link.download = `${app.scene.title || 'sphereset'}.png`;
     link.click();
   };
+}
+
+function wireViewOptions(app) {
+  $('scale').onchange = () => app.setColorScale($('scale').value);
+  $('auto-frame').onchange = () => {
+    app.autoFrame = $('auto-frame').checked;
+    if (app.autoFrame) app.viewer.keepInView();
+  };
+}
+
+// The "?" overlay: the button, the ? key, Escape and its Close button.
+function wireHelp() {
+  const toggle = (show) => $('help').classList.toggle('hidden', show === undefined ? undefined : !show);
+  $('help-button').onclick = () => toggle();
+  $('help-close').onclick = () => toggle(false);
+  window.addEventListener('keydown', (e) => {
+    const tag = e.target && e.target.tagName;
+    if (tag === 'INPUT' || tag === 'SELECT' || tag === 'TEXTAREA') return;
+    if (e.key === '?') toggle();
+    else if (e.key === 'Escape') toggle(false);
+  });
+}
+
+// The picture of the page's state: a band with the title, the status, the colour legend and
+// the certificate's figures of the solid shown, above the view.
+export function pagePicture(app) {
+  const view = app.viewer.renderer.domElement;
+  app.viewer.renderNow();
+  const ratio = view.width / Math.max(1, view.clientWidth || view.width);
+  const band = Math.round(64 * ratio);
+  const canvas = document.createElement('canvas');
+  canvas.width = view.width;
+  canvas.height = view.height + band;
+  const g = canvas.getContext('2d');
+  g.fillStyle = '#ffffff';
+  g.fillRect(0, 0, canvas.width, band);
+  g.drawImage(view, 0, band);
+  const pad = 8 * ratio;
+  g.font = `bold ${14 * ratio}px system-ui, sans-serif`;
+  g.fillStyle = '#222';
+  g.textBaseline = 'top';
+  g.fillText($('title').textContent, pad, pad);
+  const status = $('status');
+  const covered = status.classList.contains('covered');
+  g.font = `bold ${13 * ratio}px system-ui, sans-serif`;
+  const statusWidth = g.measureText(status.textContent).width + 2 * pad;
+  const statusX = canvas.width - statusWidth - pad;
+  g.fillStyle = covered ? '#d7f5d7' : '#fbd5d5';
+  g.fillRect(statusX, pad, statusWidth, 20 * ratio);
+  g.fillStyle = covered ? '#165a16' : '#9a1111';
+  g.fillText(status.textContent, statusX + pad, pad + 3 * ratio);
+  g.font = `${12 * ratio}px system-ui, sans-serif`;
+  g.fillStyle = '#333';
+  const rows = [...$('certificate').querySelectorAll('tr')].map((tr) => [...tr.children].map((td) => td.textContent));
+  const figure = (name) => (rows.find((r) => r[0] === name) || [name, 'n/a'])[1];
+  g.fillText(`${figure('solid')}: ${figure('spheres')} spheres, E_r ${figure('E_r summed')}, ` +
+    `protrusion ${figure('protrusion')}, gap triangles ${figure('gap triangles')}`, pad, pad + 22 * ratio);
+  // The legend: the ramp and its ends.
+  const legendX = pad;
+  const legendY = pad + 40 * ratio;
+  const legendWidth = Math.min(260 * ratio, canvas.width / 2);
+  const gradient = g.createLinearGradient(legendX, 0, legendX + legendWidth, 0);
+  for (const [t, c] of rampStops()) gradient.addColorStop(t, c);
+  g.fillStyle = gradient;
+  g.fillRect(legendX, legendY, legendWidth, 8 * ratio);
+  g.fillStyle = '#333';
+  g.fillText(`0  ${$('legend-what').textContent}  ${$('legend-max').textContent}`, legendX + legendWidth + pad, legendY - 2 * ratio);
+  return canvas.toDataURL('image/png');
 }
 
 function setAddMode(app, on) {
@@ -73,7 +144,10 @@ function wirePicking(app, viewer) {
   });
 }
 
+// A drag of the gizmo changes only the coordinates of the handle it holds ('X', 'XY', ...): the
+// others are sent as they were, not as a round trip through the link's pose left them.
 function wireGizmo(app, viewer) {
+  let axis = null;
   viewer.gizmo.addEventListener('objectChange', () => {
     const s = app.selection;
     const sphere = app.selectedSphere();
@@ -85,9 +159,14 @@ function wireGizmo(app, viewer) {
   viewer.gizmo.addEventListener('dragging-changed', (e) => {
     const s = app.selection;
     const sphere = app.selectedSphere();
+    if (e.value) axis = viewer.gizmo.axis || '';
     if (e.value || !sphere) return;
-    const moved = [...viewer.handle.position.toArray(), sphere[3]];
-    if (moved.every((v, j) => v === sphere[j])) return;
+    const position = viewer.handle.position.toArray();
+    const moved = sphere.map((v, j) => (j < 3 && axis.includes('XYZ'[j]) ? position[j] : v));
+    if (moved.every((v, j) => v === sphere[j])) {
+      viewer.placeHandle(sphere);
+      return;
+    }
     quiet(app.setSphere(s.solid, s.index, moved));
   });
 }
@@ -107,6 +186,7 @@ function wireWheel(app, viewer, container) {
     const notch = e.deltaY || e.deltaX;  // some systems turn Shift + wheel into a sideways scroll
     sphere[3] *= notch < 0 ? 1.05 : 1 / 1.05;
     pending = { solid: s.solid, index: s.index, sphere };
+    viewer.gizmo.axis = null;  // no handle lights up under a pointer that only turns the wheel
     viewer.solids[s.solid].spheres.preview(s.index, sphere);
     viewer.placeHandle(sphere);
     viewer.requestRender();
@@ -138,23 +218,30 @@ function wireKeys(app) {
     } else if (key === 'f' && !ctrl) {
       app.viewer.frame();
     } else if (e.key === 'Escape') {
-      setAddMode(app, false);
+      if (app.addMode) setAddMode(app, false);
       app.select(null);
     }
   });
 }
 
+// A field changes its own coordinate only: the others are sent as the set holds them, never as
+// the fields show them (rounded to 7 digits).
 function wireSelectionFields(app) {
-  for (const id of ['sel-x', 'sel-y', 'sel-z', 'sel-r']) {
+  panels.selectionFields.forEach((id, j) => {
     $(id).addEventListener('change', () => {
       const s = app.selection;
-      if (!s) return;
-      const sphere = panels.readSelection();
-      if (!sphere.every(Number.isFinite)) {
-        panels.showMessage('the centre and radius must be numbers', 'error');
+      const sphere = app.selectedSphere();
+      if (!s || !sphere) return;
+      const text = $(id).value.trim();
+      const value = Number(text);
+      if (text === '' || !Number.isFinite(value)) {
+        panels.showMessage(`${id === 'sel-r' ? 'the radius' : 'a centre coordinate'} must be a number`, 'error');
         return;
       }
-      quiet(app.setSphere(s.solid, s.index, sphere));
+      if (value === sphere[j]) return;
+      const edited = sphere.slice();
+      edited[j] = value;
+      quiet(app.setSphere(s.solid, s.index, edited));
     });
-  }
+  });
 }

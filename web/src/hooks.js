@@ -18,5 +18,11 @@ export function installHooks(app, ready) {
     certificate: (k) => copy(app.solid(k).certificate),
     redTriangles: (k) => app.viewer.solids[k].mesh.redCount,
     linkWorldPosition: (k) => app.viewer.worldOrigin(k),
+    setLevel: (k, level) => app.level(k, level),
+    sceneInView: () => app.viewer.sceneInView(),
+    sphereColor: (k, i) => app.viewer.solids[k].spheres.colorOf(i),
+    gizmoAxis: () => app.viewer.gizmo.axis,
+    screenOf: (k, point) => app.viewer.screenOf(k, point),
+    selection: () => (app.selection ? { ...app.selection, link: app.solidName(app.selection.solid) } : null),
   };
 }

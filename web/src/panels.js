@@ -4,6 +4,9 @@ import { rampGradient } from './colors.js';
 
 const $ = (id) => document.getElementById(id);
 
+// The selection's fields, in the order of a sphere's [x, y, z, r].
+export const selectionFields = ['sel-x', 'sel-y', 'sel-z', 'sel-r'];
+
 export function element(id) { return $(id); }
 
 // One line, always visible: errors in red until the next message replaces them.
@@ -18,7 +21,7 @@ export function setMode({ title, staticMode }) {
   document.title = $('title').textContent;
   $('mode').textContent = staticMode ? 'static snapshot (editing is off)' : '';
   for (const id of ['edit-tools', 'save', 'sel-hint']) $(id).classList.toggle('hidden', staticMode);
-  for (const id of ['sel-x', 'sel-y', 'sel-z', 'sel-r']) $(id).disabled = staticMode;
+  for (const id of selectionFields) $(id).disabled = staticMode;
   $('legend-bar').style.background = rampGradient();
 }
 
@@ -45,7 +48,7 @@ export function showCertificate(solids, current, redCounts) {
     ['original covered', yesNo(c.original_covered)],
     ['largest gap', Number.isFinite(c.max_gap) ? `${number(c.max_gap, 4)} of the diagonal` : 'n/a'],
     ['protrusion', Number.isFinite(c.protrusion) ? `${number(c.protrusion, 4)} (certified)` : 'n/a'],
-    ['red triangles', String(redCounts[current])],
+    ['gap triangles', String(redCounts[current])],
     ['covered', yesNo(c.covered)],
   ];
   if (solids.length > 1) {
@@ -66,8 +69,12 @@ export function showCertificate(solids, current, redCounts) {
   }));
 }
 
-export function showLegend(scale) {
-  $('legend-max').textContent = number(scale, 3);
+// The ramp's ends: a fraction from 0 to 1, or outside volumes from 0 to the largest.
+export function showLegend(scale, largest) {
+  const relative = scale === 'relative';
+  $('legend-what').textContent = relative ? 'outside volume' : 'fraction outside';
+  $('legend-max').textContent = relative ? number(largest, 3) : '1';
+  $('scale').value = relative ? 'relative' : 'absolute';
 }
 
 export function showSolidChoice(solids, current, onChange) {
@@ -83,20 +90,18 @@ export function showSolidChoice(solids, current, onChange) {
   select.onchange = () => onChange(Number(select.value));
 }
 
-// sphere: [x,y,z,r] or null to hide the panel.
-export function showSelection(index, sphere, outside) {
+// sphere: [x,y,z,r] or null to hide the panel; link: the name of its solid.
+export function showSelection(index, sphere, outside, link) {
   $('selection').classList.toggle('hidden', !sphere);
   if (!sphere) return;
   $('sel-index').textContent = `#${index}`;
-  ['sel-x', 'sel-y', 'sel-z', 'sel-r'].forEach((id, j) => {
+  if (link !== undefined) $('sel-link').textContent = link;
+  selectionFields.forEach((id, j) => {
     if (document.activeElement !== $(id)) $(id).value = number(sphere[j], 7);
   });
   $('sel-outside').textContent = number(outside);
 }
 
-export function readSelection() {
-  return ['sel-x', 'sel-y', 'sel-z', 'sel-r'].map((id) => Number($(id).value));
-}
 
 export function showLevel(levels, onChange) {
   $('level-row').classList.toggle('hidden', !levels);
@@ -126,6 +131,7 @@ export function buildJoints(joints, onInput, disabled) {
     slider.dataset.joint = j.name;
     slider.disabled = disabled;
     const value = document.createElement('span');
+    value.className = 'value';
     value.textContent = number(j.value, 3);
     slider.oninput = () => {
       value.textContent = number(Number(slider.value), 3);

@@ -1,9 +1,11 @@
-// One solid's displayed mesh: grey, with the triangles the certificate finds uncovered drawn
-// red on top. The red triangles are a mesh of their own (a child of the grey one) that shares
+// One solid's displayed mesh: grey, with the triangles the certificate finds uncovered (the
+// gaps) drawn in the gap colour (colors.js, on no sphere ramp) on top: after the translucent
+// spheres, so that a sphere in front does not wash them out. The red triangles are a mesh of their own (a child of the grey one) that shares
 // the grey mesh's vertex buffers and has only their indices: an edit replaces that small index,
 // never the whole mesh's, which on a mesh of a million triangles took seconds to upload and
 // redraw. A vertex shared with a covered neighbour cannot smear red onto it.
-import { BufferAttribute, BufferGeometry, DoubleSide, Mesh, MeshStandardMaterial } from 'three';
+import { BufferAttribute, BufferGeometry, DoubleSide, Mesh, MeshBasicMaterial, MeshStandardMaterial } from 'three';
+import { gapColor } from './colors.js';
 
 export class SolidMesh {
   constructor({ positions, indices }) {
@@ -19,9 +21,11 @@ export class SolidMesh {
       color: 0xb8b8b0, roughness: 0.8, metalness: 0.0, side: DoubleSide, flatShading: true,
     });
     this.mesh = new Mesh(this.geometry, covered);
-    // Drawn over the grey triangles they coincide with (pulled towards the camera in depth).
-    const uncovered = new MeshStandardMaterial({
-      color: 0xe01010, emissive: 0x500000, roughness: 0.8, side: DoubleSide, flatShading: true,
+    // Drawn over the grey triangles they coincide with (pulled towards the camera in depth),
+    // unlit so that no shading darkens them, and after the spheres (which write no depth), so
+    // that they show through every sphere in front of them.
+    const uncovered = new MeshBasicMaterial({
+      color: gapColor, side: DoubleSide,
       polygonOffset: true, polygonOffsetFactor: -1, polygonOffsetUnits: -1,
     });
     this.redGeometry = new BufferGeometry();
@@ -31,6 +35,7 @@ export class SolidMesh {
     this.redGeometry.boundingSphere = this.geometry.boundingSphere;
     this.red = new Mesh(this.redGeometry, uncovered);
     this.red.raycast = () => {};  // picking goes to the solid itself
+    this.red.renderOrder = 2;     // after the spheres (renderOrder 1)
     this.mesh.add(this.red);
     this.redCount = 0;
     this.setUncovered([]);

@@ -1,5 +1,5 @@
-// One solid's spheres as one instanced, translucent mesh; each sphere coloured by its own
-// outside volume. The instance buffers grow by doubling, so adding a sphere rarely rebuilds.
+// One solid's spheres as one instanced, translucent mesh; each sphere coloured by its place on
+// the ramp (colors.js). The instance buffers grow by doubling, so adding a sphere rarely rebuilds.
 import {
   Color, InstancedMesh, Matrix4, MeshStandardMaterial, Quaternion, SphereGeometry, Vector3,
 } from 'three';
@@ -24,8 +24,8 @@ export class SphereLayer {
 
   get count() { return this.mesh ? this.mesh.count : 0; }
 
-  // spheres: [[x,y,z,r], ...]; outside: per-sphere outside volume; scale: the ramp's top.
-  update(spheres, outside, scale) {
+  // spheres: [[x,y,z,r], ...]; shades: per sphere, its place on the ramp (0 to 1).
+  update(spheres, shades) {
     this.spheres = spheres.map((s) => s.slice());
     this.ensureCapacity(spheres.length);
     const m = new Matrix4();
@@ -35,14 +35,21 @@ export class SphereLayer {
       const [x, y, z, r] = spheres[i];
       m.compose(new Vector3(x, y, z), identity, new Vector3(r, r, r));
       this.mesh.setMatrixAt(i, m);
-      const v = outside && Number.isFinite(outside[i]) ? outside[i] : 0;
-      this.mesh.setColorAt(i, rampColor(scale > 0 ? v / scale : 0, color));
+      this.mesh.setColorAt(i, rampColor(shades[i], color));
     }
     this.mesh.count = spheres.length;
     this.mesh.instanceMatrix.needsUpdate = true;
     this.mesh.instanceColor.needsUpdate = true;
     this.mesh.computeBoundingSphere();
     this.mesh.computeBoundingBox();
+  }
+
+  // Sphere i's colour as [r, g, b], 0 to 1.
+  colorOf(index) {
+    if (!this.mesh || index >= this.mesh.count) return null;
+    const c = new Color();
+    this.mesh.getColorAt(index, c);
+    return [c.r, c.g, c.b];
   }
 
   // Moves one sphere while it is dragged, before the server has answered.

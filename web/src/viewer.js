@@ -1,7 +1,7 @@
 // The three.js view: camera, lights, orbit controls, one group per solid placed by its pose,
 // the solid's mesh and spheres inside it, picking and the gizmo that drags a sphere's centre.
 import {
-  Box3, Color, DirectionalLight, Group, HemisphereLight, Matrix4, Mesh, MeshBasicMaterial,
+  Box3, Color, DirectionalLight, Frustum, Group, HemisphereLight, Matrix4, Mesh, MeshBasicMaterial,
   Object3D, PerspectiveCamera, Raycaster, Scene, SphereGeometry, Vector2, Vector3, WebGLRenderer,
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
@@ -33,6 +33,7 @@ export class Viewer {
     this.gizmo.addEventListener('change', () => this.requestRender());
     this.gizmo.addEventListener('dragging-changed', (e) => { this.orbit.enabled = !e.value; });
     this.scene.add(this.gizmo.getHelper());
+    dropFreeMoveHandle(this.gizmo);
     this.handle = new Object3D();  // what the gizmo moves: the selected sphere's centre
     this.outline = new Mesh(new SphereGeometry(1, 24, 12),
       new MeshBasicMaterial({ color: 0x111111, wireframe: true, transparent: true, opacity: 0.35 }));
@@ -77,8 +78,46 @@ export class Viewer {
     return new Vector3().setFromMatrixPosition(group.matrixWorld).toArray();
   }
 
-  // Fits the camera to every mesh and sphere.
+  // Fits the camera to every mesh and sphere, looking from the default direction.
   frame() {
+    const direction = this.camera.up.z === 1 ? new Vector3(1.2, -1.6, 0.9) : new Vector3(1.2, 0.9, 1.6);
+    this.frameBox(this.sceneBox(), direction);
+  }
+
+  // Reframes, looking from where the camera looks now, when part of the scene has left the view
+  // (a joint moved the robot); otherwise leaves the camera alone.
+  keepInView() {
+    const box = this.sceneBox();
+    if (this.boxInView(box)) return;
+    this.frameBox(box, this.camera.position.clone().sub(this.orbit.target));
+  }
+
+  // Whether the box (world frame) lies inside the camera's view.
+  boxInView(box) {
+    this.camera.updateMatrixWorld(true);
+    const frustum = new Frustum().setFromProjectionMatrix(
+      new Matrix4().multiplyMatrices(this.camera.projectionMatrix, this.camera.matrixWorldInverse));
+    const corner = new Vector3();
+    for (let i = 0; i < 8; i++) {
+      corner.set(i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y, i & 4 ? box.max.z : box.min.z);
+      if (!frustum.containsPoint(corner)) return false;
+    }
+    return true;
+  }
+
+  // Where point [x,y,z] of solid k's frame is on the page, in client pixels.
+  screenOf(k, point) {
+    const group = this.solids[k].group;
+    group.updateMatrixWorld(true);
+    const p = new Vector3(...point).applyMatrix4(group.matrixWorld).project(this.camera);
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
+  }
+
+  sceneInView() { return this.boxInView(this.sceneBox()); }
+
+  // Every mesh and sphere, in the world frame.
+  sceneBox() {
     const box = new Box3();
     const bounds = new Box3();
     for (const { group, mesh, spheres } of this.solids) {
@@ -91,10 +130,18 @@ export class Viewer {
       }
     }
     if (box.isEmpty()) box.set(new Vector3(-1, -1, -1), new Vector3(1, 1, 1));
+    return box;
+  }
+
+  // The camera on `direction` from the box's centre, far enough for its bounding sphere to fit
+  // the narrower of the view's two angles.
+  frameBox(box, direction) {
     const center = box.getCenter(new Vector3());
     const radius = Math.max(box.getSize(new Vector3()).length() / 2, 1e-6);
-    const distance = radius / Math.sin((this.camera.fov * Math.PI) / 360) * 1.05;
-    const direction = this.camera.up.z === 1 ? new Vector3(1.2, -1.6, 0.9) : new Vector3(1.2, 0.9, 1.6);
+    const vertical = (this.camera.fov * Math.PI) / 360;
+    const horizontal = Math.atan(Math.tan(vertical) * this.camera.aspect);
+    const distance = radius / Math.sin(Math.min(vertical, horizontal)) * 1.05;
+    if (direction.lengthSq() === 0) direction.set(1, 1, 1);
     this.camera.position.copy(center).addScaledVector(direction.normalize(), distance);
     this.camera.near = distance / 100;
     this.camera.far = distance * 100;
@@ -169,8 +216,16 @@ export class Viewer {
     this.renderer.render(this.scene, this.camera);
   }
 
-  pngDataUrl() {
-    this.renderNow();
-    return this.renderer.domElement.toDataURL('image/png');
+}
+
+// The gizmo's centre handle moves the sphere in the screen's plane, changing all three
+// coordinates at once, and lights up whenever the pointer rests at the centre of a selected
+// sphere: it is taken out, the axes and planes stay.
+function dropFreeMoveHandle(gizmo) {
+  const parts = gizmo._gizmo;  // three.js keeps the handles on this member
+  if (!parts) return;
+  for (const group of [parts.gizmo && parts.gizmo.translate, parts.picker && parts.picker.translate]) {
+    if (!group) continue;
+    for (const handle of group.children.filter((c) => c.name === 'XYZ')) group.remove(handle);
   }
 }
