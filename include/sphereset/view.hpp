@@ -157,10 +157,16 @@ Status setViewJoints(ViewScene* scene, const std::map<std::string, double>& join
 // layout (spheres added or deleted).
 Expected<int64_t> saveViewScene(const ViewScene& scene);
 
-// The scene as JSON text (GET /api/scene), and one solid's displayed mesh as the binary of
+// Which surface of a solid: the displayed mesh (the original triangles when the repair changed
+// them, else the solid), or the repaired solid itself.
+enum class ViewSurface { kDisplayed, kRepaired };
+// Whether the repair changed the solid's triangles (the page can then show either surface).
+bool viewSolidRepaired(const ViewSolid& solid);
+
+// The scene as JSON text (GET /api/scene), and one solid's surface as the binary of
 // GET /api/geometry (uint32 V, uint32 T, float32 xyz × V, uint32 abc × T, little-endian).
 std::string viewSceneJson(const ViewScene& scene);
-std::string viewGeometry(const ViewSolid& solid);
+std::string viewGeometry(const ViewSolid& solid, ViewSurface surface = ViewSurface::kDisplayed);
 
 // Whether this build has the page (web/ was built), and the one message for when it has not
 // (kInvalidData).

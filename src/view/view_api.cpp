@@ -272,8 +272,15 @@ ViewResponse getScene(const ViewScene& scene, const ViewRequest&) {
   return {kHttpOk, "application/json", viewSceneJson(scene), {}};
 }
 
-// /api/geometry?solid=K, K a decimal index.
+// /api/geometry?solid=K[&surface=displayed|repaired], K a decimal index.
 ViewResponse getGeometry(const ViewScene& scene, const ViewRequest& r) {
+  ViewSurface surface = ViewSurface::kDisplayed;
+  if (const auto f = r.query.find("surface"); f != r.query.end()) {
+    if (f->second == "repaired")
+      surface = ViewSurface::kRepaired;
+    else if (f->second != "displayed")
+      return refuse(kHttpBadRequest, "geometry: 'surface' must be displayed or repaired");
+  }
   const auto q = r.query.find("solid");
   const std::string k = q == r.query.end() ? "" : q->second;
   constexpr size_t kMaxIndexDigits = 9;
@@ -286,7 +293,7 @@ ViewResponse getGeometry(const ViewScene& scene, const ViewRequest& r) {
                   "no solid " + k + " (the scene has " + std::to_string(scene.solids.size()) + ")");
   return {kHttpOk,
           "application/octet-stream",
-          viewGeometry(scene.solids[static_cast<size_t>(solid)]),
+          viewGeometry(scene.solids[static_cast<size_t>(solid)], surface),
           {}};
 }
 

@@ -67,6 +67,7 @@ nlohmann::json solid(const ViewSolid& s) {
           {"bounds",
            {{box.min.x(), box.min.y(), box.min.z()}, {box.max.x(), box.max.y(), box.max.z()}}},
           {"diagonal", box.diagonal()},
+          {"repaired", viewSolidRepaired(s)},
           {"spheres", spheres(s.spheres())},
           {"levels", levels},
           {"certificate", certificate(s.certificate)}};
@@ -201,8 +202,8 @@ std::string viewSceneJson(const ViewScene& scene) {
   return view_json::scene(scene).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-std::string viewGeometry(const ViewSolid& solid) {
-  const Mesh& m = solid.displayed();
+std::string viewGeometry(const ViewSolid& solid, ViewSurface surface) {
+  const Mesh& m = surface == ViewSurface::kRepaired ? solid.input->repair.solid : solid.displayed();
   std::string out;
   constexpr size_t kHeaderBytes = 8, kVertexBytes = 12, kTriangleBytes = 12;
   out.reserve(kHeaderBytes + kVertexBytes * m.vertices.size() +
@@ -229,6 +230,9 @@ Expected<std::string> inlineViewData(std::string_view html, const ViewScene& sce
   data["save"] = nullptr;
   for (size_t i = 0; i < scene.solids.size(); ++i) {
     data["solids"][i]["geometry"] = base64(viewGeometry(scene.solids[i]));
+    if (viewSolidRepaired(scene.solids[i]))
+      data["solids"][i]["repaired_geometry"] =
+          base64(viewGeometry(scene.solids[i], ViewSurface::kRepaired));
     data["solids"][i]["certificate"]["seconds"] = 0.0;
     // A tree's every level with its certificate: changing the level is not an edit.
     if (scene.solids[i].tree) data["solids"][i]["level_sets"] = view_json::levelSets(scene.solids[i]);

@@ -215,6 +215,10 @@ const Mesh& ViewSolid::displayed() const {
   return original ? *original : input->repair.solid;
 }
 
+bool viewSolidRepaired(const ViewSolid& solid) {
+  return originalTriangles(solid.input->repair) != nullptr;
+}
+
 void certifyViewSolid(ViewSolid* solid) {
   solid->engine.reset();
   if (!solid->spheres().empty()) {

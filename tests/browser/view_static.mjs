@@ -76,6 +76,7 @@ await runTest(async (args, browser) => {
   runCli(args, ['view', mesh.path, tree, '--html', treeHtml]);
   const treePage = await openPage(browser, pathToFileURL(treeHtml).href);
   const leaves = await treePage.page.evaluate(() => window.sphereset.sphereCount(0));
+  await treePage.page.$eval('#level', (e) => e.scrollIntoView());
   const level = await (await treePage.page.$('#level')).boundingBox();
   await treePage.page.mouse.click(level.x + 2, level.y + level.height / 2);
   await treePage.page.waitForFunction(() => window.sphereset.sphereCount(0) === 1, { timeout: 20000 });

@@ -317,6 +317,16 @@ TEST_F(ViewTest, ARepairedMeshShowsAndCertifiesItsOriginalTriangles) {
   EXPECT_EQ(&s.displayed(), originalTriangles(s.input->repair));
   EXPECT_TRUE(s.certificate.original_covered);
   EXPECT_TRUE(s.certificate.covered);
+  // The page can ask for either surface; the scene says there are two.
+  EXPECT_TRUE(call(&*scene, request("GET", "/api/scene"))["solids"][0]["repaired"].get<bool>());
+  ViewRequest g = request("GET", "/api/geometry");
+  g.query = {{"solid", "0"}, {"surface", "repaired"}};
+  EXPECT_EQ(handleViewRequest(&*scene, kAccess, g).body, viewGeometry(s, ViewSurface::kRepaired));
+  EXPECT_NE(viewGeometry(s, ViewSurface::kRepaired), viewGeometry(s));
+  g.query["surface"] = "displayed";
+  EXPECT_EQ(handleViewRequest(&*scene, kAccess, g).body, viewGeometry(s));
+  g.query["surface"] = "other";
+  call(&*scene, g, 400);
   // Shrunk to miss the corners: the original triangles are not covered any more either.
   ASSERT_TRUE(applyViewEdits(&*scene, 0, {{ViewEdit::Op::kSet, 0, {kBoxBall.center, 0.6}}}).ok());
   EXPECT_FALSE(scene->solids[0].certificate.original_covered);

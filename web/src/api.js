@@ -26,8 +26,10 @@ export class ServerApi {
   }
 
   scene() { return this.request('GET', '/api/scene'); }
-  async geometry(solid) {
-    return decodeGeometry(await this.request('GET', `/api/geometry?solid=${solid}`, undefined, true));
+  // surface: 'displayed' (the original triangles of a repaired mesh) or 'repaired'.
+  async geometry(solid, surface = 'displayed') {
+    const query = surface === 'displayed' ? '' : `&surface=${surface}`;
+    return decodeGeometry(await this.request('GET', `/api/geometry?solid=${solid}${query}`, undefined, true));
   }
   edit(solid, edits) { return this.request('POST', '/api/edit', { solid, edits }); }
   bound(solid) { return this.request('POST', '/api/bound', { solid }); }

@@ -5,6 +5,7 @@ import { sphereShade } from './colors.js';
 import { base64ToArrayBuffer, decodeGeometry } from './geometry.js';
 import { History, differenceEdits, inverseEdits } from './history.js';
 import { jointValues, solidPoses } from './kinematics.js';
+import { showLinkList } from './link_list.js';
 import * as panels from './panels.js';
 import { Viewer } from './viewer.js';
 
@@ -25,6 +26,7 @@ export class App {
     this.addMode = false;
     this.colorScale = 'absolute';  // colors.js: 'absolute' or 'relative'
     this.autoFrame = true;         // robots: frame the robot after a joint moves it
+    this.shown = [];               // per solid: false when hidden
   }
 
   async start(container) {
@@ -49,6 +51,7 @@ export class App {
     this.viewer.build(geometries, scene.poses);
     this.viewer.setGizmoEnabled(!this.staticMode);
     panels.setMode({ title: scene.title, staticMode: this.staticMode });
+    panels.showSurfaceChoice(scene.solids.some((s) => s.repaired));
     panels.showSolidChoice(scene.solids, this.current, (k) => this.showSolid(k));
     // A static page poses its robot itself when it carries the joint tree.
     const posable = !this.staticMode || Boolean(scene.kinematics);
@@ -272,6 +275,30 @@ export class App {
     panels.showSelection(s.index, sphere, outside[s.index], this.solidName(s.solid));
   }
 
+  // --- what is shown ----------------------------------------------------------------------
+
+  setShown(k, shown) {
+    this.shown[k] = shown;
+    this.viewer.setSolidShown(k, shown);
+    if (!shown && this.selection && this.selection.solid === k) this.select(null);
+    else this.refresh();
+  }
+
+  // 'displayed' (a repaired mesh's original triangles) or 'repaired' (its solid), fetched once.
+  async setSurface(surface) {
+    if (surface === 'repaired') {
+      const solids = this.scene.solids;
+      for (let k = 0; k < solids.length; k++) {
+        if (!solids[k].repaired || this.viewer.solids[k].repaired) continue;
+        const geometry = this.staticMode
+          ? decodeGeometry(base64ToArrayBuffer(solids[k].repaired_geometry || ''))
+          : await this.api.geometry(k, 'repaired');
+        this.viewer.setRepairedGeometry(k, geometry);
+      }
+    }
+    this.viewer.setDisplay({ surface });
+  }
+
   // What the page calls solid k: its link, else its name.
   solidName(k) {
     const solid = this.solid(k);
@@ -319,6 +346,12 @@ export class App {
     panels.showCertificate(solids, this.current, this.redCounts);
     panels.showLevel(solids[this.current].levels, (l) => this.level(this.current, l).catch(() => {}));
     document.getElementById('solid').value = String(this.current);
+    showLinkList(solids, { current: this.current, selection: this.selection, shown: this.shown }, {
+      showLink: (k) => this.showSolid(k),
+      frameLink: (k) => this.viewer.frameSolid(k),
+      selectSphere: (k, i) => this.select({ solid: k, index: i }),
+      setShown: (k, shown) => this.setShown(k, shown),
+    });
     document.getElementById('undo').disabled = !this.history.canUndo;
     document.getElementById('redo').disabled = !this.history.canRedo;
     this.viewer.renderNow();

@@ -36,7 +36,24 @@ function wireButtons(app, viewer) {
 }
 
 function wireViewOptions(app) {
+  const viewer = app.viewer;
   $('scale').onchange = () => app.setColorScale($('scale').value);
+  $('show-mesh').onchange = () => viewer.setDisplay({ mesh: $('show-mesh').checked });
+  $('show-spheres').onchange = () => viewer.setDisplay({ spheres: $('show-spheres').checked });
+  $('wireframe').onchange = () => viewer.setDisplay({ wireframe: $('wireframe').checked });
+  $('opacity').oninput = () => {
+    const opacity = Number($('opacity').value);
+    $('opacity-value').textContent = opacity.toFixed(2);
+    viewer.setDisplay({ opacity });
+  };
+  $('surface').onchange = () => quiet(app.setSurface($('surface').value).catch((e) => {
+    panels.showMessage(e.message || String(e), 'error');
+    throw e;
+  }));
+  $('frame-gaps').onclick = () => {
+    if (!viewer.frameGaps()) panels.showMessage('no gaps: every shown link is covered');
+  };
+  $('filter').oninput = () => app.refresh();
   $('auto-frame').onchange = () => {
     app.autoFrame = $('auto-frame').checked;
     if (app.autoFrame) app.viewer.keepInView();

@@ -21,6 +21,8 @@ export function installHooks(app, ready) {
     setLevel: (k, level) => app.level(k, level),
     sceneInView: () => app.viewer.sceneInView(),
     sphereColor: (k, i) => app.viewer.solids[k].spheres.colorOf(i),
+    visibility: () => app.viewer.visibility(),
+    cameraTarget: () => app.viewer.orbit.target.toArray(),
     gizmoAxis: () => app.viewer.gizmo.axis,
     screenOf: (k, point) => app.viewer.screenOf(k, point),
     selection: () => (app.selection ? { ...app.selection, link: app.solidName(app.selection.solid) } : null),

@@ -25,6 +25,11 @@ export function setMode({ title, staticMode }) {
   $('legend-bar').style.background = rampGradient();
 }
 
+// The surface choice, for scenes with a repaired mesh.
+export function showSurfaceChoice(any) {
+  $('surface-row').classList.toggle('hidden', !any);
+}
+
 // The whole scene covers when every solid's set covers.
 export function showStatus(solids) {
   const covered = solids.length > 0 && solids.every((s) => s.certificate && s.certificate.covered);

@@ -4,7 +4,9 @@
 // the grey mesh's vertex buffers and has only their indices: an edit replaces that small index,
 // never the whole mesh's, which on a mesh of a million triangles took seconds to upload and
 // redraw. A vertex shared with a covered neighbour cannot smear red onto it.
-import { BufferAttribute, BufferGeometry, DoubleSide, Mesh, MeshBasicMaterial, MeshStandardMaterial } from 'three';
+import {
+  Box3, BufferAttribute, BufferGeometry, DoubleSide, Mesh, MeshBasicMaterial, MeshStandardMaterial, Triangle, Vector3,
+} from 'three';
 import { gapColor } from './colors.js';
 
 export class SolidMesh {
@@ -41,7 +43,51 @@ export class SolidMesh {
     this.setUncovered([]);
   }
 
-  // Returns how many distinct triangles are drawn red.
+  setWireframe(on) {
+    this.mesh.material.wireframe = on;
+  }
+
+  // The largest connected patch (triangles sharing a vertex) of the gap triangles by area:
+  // { area, box (solid frame), triangles }, or null when there are no gaps.
+  largestGap() {
+    if (!this.gaps || !this.gaps.length) return null;
+    const parent = new Map();
+    const find = (v) => {
+      while (parent.get(v) !== v) {
+        parent.set(v, parent.get(parent.get(v)));
+        v = parent.get(v);
+      }
+      return v;
+    };
+    const join = (a, b) => { parent.set(find(a), find(b)); };
+    for (const t of this.gaps) {
+      for (let j = 0; j < 3; j++) {
+        const v = this.indices[3 * t + j];
+        if (!parent.has(v)) parent.set(v, v);
+      }
+      join(this.indices[3 * t], this.indices[3 * t + 1]);
+      join(this.indices[3 * t], this.indices[3 * t + 2]);
+    }
+    const position = this.geometry.getAttribute('position');
+    const patches = new Map();
+    const [a, b, c] = [new Vector3(), new Vector3(), new Vector3()];
+    for (const t of this.gaps) {
+      const root = find(this.indices[3 * t]);
+      if (!patches.has(root)) patches.set(root, { area: 0, box: new Box3(), triangles: 0 });
+      const patch = patches.get(root);
+      a.fromBufferAttribute(position, this.indices[3 * t]);
+      b.fromBufferAttribute(position, this.indices[3 * t + 1]);
+      c.fromBufferAttribute(position, this.indices[3 * t + 2]);
+      patch.area += new Triangle(a, b, c).getArea();
+      patch.box.expandByPoint(a).expandByPoint(b).expandByPoint(c);
+      patch.triangles++;
+    }
+    let best = null;
+    for (const patch of patches.values()) if (!best || patch.area > best.area) best = patch;
+    return best;
+  }
+
+  // Returns how many distinct triangles are drawn as gaps.
   setUncovered(triangleList) {
     const seen = new Set();
     for (const t of triangleList || []) {
@@ -68,6 +114,7 @@ export class SolidMesh {
     this.redGeometry.setDrawRange(0, needed);
     this.red.visible = seen.size > 0;
     this.redCount = seen.size;
+    this.gaps = [...seen];
     return this.redCount;
   }
 }

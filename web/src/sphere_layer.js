@@ -44,6 +44,11 @@ export class SphereLayer {
     this.mesh.computeBoundingBox();
   }
 
+  setOpacity(opacity) {
+    this.material.opacity = Math.min(1, Math.max(0.05, opacity));
+    this.material.needsUpdate = true;
+  }
+
   // Sphere i's colour as [r, g, b], 0 to 1.
   colorOf(index) {
     if (!this.mesh || index >= this.mesh.count) return null;

@@ -39,7 +39,8 @@ export class Viewer {
       new MeshBasicMaterial({ color: 0x111111, wireframe: true, transparent: true, opacity: 0.35 }));
     this.handle.add(this.outline);
 
-    this.solids = [];  // { group, mesh: SolidMesh, spheres: SphereLayer }
+    this.solids = [];  // { group, mesh: SolidMesh, spheres: SphereLayer, repaired: SolidMesh|null }
+    this.display = { mesh: true, spheres: true, wireframe: false, opacity: 0.35, surface: 'displayed' };
     this.raycaster = new Raycaster();
     this.renderPending = false;
     new ResizeObserver(() => this.resize()).observe(container);
@@ -55,7 +56,7 @@ export class Viewer {
       group.add(mesh.mesh);
       const spheres = new SphereLayer(group, k);
       this.scene.add(group);
-      this.solids.push({ group, mesh, spheres });
+      this.solids.push({ group, mesh, spheres, repaired: null, shown: true });
     });
     this.setPoses(poses);
   }
@@ -70,6 +71,72 @@ export class Viewer {
     });
     this.scene.updateMatrixWorld(true);
     this.requestRender();
+  }
+
+  // --- what is drawn -----------------------------------------------------------------------
+
+  // A solid (link) with its spheres, shown or hidden.
+  setSolidShown(k, shown) {
+    this.solids[k].shown = shown;
+    this.applyDisplay();
+  }
+
+  // display: { mesh, spheres, wireframe, opacity (0 to 1), surface: 'displayed' | 'repaired' }.
+  setDisplay(changes) {
+    Object.assign(this.display, changes);
+    this.applyDisplay();
+  }
+
+  // A repaired solid's own surface, drawn instead of its original triangles when the surface
+  // chosen is 'repaired' (the gaps are listed against the original triangles: they stay drawn
+  // there).
+  setRepairedGeometry(k, geometry) {
+    const solid = this.solids[k];
+    if (solid.repaired) solid.group.remove(solid.repaired.mesh);
+    solid.repaired = new SolidMesh(geometry);
+    solid.repaired.mesh.userData.solid = k;
+    solid.group.add(solid.repaired.mesh);
+    this.applyDisplay();
+  }
+
+  applyDisplay() {
+    const d = this.display;
+    for (const solid of this.solids) {
+      solid.group.visible = solid.shown;
+      const repaired = d.surface === 'repaired' && solid.repaired !== null;
+      // The grey surface's material is hidden, not the mesh: its gap triangles (a child) stay.
+      solid.mesh.mesh.material.visible = d.mesh && !repaired;
+      if (solid.repaired) solid.repaired.mesh.material.visible = d.mesh && repaired;
+      for (const m of [solid.mesh, solid.repaired]) if (m) m.setWireframe(d.wireframe);
+      if (solid.spheres.mesh) solid.spheres.mesh.visible = d.spheres;
+      solid.spheres.setOpacity(d.opacity);
+    }
+    this.requestRender();
+  }
+
+  // What is drawn, for the hooks.
+  visibility() {
+    return {
+      display: { ...this.display },
+      solids: this.solids.map((s) => ({
+        shown: s.shown,
+        mesh: s.mesh.mesh.material.visible,
+        repaired: s.repaired ? s.repaired.mesh.material.visible : null,
+        wireframe: s.mesh.mesh.material.wireframe,
+        spheres: Boolean(s.spheres.mesh && s.spheres.mesh.visible),
+        opacity: s.spheres.material.opacity,
+      })),
+    };
+  }
+
+  // The meshes a ray can hit: those drawn.
+  drawnMeshes() {
+    const meshes = [];
+    for (const s of this.solids) {
+      if (!s.shown) continue;
+      for (const m of [s.mesh, s.repaired]) if (m && m.mesh.material.visible) meshes.push(m.mesh);
+    }
+    return meshes;
   }
 
   worldOrigin(k) {
@@ -116,11 +183,34 @@ export class Viewer {
 
   sceneInView() { return this.boxInView(this.sceneBox()); }
 
-  // Every mesh and sphere, in the world frame.
-  sceneBox() {
+  // Solid k: its mesh and spheres, from where the camera looks now.
+  frameSolid(k) {
+    this.frameBox(this.sceneBox([this.solids[k]]), this.camera.position.clone().sub(this.orbit.target));
+  }
+
+  // The largest connected patch of gap triangles (by area) of the solids shown, framed from where
+  // the camera looks now, at least `least` of the scene's size across. False when there is none.
+  frameGaps(least = 0.05) {
+    let best = null;
+    for (const solid of this.solids) {
+      if (!solid.shown) continue;
+      const patch = solid.mesh.largestGap();
+      if (patch && (!best || patch.area > best.area)) best = { ...patch, solid };
+    }
+    if (!best) return false;
+    best.solid.group.updateMatrixWorld(true);
+    const box = best.box.clone().applyMatrix4(best.solid.group.matrixWorld);
+    const size = this.sceneBox().getSize(new Vector3()).length() * least;
+    box.expandByScalar(Math.max(0, (size - box.getSize(new Vector3()).length()) / 2));
+    this.frameBox(box, this.camera.position.clone().sub(this.orbit.target));
+    return true;
+  }
+
+  // Every mesh and sphere (of the solids given, by default all shown), in the world frame.
+  sceneBox(solids = this.solids.filter((s) => s.shown)) {
     const box = new Box3();
     const bounds = new Box3();
-    for (const { group, mesh, spheres } of this.solids) {
+    for (const { group, mesh, spheres } of solids) {
       group.updateMatrixWorld(true);
       bounds.copy(mesh.geometry.boundingBox).applyMatrix4(group.matrixWorld);
       box.union(bounds);
@@ -159,13 +249,14 @@ export class Viewer {
       -((clientY - rect.top) / rect.height) * 2 + 1);
     this.raycaster.setFromCamera(ndc, this.camera);
     if (surfaceOnly) {
-      const hits = this.raycaster.intersectObjects(this.solids.map((s) => s.mesh.mesh), false);
+      const hits = this.raycaster.intersectObjects(this.drawnMeshes(), false);
       if (!hits.length) return null;
       const solid = hits[0].object.userData.solid;
       const inverse = new Matrix4().copy(this.solids[solid].group.matrixWorld).invert();
       return { solid, point: hits[0].point.clone().applyMatrix4(inverse).toArray() };
     }
-    const layers = this.solids.map((s) => s.spheres.mesh).filter((m) => m && m.count > 0);
+    const layers = this.solids.filter((s) => s.shown && this.display.spheres)
+      .map((s) => s.spheres.mesh).filter((m) => m && m.count > 0);
     let best = null;
     for (const hit of this.raycaster.intersectObjects(layers, false)) {
       const solid = hit.object.userData.solid;
