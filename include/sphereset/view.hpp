@@ -70,6 +70,7 @@ struct ViewSolid {
 };
 
 enum class ViewKind { kMesh, kRobot };
+struct ViewFitJob;  // a fit the page started (view_fit.cpp)
 // How a save writes: a sphere set, a tree (its levels back in their slots), a robot's links as
 // cuRobo's YAML, the URDF with sphere collisions, or the robot as an MJCF with sphere geoms.
 enum class ViewSaveFormat { kSet, kTree, kRobotYaml, kRobotUrdf, kRobotMjcf };
@@ -95,6 +96,13 @@ struct ViewScene {
   // self_collision_ignore, Lula's description) a YAML save keeps; empty: written afresh.
   std::string save_source;
   SphereFileMeta save_meta;
+  // How the solids were made (ViewLoadOptions), for the fits the page starts.
+  RepairOptions repair;
+  LinkSolid link_solid = LinkSolid::kEnvelope;
+  std::map<std::string, LinkSolid> link_solid_for;
+  // The fit the page started last (startViewFit), running or finished; null before the first.
+  // Copies of the scene share it.
+  std::shared_ptr<ViewFitJob> fit;
 };
 
 struct ViewLoadOptions {
@@ -152,6 +160,40 @@ Status setViewLevel(ViewScene* scene, int64_t solid, int64_t level);
 // Sets the given joints (the others keep their values), clamped to their limits (jointState's
 // errors: kInvalidArgument for an unknown joint or a value that is not finite).
 Status setViewJoints(ViewScene* scene, const std::map<std::string, double>& joints);
+// A fit started from the page (POST /api/fit), run in a thread of its own while the page keeps
+// asking how far it is: solid `solid`'s set fitted afresh with `spheres` spheres (a link's sphere
+// primitives first, as `sphereset robot` does), or, with `budget` > 0, every link of a robot
+// fitted by fitRobot's budget split. `quality` is fit.hpp's preset; the seed is 1.
+struct ViewFitRequest {
+  int64_t solid = 0;
+  int spheres = 0;
+  int budget = 0;
+  FitQuality quality = FitQuality::kDefault;
+};
+// How a fit is: "idle" (none started), "running", "done", "cancelled" or "failed"; `fraction` of
+// its work (0 to 1, an estimate from its rounds), `stage` in words, the error of a failed one,
+// and the solids it replaced once applied with the version that did it.
+struct ViewFitStatus {
+  std::string state = "idle";
+  double fraction = 0.0;
+  std::string stage;
+  std::string error;
+  std::vector<int64_t> solids;  // the solids it fits
+  std::map<std::string, int> counts;  // the robot budget's split: link -> spheres
+  bool applied = false;               // this call applied it to the scene
+};
+// Starts a fit. Errors (kInvalidArgument, nothing starts): a fit running already, an unknown
+// solid, a tree's solid (trees are fitted by `sphereset tree`), spheres outside [1,
+// limits::kMaxSpheres] without a budget, a budget on a mesh or below one per link, options
+// fitRequestOptions refuses.
+Status startViewFit(ViewScene* scene, const ViewFitRequest& request);
+// How the fit is; a finished one is applied to the scene the first time it is asked for (its
+// solids get the new sets and their certificates, the version grows by one).
+ViewFitStatus viewFitStatus(ViewScene* scene);
+// Asks a running fit to stop (it stops at its next progress report, within about a second);
+// nothing changes. No error when none runs.
+void cancelViewFit(ViewScene* scene);
+
 // Writes every set to the scene's save path in its format, atomically. Returns the bytes
 // written. Errors: those of the writers; kInvalidArgument when a tree's level no longer fits its
 // layout (spheres added or deleted).

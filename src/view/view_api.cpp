@@ -2,6 +2,7 @@
 // and Origin, token, path, method, body: every field typed, finite and in range) and answered;
 // the scene changes only through the library's functions, which check again and change nothing
 // on an error.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -262,6 +263,50 @@ ViewResponse postSave(ViewScene* scene, const nlohmann::json& body) {
   return answer({{"path", scene->save_path}, {"bytes", *bytes}});
 }
 
+// POST /api/fit {"solid": K, "spheres": n, "quality": q} or {"budget": B, "quality": q}.
+ViewResponse postFit(ViewScene* scene, const nlohmann::json& body) {
+  onlyFields(body, {"solid", "spheres", "budget", "quality"}, "body");
+  ViewFitRequest r;
+  if (body.contains("budget")) {
+    onlyFields(body, {"budget", "quality"}, "body");
+    r.budget = static_cast<int>(std::clamp<int64_t>(integerField(body, "budget", "body"), 0, limits::kMaxSpheres + 1));
+    if (r.budget == 0) throw BodyError{"body: 'budget' must be at least 1"};
+  } else {
+    r.solid = integerField(body, "solid", "body");
+    r.spheres = static_cast<int>(std::clamp<int64_t>(integerField(body, "spheres", "body"), 0, limits::kMaxSpheres + 1));
+  }
+  if (body.contains("quality")) {
+    const nlohmann::json& q = body["quality"];
+    if (!q.is_string()) throw BodyError{"body: 'quality' must be fast, default or best"};
+    auto quality = fitQualityFromName(q.get<std::string>());
+    if (!quality) return refuse(quality.error());
+    r.quality = *quality;
+  }
+  if (Status st = startViewFit(scene, r); !st) return refuse(st.error());
+  return answer({{"state", "running"}});
+}
+
+// POST /api/fit/status {}: how the fit is; a finished one is applied (and its sets sent).
+ViewResponse postFitStatus(ViewScene* scene, const nlohmann::json& body) {
+  onlyFields(body, {}, "body");
+  const ViewFitStatus st = viewFitStatus(scene);
+  nlohmann::json j = {{"state", st.state},   {"fraction", st.fraction}, {"stage", st.stage},
+                      {"error", st.error},   {"solids", st.solids},     {"counts", st.counts},
+                      {"applied", st.applied}, {"version", scene->version}};
+  if (st.applied) {
+    nlohmann::json sets = nlohmann::json::array();
+    for (const int64_t k : st.solids) sets.push_back(setAnswer(*scene, k));
+    j["sets"] = sets;
+  }
+  return answer(j);
+}
+
+ViewResponse postFitCancel(ViewScene* scene, const nlohmann::json& body) {
+  onlyFields(body, {}, "body");
+  cancelViewFit(scene);
+  return answer({{"state", viewFitStatus(scene).state}});
+}
+
 // The GET endpoints.
 ViewResponse getPage(const ViewScene&, const ViewRequest&) {
   if (Status st = checkViewPage(); !st) return refuse(kHttpServerError, st.error().message);
@@ -312,6 +357,9 @@ constexpr Route kRoutes[] = {
     {"/api/level", nullptr, postLevel},
     {"/api/pose", nullptr, postPose},
     {"/api/save", nullptr, postSave},
+    {"/api/fit", nullptr, postFit},
+    {"/api/fit/status", nullptr, postFitStatus},
+    {"/api/fit/cancel", nullptr, postFitCancel},
 };
 
 const Route* routeOf(const std::string& path) {

@@ -15,16 +15,19 @@
 #include "sphereset/robot.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/view.hpp"
+#include "view/view_fit.hpp"
 
 namespace sphereset {
 namespace {
 
 Error invalid(const std::string& message) { return Error{ErrorCode::kInvalidArgument, message}; }
 
+// A solid whose set may change now: one of the scene's, not being fitted.
 Expected<ViewSolid*> solidAt(ViewScene* scene, int64_t solid) {
   if (solid < 0 || solid >= static_cast<int64_t>(scene->solids.size()))
     return invalid("no solid " + std::to_string(solid) + " (the scene has " +
                    std::to_string(scene->solids.size()) + ")");
+  if (Status st = checkNotFitting(*scene, solid); !st) return st.error();
   return &scene->solids[static_cast<size_t>(solid)];
 }
 

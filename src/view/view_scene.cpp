@@ -63,6 +63,7 @@ Expected<ViewScene> loadMeshScene(const std::string& mesh_path, const std::strin
   ViewScene scene;
   scene.kind = ViewKind::kMesh;
   scene.title = std::filesystem::path(mesh_path).stem().string();
+  scene.repair = o.repair;
   auto solid = loadSolid(mesh_path, o.repair);
   if (!solid) return solid.error();
   auto tree = readSphereTree(spheres_path);
@@ -133,6 +134,9 @@ Expected<ViewScene> robotSceneOf(Robot robot, const std::string& urdf,
   scene.title = robot.name;
   scene.urdf_path = urdf;
   scene.robot_load = o.robot_load;
+  scene.repair = o.repair;
+  scene.link_solid = o.link_solid;
+  scene.link_solid_for = o.link_solid_for;
   if (o.level >= 0)
     return Error{ErrorCode::kInvalidArgument,
                  source + ": a robot's sets have no levels (--level is for trees)"};

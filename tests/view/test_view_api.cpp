@@ -18,13 +18,6 @@
 namespace sphereset::test {
 namespace {
 
-nlohmann::json call(ViewScene* scene, const ViewRequest& r, int status = 200) {
-  const ViewResponse res = handleViewRequest(scene, kAccess, r);
-  EXPECT_EQ(res.status, status) << r.method << " " << r.path << ": " << res.body;
-  if (res.content_type != "application/json") return {};
-  return nlohmann::json::parse(res.body);
-}
-
 TEST_F(ViewTest, SceneHoldsTheSolidItsSetAndCertificate) {
   ViewScene scene = boxScene();
   const nlohmann::json j = call(&scene, request("GET", "/api/scene"));

@@ -114,6 +114,14 @@ class ViewTest : public TempDirTest {
   }
 };
 
+// The API's answer to `r`, checked to have `status`; its JSON (null for another content type).
+inline nlohmann::json call(ViewScene* scene, const ViewRequest& r, int status = 200) {
+  const ViewResponse res = handleViewRequest(scene, kAccess, r);
+  EXPECT_EQ(res.status, status) << r.method << " " << r.path << ": " << res.body;
+  if (res.content_type != "application/json") return {};
+  return nlohmann::json::parse(res.body);
+}
+
 inline std::vector<Sphere> spheresOf(const nlohmann::json& a) {
   std::vector<Sphere> out;
   for (const auto& s : a)

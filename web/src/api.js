@@ -36,6 +36,10 @@ export class ServerApi {
   level(solid, level) { return this.request('POST', '/api/level', { solid, level }); }
   pose(joints) { return this.request('POST', '/api/pose', { joints }); }
   save() { return this.request('POST', '/api/save', {}); }
+  // { solid, spheres, quality } or { budget, quality }
+  fit(request) { return this.request('POST', '/api/fit', request); }
+  fitStatus() { return this.request('POST', '/api/fit/status', {}); }
+  fitCancel() { return this.request('POST', '/api/fit/cancel', {}); }
 }
 
 async function errorText(response) {

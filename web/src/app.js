@@ -5,6 +5,7 @@ import { sphereShade } from './colors.js';
 import { base64ToArrayBuffer, decodeGeometry } from './geometry.js';
 import { History, differenceEdits, inverseEdits } from './history.js';
 import { jointValues, solidPoses } from './kinematics.js';
+import { FitPanel } from './fit_panel.js';
 import { showLinkList } from './link_list.js';
 import * as panels from './panels.js';
 import { Viewer } from './viewer.js';
@@ -27,6 +28,7 @@ export class App {
     this.colorScale = 'absolute';  // colors.js: 'absolute' or 'relative'
     this.autoFrame = true;         // robots: frame the robot after a joint moves it
     this.shown = [];               // per solid: false when hidden
+    this.fitPanel = new FitPanel(this);
   }
 
   async start(container) {

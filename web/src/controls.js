@@ -12,6 +12,7 @@ export function wireControls(app, container) {
   wirePicking(app, viewer);
   wireViewOptions(app);
   wireHelp();
+  app.fitPanel.wire();
   if (app.staticMode) return;
   wireGizmo(app, viewer);
   wireWheel(app, viewer, container);

@@ -35,6 +35,19 @@ export function differenceEdits(before, after) {
   return edits;
 }
 
+// The edits that turn the set `from` into `to` whatever their counts (a fit replaced it): sets
+// of the common indices, then adds, or deletes from the end.
+export function replaceEdits(from, to) {
+  const edits = [];
+  const common = Math.min(from.length, to.length);
+  for (let i = 0; i < common; i++) {
+    if (to[i].some((v, j) => v !== from[i][j])) edits.push({ op: 'set', index: i, sphere: to[i].slice() });
+  }
+  for (let i = common; i < to.length; i++) edits.push({ op: 'add', sphere: to[i].slice() });
+  for (let i = from.length - 1; i >= to.length; i--) edits.push({ op: 'delete', index: i });
+  return edits;
+}
+
 export class History {
   constructor() {
     this.undoSteps = [];  // { solid, edits }: the edits that undo a change

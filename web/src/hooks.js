@@ -14,6 +14,7 @@ export function installHooks(app, ready) {
     redo: () => app.redo(),
     bound: (k) => app.bound(k),
     save: () => app.save(),
+    fit: (request) => app.fitPanel.start(request),
     setJoint: (name, value) => app.setJoints({ [name]: value }),
     certificate: (k) => copy(app.solid(k).certificate),
     redTriangles: (k) => app.viewer.solids[k].mesh.redCount,

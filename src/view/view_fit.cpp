@@ -1,0 +1,221 @@
+// Fits started from the page (view.hpp, startViewFit): the library's fitSpheres on one solid, or
+// fitRobot's budget split over a robot's links, in a thread of the job's own, reporting how far
+// it is from the fits' progress and stopping when asked (a progress callback that throws, as
+// fit.hpp allows). The scene is only touched under the server's lock, by viewFitStatus, which
+// applies a finished fit once.
+#include "view/view_fit.hpp"
+
+#include <algorithm>
+#include <exception>
+#include <memory>
+#include <utility>
+
+#include "sphereset/fit.hpp"
+#include "sphereset/limits.hpp"
+#include "sphereset/robot_fit.hpp"
+
+namespace sphereset {
+namespace {
+
+// The share of a fit's work its clustering takes, the rest being sampling and bounding: what
+// the progress bar shows of its rounds (an estimate; the bound's length varies).
+constexpr double kClusteringShare = 0.8;
+constexpr double kSamplingShare = 0.05;
+
+struct Cancelled {};
+
+double fitFraction(const FitProgress& p, int max_rounds) {
+  if (p.phase == "sampling") return 0.0;
+  if (p.phase == "clustering")
+    return kSamplingShare +
+           kClusteringShare * std::min(1.0, p.iteration / static_cast<double>(std::max(1, max_rounds)));
+  if (p.phase == "done") return 1.0;
+  return kSamplingShare + kClusteringShare;  // bounding
+}
+
+void report(ViewFitJob* job, double fraction, std::string stage) {
+  if (job->cancel.load()) throw Cancelled{};
+  std::lock_guard<std::mutex> g(job->mutex);
+  job->fraction = std::max(job->fraction, std::min(1.0, fraction));
+  job->stage = std::move(stage);
+}
+
+void finish(ViewFitJob* job, std::vector<std::vector<Sphere>> sets, std::map<std::string, int> counts) {
+  std::lock_guard<std::mutex> g(job->mutex);
+  job->sets = std::move(sets);
+  job->counts = std::move(counts);
+  job->fraction = 1.0;
+  job->stage = "done";
+  job->state = "done";
+}
+
+void fail(ViewFitJob* job, const std::string& state, const std::string& error) {
+  std::lock_guard<std::mutex> g(job->mutex);
+  job->state = state;
+  job->error = error;
+}
+
+// One solid: its link's sphere primitives (a robot's), then the fitted spheres.
+void runSolidFit(ViewFitJob* job, std::shared_ptr<const SolidIndex> index,
+                 std::shared_ptr<const SolidInput> input, std::vector<Sphere> primitives,
+                 const ViewFitRequest& request) {
+  FitOptions o = fitPreset(request.spheres, request.quality);
+  o.original = input->original();
+  const int rounds = o.max_iterations;
+  o.progress = [job, rounds](const FitProgress& p) {
+    report(job, fitFraction(p, rounds), p.phase + (p.phase == "clustering" ? " round " + std::to_string(p.iteration) : ""));
+  };
+  auto fit = fitSpheres(*index, o);
+  if (!fit) return fail(job, "failed", fit.error().message);
+  std::vector<Sphere> set = std::move(primitives);
+  set.insert(set.end(), fit->spheres.begin(), fit->spheres.end());
+  finish(job, {std::move(set)}, {});
+}
+
+// A robot's budget: fitRobot with the scene's solids' options; each solid gets its link's set.
+void runBudgetFit(ViewFitJob* job, std::shared_ptr<const Robot> robot, RobotFitOptions o,
+                  std::vector<std::string> links) {
+  o.progress = [job](const std::string&, const FitProgress&) { report(job, 0.0, ""); };
+  o.steps = [job](const RobotProgress& p) {
+    // The curves are the first third of the work, the fits the rest.
+    const double part = p.total > 0 ? static_cast<double>(p.done) / p.total : 0.0;
+    const bool curves = p.stage == "link curves";
+    report(job, curves ? part / 3.0 : 1.0 / 3.0 + 2.0 * part / 3.0,
+           p.stage + " " + std::to_string(p.done) + " of " + std::to_string(p.total) +
+               (p.link.empty() ? "" : " (" + p.link + ")"));
+  };
+  auto fit = fitRobot(*robot, o);
+  if (!fit) return fail(job, "failed", fit.error().message);
+  std::vector<std::vector<Sphere>> sets(links.size());
+  std::map<std::string, int> counts;
+  for (const RobotLinkFit& l : fit->links) {
+    counts[l.link] = static_cast<int>(l.spheres.size());
+    const auto at = std::find(links.begin(), links.end(), l.link);
+    if (at != links.end()) sets[static_cast<size_t>(at - links.begin())] = l.spheres;
+  }
+  finish(job, std::move(sets), std::move(counts));
+}
+
+// Runs `body` on the job's thread: a cancellation or an exception ends the job, never the
+// server.
+template <class Body>
+void launch(const std::shared_ptr<ViewFitJob>& job, Body body) {
+  ViewFitJob* j = job.get();
+  j->thread = std::thread([j, body = std::move(body)]() mutable {
+    try {
+      body(j);
+    } catch (const Cancelled&) {
+      fail(j, "cancelled", "");
+    } catch (const std::exception& e) {
+      fail(j, "failed", e.what());
+    }
+  });
+}
+
+Status checkRequest(const ViewScene& scene, const ViewFitRequest& r) {
+  const auto bad = [](const std::string& m) { return Error{ErrorCode::kInvalidArgument, m}; };
+  if (scene.fit) {
+    std::lock_guard<std::mutex> g(scene.fit->mutex);
+    if (scene.fit->state == "running") return bad("a fit is running: wait for it or cancel it");
+  }
+  if (r.budget != 0) {
+    if (scene.kind != ViewKind::kRobot || !scene.robot) return bad("fit: a budget is for robots");
+    const int64_t least = static_cast<int64_t>(scene.solids.size());
+    if (r.budget < least || r.budget > limits::kMaxSpheres)
+      return bad("fit: the budget must be from " + std::to_string(least) + " (one per link) to " +
+                 std::to_string(limits::kMaxSpheres));
+    return {};
+  }
+  if (r.solid < 0 || r.solid >= static_cast<int64_t>(scene.solids.size()))
+    return bad("fit: no solid " + std::to_string(r.solid) + " (the scene has " +
+               std::to_string(scene.solids.size()) + ")");
+  if (scene.solids[static_cast<size_t>(r.solid)].tree)
+    return bad("fit: a tree's levels are fitted by `sphereset tree`, not one at a time");
+  FitRequest fr;
+  fr.num_spheres = r.spheres;
+  fr.quality = r.quality;
+  if (Status st = checkFitRequest(fr); !st) return st;
+  if (r.spheres < 1) return bad("fit: the sphere count must be at least 1");
+  return {};
+}
+
+}  // namespace
+
+ViewFitJob::~ViewFitJob() {
+  cancel = true;
+  if (thread.joinable()) thread.join();
+}
+
+Status checkNotFitting(const ViewScene& scene, int64_t solid) {
+  if (!scene.fit) return {};
+  std::lock_guard<std::mutex> g(scene.fit->mutex);
+  if (scene.fit->state != "running") return {};
+  if (std::find(scene.fit->solids.begin(), scene.fit->solids.end(), solid) == scene.fit->solids.end())
+    return {};
+  return Error{ErrorCode::kInvalidArgument,
+               "solid " + std::to_string(solid) + " is being fitted: wait for the fit or cancel it"};
+}
+
+Status startViewFit(ViewScene* scene, const ViewFitRequest& request) {
+  if (Status st = checkRequest(*scene, request); !st) return st;
+  auto job = std::make_shared<ViewFitJob>();
+  if (request.budget != 0) {
+    std::vector<std::string> links;
+    for (size_t k = 0; k < scene->solids.size(); ++k) {
+      job->solids.push_back(static_cast<int64_t>(k));
+      links.push_back(scene->solids[k].link);
+    }
+    RobotFitOptions o;
+    o.budget = request.budget;
+    o.quality = request.quality;
+    o.repair = scene->repair;
+    o.link_solid = scene->link_solid;
+    o.link_solid_for = scene->link_solid_for;
+    o.name = scene->urdf_path;
+    launch(job, [robot = scene->robot, o, links](ViewFitJob* j) { runBudgetFit(j, robot, o, links); });
+  } else {
+    const ViewSolid& s = scene->solids[static_cast<size_t>(request.solid)];
+    job->solids.push_back(request.solid);
+    std::vector<Sphere> primitives;
+    if (scene->robot) {
+      for (const RobotLink& l : scene->robot->links)
+        if (l.name == s.link) primitives = linkSpheres(l);
+    }
+    launch(job, [index = s.index, input = s.input, primitives, request](ViewFitJob* j) {
+      runSolidFit(j, index, input, primitives, request);
+    });
+  }
+  scene->fit = std::move(job);
+  return {};
+}
+
+ViewFitStatus viewFitStatus(ViewScene* scene) {
+  ViewFitStatus out;
+  if (!scene->fit) return out;
+  ViewFitJob& job = *scene->fit;
+  std::lock_guard<std::mutex> g(job.mutex);
+  out.state = job.state;
+  out.fraction = job.fraction;
+  out.stage = job.stage;
+  out.error = job.error;
+  out.solids = job.solids;
+  out.counts = job.counts;
+  if (job.state == "done" && !job.applied) {
+    job.applied = true;
+    out.applied = true;
+    for (size_t i = 0; i < job.solids.size(); ++i) {
+      ViewSolid& s = scene->solids[static_cast<size_t>(job.solids[i])];
+      if (job.sets[i].empty()) continue;  // a link the budget skipped keeps its set
+      s.sets[static_cast<size_t>(s.level)] = std::move(job.sets[i]);
+      certifyViewSolid(&s);
+    }
+    ++scene->version;
+  }
+  return out;
+}
+
+void cancelViewFit(ViewScene* scene) {
+  if (scene->fit) scene->fit->cancel = true;
+}
+
+}  // namespace sphereset

@@ -1,0 +1,71 @@
+// Fitting from the page, by mouse and keyboard: the box's sphere count typed, the quality chosen,
+// Fit: the set becomes the fit (covered, as many spheres as asked), Ctrl+Z gives the old set
+// back; a long fit shows its progress bar and Cancel stops it with nothing changed; on the test
+// robot, a budget typed and "Fit the robot" fits every link within it and names the split.
+import { writeBox, writeBoxSpheres, writeRobot } from './fixtures.mjs';
+import { check, checkNoErrors, openPage, pageStatus, runTest, startView } from './harness.mjs';
+
+async function typeInto(page, selector, text) {
+  await page.$eval(selector, (e) => e.scrollIntoView());
+  await page.click(selector, { clickCount: 3 });
+  await page.keyboard.type(text);
+}
+
+await runTest(async (args, browser) => {
+  const mesh = writeBox(args.work);
+  const spheres = writeBoxSpheres(args.work);
+  const { page, errors } = await openPage(browser, (await startView(args, [mesh.path, spheres.path])).url);
+  const set = () => page.evaluate(() => window.sphereset.scene().solids[0].spheres);
+  const before = await set();
+
+  await typeInto(page, '#fit-spheres', '6');
+  await page.focus('#fit-quality');
+  await page.keyboard.press('ArrowUp');  // default -> fast
+  check(await page.$eval('#fit-quality', (e) => e.value) === 'fast', 'the quality list, by keys: fast');
+  await page.click('#fit');
+  await page.waitForFunction(() => window.sphereset.sphereCount(0) === 6, { timeout: 60000 });
+  check(await pageStatus(page) === 'covered', 'Fit: six spheres that cover the box');
+  check((await page.$eval('#message', (e) => e.textContent)).includes('fitted 6 spheres'), 'the message says what was fitted');
+  await page.waitForFunction(() => document.getElementById('fit-progress').classList.contains('hidden'), { timeout: 20000 });
+  await page.mouse.click(5, 5);  // the keys go to the page, not a field
+  await page.keyboard.down('Control');
+  await page.keyboard.press('z');
+  await page.keyboard.up('Control');
+  await page.waitForFunction((n) => window.sphereset.sphereCount(0) === n, { timeout: 20000 }, before.length);
+  const back = await set();
+  check(back.every((s, i) => s.every((v, j) => v === before[i][j])), 'Ctrl+Z gives the old set back exactly');
+
+  // A long fit: its bar shows how far it is; Cancel stops it and nothing changes.
+  await typeInto(page, '#fit-spheres', '400');
+  await page.focus('#fit-quality');
+  await page.keyboard.press('ArrowDown');
+  await page.keyboard.press('ArrowDown');  // fast -> best
+  await page.click('#fit');
+  await page.waitForFunction(() => !document.getElementById('fit-progress').classList.contains('hidden'), { timeout: 20000 });
+  await page.waitForFunction(() => document.getElementById('fit-stage').textContent !== 'starting', { timeout: 20000 });
+  const stage = await page.$eval('#fit-stage', (e) => e.textContent);
+  check(stage.length > 0, `the progress bar shows the fit's stage (${stage})`);
+  await page.click('#fit-cancel');
+  await page.waitForFunction(() => document.getElementById('fit-progress').classList.contains('hidden'), { timeout: 60000 });
+  check((await page.$eval('#message', (e) => e.textContent)).includes('cancelled'), 'Cancel: "fit cancelled"');
+  const after = await set();
+  check(after.length === before.length && after.every((s, i) => s.every((v, j) => v === before[i][j])),
+    'and the set is as it was');
+  checkNoErrors(errors, 'while fitting the box');
+
+  // The robot's budget.
+  const robot = writeRobot(args.work);
+  const live = await openPage(browser, (await startView(args, [robot.urdf, robot.spheres])).url);
+  await typeInto(live.page, '#fit-budget', '7');
+  await live.page.focus('#fit-quality');
+  await live.page.keyboard.press('ArrowUp');
+  await live.page.click('#fit-robot');
+  await live.page.waitForFunction(() => document.getElementById('message').textContent.startsWith('budget 7'), { timeout: 120000 });
+  const scene = await live.page.evaluate(() => window.sphereset.scene());
+  const total = scene.solids.reduce((n, s) => n + s.spheres.length, 0);
+  check(total <= 7 && total >= scene.solids.length, `"Fit the robot" with a budget of 7: ${total} spheres over the links`);
+  const message = await live.page.$eval('#message', (e) => e.textContent);
+  check(scene.solids.every((s) => message.includes(`${s.link} ${s.spheres.length}`)), `the split is named per link (${message})`);
+  check(await pageStatus(live.page) === 'covered', 'every link covered');
+  checkNoErrors(live.errors, "while fitting the robot's budget");
+});

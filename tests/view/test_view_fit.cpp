@@ -1,0 +1,113 @@
+// Fits started from the page (view.hpp, startViewFit; POST /api/fit, /api/fit/status,
+// /api/fit/cancel): the fitted set is the library's fit with the same options, applied once with
+// its certificate; a running fit refuses edits of its solid, can be cancelled (nothing changes)
+// and refuses a second fit; a robot's budget fits every link within it; bad requests start
+// nothing.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+
+#include "sphereset/fit.hpp"
+#include "view/view_fixture.hpp"
+
+namespace sphereset::test {
+namespace {
+
+// Asks how the fit is until it is no longer running (at most a minute).
+nlohmann::json waitForFit(ViewScene* scene) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  nlohmann::json j;
+  do {
+    j = call(scene, ViewTest::post("/api/fit/status", nlohmann::json::object()));
+    if (j["state"] != "running") break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  } while (std::chrono::steady_clock::now() < end);
+  return j;
+}
+
+TEST_F(ViewTest, APageFitIsTheLibrarysFitAppliedOnce) {
+  ViewScene scene = boxScene();
+  EXPECT_EQ(call(&scene, post("/api/fit/status", nlohmann::json::object()))["state"], "idle");
+  const int64_t version = scene.version;
+  call(&scene, post("/api/fit", {{"solid", 0}, {"spheres", 4}, {"quality", "fast"}}));
+  const nlohmann::json done = waitForFit(&scene);
+  ASSERT_EQ(done["state"], "done") << done.dump();
+  EXPECT_TRUE(done["applied"].get<bool>());
+  EXPECT_EQ(done["fraction"].get<double>(), 1.0);
+  EXPECT_EQ(scene.version, version + 1);
+  ASSERT_EQ(done["sets"].size(), 1u);
+  EXPECT_TRUE(done["sets"][0]["certificate"]["covered"].get<bool>());
+  // The same spheres as fitSpheres with the preset, bit for bit.
+  FitOptions o = fitPreset(4, FitQuality::kFast);
+  o.original = scene.solids[0].input->original();
+  auto fit = fitSpheres(*scene.solids[0].index, o);
+  ASSERT_TRUE(fit.ok());
+  expectSameSpheres(spheresOf(done["sets"][0]["spheres"]), fit->spheres);
+  expectSameSpheres(scene.solids[0].spheres(), fit->spheres);
+  // Asked again: done, not applied a second time.
+  const nlohmann::json again = call(&scene, post("/api/fit/status", nlohmann::json::object()));
+  EXPECT_FALSE(again["applied"].get<bool>());
+  EXPECT_EQ(scene.version, version + 1);
+}
+
+TEST_F(ViewTest, ARunningFitRefusesEditsAndASecondFitAndCanBeCancelled) {
+  ViewScene scene = boxScene();
+  const std::vector<Sphere> before = scene.solids[0].spheres();
+  call(&scene, post("/api/fit", {{"solid", 0}, {"spheres", 300}, {"quality", "best"}}));
+  const auto edit = post("/api/edit", {{"solid", 0}, {"edits", {{{"op", "delete"}, {"index", 0}}}}});
+  EXPECT_NE(call(&scene, edit, 400)["error"].get<std::string>().find("being fitted"),
+            std::string::npos);
+  call(&scene, post("/api/bound", {{"solid", 0}}), 400);
+  EXPECT_NE(call(&scene, post("/api/fit", {{"solid", 0}, {"spheres", 2}}), 400)["error"]
+                .get<std::string>()
+                .find("a fit is running"),
+            std::string::npos);
+  EXPECT_EQ(call(&scene, post("/api/fit/cancel", nlohmann::json::object()))["state"], "running");
+  const nlohmann::json end = waitForFit(&scene);
+  EXPECT_EQ(end["state"], "cancelled");
+  EXPECT_FALSE(end["applied"].get<bool>());
+  expectSameSpheres(scene.solids[0].spheres(), before);
+  call(&scene, edit);  // editable again
+}
+
+TEST_F(ViewTest, ARobotsBudgetFitsEveryLinkWithinIt) {
+  ViewScene scene = robotScene();
+  call(&scene, post("/api/fit", {{"budget", 6}, {"quality", "fast"}}));
+  const nlohmann::json done = waitForFit(&scene);
+  ASSERT_EQ(done["state"], "done") << done.dump();
+  int total = 0;
+  for (const auto& [link, n] : done["counts"].items()) total += n.get<int>();
+  EXPECT_LE(total, 6);
+  EXPECT_GE(total, static_cast<int>(scene.solids.size()));
+  for (const ViewSolid& s : scene.solids) {
+    EXPECT_TRUE(s.certificate.covered) << s.link;
+    EXPECT_EQ(static_cast<int>(s.spheres().size()), done["counts"][s.link].get<int>()) << s.link;
+  }
+}
+
+TEST_F(ViewTest, BadFitRequestsStartNothing) {
+  ViewScene scene = boxScene();
+  for (const nlohmann::json& body : {
+           nlohmann::json{{"solid", 0}, {"spheres", 0}},
+           nlohmann::json{{"solid", 0}, {"spheres", -3}},
+           nlohmann::json{{"solid", 0}, {"spheres", 100000000}},
+           nlohmann::json{{"solid", 1}, {"spheres", 4}},
+           nlohmann::json{{"solid", 0}, {"spheres", 4}, {"quality", "great"}},
+           nlohmann::json{{"solid", 0}, {"spheres", 4}, {"quality", 3}},
+           nlohmann::json{{"solid", 0}, {"spheres", 4}, {"path", "/tmp/x"}},
+           nlohmann::json{{"budget", 8}},
+           nlohmann::json{{"solid", 0}},
+       })
+    call(&scene, post("/api/fit", body), 400);
+  EXPECT_EQ(call(&scene, post("/api/fit/status", nlohmann::json::object()))["state"], "idle");
+  ViewScene tree = treeScene();
+  call(&tree, post("/api/fit", {{"solid", 0}, {"spheres", 4}}), 400);
+  ViewScene robot = robotScene();
+  call(&robot, post("/api/fit", {{"budget", 1}}), 400);  // below one per link
+}
+
+}  // namespace
+}  // namespace sphereset::test

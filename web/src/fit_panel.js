@@ -1,0 +1,97 @@
+// Fits started from the page (docs/view.md, POST /api/fit): one link (or the mesh) with a count
+// and a quality, or, for a robot, every link within a budget. The server fits in a thread of its
+// own; the page asks how far it is every `pollMs` and shows a progress bar with Cancel; the
+// finished sets come back with their certificates, and Ctrl+Z undoes a fit like any change.
+import { replaceEdits } from './history.js';
+import * as panels from './panels.js';
+
+const $ = (id) => document.getElementById(id);
+const pollMs = 150;
+
+export class FitPanel {
+  constructor(app) {
+    this.app = app;
+    this.running = false;
+  }
+
+  wire() {
+    const app = this.app;
+    $('fit-box').classList.toggle('hidden', app.staticMode);
+    if (app.staticMode) return;
+    const robot = app.scene.kind === 'robot';
+    $('fit-what').textContent = robot ? 'this link' : 'the mesh';
+    $('budget-row').classList.toggle('hidden', !robot);
+    if (robot) $('fit-budget').value = String(app.scene.solids.reduce((n, s) => n + s.spheres.length, 0));
+    $('fit').onclick = () => this.start({ solid: app.current, spheres: Number($('fit-spheres').value) }).catch(() => {});
+    $('fit-robot').onclick = () => this.start({ budget: Number($('fit-budget').value) }).catch(() => {});
+    $('fit-cancel').onclick = () => { app.api.fitCancel().catch((e) => panels.showMessage(e.message, 'error')); };
+  }
+
+  // Starts a fit and resolves with its last status once it has ended (done, cancelled, failed).
+  async start(request) {
+    const app = this.app;
+    if (this.running) throw new Error('a fit is running');
+    const body = { ...request, quality: $('fit-quality').value };
+    const count = body.spheres !== undefined ? body.spheres : body.budget;
+    if (!Number.isInteger(count) || count < 1) {
+      const message = `the ${body.budget !== undefined ? 'budget' : 'sphere count'} must be a whole number of at least 1`;
+      panels.showMessage(message, 'error');
+      throw new Error(message);
+    }
+    const before = app.scene.solids.map((s) => s.spheres.map((x) => x.slice()));
+    await app.run(() => app.api.fit(body));
+    this.running = true;
+    this.show(true, 0, 'starting');
+    try {
+      for (;;) {
+        await new Promise((resolve) => setTimeout(resolve, pollMs));
+        const status = await app.api.fitStatus();
+        this.show(true, status.fraction, status.stage);
+        if (status.state === 'running') continue;
+        await app.run(() => this.finish(status, before, body));
+        return status;
+      }
+    } finally {
+      this.running = false;
+      this.show(false);
+    }
+  }
+
+  // The finished fit: its sets applied (each undoable), or what stopped it.
+  finish(status, before, body) {
+    const app = this.app;
+    if (status.state === 'cancelled') {
+      panels.showMessage('fit cancelled: nothing changed');
+      return;
+    }
+    if (status.state === 'failed') {
+      panels.showMessage(`fit failed: ${status.error}`, 'error');
+      throw new Error(status.error);
+    }
+    if (!status.applied || !status.sets) {
+      // Applied by another page's question: the scene holds the sets.
+      panels.showMessage('fit done elsewhere: reload the page to see it');
+      return;
+    }
+    const undo = [];
+    status.solids.forEach((k, i) => {
+      if (app.applySet(k, status.sets[i])) undo.push({ solid: k, edits: replaceEdits(status.sets[i].spheres, before[k]) });
+    });
+    for (const step of undo) app.history.record(step.solid, step.edits);
+    if (body.budget !== undefined) {
+      const split = Object.entries(status.counts).map(([link, n]) => `${link} ${n}`).join(', ');
+      panels.showMessage(`budget ${body.budget}: ${split}`, 'info');
+    } else {
+      panels.showMessage(`fitted ${body.spheres} spheres (${body.quality})`, 'info');
+    }
+    app.refresh();
+  }
+
+  show(visible, fraction = 0, stage = '') {
+    $('fit-progress').classList.toggle('hidden', !visible);
+    $('fit-bar').value = Number.isFinite(fraction) ? fraction : 0;
+    $('fit-stage').textContent = stage || '';
+    $('fit').disabled = visible;
+    $('fit-robot').disabled = visible;
+  }
+}
