@@ -33,7 +33,7 @@ namespace {
 
 struct ViewArgs {
   MeshArgs mesh;  // MESH or ROBOT.urdf, and the repair options
-  std::string spheres_path, host = "127.0.0.1", output, html;
+  std::string spheres_path, host = "127.0.0.1", output, html, srdf;
   RobotLoadArgs load;
   TableArgs robot;  // the robot table's link_solid and link_solid_for rows
   int port = 0;
@@ -155,6 +155,7 @@ int runView(const ViewArgs& a) {
   lo.level = a.level;
   lo.output = a.output;
   lo.page_file = !a.html.empty();
+  lo.srdf = a.srdf;
   if (!a.html.empty())
     if (Status st = checkOutputPath(a.html, {a.mesh.path, a.spheres_path}); !st)
       return fail(st.error());
@@ -207,6 +208,9 @@ Command registerView(CLI::App& app) {
                   "Where Save writes (default: the sphere file itself), in its extension's format");
   cmd->add_option("--html", a->html,
                   "Write a static page with the scene inlined to this file and exit (no server)");
+  cmd->add_option("--srdf", a->srdf,
+                  "With a robot: MoveIt's SRDF, whose disabled pairs the page lists as allowed "
+                  "(default: the adjacent links)");
   cmd->add_option("--level", a->level, "A tree's level shown first (default: the leaves)")
       ->check(CLI::NonNegativeNumber);
   return {cmd, [a] { return runView(*a); }};

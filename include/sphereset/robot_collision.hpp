@@ -147,6 +147,12 @@ std::optional<RobotChain> longestChain(const Robot& robot);
 // MoveIt's SRDF: <robot name="...">, a group "manipulator" with the chain of longestChain (when
 // there is one), and one <disable_collisions link1 link2 reason/> per disabled pair.
 std::string formatSrdf(const Robot& robot, const CollisionMatrix& matrix);
+// The <disable_collisions> pairs of an SRDF file (MoveIt's), each with link1 before link2 in
+// the robot's order and its reason (unknown reasons, "User" included, read as kNever), sorted
+// by the robot's link order. Errors: the file missing or unreadable (kUnreadable), not XML or
+// not an SRDF, a pair without both links, a link the robot lacks (kInvalidData, with the line).
+Expected<std::vector<DisabledPair>> readSrdfDisabledPairs(const std::string& path,
+                                                          const Robot& robot);
 // Written atomically.
 Status writeSrdf(const std::string& path, const Robot& robot, const CollisionMatrix& matrix);
 

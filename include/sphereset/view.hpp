@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -100,6 +101,11 @@ struct ViewScene {
   RepairOptions repair;
   LinkSolid link_solid = LinkSolid::kEnvelope;
   std::map<std::string, LinkSolid> link_solid_for;
+  // Robots: the link pairs a planner never checks, link order first: an SRDF's
+  // <disable_collisions> (ViewLoadOptions::srdf), else the adjacent pairs (selfCollisionPairs);
+  // `allowed_source` says which ("srdf" or "adjacent").
+  std::vector<std::array<std::string, 2>> allowed_pairs;
+  std::string allowed_source;
   // The fit the page started last (startViewFit), running or finished; null before the first.
   // Copies of the scene share it.
   std::shared_ptr<ViewFitJob> fit;
@@ -114,6 +120,9 @@ struct ViewLoadOptions {
   std::string output;           // where saves go; empty: the sphere file itself
   // For a page file (--html): no save path is set up or checked (a save is refused).
   bool page_file = false;
+  // Robots: an SRDF whose <disable_collisions> pairs are the allowed ones (empty: the adjacent
+  // pairs).
+  std::string srdf;
 };
 
 // A scene from a mesh and a sphere set or tree file, or a URDF and its links' spheres (a
@@ -194,10 +203,29 @@ ViewFitStatus viewFitStatus(ViewScene* scene);
 // nothing changes. No error when none runs.
 void cancelViewFit(ViewScene* scene);
 
+// A robot's self-collision at its current pose: the pairs of links whose spheres overlap
+// (selfCollisionPairs' rule) that are not allowed (ViewScene::allowed_pairs). Empty for a mesh.
+std::vector<std::array<std::string, 2>> viewContactPairs(const ViewScene& scene);
+
 // Writes every set to the scene's save path in its format, atomically. Returns the bytes
 // written. Errors: those of the writers; kInvalidArgument when a tree's level no longer fits its
 // layout (spheres added or deleted).
-Expected<int64_t> saveViewScene(const ViewScene& scene);
+// A robot's scene can be saved as another robot format (`as`: kRobotYaml, kRobotUrdf or
+// kRobotMjcf): beside the save path, its name with that format's ending (viewSavePath). A
+// request never names a path. Errors: kInvalidArgument for a mesh's scene, a set or tree
+// format, or a path that is one of the inputs.
+Expected<int64_t> saveViewScene(const ViewScene& scene,
+                                std::optional<ViewSaveFormat> as = std::nullopt);
+// Where a save in `format` goes: the save path, or for another robot format the save path with
+// that format's ending (.yml, .urdf, .xml) in place of its own. Empty without a save path.
+std::string viewSavePath(const ViewScene& scene, ViewSaveFormat format);
+// The formats a scene can be saved as: its own, and for a robot every robot format the build
+// writes (MJCF with MuJoCo).
+std::vector<ViewSaveFormat> viewSaveFormats(const ViewScene& scene);
+// "txt", "json", "sph", "yaml", "urdf", "mjcf" (the scene JSON's save.format), and back for the
+// robot formats (kInvalidArgument otherwise).
+std::string viewSaveFormatName(const ViewScene& scene, ViewSaveFormat format);
+Expected<ViewSaveFormat> viewRobotSaveFormat(const std::string& name);
 
 // Which surface of a solid: the displayed mesh (the original triangles when the repair changed
 // them, else the solid), or the repaired solid itself.

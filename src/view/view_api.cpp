@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <set>
@@ -217,7 +218,8 @@ nlohmann::json setAnswer(const ViewScene& scene, int64_t solid) {
   const ViewSolid& s = scene.solids[static_cast<size_t>(solid)];
   return {{"version", scene.version},
           {"spheres", view_json::spheres(s.spheres())},
-          {"certificate", view_json::certificate(s.certificate)}};
+          {"certificate", view_json::certificate(s.certificate)},
+          {"collisions", view_json::collisions(scene)}};
 }
 
 // The POST endpoints, each on a parsed body.
@@ -252,15 +254,24 @@ ViewResponse postPose(ViewScene* scene, const nlohmann::json& body) {
   if (Status st = setViewJoints(scene, values); !st) return refuse(st.error());
   return answer({{"version", scene->version},
                  {"poses", view_json::poses(*scene)},
-                 {"joints", view_json::joints(*scene)}});
+                 {"joints", view_json::joints(*scene)},
+                 {"collisions", view_json::collisions(*scene)}});
 }
 
 // The path is the scene's, fixed when it was loaded; the body names nothing.
+// {"format": "yaml"|"urdf"|"mjcf"} saves a robot as another format, beside the save path.
 ViewResponse postSave(ViewScene* scene, const nlohmann::json& body) {
-  onlyFields(body, {}, "body");
-  auto bytes = saveViewScene(*scene);
+  onlyFields(body, {"format"}, "body");
+  std::optional<ViewSaveFormat> as;
+  if (body.contains("format")) {
+    if (!body["format"].is_string()) throw BodyError{"body: 'format' must be yaml, urdf or mjcf"};
+    auto f = viewRobotSaveFormat(body["format"].get<std::string>());
+    if (!f) return refuse(f.error());
+    as = *f;
+  }
+  auto bytes = saveViewScene(*scene, as);
   if (!bytes) return refuse(bytes.error());
-  return answer({{"path", scene->save_path}, {"bytes", *bytes}});
+  return answer({{"path", viewSavePath(*scene, as.value_or(scene->save_format))}, {"bytes", *bytes}});
 }
 
 // POST /api/fit {"solid": K, "spheres": n, "quality": q} or {"budget": B, "quality": q}.

@@ -3,7 +3,9 @@
 // an error; each change recertifies what it touched and counts one version.
 #include <array>
 #include <cmath>
+#include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <limits>
 #include <string>
 #include <system_error>
@@ -188,21 +190,59 @@ Status setViewJoints(ViewScene* scene, const std::map<std::string, double>& join
   return {};
 }
 
-Expected<int64_t> saveViewScene(const ViewScene& scene) {
+std::string viewSavePath(const ViewScene& scene, ViewSaveFormat format) {
+  if (scene.save_path.empty() || format == scene.save_format) return scene.save_path;
+  const char* ending = format == ViewSaveFormat::kRobotUrdf   ? ".urdf"
+                       : format == ViewSaveFormat::kRobotMjcf ? ".xml"
+                                                              : ".yml";
+  std::filesystem::path p(scene.save_path);
+  // A Lula or cuRobo name ends in two parts (robot.lula.yml): both go.
+  std::string stem = p.stem().string();
+  if (const size_t dot = stem.find('.'); dot != std::string::npos) stem.resize(dot);
+  return (p.parent_path() / (stem + ending)).string();
+}
+
+std::vector<ViewSaveFormat> viewSaveFormats(const ViewScene& scene) {
+  if (scene.save_path.empty()) return {};
+  if (scene.kind != ViewKind::kRobot) return {scene.save_format};
+  std::vector<ViewSaveFormat> out = {ViewSaveFormat::kRobotYaml, ViewSaveFormat::kRobotUrdf};
+  if (mujocoAvailable()) out.push_back(ViewSaveFormat::kRobotMjcf);
+  if (std::find(out.begin(), out.end(), scene.save_format) == out.end())
+    out.insert(out.begin(), scene.save_format);
+  return out;
+}
+
+Expected<ViewSaveFormat> viewRobotSaveFormat(const std::string& name) {
+  if (name == "yaml") return ViewSaveFormat::kRobotYaml;
+  if (name == "urdf") return ViewSaveFormat::kRobotUrdf;
+  if (name == "mjcf") return ViewSaveFormat::kRobotMjcf;
+  return invalid("save: '" + name + "' is not a robot format (yaml, urdf or mjcf)");
+}
+
+Expected<int64_t> saveViewScene(const ViewScene& scene, std::optional<ViewSaveFormat> as) {
   if (scene.save_path.empty())
     return Error{ErrorCode::kInvalidArgument,
                  scene.title +
                      ": this scene has no file to save to (start sphereset view with "
                      "--output FILE)"};
+  const ViewSaveFormat format = as.value_or(scene.save_format);
+  const auto formats = viewSaveFormats(scene);
+  if (std::find(formats.begin(), formats.end(), format) == formats.end())
+    return invalid(scene.title + ": this scene cannot be saved as " +
+                   viewSaveFormatName(scene, format));
+  const std::string path = viewSavePath(scene, format);
+  if (path != scene.save_path) {
+    if (Status st = checkOutputPath(path, {scene.urdf_path}); !st) return st.error();
+  }
   Status st;
-  switch (scene.save_format) {
+  switch (format) {
     case ViewSaveFormat::kSet:
-      st = writeSpheres(scene.save_path, scene.solids.at(0).spheres(), scene.save_meta);
+      st = writeSpheres(path, scene.solids.at(0).spheres(), scene.save_meta);
       break;
     case ViewSaveFormat::kTree: {
       auto tree = editedTree(scene.solids.at(0));
       if (!tree) return tree.error();
-      st = writeSphereTree(scene.save_path, *tree, scene.save_meta);
+      st = writeSphereTree(path, *tree, scene.save_meta);
       break;
     }
     case ViewSaveFormat::kRobotYaml:
@@ -212,21 +252,21 @@ Expected<int64_t> saveViewScene(const ViewScene& scene) {
       for (LinkSpheres& l : links)
         for (const ViewSolid& s : scene.solids)
           if (s.link == l.link) l.spheres = s.spheres();
-      if (scene.save_format == ViewSaveFormat::kRobotUrdf)
-        st = writeSphereUrdf(scene.urdf_path, scene.save_path, links);
-      else if (scene.save_format == ViewSaveFormat::kRobotMjcf)
-        st = writeSphereMjcf(scene.urdf_path, scene.save_path, links, {}, scene.robot_load);
-      else if (!scene.save_source.empty())
-        st = rewriteLinkSpheres(scene.save_source, scene.save_path, links);
+      if (format == ViewSaveFormat::kRobotUrdf)
+        st = writeSphereUrdf(scene.urdf_path, path, links);
+      else if (format == ViewSaveFormat::kRobotMjcf)
+        st = writeSphereMjcf(scene.urdf_path, path, links, {}, scene.robot_load);
+      else if (!scene.save_source.empty() && format == scene.save_format)
+        st = rewriteLinkSpheres(scene.save_source, path, links);
       else
-        st = writeRobotSpheres(scene.save_path, links, nullptr, scene.save_meta);
+        st = writeRobotSpheres(path, links, nullptr, scene.save_meta);
       break;
     }
   }
   if (!st) return st.error();
   std::error_code ec;
-  const auto bytes = std::filesystem::file_size(scene.save_path, ec);
-  if (ec) return Error{ErrorCode::kWriteFailed, scene.save_path + ": " + ec.message()};
+  const auto bytes = std::filesystem::file_size(path, ec);
+  if (ec) return Error{ErrorCode::kWriteFailed, path + ": " + ec.message()};
   return static_cast<int64_t>(bytes);
 }
 

@@ -10,11 +10,9 @@
 #include "view/view_page.hpp"
 
 namespace sphereset {
-namespace view_json {
-namespace {
 
-const char* saveFormatName(const ViewScene& scene) {
-  switch (scene.save_format) {
+std::string viewSaveFormatName(const ViewScene& scene, ViewSaveFormat format) {
+  switch (format) {
     case ViewSaveFormat::kRobotYaml:
       return "yaml";
     case ViewSaveFormat::kRobotUrdf:
@@ -29,7 +27,7 @@ const char* saveFormatName(const ViewScene& scene) {
   return f ? sphereFormatName(*f) : sphereFormatName(SphereFormat::kText);
 }
 
-}  // namespace
+namespace view_json {
 
 nlohmann::json spheres(const std::vector<Sphere>& set) {
   nlohmann::json a = nlohmann::json::array();
@@ -101,6 +99,21 @@ nlohmann::json poses(const ViewScene& scene) {
   return a;
 }
 
+nlohmann::json save(const ViewScene& sc) {
+  if (sc.save_path.empty()) return nullptr;
+  nlohmann::json as = nlohmann::json::array();
+  for (const ViewSaveFormat f : viewSaveFormats(sc))
+    as.push_back({{"format", viewSaveFormatName(sc, f)}, {"path", viewSavePath(sc, f)}});
+  return {{"path", sc.save_path}, {"format", viewSaveFormatName(sc, sc.save_format)}, {"as", as}};
+}
+
+nlohmann::json collisions(const ViewScene& sc) {
+  if (!sc.robot) return nullptr;
+  return {{"allowed", sc.allowed_pairs},
+          {"allowed_source", sc.allowed_source},
+          {"contact", viewContactPairs(sc)}};
+}
+
 nlohmann::json scene(const ViewScene& sc) {
   nlohmann::json solids = nlohmann::json::array();
   for (const ViewSolid& s : sc.solids) solids.push_back(solid(s));
@@ -110,9 +123,8 @@ nlohmann::json scene(const ViewScene& sc) {
           {"solids", solids},
           {"joints", joints(sc)},
           {"poses", poses(sc)},
-          {"save", sc.save_path.empty()
-                       ? nlohmann::json()
-                       : nlohmann::json{{"path", sc.save_path}, {"format", saveFormatName(sc)}}}};
+          {"collisions", collisions(sc)},
+          {"save", save(sc)}};
 }
 
 nlohmann::json kinematics(const Robot& robot) {

@@ -12,6 +12,7 @@
 #include "sphereset/evaluate.hpp"
 #include "sphereset/load.hpp"
 #include "sphereset/robot.hpp"
+#include "sphereset/robot_collision.hpp"
 #include "sphereset/robot_fit.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/view.hpp"
@@ -124,6 +125,22 @@ Expected<std::vector<LinkSpheres>> robotSphereFile(const std::string& path,
   return links;
 }
 
+// The pairs a planner never checks: the SRDF's, or the adjacent ones.
+Status setAllowedPairs(ViewScene* scene, const Robot& robot, const std::string& srdf) {
+  if (!srdf.empty()) {
+    auto pairs = readSrdfDisabledPairs(srdf, robot);
+    if (!pairs) return pairs.error();
+    for (const DisabledPair& p : *pairs) scene->allowed_pairs.push_back({p.link1, p.link2});
+    scene->allowed_source = "srdf";
+    return {};
+  }
+  auto pairs = selfCollisionPairs(robot, {});
+  if (!pairs) return pairs.error();
+  scene->allowed_pairs = pairs->adjacent;
+  scene->allowed_source = "adjacent";
+  return {};
+}
+
 // A robot's scene without its save: one solid per link with geometry and spheres, posed at the
 // robot's zero (or clamped) joint values. `source` names the sphere file in messages.
 Expected<ViewScene> robotSceneOf(Robot robot, const std::string& urdf,
@@ -164,6 +181,7 @@ Expected<ViewScene> robotSceneOf(Robot robot, const std::string& urdf,
     return Error{ErrorCode::kInvalidData,
                  source + ": no link with both geometry and spheres in " + robot.name};
   scene.file_links = std::move(links);
+  if (Status st = setAllowedPairs(&scene, robot, o.srdf); !st) return st.error();
   scene.robot = std::make_shared<const Robot>(std::move(robot));
   if (Status st = setViewJoints(&scene, {}); !st) return st.error();
   scene.version = 0;
@@ -284,7 +302,29 @@ Expected<ViewScene> robotViewScene(const Robot& robot, const std::string& urdf,
 Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::string& spheres,
                                   const ViewLoadOptions& options) {
   if (isRobotDescriptionPath(mesh_or_urdf)) return loadRobotScene(mesh_or_urdf, spheres, options);
+  if (!options.srdf.empty())
+    return Error{ErrorCode::kInvalidArgument,
+                 options.srdf + ": an SRDF is for robots (" + mesh_or_urdf + " is a mesh)"};
   return loadMeshScene(mesh_or_urdf, spheres, options);
+}
+
+std::vector<std::array<std::string, 2>> viewContactPairs(const ViewScene& scene) {
+  if (!scene.robot) return {};
+  std::vector<LinkSpheres> links = scene.file_links;
+  for (LinkSpheres& l : links)
+    for (const ViewSolid& s : scene.solids)
+      if (s.link == l.link) l.spheres = s.spheres();
+  auto pairs = selfCollisionPairs(*scene.robot, links, scene.joint_values);
+  if (!pairs) return {};  // the joint values were checked when they were set
+  std::vector<std::array<std::string, 2>> contact;
+  for (const auto& p : pairs->overlapping) {
+    const bool allowed =
+        std::any_of(scene.allowed_pairs.begin(), scene.allowed_pairs.end(), [&](const auto& a) {
+          return (a[0] == p[0] && a[1] == p[1]) || (a[0] == p[1] && a[1] == p[0]);
+        });
+    if (!allowed) contact.push_back(p);
+  }
+  return contact;
 }
 
 }  // namespace sphereset

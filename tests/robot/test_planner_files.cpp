@@ -92,6 +92,35 @@ TEST_F(PlannerFiles, SrdfReadsBackAsWritten) {
   for (const Triple& t : srdfPairs(root)) EXPECT_EQ(moveit_reasons.count(t[2]), 1u) << t[2];
 }
 
+// The library's own reader gives back the pairs and reasons written, in the robot's order.
+TEST_F(PlannerFiles, SrdfPairsReadBackByTheLibrary) {
+  const Robot robot = test::threeLinkRobot();
+  const CollisionMatrix m = sampled(robot);
+  const std::string file = path("three_link.srdf");
+  ASSERT_TRUE(writeSrdf(file, robot, m).ok());
+  auto pairs = readSrdfDisabledPairs(file, robot);
+  ASSERT_TRUE(pairs.ok()) << pairs.error().message;
+  ASSERT_EQ(pairs->size(), m.disabled.size());
+  for (size_t i = 0; i < pairs->size(); ++i) {
+    EXPECT_EQ((*pairs)[i].link1, m.disabled[i].link1);
+    EXPECT_EQ((*pairs)[i].link2, m.disabled[i].link2);
+    EXPECT_EQ((*pairs)[i].reason, m.disabled[i].reason);
+  }
+  // Bad files: one line naming the file and the problem.
+  const auto refused = [&](const std::string& name, const std::string& text, const std::string& says) {
+    auto r = readSrdfDisabledPairs(write(name, text), robot);
+    ASSERT_FALSE(r.ok()) << name;
+    EXPECT_NE(r.error().message.find(says), std::string::npos) << r.error().message;
+    EXPECT_NE(r.error().message.find(name), std::string::npos) << r.error().message;
+  };
+  refused("broken.srdf", "<robot><disable_collisions", "not XML");
+  refused("other.srdf", "<model/>", "root element is <robot>");
+  refused("half.srdf", "<robot>\n<disable_collisions link1=\"link1\"/></robot>", "line 2");
+  refused("ghost.srdf", "<robot><disable_collisions link1=\"link1\" link2=\"ghost\"/></robot>",
+          "'ghost' is not a link");
+  EXPECT_EQ(readSrdfDisabledPairs(path("missing.srdf"), robot).error().code, ErrorCode::kUnreadable);
+}
+
 TEST_F(PlannerFiles, SrdfWithoutAChainHasNoGroup) {
   Robot robot = test::threeLinkRobot();
   for (RobotJoint& j : robot.joints) j.type = RobotJoint::Type::kFixed;

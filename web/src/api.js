@@ -35,7 +35,7 @@ export class ServerApi {
   bound(solid) { return this.request('POST', '/api/bound', { solid }); }
   level(solid, level) { return this.request('POST', '/api/level', { solid, level }); }
   pose(joints) { return this.request('POST', '/api/pose', { joints }); }
-  save() { return this.request('POST', '/api/save', {}); }
+  save(format) { return this.request('POST', '/api/save', format ? { format } : {}); }
   // { solid, spheres, quality } or { budget, quality }
   fit(request) { return this.request('POST', '/api/fit', request); }
   fitStatus() { return this.request('POST', '/api/fit/status', {}); }

@@ -5,6 +5,7 @@ import { sphereShade } from './colors.js';
 import { base64ToArrayBuffer, decodeGeometry } from './geometry.js';
 import { History, differenceEdits, inverseEdits } from './history.js';
 import { jointValues, solidPoses } from './kinematics.js';
+import { contactSegments, showCollisions } from './collisions.js';
 import { FitPanel } from './fit_panel.js';
 import { showLinkList } from './link_list.js';
 import * as panels from './panels.js';
@@ -54,6 +55,7 @@ export class App {
     this.viewer.setGizmoEnabled(!this.staticMode);
     panels.setMode({ title: scene.title, staticMode: this.staticMode });
     panels.showSurfaceChoice(scene.solids.some((s) => s.repaired));
+    panels.showSaveFormats(scene.save);
     panels.showSolidChoice(scene.solids, this.current, (k) => this.showSolid(k));
     // A static page poses its robot itself when it carries the joint tree.
     const posable = !this.staticMode || Boolean(scene.kinematics);
@@ -91,6 +93,7 @@ export class App {
     const solid = this.scene.solids[k];
     solid.spheres = answer.spheres;
     solid.certificate = answer.certificate;
+    if (answer.collisions !== undefined) this.scene.collisions = answer.collisions;
     if (answer.levels !== undefined) solid.levels = answer.levels;
     this.redrawAll();
     return true;
@@ -195,7 +198,10 @@ export class App {
     if (this.accept(answer)) {
       this.scene.poses = answer.poses;
       this.scene.joints = answer.joints;
+      if (answer.collisions !== undefined) this.scene.collisions = answer.collisions;
+      else if (this.staticMode) this.collisionsStale = true;
       this.viewer.setPoses(answer.poses);
+      this.drawCollisions();
       if (this.autoFrame) this.viewer.keepInView();
       panels.showJoints(answer.joints);
       this.viewer.renderNow();
@@ -231,10 +237,12 @@ export class App {
     }).catch(() => {});
   }
 
-  save() {
+  // format: one of the scene's save.as formats, or undefined for its own.
+  save(format) {
     return this.run(async () => {
       this.requireServer();
-      const answer = await this.api.save();
+      const own = this.scene.save && this.scene.save.format;
+      const answer = await this.api.save(format && format !== own ? format : undefined);
       panels.showMessage(`saved ${answer.path} (${answer.bytes} bytes)`, 'info');
       return answer;
     });
@@ -333,8 +341,15 @@ export class App {
       this.redCounts[k] = layer.mesh.setUncovered(c.uncovered_triangles);
     });
     panels.showLegend(this.colorScale, largest);
+    this.drawCollisions();
     this.showSelection();
     this.refresh();
+  }
+
+  // The self-collision list and its segments.
+  drawCollisions() {
+    showCollisions(this.scene.collisions || null, Boolean(this.collisionsStale));
+    this.viewer.setContactSegments(this.collisionsStale ? [] : contactSegments(this.scene, this.viewer));
   }
 
   setColorScale(scale) {

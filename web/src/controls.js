@@ -10,6 +10,7 @@ export function wireControls(app, container) {
   const viewer = app.viewer;
   wireButtons(app, viewer);
   wirePicking(app, viewer);
+  wireHover(app, viewer);
   wireViewOptions(app);
   wireHelp();
   app.fitPanel.wire();
@@ -22,7 +23,7 @@ export function wireControls(app, container) {
 
 function wireButtons(app, viewer) {
   $('bound').onclick = () => quiet(app.bound(app.current));
-  $('save').onclick = () => quiet(app.save());
+  $('save').onclick = () => quiet(app.save($('save-format').value || undefined));
   $('undo').onclick = () => quiet(app.undo());
   $('redo').onclick = () => quiet(app.redo());
   $('delete').onclick = () => deleteSelected(app);
@@ -164,6 +165,28 @@ function wirePicking(app, viewer) {
 
 // A drag of the gizmo changes only the coordinates of the handle it holds ('X', 'XY', ...): the
 // others are sent as they were, not as a round trip through the link's pose left them.
+// The name of the link under the pointer, beside it (robots), once a frame.
+function wireHover(app, viewer) {
+  if (app.scene.solids.length < 2) return;
+  const canvas = viewer.renderer.domElement;
+  const tip = $('hover');
+  let pending = null;
+  canvas.addEventListener('pointermove', (e) => {
+    if (pending === null) requestAnimationFrame(() => {
+      const { x, y } = pending;
+      pending = null;
+      const hit = viewer.pick(x, y) || viewer.pick(x, y, { surfaceOnly: true });
+      tip.classList.toggle('hidden', !hit);
+      if (!hit) return;
+      tip.textContent = app.solidName(hit.solid);
+      tip.style.left = `${x + 12}px`;
+      tip.style.top = `${y + 12}px`;
+    });
+    pending = { x: e.clientX, y: e.clientY };
+  });
+  canvas.addEventListener('pointerleave', () => tip.classList.add('hidden'));
+}
+
 function wireGizmo(app, viewer) {
   let axis = null;
   viewer.gizmo.addEventListener('objectChange', () => {

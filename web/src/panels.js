@@ -25,6 +25,21 @@ export function setMode({ title, staticMode }) {
   $('legend-bar').style.background = rampGradient();
 }
 
+// The formats Save can write (a robot's: every robot format), the scene's own first chosen.
+export function showSaveFormats(save) {
+  const formats = (save && save.as) || [];
+  const select = $('save-format');
+  select.classList.toggle('hidden', formats.length < 2);
+  select.replaceChildren(...formats.map((f) => {
+    const option = document.createElement('option');
+    option.value = f.format;
+    option.textContent = `as ${f.format}`;
+    option.title = f.path;
+    return option;
+  }));
+  if (save) select.value = save.format;
+}
+
 // The surface choice, for scenes with a repaired mesh.
 export function showSurfaceChoice(any) {
   $('surface-row').classList.toggle('hidden', !any);

@@ -1,7 +1,7 @@
 // The three.js view: camera, lights, orbit controls, one group per solid placed by its pose,
 // the solid's mesh and spheres inside it, picking and the gizmo that drags a sphere's centre.
 import {
-  Box3, Color, DirectionalLight, Frustum, Group, HemisphereLight, Matrix4, Mesh, MeshBasicMaterial,
+  Box3, BufferGeometry, Color, DirectionalLight, Float32BufferAttribute, Frustum, LineBasicMaterial, LineSegments, Group, HemisphereLight, Matrix4, Mesh, MeshBasicMaterial,
   Object3D, PerspectiveCamera, Raycaster, Scene, SphereGeometry, Vector2, Vector3, WebGLRenderer,
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
@@ -39,6 +39,11 @@ export class Viewer {
       new MeshBasicMaterial({ color: 0x111111, wireframe: true, transparent: true, opacity: 0.35 }));
     this.handle.add(this.outline);
 
+    // Self-collision contacts: red segments drawn over everything.
+    this.contacts = new LineSegments(new BufferGeometry(),
+      new LineBasicMaterial({ color: 0xd00000, depthTest: false, transparent: true }));
+    this.contacts.renderOrder = 3;
+    this.scene.add(this.contacts);
     this.solids = [];  // { group, mesh: SolidMesh, spheres: SphereLayer, repaired: SolidMesh|null }
     this.display = { mesh: true, spheres: true, wireframe: false, opacity: 0.35, surface: 'displayed' };
     this.raycaster = new Raycaster();
@@ -114,6 +119,16 @@ export class Viewer {
     this.requestRender();
   }
 
+  // segments: [[from, to], ...] in world coordinates.
+  setContactSegments(segments) {
+    const points = segments.flatMap(([a, b]) => [...a, ...b]);
+    this.contacts.geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
+    this.contacts.geometry.computeBoundingSphere();
+    this.contacts.visible = segments.length > 0;
+    this.contactCount = segments.length;
+    this.requestRender();
+  }
+
   // What is drawn, for the hooks.
   visibility() {
     return {
@@ -126,6 +141,7 @@ export class Viewer {
         spheres: Boolean(s.spheres.mesh && s.spheres.mesh.visible),
         opacity: s.spheres.material.opacity,
       })),
+      contactSegments: this.contactCount || 0,
     };
   }
 

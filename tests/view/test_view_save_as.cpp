@@ -1,0 +1,51 @@
+// A robot's scene saved as another robot format (view.hpp, saveViewScene's `as`; POST
+// /api/save {"format": ...}): beside the save path, with that format's ending, read back with
+// the same spheres; the formats are listed in the scene; a mesh's scene and unknown formats are
+// refused, and no request names a path.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "sphereset/robot.hpp"
+#include "view/view_fixture.hpp"
+
+namespace sphereset::test {
+namespace {
+
+TEST_F(ViewTest, ARobotIsSavedAsAnotherRobotFormatBesideItsSavePath) {
+  ViewScene scene = robotScene();
+  const nlohmann::json j = call(&scene, request("GET", "/api/scene"));
+  ASSERT_EQ(j["save"]["format"], "yaml");
+  std::vector<std::string> formats;
+  for (const auto& a : j["save"]["as"]) formats.push_back(a["format"].get<std::string>());
+  EXPECT_EQ(formats.size(), mujocoAvailable() ? 3u : 2u);
+  EXPECT_EQ(formats[0], "yaml");
+  EXPECT_EQ(formats[1], "urdf");
+
+  call(&scene, post("/api/edit", {{"solid", 1}, {"edits", {{{"op", "add"}, {"sphere", {0, 0, 0, 0.01}}}}}}));
+  const nlohmann::json saved = call(&scene, post("/api/save", {{"format", "urdf"}}));
+  const std::string urdf = saved["path"].get<std::string>();
+  EXPECT_EQ(std::filesystem::path(urdf).filename(), "robot.urdf");
+  EXPECT_EQ(std::filesystem::path(urdf).parent_path(), std::filesystem::path(scene.save_path).parent_path());
+  RobotLoadOptions lo;
+  lo.package_paths = {robotDir()};
+  lo.use_ros_package_path = false;
+  auto robot = loadRobot(urdf, lo);
+  ASSERT_TRUE(robot.ok()) << robot.error().message;
+  for (const RobotLink& l : robot->links)
+    for (const ViewSolid& s : scene.solids)
+      if (l.name == s.link) expectSameSpheres(linkSpheres(l), s.spheres());
+  // The scene's own save still goes to its own file.
+  EXPECT_EQ(call(&scene, post("/api/save", nlohmann::json::object()))["path"], scene.save_path);
+
+  for (const nlohmann::json& bad : {nlohmann::json{{"format", "lula"}}, nlohmann::json{{"format", 1}},
+                                    nlohmann::json{{"path", "/tmp/x.yml"}}})
+    call(&scene, post("/api/save", bad), 400);
+  ViewScene mesh = boxScene();
+  call(&mesh, post("/api/save", {{"format", "urdf"}}), 400);
+}
+
+}  // namespace
+}  // namespace sphereset::test
