@@ -33,7 +33,7 @@ namespace {
 
 struct ViewArgs {
   MeshArgs mesh;  // MESH or ROBOT.urdf, and the repair options
-  std::string spheres_path, host = "127.0.0.1", output, html, srdf;
+  std::string spheres_path, compare, host = "127.0.0.1", output, html, srdf;
   RobotLoadArgs load;
   TableArgs robot;  // the robot table's link_solid and link_solid_for rows
   int port = 0;
@@ -156,8 +156,9 @@ int runView(const ViewArgs& a) {
   lo.output = a.output;
   lo.page_file = !a.html.empty();
   lo.srdf = a.srdf;
+  lo.compare = a.compare;
   if (!a.html.empty())
-    if (Status st = checkOutputPath(a.html, {a.mesh.path, a.spheres_path}); !st)
+    if (Status st = checkOutputPath(a.html, {a.mesh.path, a.spheres_path, a.compare}); !st)
       return fail(st.error());
   auto scene = loadViewScene(a.mesh.path, a.spheres_path, lo);
   if (!scene) return fail(scene.error());
@@ -196,6 +197,9 @@ Command registerView(CLI::App& app) {
                   "Sphere set or tree (.txt, .json, .sph, .yaml); for a URDF the links' spheres "
                   "(.yml from `robot`, or a URDF with sphere collisions)")
       ->required();
+  cmd->add_option("compare", a->compare,
+                  "A second sphere file of the same mesh or robot, shown beside or over the first "
+                  "with its own certificate (read-only)");
   addRepairArgs(cmd, &a->mesh);
   addTableOptions(cmd, &a->robot, robotFitOptionTable(),
                   {"budget", "default_link_spheres", "link_spheres", "padding", "link_padding"});

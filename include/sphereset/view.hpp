@@ -64,6 +64,9 @@ struct ViewSolid {
   // the changed spheres reach; null for an empty set. Copies of a scene share it until one of
   // them changes its set, which then certifies a fresh one in full (copy on write).
   std::shared_ptr<CoverageCertificate> engine;
+  // 0: the set the page edits and saves; 1: the set it is compared with (ViewLoadOptions::
+  // compare), shown and certified, never edited, fitted or saved.
+  int set = 0;
   const std::vector<Sphere>& spheres() const { return sets[static_cast<size_t>(level)]; }
   // The mesh the page draws: the original triangles when the repair changed them, else the
   // solid.
@@ -97,6 +100,8 @@ struct ViewScene {
   // self_collision_ignore, Lula's description) a YAML save keeps; empty: written afresh.
   std::string save_source;
   SphereFileMeta save_meta;
+  // The names of the sets shown: one, or two when a second set is compared with the first.
+  std::vector<std::string> set_names;
   // How the solids were made (ViewLoadOptions), for the fits the page starts.
   RepairOptions repair;
   LinkSolid link_solid = LinkSolid::kEnvelope;
@@ -123,10 +128,14 @@ struct ViewLoadOptions {
   // Robots: an SRDF whose <disable_collisions> pairs are the allowed ones (empty: the adjacent
   // pairs).
   std::string srdf;
+  // A second sphere file of the same mesh or robot, shown beside or over the first with its own
+  // certificates (ViewSolid::set 1), read-only.
+  std::string compare;
 };
 
 // A scene from a mesh and a sphere set or tree file, or a URDF and its links' spheres (a
-// cuRobo/Lula YAML, or a URDF with sphere collisions). Errors: those of loadSolid, readSpheres,
+// cuRobo/Lula YAML, or a URDF with sphere collisions); with options.compare, a second file's
+// solids after the first's (set 1), loaded the same way. Errors: those of loadSolid, readSpheres,
 // readSphereTree, readLinkSpheres, loadRobot and linkSolid; kInvalidArgument for a level out of
 // range, a save path of a format that cannot hold the scene, or one that is an input
 // (checkOutputPath); kInvalidData for a sphere file naming a link the robot lacks or with no

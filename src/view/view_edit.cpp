@@ -30,7 +30,11 @@ Expected<ViewSolid*> solidAt(ViewScene* scene, int64_t solid) {
     return invalid("no solid " + std::to_string(solid) + " (the scene has " +
                    std::to_string(scene->solids.size()) + ")");
   if (Status st = checkNotFitting(*scene, solid); !st) return st.error();
-  return &scene->solids[static_cast<size_t>(solid)];
+  ViewSolid* s = &scene->solids[static_cast<size_t>(solid)];
+  if (s->set != 0)
+    return invalid("solid " + std::to_string(solid) + " is the compared set (" +
+                   scene->set_names.back() + "): it is shown, not edited");
+  return s;
 }
 
 Status checkEditSphere(const std::string& what, const Sphere& s) {
@@ -251,7 +255,7 @@ Expected<int64_t> saveViewScene(const ViewScene& scene, std::optional<ViewSaveFo
       std::vector<LinkSpheres> links = scene.file_links;
       for (LinkSpheres& l : links)
         for (const ViewSolid& s : scene.solids)
-          if (s.link == l.link) l.spheres = s.spheres();
+          if (s.set == 0 && s.link == l.link) l.spheres = s.spheres();
       if (format == ViewSaveFormat::kRobotUrdf)
         st = writeSphereUrdf(scene.urdf_path, path, links);
       else if (format == ViewSaveFormat::kRobotMjcf)

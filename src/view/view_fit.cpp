@@ -120,7 +120,8 @@ Status checkRequest(const ViewScene& scene, const ViewFitRequest& r) {
   }
   if (r.budget != 0) {
     if (scene.kind != ViewKind::kRobot || !scene.robot) return bad("fit: a budget is for robots");
-    const int64_t least = static_cast<int64_t>(scene.solids.size());
+    const auto least = static_cast<int64_t>(std::count_if(
+        scene.solids.begin(), scene.solids.end(), [](const ViewSolid& s) { return s.set == 0; }));
     if (r.budget < least || r.budget > limits::kMaxSpheres)
       return bad("fit: the budget must be from " + std::to_string(least) + " (one per link) to " +
                  std::to_string(limits::kMaxSpheres));
@@ -129,6 +130,8 @@ Status checkRequest(const ViewScene& scene, const ViewFitRequest& r) {
   if (r.solid < 0 || r.solid >= static_cast<int64_t>(scene.solids.size()))
     return bad("fit: no solid " + std::to_string(r.solid) + " (the scene has " +
                std::to_string(scene.solids.size()) + ")");
+  if (scene.solids[static_cast<size_t>(r.solid)].set != 0)
+    return bad("fit: solid " + std::to_string(r.solid) + " is the compared set: it is not fitted");
   if (scene.solids[static_cast<size_t>(r.solid)].tree)
     return bad("fit: a tree's levels are fitted by `sphereset tree`, not one at a time");
   FitRequest fr;
@@ -162,6 +165,7 @@ Status startViewFit(ViewScene* scene, const ViewFitRequest& request) {
   if (request.budget != 0) {
     std::vector<std::string> links;
     for (size_t k = 0; k < scene->solids.size(); ++k) {
+      if (scene->solids[k].set != 0) continue;
       job->solids.push_back(static_cast<int64_t>(k));
       links.push_back(scene->solids[k].link);
     }

@@ -66,6 +66,7 @@ nlohmann::json solid(const ViewSolid& s) {
            {{box.min.x(), box.min.y(), box.min.z()}, {box.max.x(), box.max.y(), box.max.z()}}},
           {"diagonal", box.diagonal()},
           {"repaired", viewSolidRepaired(s)},
+          {"set", s.set},
           {"spheres", spheres(s.spheres())},
           {"levels", levels},
           {"certificate", certificate(s.certificate)}};
@@ -119,6 +120,7 @@ nlohmann::json scene(const ViewScene& sc) {
   for (const ViewSolid& s : sc.solids) solids.push_back(solid(s));
   return {{"kind", sc.kind == ViewKind::kRobot ? "robot" : "mesh"},
           {"title", sc.title},
+          {"sets", sc.set_names},
           {"version", sc.version},
           {"solids", solids},
           {"joints", joints(sc)},

@@ -299,8 +299,8 @@ Expected<ViewScene> robotViewScene(const Robot& robot, const std::string& urdf,
   return robotSceneOf(robot, urdf, std::move(links), urdf, options);
 }
 
-Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::string& spheres,
-                                  const ViewLoadOptions& options) {
+Expected<ViewScene> loadOneScene(const std::string& mesh_or_urdf, const std::string& spheres,
+                                 const ViewLoadOptions& options) {
   if (isRobotDescriptionPath(mesh_or_urdf)) return loadRobotScene(mesh_or_urdf, spheres, options);
   if (!options.srdf.empty())
     return Error{ErrorCode::kInvalidArgument,
@@ -308,12 +308,37 @@ Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::st
   return loadMeshScene(mesh_or_urdf, spheres, options);
 }
 
+Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::string& spheres,
+                                  const ViewLoadOptions& options) {
+  auto scene = loadOneScene(mesh_or_urdf, spheres, options);
+  if (!scene) return scene.error();
+  const auto name = [](const std::string& p) { return std::filesystem::path(p).filename().string(); };
+  scene->set_names = {name(spheres)};
+  if (options.compare.empty()) return scene;
+  ViewLoadOptions second = options;
+  second.compare.clear();
+  second.srdf.clear();
+  second.output.clear();
+  second.page_file = true;  // the compared set is never saved
+  auto other = loadOneScene(mesh_or_urdf, options.compare, second);
+  if (!other) return other.error();
+  if (!scene->save_path.empty())
+    if (Status st = checkOutputPath(scene->save_path, {options.compare}); !st) return st.error();
+  for (size_t i = 0; i < other->solids.size(); ++i) {
+    other->solids[i].set = 1;
+    scene->solids.push_back(std::move(other->solids[i]));
+    scene->poses.push_back(other->poses[i]);
+  }
+  scene->set_names.push_back(name(options.compare));
+  return scene;
+}
+
 std::vector<std::array<std::string, 2>> viewContactPairs(const ViewScene& scene) {
   if (!scene.robot) return {};
   std::vector<LinkSpheres> links = scene.file_links;
   for (LinkSpheres& l : links)
     for (const ViewSolid& s : scene.solids)
-      if (s.link == l.link) l.spheres = s.spheres();
+      if (s.set == 0 && s.link == l.link) l.spheres = s.spheres();
   auto pairs = selfCollisionPairs(*scene.robot, links, scene.joint_values);
   if (!pairs) return {};  // the joint values were checked when they were set
   std::vector<std::array<std::string, 2>> contact;

@@ -51,7 +51,8 @@ export class App {
     this.jointInput = Object.fromEntries((scene.joints || []).map((j) => [j.name, j.value]));
     this.newestVersion = Number.isFinite(scene.version) ? scene.version : -Infinity;
     this.viewer = new Viewer(container, { zUp: scene.kind === 'robot' });
-    this.viewer.build(geometries, scene.poses);
+    this.viewer.build(geometries, scene.poses, scene.solids.map((s) => s.set || 0));
+    if (this.comparing) this.viewer.setCompareLayout('overlaid');
     this.viewer.setGizmoEnabled(!this.staticMode);
     panels.setMode({ title: scene.title, staticMode: this.staticMode });
     panels.showSurfaceChoice(scene.solids.some((s) => s.repaired));
@@ -281,6 +282,8 @@ export class App {
     }
     const solid = this.solid(s.solid);
     const outside = (solid.certificate || {}).outside_volume || [];
+    this.viewer.setGizmoEnabled(this.editable(s.solid));
+    panels.setSelectionEditable(this.editable(s.solid));
     this.viewer.select(s.solid, sphere);
     panels.showSelection(s.index, sphere, outside[s.index], this.solidName(s.solid));
   }
@@ -309,11 +312,18 @@ export class App {
     this.viewer.setDisplay({ surface });
   }
 
-  // What the page calls solid k: its link, else its name.
+  // What the page calls solid k: its link, else its name; a compared set's with its file.
   solidName(k) {
     const solid = this.solid(k);
-    return solid.link || solid.name || `solid ${k}`;
+    const name = solid.link || solid.name || `solid ${k}`;
+    return solid.set === 1 ? `${name} [${this.scene.sets[1]}]` : name;
   }
+
+  // Whether a second set is shown for comparison (docs/view.md, "sets").
+  get comparing() { return Array.isArray(this.scene.sets) && this.scene.sets.length > 1; }
+
+  // Whether solid k's set can change (not a static page, not the compared set).
+  editable(k) { return !this.staticMode && this.solid(k).set !== 1; }
 
   // --- drawing ----------------------------------------------------------------------------
 
@@ -359,11 +369,14 @@ export class App {
 
   refresh() {
     const solids = this.scene.solids;
-    panels.showStatus(solids);
+    // The status is the edited set's; the compare table holds both.
+    panels.showStatus(solids.filter((x) => x.set !== 1));
+    if (this.comparing) panels.showCompare(this.scene.sets, solids);
     panels.showCertificate(solids, this.current, this.redCounts);
     panels.showLevel(solids[this.current].levels, (l) => this.level(this.current, l).catch(() => {}));
     document.getElementById('solid').value = String(this.current);
-    showLinkList(solids, { current: this.current, selection: this.selection, shown: this.shown }, {
+    const names = solids.map((_, k) => this.solidName(k));
+    showLinkList(solids, { current: this.current, selection: this.selection, shown: this.shown, names }, {
       showLink: (k) => this.showSolid(k),
       frameLink: (k) => this.viewer.frameSolid(k),
       selectSphere: (k, i) => this.select({ solid: k, index: i }),

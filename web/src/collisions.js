@@ -37,7 +37,8 @@ export function showCollisions(collisions, stale) {
 // overlap most.
 export function contactSegments(scene, viewer) {
   const contact = (scene.collisions && scene.collisions.contact) || [];
-  const byLink = new Map(scene.solids.map((s, k) => [s.link, k]));
+  // The edited set's links (a compared set has no contacts of its own).
+  const byLink = new Map(scene.solids.map((s, k) => [s, k]).filter(([s]) => s.set !== 1).map(([s, k]) => [s.link, k]));
   const placed = (k) => {
     const group = viewer.solids[k].group;
     group.updateMatrixWorld(true);

@@ -56,6 +56,11 @@ function wireViewOptions(app) {
     if (!viewer.frameGaps()) panels.showMessage('no gaps: every shown link is covered');
   };
   $('filter').oninput = () => app.refresh();
+  $('compare-layout').onchange = () => {
+    app.viewer.setCompareLayout($('compare-layout').value);
+    app.drawCollisions();
+    app.viewer.frame();
+  };
   $('auto-frame').onchange = () => {
     app.autoFrame = $('auto-frame').checked;
     if (app.autoFrame) app.viewer.keepInView();

@@ -8,7 +8,7 @@ const maxSphereRows = 500;  // a set of thousands of spheres lists its first row
 
 const number = (v, digits = 4) => (Number.isFinite(v) ? Number(v.toPrecision(digits)).toString() : 'n/a');
 
-// solids: the scene's; state: { current, selection, shown[] }; on: { showLink(k), frameLink(k),
+// solids: the scene's; state: { current, selection, shown[], names[] }; on: { showLink(k), frameLink(k),
 // selectSphere(k, i), setShown(k, shown) }.
 export function showLinkList(solids, state, on) {
   $('list-title').textContent = solids.length > 1 ? 'Links' : 'Spheres';
@@ -16,7 +16,7 @@ export function showLinkList(solids, state, on) {
   const filter = $('filter').value.trim().toLowerCase();
   const rows = [];
   solids.forEach((solid, k) => {
-    const name = solid.link || solid.name || `solid ${k}`;
+    const name = state.names[k];
     if (filter && !name.toLowerCase().includes(filter)) return;
     rows.push(linkRow(solid, k, name, state, on));
     if (k === state.current) rows.push(...sphereRows(solid, k, state, on));

@@ -45,6 +45,39 @@ export function showSurfaceChoice(any) {
   $('surface-row').classList.toggle('hidden', !any);
 }
 
+export function setSelectionEditable(editable) {
+  for (const id of selectionFields) $(id).disabled = !editable;
+  $('sel-hint').textContent = editable
+    ? 'Drag the arrows to move it; Shift + wheel changes the radius.'
+    : 'Shown, not edited (a static page, or the compared set).';
+}
+
+// The two sets side by side: per set, its spheres, E_r, links covered and largest protrusion.
+export function showCompare(names, solids) {
+  $('compare-box').classList.remove('hidden');
+  const figures = [0, 1].map((set) => {
+    const mine = solids.filter((s) => (s.set || 0) === set);
+    const c = (s) => s.certificate || {};
+    return [
+      names[set],
+      String(mine.reduce((n, s) => n + s.spheres.length, 0)),
+      number(mine.reduce((n, s) => n + (c(s).er_sum || 0), 0)),
+      `${mine.filter((s) => c(s).covered).length} of ${mine.length}`,
+      number(mine.reduce((m, s) => Math.max(m, Number.isFinite(c(s).protrusion) ? c(s).protrusion : 0), 0), 4),
+    ];
+  });
+  const rows = ['set', 'spheres', 'E_r summed', 'covered', 'protrusion'];
+  $('compare-table').replaceChildren(...rows.map((name, r) => {
+    const tr = document.createElement('tr');
+    for (const text of [name, figures[0][r], figures[1][r]]) {
+      const td = document.createElement('td');
+      td.textContent = text;
+      tr.appendChild(td);
+    }
+    return tr;
+  }));
+}
+
 // The whole scene covers when every solid's set covers.
 export function showStatus(solids) {
   const covered = solids.length > 0 && solids.every((s) => s.certificate && s.certificate.covered);
@@ -103,7 +136,7 @@ export function showSolidChoice(solids, current, onChange) {
   select.replaceChildren(...solids.map((s, k) => {
     const option = document.createElement('option');
     option.value = String(k);
-    option.textContent = s.link || s.name || `solid ${k}`;
+    option.textContent = (s.link || s.name || `solid ${k}`) + (s.set === 1 ? ' [compared]' : '');
     return option;
   }));
   select.value = String(current);

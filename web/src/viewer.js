@@ -52,7 +52,9 @@ export class Viewer {
     this.resize();
   }
 
-  build(geometries, poses) {
+  // sets: per solid, 0 (the set edited) or 1 (the set compared with it).
+  build(geometries, poses, sets = []) {
+    this.sets = sets;
     geometries.forEach((geometry, k) => {
       const group = new Group();
       group.matrixAutoUpdate = false;
@@ -60,14 +62,17 @@ export class Viewer {
       mesh.mesh.userData.solid = k;
       group.add(mesh.mesh);
       const spheres = new SphereLayer(group, k);
+      if (sets[k] === 1) spheres.material.wireframe = true;  // told apart when overlaid
       this.scene.add(group);
       this.solids.push({ group, mesh, spheres, repaired: null, shown: true });
     });
     this.setPoses(poses);
   }
 
-  // poses: per solid, 16 numbers, row-major 4x4, solid frame to world.
+  // poses: per solid, 16 numbers, row-major 4x4, solid frame to world. Side by side, the
+  // compared set stands beside the first, shifted along x by its width and a margin.
   setPoses(poses) {
+    this.poses = poses;
     this.solids.forEach(({ group }, k) => {
       const p = poses && poses[k];
       if (p && p.length === 16) group.matrix.set(...p);
@@ -75,7 +80,26 @@ export class Viewer {
       group.matrixWorldNeedsUpdate = true;
     });
     this.scene.updateMatrixWorld(true);
+    if (this.compareLayout === 'side') {
+      const first = this.sceneBox(this.solids.filter((_, k) => this.sets[k] !== 1));
+      const shift = new Matrix4().makeTranslation(1.15 * (first.max.x - first.min.x) + 1e-6, 0, 0);
+      this.solids.forEach(({ group }, k) => {
+        if (this.sets[k] === 1) group.matrix.premultiply(shift);
+      });
+      this.scene.updateMatrixWorld(true);
+    }
     this.requestRender();
+  }
+
+  // 'overlaid' (the compared set in wireframe over the first), 'side', 'a' or 'b' alone.
+  setCompareLayout(layout) {
+    this.compareLayout = layout;
+    this.solids.forEach((solid, k) => {
+      const set = this.sets[k] || 0;
+      solid.compareHidden = (layout === 'a' && set === 1) || (layout === 'b' && set === 0);
+    });
+    this.setPoses(this.poses);
+    this.applyDisplay();
   }
 
   // --- what is drawn -----------------------------------------------------------------------
@@ -107,7 +131,7 @@ export class Viewer {
   applyDisplay() {
     const d = this.display;
     for (const solid of this.solids) {
-      solid.group.visible = solid.shown;
+      solid.group.visible = solid.shown && !solid.compareHidden;
       const repaired = d.surface === 'repaired' && solid.repaired !== null;
       // The grey surface's material is hidden, not the mesh: its gap triangles (a child) stay.
       solid.mesh.mesh.material.visible = d.mesh && !repaired;
@@ -135,6 +159,7 @@ export class Viewer {
       display: { ...this.display },
       solids: this.solids.map((s) => ({
         shown: s.shown,
+        drawn: s.group.visible,
         mesh: s.mesh.mesh.material.visible,
         repaired: s.repaired ? s.repaired.mesh.material.visible : null,
         wireframe: s.mesh.mesh.material.wireframe,
@@ -149,7 +174,7 @@ export class Viewer {
   drawnMeshes() {
     const meshes = [];
     for (const s of this.solids) {
-      if (!s.shown) continue;
+      if (!s.group.visible) continue;
       for (const m of [s.mesh, s.repaired]) if (m && m.mesh.material.visible) meshes.push(m.mesh);
     }
     return meshes;
@@ -209,7 +234,7 @@ export class Viewer {
   frameGaps(least = 0.05) {
     let best = null;
     for (const solid of this.solids) {
-      if (!solid.shown) continue;
+      if (!solid.group.visible) continue;
       const patch = solid.mesh.largestGap();
       if (patch && (!best || patch.area > best.area)) best = { ...patch, solid };
     }
@@ -223,7 +248,7 @@ export class Viewer {
   }
 
   // Every mesh and sphere (of the solids given, by default all shown), in the world frame.
-  sceneBox(solids = this.solids.filter((s) => s.shown)) {
+  sceneBox(solids = this.solids.filter((s) => s.shown && !s.compareHidden)) {
     const box = new Box3();
     const bounds = new Box3();
     for (const { group, mesh, spheres } of solids) {
@@ -271,7 +296,7 @@ export class Viewer {
       const inverse = new Matrix4().copy(this.solids[solid].group.matrixWorld).invert();
       return { solid, point: hits[0].point.clone().applyMatrix4(inverse).toArray() };
     }
-    const layers = this.solids.filter((s) => s.shown && this.display.spheres)
+    const layers = this.solids.filter((s) => s.group.visible && this.display.spheres)
       .map((s) => s.spheres.mesh).filter((m) => m && m.count > 0);
     let best = null;
     for (const hit of this.raycaster.intersectObjects(layers, false)) {
