@@ -205,7 +205,7 @@ export class App {
       this.drawCollisions();
       if (this.autoFrame) this.viewer.keepInView();
       panels.showJoints(answer.joints);
-      this.viewer.renderNow();
+      this.viewer.requestRender();
     }
     return answer;
   }
@@ -384,6 +384,6 @@ export class App {
     });
     document.getElementById('undo').disabled = !this.history.canUndo;
     document.getElementById('redo').disabled = !this.history.canRedo;
-    this.viewer.renderNow();
+    this.viewer.requestRender();
   }
 }

@@ -3,23 +3,30 @@
 
 export function installHooks(app, ready) {
   const copy = (value) => JSON.parse(JSON.stringify(value));
+  // A change's promise, resolved once the frame it asked for is drawn.
+  const drawn = (promise) => promise.then(async (value) => {
+    await app.viewer.nextFrame();
+    return value;
+  });
+  const readyDrawn = drawn(ready);
+  readyDrawn.catch(() => {});  // a failure is on the message line already
   window.sphereset = {
-    ready,
+    ready: readyDrawn,
     scene: () => copy(app.scene),
     sphereCount: (k) => app.viewer.solids[k].spheres.count,
-    setSphere: (k, i, sphere) => app.setSphere(k, i, sphere),
-    addSphere: (k, sphere) => app.addSphere(k, sphere),
-    deleteSphere: (k, i) => app.deleteSphere(k, i),
-    undo: () => app.undo(),
-    redo: () => app.redo(),
-    bound: (k) => app.bound(k),
+    setSphere: (k, i, sphere) => drawn(app.setSphere(k, i, sphere)),
+    addSphere: (k, sphere) => drawn(app.addSphere(k, sphere)),
+    deleteSphere: (k, i) => drawn(app.deleteSphere(k, i)),
+    undo: () => drawn(app.undo()),
+    redo: () => drawn(app.redo()),
+    bound: (k) => drawn(app.bound(k)),
     save: () => app.save(),
-    fit: (request) => app.fitPanel.start(request),
-    setJoint: (name, value) => app.setJoints({ [name]: value }),
+    fit: (request) => drawn(app.fitPanel.start(request)),
+    setJoint: (name, value) => drawn(app.setJoints({ [name]: value })),
     certificate: (k) => copy(app.solid(k).certificate),
     redTriangles: (k) => app.viewer.solids[k].mesh.redCount,
     linkWorldPosition: (k) => app.viewer.worldOrigin(k),
-    setLevel: (k, level) => app.level(k, level),
+    setLevel: (k, level) => drawn(app.level(k, level)),
     sceneInView: () => app.viewer.sceneInView(),
     sphereColor: (k, i) => app.viewer.solids[k].spheres.colorOf(i),
     visibility: () => app.viewer.visibility(),

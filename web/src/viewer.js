@@ -334,9 +334,12 @@ export class Viewer {
     this.renderer.setSize(w, h, false);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
-    this.renderNow();
+    this.requestRender();
   }
 
+  // Every change draws at the next animation frame, one frame however many changes came before
+  // it: drawing at once after each change queued frames faster than a software renderer drew
+  // them, and the page then stalled for seconds while they drained.
   requestRender() {
     if (this.renderPending) return;
     this.renderPending = true;
@@ -346,6 +349,12 @@ export class Viewer {
   renderNow() {
     this.renderPending = false;
     this.renderer.render(this.scene, this.camera);
+  }
+
+  // Resolves once the frame a change asked for has been drawn (its callback runs after the
+  // drawing one, which was registered first).
+  nextFrame() {
+    return new Promise((resolve) => requestAnimationFrame(() => resolve()));
   }
 
 }
