@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <tuple>
+#include <vector>
 
 #include "sphereset/fit.hpp"
 #include "view/view_fixture.hpp"
@@ -102,6 +104,19 @@ TEST_F(ViewTest, BadFitRequestsStartNothing) {
            nlohmann::json{{"solid", 0}},
        })
     call(&scene, post("/api/fit", body), 400);
+  // The routes keep the server's checks: no token, another site's Origin, a foreign Host.
+  for (const auto& [header, value, status] :
+       std::vector<std::tuple<std::string, std::string, int>>{{"x-sphereset-token", "0123", 401},
+                                                              {"origin", "http://evil.example", 403},
+                                                              {"host", "evil.example:8765", 403}}) {
+    for (const std::string route : {"/api/fit", "/api/fit/status", "/api/fit/cancel"}) {
+      ViewRequest r = post(route, route == "/api/fit" ? nlohmann::json{{"solid", 0}, {"spheres", 4}}
+                                                      : nlohmann::json::object());
+      for (auto& [k, v] : r.headers)
+        if (k == header) v = value;
+      call(&scene, r, status);
+    }
+  }
   EXPECT_EQ(call(&scene, post("/api/fit/status", nlohmann::json::object()))["state"], "idle");
   ViewScene tree = treeScene();
   call(&tree, post("/api/fit", {{"solid", 0}, {"spheres", 4}}), 400);
