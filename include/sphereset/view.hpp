@@ -196,7 +196,7 @@ struct ViewFitStatus {
   double fraction = 0.0;
   std::string stage;
   std::string error;
-  std::vector<int64_t> solids;  // the solids it fits
+  std::vector<int64_t> solids;        // the solids it fits
   std::map<std::string, int> counts;  // the robot budget's split: link -> spheres
   bool applied = false;               // this call applied it to the scene
 };

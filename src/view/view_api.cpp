@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <limits>
 #include <map>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
@@ -271,7 +271,8 @@ ViewResponse postSave(ViewScene* scene, const nlohmann::json& body) {
   }
   auto bytes = saveViewScene(*scene, as);
   if (!bytes) return refuse(bytes.error());
-  return answer({{"path", viewSavePath(*scene, as.value_or(scene->save_format))}, {"bytes", *bytes}});
+  return answer(
+      {{"path", viewSavePath(*scene, as.value_or(scene->save_format))}, {"bytes", *bytes}});
 }
 
 // POST /api/fit {"solid": K, "spheres": n, "quality": q} or {"budget": B, "quality": q}.
@@ -280,11 +281,13 @@ ViewResponse postFit(ViewScene* scene, const nlohmann::json& body) {
   ViewFitRequest r;
   if (body.contains("budget")) {
     onlyFields(body, {"budget", "quality"}, "body");
-    r.budget = static_cast<int>(std::clamp<int64_t>(integerField(body, "budget", "body"), 0, limits::kMaxSpheres + 1));
+    r.budget = static_cast<int>(
+        std::clamp<int64_t>(integerField(body, "budget", "body"), 0, limits::kMaxSpheres + 1));
     if (r.budget == 0) throw BodyError{"body: 'budget' must be at least 1"};
   } else {
     r.solid = integerField(body, "solid", "body");
-    r.spheres = static_cast<int>(std::clamp<int64_t>(integerField(body, "spheres", "body"), 0, limits::kMaxSpheres + 1));
+    r.spheres = static_cast<int>(
+        std::clamp<int64_t>(integerField(body, "spheres", "body"), 0, limits::kMaxSpheres + 1));
   }
   if (body.contains("quality")) {
     const nlohmann::json& q = body["quality"];
@@ -301,8 +304,8 @@ ViewResponse postFit(ViewScene* scene, const nlohmann::json& body) {
 ViewResponse postFitStatus(ViewScene* scene, const nlohmann::json& body) {
   onlyFields(body, {}, "body");
   const ViewFitStatus st = viewFitStatus(scene);
-  nlohmann::json j = {{"state", st.state},   {"fraction", st.fraction}, {"stage", st.stage},
-                      {"error", st.error},   {"solids", st.solids},     {"counts", st.counts},
+  nlohmann::json j = {{"state", st.state},     {"fraction", st.fraction},  {"stage", st.stage},
+                      {"error", st.error},     {"solids", st.solids},      {"counts", st.counts},
                       {"applied", st.applied}, {"version", scene->version}};
   if (st.applied) {
     nlohmann::json sets = nlohmann::json::array();

@@ -1,12 +1,12 @@
 // The changes a page makes to a view's scene (view.hpp): edits of a set, the bound, a tree's
 // level, a robot's joints, and the save. Each checks everything first and changes nothing on
 // an error; each change recertifies what it touched and counts one version.
+#include <algorithm>
 #include <array>
 #include <cmath>
-#include <algorithm>
 #include <filesystem>
-#include <optional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <utility>

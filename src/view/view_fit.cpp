@@ -28,7 +28,8 @@ double fitFraction(const FitProgress& p, int max_rounds) {
   if (p.phase == "sampling") return 0.0;
   if (p.phase == "clustering")
     return kSamplingShare +
-           kClusteringShare * std::min(1.0, p.iteration / static_cast<double>(std::max(1, max_rounds)));
+           kClusteringShare *
+               std::min(1.0, p.iteration / static_cast<double>(std::max(1, max_rounds)));
   if (p.phase == "done") return 1.0;
   return kSamplingShare + kClusteringShare;  // bounding
 }
@@ -40,7 +41,8 @@ void report(ViewFitJob* job, double fraction, std::string stage) {
   job->stage = std::move(stage);
 }
 
-void finish(ViewFitJob* job, std::vector<std::vector<Sphere>> sets, std::map<std::string, int> counts) {
+void finish(ViewFitJob* job, std::vector<std::vector<Sphere>> sets,
+            std::map<std::string, int> counts) {
   std::lock_guard<std::mutex> g(job->mutex);
   job->sets = std::move(sets);
   job->counts = std::move(counts);
@@ -63,7 +65,8 @@ void runSolidFit(ViewFitJob* job, std::shared_ptr<const SolidIndex> index,
   o.original = input->original();
   const int rounds = o.max_iterations;
   o.progress = [job, rounds](const FitProgress& p) {
-    report(job, fitFraction(p, rounds), p.phase + (p.phase == "clustering" ? " round " + std::to_string(p.iteration) : ""));
+    report(job, fitFraction(p, rounds),
+           p.phase + (p.phase == "clustering" ? " round " + std::to_string(p.iteration) : ""));
   };
   auto fit = fitSpheres(*index, o);
   if (!fit) return fail(job, "failed", fit.error().message);
@@ -153,10 +156,11 @@ Status checkNotFitting(const ViewScene& scene, int64_t solid) {
   if (!scene.fit) return {};
   std::lock_guard<std::mutex> g(scene.fit->mutex);
   if (scene.fit->state != "running") return {};
-  if (std::find(scene.fit->solids.begin(), scene.fit->solids.end(), solid) == scene.fit->solids.end())
+  if (std::find(scene.fit->solids.begin(), scene.fit->solids.end(), solid) ==
+      scene.fit->solids.end())
     return {};
-  return Error{ErrorCode::kInvalidArgument,
-               "solid " + std::to_string(solid) + " is being fitted: wait for the fit or cancel it"};
+  return Error{ErrorCode::kInvalidArgument, "solid " + std::to_string(solid) +
+                                                " is being fitted: wait for the fit or cancel it"};
 }
 
 Status startViewFit(ViewScene* scene, const ViewFitRequest& request) {
@@ -176,7 +180,8 @@ Status startViewFit(ViewScene* scene, const ViewFitRequest& request) {
     o.link_solid = scene->link_solid;
     o.link_solid_for = scene->link_solid_for;
     o.name = scene->urdf_path;
-    launch(job, [robot = scene->robot, o, links](ViewFitJob* j) { runBudgetFit(j, robot, o, links); });
+    launch(job,
+           [robot = scene->robot, o, links](ViewFitJob* j) { runBudgetFit(j, robot, o, links); });
   } else {
     const ViewSolid& s = scene->solids[static_cast<size_t>(request.solid)];
     job->solids.push_back(request.solid);

@@ -249,7 +249,8 @@ Expected<std::string> inlineViewData(std::string_view html, const ViewScene& sce
           base64(viewGeometry(scene.solids[i], ViewSurface::kRepaired));
     data["solids"][i]["certificate"]["seconds"] = 0.0;
     // A tree's every level with its certificate: changing the level is not an edit.
-    if (scene.solids[i].tree) data["solids"][i]["level_sets"] = view_json::levelSets(scene.solids[i]);
+    if (scene.solids[i].tree)
+      data["solids"][i]["level_sets"] = view_json::levelSets(scene.solids[i]);
   }
   // The robot's joint tree: the page poses the robot itself (posing is not an edit).
   if (scene.robot) data["kinematics"] = view_json::kinematics(*scene.robot);

@@ -312,7 +312,9 @@ Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::st
                                   const ViewLoadOptions& options) {
   auto scene = loadOneScene(mesh_or_urdf, spheres, options);
   if (!scene) return scene.error();
-  const auto name = [](const std::string& p) { return std::filesystem::path(p).filename().string(); };
+  const auto name = [](const std::string& p) {
+    return std::filesystem::path(p).filename().string();
+  };
   scene->set_names = {name(spheres)};
   if (options.compare.empty()) return scene;
   ViewLoadOptions second = options;

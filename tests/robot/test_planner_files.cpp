@@ -107,7 +107,8 @@ TEST_F(PlannerFiles, SrdfPairsReadBackByTheLibrary) {
     EXPECT_EQ((*pairs)[i].reason, m.disabled[i].reason);
   }
   // Bad files: one line naming the file and the problem.
-  const auto refused = [&](const std::string& name, const std::string& text, const std::string& says) {
+  const auto refused = [&](const std::string& name, const std::string& text,
+                           const std::string& says) {
     auto r = readSrdfDisabledPairs(write(name, text), robot);
     ASSERT_FALSE(r.ok()) << name;
     EXPECT_NE(r.error().message.find(says), std::string::npos) << r.error().message;
@@ -118,7 +119,8 @@ TEST_F(PlannerFiles, SrdfPairsReadBackByTheLibrary) {
   refused("half.srdf", "<robot>\n<disable_collisions link1=\"link1\"/></robot>", "line 2");
   refused("ghost.srdf", "<robot><disable_collisions link1=\"link1\" link2=\"ghost\"/></robot>",
           "'ghost' is not a link");
-  EXPECT_EQ(readSrdfDisabledPairs(path("missing.srdf"), robot).error().code, ErrorCode::kUnreadable);
+  EXPECT_EQ(readSrdfDisabledPairs(path("missing.srdf"), robot).error().code,
+            ErrorCode::kUnreadable);
 }
 
 TEST_F(PlannerFiles, SrdfWithoutAChainHasNoGroup) {

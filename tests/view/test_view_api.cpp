@@ -1,5 +1,6 @@
 // The view's API as a pure function (view.hpp, docs/view.md): the scene's fields, the geometry,
-// edits and their certificates, the bound, a tree's levels, a robot's poses, the save; and every bad request refused with its status and nothing changed.
+// edits and their certificates, the bound, a tree's levels, a robot's poses, the save; and every
+// bad request refused with its status and nothing changed.
 #include <gtest/gtest.h>
 
 #include <cstdint>

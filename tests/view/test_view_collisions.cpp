@@ -18,8 +18,9 @@ using Pair = std::array<std::string, 2>;
 TEST_F(ViewTest, AdjacentLinksAreAllowedAndTheirOverlapIsNoContact) {
   ViewScene scene = robotScene();
   EXPECT_EQ(scene.allowed_source, "adjacent");
-  EXPECT_NE(std::find(scene.allowed_pairs.begin(), scene.allowed_pairs.end(), Pair{"link1", "link2"}),
-            scene.allowed_pairs.end());
+  EXPECT_NE(
+      std::find(scene.allowed_pairs.begin(), scene.allowed_pairs.end(), Pair{"link1", "link2"}),
+      scene.allowed_pairs.end());
   EXPECT_TRUE(viewContactPairs(scene).empty());
   const nlohmann::json j = call(&scene, request("GET", "/api/scene"));
   EXPECT_EQ(j["collisions"]["allowed_source"], "adjacent");
@@ -29,9 +30,10 @@ TEST_F(ViewTest, AdjacentLinksAreAllowedAndTheirOverlapIsNoContact) {
 }
 
 TEST_F(ViewTest, AnSrdfsPairsAreTheAllowedOnesAndContactsFollowEdits) {
-  const std::string srdf = write("robot.srdf",
-      "<robot name=\"three_link\"><disable_collisions link1=\"base_link\" link2=\"link1\" "
-      "reason=\"Adjacent\"/></robot>");
+  const std::string srdf =
+      write("robot.srdf",
+            "<robot name=\"three_link\"><disable_collisions link1=\"base_link\" link2=\"link1\" "
+            "reason=\"Adjacent\"/></robot>");
   ViewLoadOptions o = robotOptions();
   o.srdf = srdf;
   auto loaded = loadViewScene(threeLinkUrdf(), robotSpheres(), o);
@@ -42,7 +44,10 @@ TEST_F(ViewTest, AnSrdfsPairsAreTheAllowedOnesAndContactsFollowEdits) {
   // link1's and link2's spheres overlap and the SRDF does not allow them: in contact.
   EXPECT_EQ(viewContactPairs(scene), std::vector<Pair>({{"link1", "link2"}}));
   // link2's sphere made tiny and moved away: no contact, and the edit's answer says so.
-  const nlohmann::json a = call(&scene, post("/api/edit", {{"solid", 1}, {"edits", {{{"op", "set"}, {"index", 0}, {"sphere", {5, 5, 5, 0.01}}}}}}));
+  const nlohmann::json a = call(
+      &scene,
+      post("/api/edit", {{"solid", 1},
+                         {"edits", {{{"op", "set"}, {"index", 0}, {"sphere", {5, 5, 5, 0.01}}}}}}));
   EXPECT_TRUE(a["collisions"]["contact"].empty());
   EXPECT_TRUE(viewContactPairs(scene).empty());
   // A mesh with an SRDF, and an SRDF naming a link the robot lacks: refused.

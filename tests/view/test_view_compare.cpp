@@ -30,11 +30,13 @@ TEST_F(ViewTest, ASecondSetIsShownAndCertifiedButNeverEdited) {
   EXPECT_EQ(j["solids"][1]["set"], 1);
   // The compared set is read-only: edits, bounds and fits refused; the first set still edits.
   const std::string why =
-      call(&scene, post("/api/edit", {{"solid", 1}, {"edits", {{{"op", "delete"}, {"index", 0}}}}}), 400)["error"];
+      call(&scene, post("/api/edit", {{"solid", 1}, {"edits", {{{"op", "delete"}, {"index", 0}}}}}),
+           400)["error"];
   EXPECT_NE(why.find("compared set"), std::string::npos) << why;
   call(&scene, post("/api/bound", {{"solid", 1}}), 400);
   call(&scene, post("/api/fit", {{"solid", 1}, {"spheres", 2}}), 400);
-  call(&scene, post("/api/edit", {{"solid", 0}, {"edits", {{{"op", "add"}, {"sphere", {0.5, 0.5, 0.5, 0.1}}}}}}));
+  call(&scene, post("/api/edit", {{"solid", 0},
+                                  {"edits", {{{"op", "add"}, {"sphere", {0.5, 0.5, 0.5, 0.1}}}}}}));
   // A save writes the first set to its file, and leaves the compared file alone.
   call(&scene, post("/api/save", nlohmann::json::object()));
   auto saved = readSpheres(path("box.txt"));

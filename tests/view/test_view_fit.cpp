@@ -59,7 +59,8 @@ TEST_F(ViewTest, ARunningFitRefusesEditsAndASecondFitAndCanBeCancelled) {
   ViewScene scene = boxScene();
   const std::vector<Sphere> before = scene.solids[0].spheres();
   call(&scene, post("/api/fit", {{"solid", 0}, {"spheres", 300}, {"quality", "best"}}));
-  const auto edit = post("/api/edit", {{"solid", 0}, {"edits", {{{"op", "delete"}, {"index", 0}}}}});
+  const auto edit =
+      post("/api/edit", {{"solid", 0}, {"edits", {{{"op", "delete"}, {"index", 0}}}}});
   EXPECT_NE(call(&scene, edit, 400)["error"].get<std::string>().find("being fitted"),
             std::string::npos);
   call(&scene, post("/api/bound", {{"solid", 0}}), 400);
@@ -105,10 +106,10 @@ TEST_F(ViewTest, BadFitRequestsStartNothing) {
        })
     call(&scene, post("/api/fit", body), 400);
   // The routes keep the server's checks: no token, another site's Origin, a foreign Host.
-  for (const auto& [header, value, status] :
-       std::vector<std::tuple<std::string, std::string, int>>{{"x-sphereset-token", "0123", 401},
-                                                              {"origin", "http://evil.example", 403},
-                                                              {"host", "evil.example:8765", 403}}) {
+  for (const auto& [header, value, status] : std::vector<std::tuple<std::string, std::string, int>>{
+           {"x-sphereset-token", "0123", 401},
+           {"origin", "http://evil.example", 403},
+           {"host", "evil.example:8765", 403}}) {
     for (const std::string route : {"/api/fit", "/api/fit/status", "/api/fit/cancel"}) {
       ViewRequest r = post(route, route == "/api/fit" ? nlohmann::json{{"solid", 0}, {"spheres", 4}}
                                                       : nlohmann::json::object());

@@ -24,11 +24,13 @@ TEST_F(ViewTest, ARobotIsSavedAsAnotherRobotFormatBesideItsSavePath) {
   EXPECT_EQ(formats[0], "yaml");
   EXPECT_EQ(formats[1], "urdf");
 
-  call(&scene, post("/api/edit", {{"solid", 1}, {"edits", {{{"op", "add"}, {"sphere", {0, 0, 0, 0.01}}}}}}));
+  call(&scene, post("/api/edit",
+                    {{"solid", 1}, {"edits", {{{"op", "add"}, {"sphere", {0, 0, 0, 0.01}}}}}}));
   const nlohmann::json saved = call(&scene, post("/api/save", {{"format", "urdf"}}));
   const std::string urdf = saved["path"].get<std::string>();
   EXPECT_EQ(std::filesystem::path(urdf).filename(), "robot.urdf");
-  EXPECT_EQ(std::filesystem::path(urdf).parent_path(), std::filesystem::path(scene.save_path).parent_path());
+  EXPECT_EQ(std::filesystem::path(urdf).parent_path(),
+            std::filesystem::path(scene.save_path).parent_path());
   RobotLoadOptions lo;
   lo.package_paths = {robotDir()};
   lo.use_ros_package_path = false;
@@ -40,8 +42,9 @@ TEST_F(ViewTest, ARobotIsSavedAsAnotherRobotFormatBesideItsSavePath) {
   // The scene's own save still goes to its own file.
   EXPECT_EQ(call(&scene, post("/api/save", nlohmann::json::object()))["path"], scene.save_path);
 
-  for (const nlohmann::json& bad : {nlohmann::json{{"format", "lula"}}, nlohmann::json{{"format", 1}},
-                                    nlohmann::json{{"path", "/tmp/x.yml"}}})
+  for (const nlohmann::json& bad :
+       {nlohmann::json{{"format", "lula"}}, nlohmann::json{{"format", 1}},
+        nlohmann::json{{"path", "/tmp/x.yml"}}})
     call(&scene, post("/api/save", bad), 400);
   ViewScene mesh = boxScene();
   call(&mesh, post("/api/save", {{"format", "urdf"}}), 400);
