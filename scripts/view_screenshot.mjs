@@ -1,5 +1,5 @@
 // The README's picture of `sphereset view`: spot with 32 fitted spheres, the three largest shrunk
-// by a quarter so that the certificate finds gaps (red triangles, "not covered"), in headless
+// by a quarter so that the certificate finds gaps (magenta triangles, "not covered"), in headless
 // Chromium.
 //   node scripts/view_screenshot.mjs --cli build/apps/sphereset \
 //     --node-modules build/web/npm/node_modules --work out/view_screenshot -- MESH SPHERES OUT.png
