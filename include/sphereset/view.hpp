@@ -102,6 +102,8 @@ struct ViewScene {
   SphereFileMeta save_meta;
   // The names of the sets shown: one, or two when a second set is compared with the first.
   std::vector<std::string> set_names;
+  // The files the scene was read from (mesh or robot, sphere files): no save may write one.
+  std::vector<std::string> inputs;
   // How the solids were made (ViewLoadOptions), for the fits the page starts.
   RepairOptions repair;
   LinkSolid link_solid = LinkSolid::kEnvelope;
@@ -112,7 +114,7 @@ struct ViewScene {
   std::vector<std::array<std::string, 2>> allowed_pairs;
   std::string allowed_source;
   // The fit the page started last (startViewFit), running or finished; null before the first.
-  // Copies of the scene share it.
+  // Copies of the scene share it: only the scene a server serves asks for its status.
   std::shared_ptr<ViewFitJob> fit;
 };
 
@@ -200,7 +202,8 @@ struct ViewFitStatus {
   std::map<std::string, int> counts;  // the robot budget's split: link -> spheres
   bool applied = false;               // this call applied it to the scene
 };
-// Starts a fit. Errors (kInvalidArgument, nothing starts): a fit running already, an unknown
+// Starts a fit. Errors (kInvalidArgument, nothing starts): a fit running already or finished
+// and not yet applied (viewFitStatus applies it), an unknown
 // solid, a tree's solid (trees are fitted by `sphereset tree`), spheres outside [1,
 // limits::kMaxSpheres] without a budget, a budget on a mesh or below one per link, options
 // fitRequestOptions refuses.
@@ -208,9 +211,15 @@ Status startViewFit(ViewScene* scene, const ViewFitRequest& request);
 // How the fit is; a finished one is applied to the scene the first time it is asked for (its
 // solids get the new sets and their certificates, the version grows by one).
 ViewFitStatus viewFitStatus(ViewScene* scene);
-// Asks a running fit to stop (it stops at its next progress report, within about a second);
-// nothing changes. No error when none runs.
+// Asks a running fit to stop at its next progress report (a mesh fit reports every round and
+// every 0.25 s; a robot's link repair is not interrupted); nothing changes. No error when none
+// runs.
 void cancelViewFit(ViewScene* scene);
+
+// A robot's links' spheres as the scene holds them: the sphere file's links in its order, each
+// shown link with its (edited) set, the compared set left out. Saves and the self-collision
+// pairs use it.
+std::vector<LinkSpheres> viewLinkSpheres(const ViewScene& scene);
 
 // A robot's self-collision at its current pose: the pairs of links whose spheres overlap
 // (selfCollisionPairs' rule) that are not allowed (ViewScene::allowed_pairs). Empty for a mesh.
@@ -226,7 +235,8 @@ std::vector<std::array<std::string, 2>> viewContactPairs(const ViewScene& scene)
 Expected<int64_t> saveViewScene(const ViewScene& scene,
                                 std::optional<ViewSaveFormat> as = std::nullopt);
 // Where a save in `format` goes: the save path, or for another robot format the save path with
-// that format's ending (.yml, .urdf, .xml) in place of its own. Empty without a save path.
+// that format's ending (.yml, .urdf, .xml) in place of its own (and of ".lula" before it). An
+// existing file there is replaced, as a save replaces its own file. Empty without a save path.
 std::string viewSavePath(const ViewScene& scene, ViewSaveFormat format);
 // The formats a scene can be saved as: its own, and for a robot every robot format the build
 // writes (MJCF with MuJoCo).

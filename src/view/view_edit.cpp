@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -200,9 +201,12 @@ std::string viewSavePath(const ViewScene& scene, ViewSaveFormat format) {
                        : format == ViewSaveFormat::kRobotMjcf ? ".xml"
                                                               : ".yml";
   std::filesystem::path p(scene.save_path);
-  // A Lula or cuRobo name ends in two parts (robot.lula.yml): both go.
+  // A Lula name ends in two parts (robot.lula.yml): both go; other dots stay (my.robot.v2).
   std::string stem = p.stem().string();
-  if (const size_t dot = stem.find('.'); dot != std::string::npos) stem.resize(dot);
+  constexpr std::string_view kLula = ".lula";
+  if (stem.size() > kLula.size() &&
+      stem.compare(stem.size() - kLula.size(), kLula.size(), kLula) == 0)
+    stem.resize(stem.size() - kLula.size());
   return (p.parent_path() / (stem + ending)).string();
 }
 
@@ -236,7 +240,7 @@ Expected<int64_t> saveViewScene(const ViewScene& scene, std::optional<ViewSaveFo
                    viewSaveFormatName(scene, format));
   const std::string path = viewSavePath(scene, format);
   if (path != scene.save_path) {
-    if (Status st = checkOutputPath(path, {scene.urdf_path}); !st) return st.error();
+    if (Status st = checkOutputPath(path, scene.inputs); !st) return st.error();
   }
   Status st;
   switch (format) {
@@ -252,10 +256,7 @@ Expected<int64_t> saveViewScene(const ViewScene& scene, std::optional<ViewSaveFo
     case ViewSaveFormat::kRobotYaml:
     case ViewSaveFormat::kRobotUrdf:
     case ViewSaveFormat::kRobotMjcf: {
-      std::vector<LinkSpheres> links = scene.file_links;
-      for (LinkSpheres& l : links)
-        for (const ViewSolid& s : scene.solids)
-          if (s.set == 0 && s.link == l.link) l.spheres = s.spheres();
+      const std::vector<LinkSpheres> links = viewLinkSpheres(scene);
       if (format == ViewSaveFormat::kRobotUrdf)
         st = writeSphereUrdf(scene.urdf_path, path, links);
       else if (format == ViewSaveFormat::kRobotMjcf)

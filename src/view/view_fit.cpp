@@ -34,11 +34,17 @@ double fitFraction(const FitProgress& p, int max_rounds) {
   return kSamplingShare + kClusteringShare;  // bounding
 }
 
+// Checks for a cancel; moves the fraction on (never back) and names the stage (empty: kept).
 void report(ViewFitJob* job, double fraction, std::string stage) {
   if (job->cancel.load()) throw Cancelled{};
   std::lock_guard<std::mutex> g(job->mutex);
   job->fraction = std::max(job->fraction, std::min(1.0, fraction));
-  job->stage = std::move(stage);
+  if (!stage.empty()) job->stage = std::move(stage);
+}
+
+// Whether the job will still change the scene: running, or done and not yet applied.
+bool pending(const ViewFitJob& job) {
+  return job.state == "running" || (job.state == "done" && !job.applied);
 }
 
 void finish(ViewFitJob* job, std::vector<std::vector<Sphere>> sets,
@@ -120,6 +126,8 @@ Status checkRequest(const ViewScene& scene, const ViewFitRequest& r) {
   if (scene.fit) {
     std::lock_guard<std::mutex> g(scene.fit->mutex);
     if (scene.fit->state == "running") return bad("a fit is running: wait for it or cancel it");
+    if (pending(*scene.fit))
+      return bad("a fit has finished and is not applied yet: ask for its status");
   }
   if (r.budget != 0) {
     if (scene.kind != ViewKind::kRobot || !scene.robot) return bad("fit: a budget is for robots");
@@ -155,7 +163,8 @@ ViewFitJob::~ViewFitJob() {
 Status checkNotFitting(const ViewScene& scene, int64_t solid) {
   if (!scene.fit) return {};
   std::lock_guard<std::mutex> g(scene.fit->mutex);
-  if (scene.fit->state != "running") return {};
+  // A finished fit not yet applied would replace what an edit does now.
+  if (!pending(*scene.fit)) return {};
   if (std::find(scene.fit->solids.begin(), scene.fit->solids.end(), solid) ==
       scene.fit->solids.end())
     return {};

@@ -316,7 +316,9 @@ Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::st
     return std::filesystem::path(p).filename().string();
   };
   scene->set_names = {name(spheres)};
+  scene->inputs = {mesh_or_urdf, spheres};
   if (options.compare.empty()) return scene;
+  scene->inputs.push_back(options.compare);
   ViewLoadOptions second = options;
   second.compare.clear();
   second.srdf.clear();
@@ -335,13 +337,17 @@ Expected<ViewScene> loadViewScene(const std::string& mesh_or_urdf, const std::st
   return scene;
 }
 
-std::vector<std::array<std::string, 2>> viewContactPairs(const ViewScene& scene) {
-  if (!scene.robot) return {};
+std::vector<LinkSpheres> viewLinkSpheres(const ViewScene& scene) {
   std::vector<LinkSpheres> links = scene.file_links;
   for (LinkSpheres& l : links)
     for (const ViewSolid& s : scene.solids)
       if (s.set == 0 && s.link == l.link) l.spheres = s.spheres();
-  auto pairs = selfCollisionPairs(*scene.robot, links, scene.joint_values);
+  return links;
+}
+
+std::vector<std::array<std::string, 2>> viewContactPairs(const ViewScene& scene) {
+  if (!scene.robot) return {};
+  auto pairs = selfCollisionPairs(*scene.robot, viewLinkSpheres(scene), scene.joint_values);
   if (!pairs) return {};  // the joint values were checked when they were set
   std::vector<std::array<std::string, 2>> contact;
   for (const auto& p : pairs->overlapping) {

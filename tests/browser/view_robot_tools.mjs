@@ -1,7 +1,8 @@
 // A robot engineer's tools on the test robot, by mouse and keyboard: with an SRDF that allows
 // only base_link–link1, link1 and link2 (overlapping spheres) are listed in contact and drawn;
 // a sphere moved off clears the contact; the link under the pointer is named beside it; Save
-// writes the robot as a URDF beside the save path when that format is chosen.
+// writes the robot as a URDF beside the save path when that format is chosen; on a turned link,
+// the gizmo's x arrow dragged by the mouse changes the centre's x in the link's frame alone.
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { writeRobot } from './fixtures.mjs';
@@ -55,5 +56,35 @@ await runTest(async (args, browser) => {
   const message = await page.$eval('#message', (e) => e.textContent);
   check(message.includes(saved) && existsSync(saved), `Save wrote ${saved} (${message})`);
   if (existsSync(saved)) check(readFileSync(saved, 'utf8').includes('<sphere radius'), 'a URDF with sphere collisions');
+
+  // link1 turned by its joint; its first sphere selected; the gizmo's x arrow found by hovering
+  // along the link's own x on the screen, then dragged.
+  await hooks(() => window.sphereset.setJoint('joint1', 0.7));
+  const k1 = links.indexOf('link1');
+  const sphere = await hooks((k) => window.sphereset.scene().solids[k].spheres[0], k1);
+  const centre = await hooks((k, c) => window.sphereset.screenOf(k, c), k1, sphere.slice(0, 3));
+  const along = await hooks((k, c) => window.sphereset.screenOf(k, [c[0] + 0.01, c[1], c[2]]), k1, sphere.slice(0, 3));
+  const norm = Math.hypot(along.x - centre.x, along.y - centre.y);
+  const d = { x: (along.x - centre.x) / norm, y: (along.y - centre.y) / norm };
+  await page.mouse.click(centre.x, centre.y);
+  const picked = await hooks(() => window.sphereset.selection());
+  check(picked && picked.link === 'link1' && picked.index === 0, `link1's sphere selected (${JSON.stringify(picked)})`);
+  let grip = null;
+  for (let t = 8; t < 240 && !grip; t += 4) {
+    await page.mouse.move(centre.x + t * d.x, centre.y + t * d.y);
+    if (await hooks(() => window.sphereset.gizmoAxis()) === 'X') grip = { x: centre.x + t * d.x, y: centre.y + t * d.y };
+  }
+  check(grip !== null, 'the gizmo\'s x arrow lies along link1\'s own x on the screen');
+  if (grip) {
+    await page.mouse.down();
+    for (let i = 1; i <= 5; i++) await page.mouse.move(grip.x + 8 * i * d.x, grip.y + 8 * i * d.y);
+    await page.mouse.up();
+    await page.waitForFunction((k, x) => window.sphereset.scene().solids[k].spheres[0][0] !== x,
+      { timeout: 20000 }, k1, sphere[0]);
+    const after = await hooks((k) => window.sphereset.scene().solids[k].spheres[0], k1);
+    check(after[0] > sphere[0], `the drag moves x in link1's frame (${sphere[0]} -> ${after[0]})`);
+    check(after[1] === sphere[1] && after[2] === sphere[2] && after[3] === sphere[3],
+      `and leaves y, z and r bit for bit (${after.slice(1)} was ${sphere.slice(1)})`);
+  }
   checkNoErrors(errors, 'with the robot tools');
 });

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "sphereset/fit.hpp"
+#include "view/view_fit.hpp"
 #include "view/view_fixture.hpp"
 
 namespace sphereset::test {
@@ -74,6 +76,31 @@ TEST_F(ViewTest, ARunningFitRefusesEditsAndASecondFitAndCanBeCancelled) {
   EXPECT_FALSE(end["applied"].get<bool>());
   expectSameSpheres(scene.solids[0].spheres(), before);
   call(&scene, edit);  // editable again
+}
+
+// Done but not yet asked for: the solid still refuses edits (they would be replaced), and a
+// second fit waits; the status applies it and edits go through again.
+TEST_F(ViewTest, AFinishedFitIsAppliedBeforeTheSolidEditsAgain) {
+  ViewScene scene = boxScene();
+  call(&scene, post("/api/fit", {{"solid", 0}, {"spheres", 3}, {"quality", "fast"}}));
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  for (;;) {
+    {
+      std::lock_guard<std::mutex> g(scene.fit->mutex);
+      if (scene.fit->state != "running") break;
+    }
+    ASSERT_LT(std::chrono::steady_clock::now(), end);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_EQ(scene.fit->state, "done") << scene.fit->error;
+  const auto edit =
+      post("/api/edit", {{"solid", 0}, {"edits", {{{"op", "delete"}, {"index", 0}}}}});
+  call(&scene, edit, 400);
+  call(&scene, post("/api/fit", {{"solid", 0}, {"spheres", 2}}), 400);
+  EXPECT_TRUE(waitForFit(&scene)["applied"].get<bool>());
+  EXPECT_EQ(scene.solids[0].spheres().size(), 3u);
+  call(&scene, edit);
+  EXPECT_EQ(scene.solids[0].spheres().size(), 2u);
 }
 
 TEST_F(ViewTest, ARobotsBudgetFitsEveryLinkWithinIt) {

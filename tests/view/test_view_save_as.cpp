@@ -50,5 +50,22 @@ TEST_F(ViewTest, ARobotIsSavedAsAnotherRobotFormatBesideItsSavePath) {
   call(&mesh, post("/api/save", {{"format", "urdf"}}), 400);
 }
 
+// A save as another format never writes one of the scene's inputs: here the compared file has
+// the name a URDF save would take.
+TEST_F(ViewTest, ASaveAsNeverWritesAnInput) {
+  const std::string yml = robotSpheres();
+  const std::string compared = path("robot.urdf");
+  ASSERT_TRUE(
+      writeSphereUrdf(threeLinkUrdf(), compared, {{"link1", {{Vec3(0, 0, 0.2), 0.3}}}}).ok());
+  ViewLoadOptions o = robotOptions();
+  o.compare = compared;
+  auto scene = loadViewScene(threeLinkUrdf(), yml, o);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  const auto before = std::filesystem::last_write_time(compared);
+  EXPECT_FALSE(saveViewScene(*scene, ViewSaveFormat::kRobotUrdf).ok());
+  EXPECT_EQ(std::filesystem::last_write_time(compared), before);
+  EXPECT_TRUE(saveViewScene(*scene).ok());  // its own file
+}
+
 }  // namespace
 }  // namespace sphereset::test

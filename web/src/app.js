@@ -373,7 +373,9 @@ export class App {
     panels.showStatus(solids.filter((x) => x.set !== 1));
     if (this.comparing) panels.showCompare(this.scene.sets, solids);
     panels.showCertificate(solids, this.current, this.redCounts);
-    panels.showLevel(solids[this.current].levels, (l) => this.level(this.current, l).catch(() => {}));
+    // A compared tree's level is not changed (the server refuses it): no slider for it.
+    const levels = this.editable(this.current) || this.staticMode ? solids[this.current].levels : null;
+    panels.showLevel(levels, (l) => this.level(this.current, l).catch(() => {}));
     document.getElementById('solid').value = String(this.current);
     const names = solids.map((_, k) => this.solidName(k));
     showLinkList(solids, { current: this.current, selection: this.selection, shown: this.shown, names }, {

@@ -37,12 +37,18 @@ export function rampGradient() {
   return `linear-gradient(to right, ${parts.join(', ')})`;
 }
 
+// The fraction of sphere [x,y,z,r] outside the solid, from its `outside` volume (NaN unknown).
+export function fractionOutside(sphere, outside) {
+  const r = sphere[3];
+  const volume = (4 / 3) * Math.PI * r * r * r;
+  return volume > 0 && Number.isFinite(outside) ? Math.min(1, outside / volume) : NaN;
+}
+
 // Where sphere [x,y,z,r] with `outside` volume outside the solid sits on the ramp: 'absolute',
 // its fraction outside (0 to 1); 'relative', outside over `largest`.
 export function sphereShade(sphere, outside, scale, largest) {
   const v = Number.isFinite(outside) ? outside : 0;
   if (scale === 'relative') return largest > 0 ? v / largest : 0;
-  const r = sphere[3];
-  const volume = (4 / 3) * Math.PI * r * r * r;
-  return volume > 0 ? Math.min(1, v / volume) : 0;
+  const f = fractionOutside(sphere, v);
+  return Number.isFinite(f) ? f : 0;
 }

@@ -168,30 +168,38 @@ function wirePicking(app, viewer) {
   });
 }
 
-// A drag of the gizmo changes only the coordinates of the handle it holds ('X', 'XY', ...): the
-// others are sent as they were, not as a round trip through the link's pose left them.
-// The name of the link under the pointer, beside it (robots), once a frame.
+// The name of the link under the pointer, beside it (robots), once the pointer rests: a ray
+// through a large mesh at every move would cost more than the move.
+const hoverRestMs = 120;
 function wireHover(app, viewer) {
-  if (app.scene.solids.length < 2) return;
+  if (app.scene.kind !== 'robot') return;
   const canvas = viewer.renderer.domElement;
   const tip = $('hover');
-  let pending = null;
+  let timer = 0;
   canvas.addEventListener('pointermove', (e) => {
-    if (pending === null) requestAnimationFrame(() => {
-      const { x, y } = pending;
-      pending = null;
+    tip.classList.add('hidden');
+    clearTimeout(timer);
+    if (e.buttons) return;  // turning or dragging
+    const x = e.clientX;
+    const y = e.clientY;
+    timer = setTimeout(() => {
       const hit = viewer.pick(x, y) || viewer.pick(x, y, { surfaceOnly: true });
       tip.classList.toggle('hidden', !hit);
       if (!hit) return;
       tip.textContent = app.solidName(hit.solid);
       tip.style.left = `${x + 12}px`;
       tip.style.top = `${y + 12}px`;
-    });
-    pending = { x: e.clientX, y: e.clientY };
+    }, hoverRestMs);
   });
-  canvas.addEventListener('pointerleave', () => tip.classList.add('hidden'));
+  canvas.addEventListener('pointerleave', () => {
+    clearTimeout(timer);
+    tip.classList.add('hidden');
+  });
 }
 
+// A drag of the gizmo changes only the coordinates of the handle it holds ('X', 'XY', ...; the
+// gizmo's axes are the solid's own): the others are sent as they were, not as a round trip
+// through the link's pose left them.
 function wireGizmo(app, viewer) {
   let axis = null;
   viewer.gizmo.addEventListener('objectChange', () => {

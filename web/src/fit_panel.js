@@ -7,6 +7,7 @@ import * as panels from './panels.js';
 
 const $ = (id) => document.getElementById(id);
 const pollMs = 150;
+const pollFailures = 20;  // questions in a row that may fail (a busy server answers 503) before the page gives up
 
 export class FitPanel {
   constructor(app) {
@@ -21,7 +22,8 @@ export class FitPanel {
     const robot = app.scene.kind === 'robot';
     $('fit-what').textContent = robot ? 'this link' : 'the mesh';
     $('budget-row').classList.toggle('hidden', !robot);
-    if (robot) $('fit-budget').value = String(app.scene.solids.reduce((n, s) => n + s.spheres.length, 0));
+    const edited = app.scene.solids.filter((s) => s.set !== 1);
+    if (robot) $('fit-budget').value = String(edited.reduce((n, s) => n + s.spheres.length, 0));
     $('fit').onclick = () => this.start({ solid: app.current, spheres: Number($('fit-spheres').value) }).catch(() => {});
     $('fit-robot').onclick = () => this.start({ budget: Number($('fit-budget').value) }).catch(() => {});
     $('fit-cancel').onclick = () => { app.api.fitCancel().catch((e) => panels.showMessage(e.message, 'error')); };
@@ -43,9 +45,16 @@ export class FitPanel {
     this.running = true;
     this.show(true, 0, 'starting');
     try {
-      for (;;) {
+      for (let failures = 0; ;) {
         await new Promise((resolve) => setTimeout(resolve, pollMs));
-        const status = await app.api.fitStatus();
+        let status;
+        try {
+          status = await app.api.fitStatus();
+          failures = 0;
+        } catch (e) {
+          if (++failures >= pollFailures) throw e;
+          continue;
+        }
         this.show(true, status.fraction, status.stage);
         if (status.state === 'running') continue;
         await app.run(() => this.finish(status, before, body));
@@ -73,6 +82,8 @@ export class FitPanel {
       panels.showMessage('fit done elsewhere: reload the page to see it');
       return;
     }
+    // A selection on a refitted solid would name another sphere now.
+    if (app.selection && status.solids.includes(app.selection.solid)) app.select(null);
     const undo = [];
     status.solids.forEach((k, i) => {
       if (app.applySet(k, status.sets[i])) undo.push({ solid: k, edits: replaceEdits(status.sets[i].spheres, before[k]) });

@@ -3,10 +3,11 @@
 // fraction outside). Clicking a link shows and frames it; clicking a sphere selects it; the
 // filter keeps the links whose name holds its text. Only DOM here.
 
+import { fractionOutside } from './colors.js';
+import { number } from './panels.js';
+
 const $ = (id) => document.getElementById(id);
 const maxSphereRows = 500;  // a set of thousands of spheres lists its first rows only
-
-const number = (v, digits = 4) => (Number.isFinite(v) ? Number(v.toPrecision(digits)).toString() : 'n/a');
 
 // solids: the scene's; state: { current, selection, shown[], names[] }; on: { showLink(k), frameLink(k),
 // selectSphere(k, i), setShown(k, shown) }.
@@ -63,9 +64,8 @@ function sphereRows(solid, k, state, on) {
     row.className = `sphere${selected ? ' selected' : ''}`;
     row.dataset.solid = String(k);
     row.dataset.index = String(i);
-    const volume = (4 / 3) * Math.PI * s[3] ** 3;
-    const fraction = volume > 0 && Number.isFinite(outside[i]) ? outside[i] / volume : NaN;
-    row.textContent = `#${i}  r ${number(s[3])}  ${Number.isFinite(fraction) ? `${(100 * fraction).toFixed(1)}% outside` : ''}`;
+    const fraction = fractionOutside(s, outside[i]);
+    row.textContent = `#${i}  r ${number(s[3], 4)}  ${Number.isFinite(fraction) ? `${(100 * fraction).toFixed(1)}% outside` : ''}`;
     row.onclick = () => on.selectSphere(k, i);
     return row;
   });

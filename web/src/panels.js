@@ -87,7 +87,7 @@ export function showStatus(solids) {
 }
 
 const yesNo = (v) => (v === true ? 'yes' : v === false ? 'no' : 'n/a');
-const number = (v, digits = 6) => (Number.isFinite(v) ? Number(v.toPrecision(digits)).toString() : 'n/a');
+export const number = (v, digits = 6) => (Number.isFinite(v) ? Number(v.toPrecision(digits)).toString() : 'n/a');
 
 export function showCertificate(solids, current, redCounts) {
   const solid = solids[current];

@@ -1,6 +1,6 @@
 // One solid's displayed mesh: grey, with the triangles the certificate finds uncovered (the
 // gaps) drawn in the gap colour (colors.js, on no sphere ramp) on top: after the translucent
-// spheres, so that a sphere in front does not wash them out. The red triangles are a mesh of their own (a child of the grey one) that shares
+// spheres, so that a sphere in front does not wash them out. The gap triangles are a mesh of their own (a child of the grey one) that shares
 // the grey mesh's vertex buffers and has only their indices: an edit replaces that small index,
 // never the whole mesh's, which on a mesh of a million triangles took seconds to upload and
 // redraw. A vertex shared with a covered neighbour cannot smear red onto it.
@@ -93,7 +93,7 @@ export class SolidMesh {
     for (const t of triangleList || []) {
       if (Number.isInteger(t) && t >= 0 && t < this.triangles) seen.add(t);
     }
-    // The red index grows by doubling (a replaced index keeps its GL buffer until the page
+    // The gap index grows by doubling (a replaced index keeps its GL buffer until the page
     // closes: a few times over a session, not once per edit); an edit rewrites the part in use.
     const needed = 3 * seen.size;
     let index = this.redGeometry.getIndex();

@@ -30,6 +30,9 @@ export class Viewer {
     this.orbit.addEventListener('change', () => this.requestRender());
 
     this.gizmo = new TransformControls(this.camera, this.renderer.domElement);
+    // The arrows along the solid's own axes (a link's frame): a drag along one changes that
+    // coordinate of the centre alone.
+    this.gizmo.space = 'local';
     this.gizmo.addEventListener('change', () => this.requestRender());
     this.gizmo.addEventListener('dragging-changed', (e) => { this.orbit.enabled = !e.value; });
     this.scene.add(this.gizmo.getHelper());
