@@ -77,7 +77,9 @@ enum class ViewKind { kMesh, kRobot };
 struct ViewFitJob;  // a fit the page started (view_fit.cpp)
 // How a save writes: a sphere set, a tree (its levels back in their slots), a robot's links as
 // cuRobo's YAML, the URDF with sphere collisions, or the robot as an MJCF with sphere geoms.
-enum class ViewSaveFormat { kSet, kTree, kRobotYaml, kRobotUrdf, kRobotMjcf };
+// (kRobotLula: Isaac Sim's robot description, a save as only: a Lula file read keeps its own
+// layout as kRobotYaml.)
+enum class ViewSaveFormat { kSet, kTree, kRobotYaml, kRobotUrdf, kRobotMjcf, kRobotLula };
 
 struct ViewScene {
   ViewKind kind = ViewKind::kMesh;
@@ -228,21 +230,23 @@ std::vector<std::array<std::string, 2>> viewContactPairs(const ViewScene& scene)
 // Writes every set to the scene's save path in its format, atomically. Returns the bytes
 // written. Errors: those of the writers; kInvalidArgument when a tree's level no longer fits its
 // layout (spheres added or deleted).
-// A robot's scene can be saved as another robot format (`as`: kRobotYaml, kRobotUrdf or
-// kRobotMjcf): beside the save path, its name with that format's ending (viewSavePath). A
+// A robot's scene can be saved as another robot format (`as`: kRobotYaml, kRobotUrdf,
+// kRobotMjcf or kRobotLula, the last at the robot's reference pose as `sphereset robot` writes
+// it): beside the save path, its name with that format's ending (viewSavePath). A
 // request never names a path. Errors: kInvalidArgument for a mesh's scene, a set or tree
 // format, or a path that is one of the inputs.
 Expected<int64_t> saveViewScene(const ViewScene& scene,
                                 std::optional<ViewSaveFormat> as = std::nullopt);
 // Where a save in `format` goes: the save path, or for another robot format the save path with
-// that format's ending (.yml, .urdf, .xml) in place of its own (and of ".lula" before it). An
-// existing file there is replaced, as a save replaces its own file. Empty without a save path.
+// that format's ending (.yml, .urdf, .xml, .lula.yml) in place of its own (and of ".lula" before
+// it). An existing file there is replaced, as a save replaces its own file. Empty without a save
+// path.
 std::string viewSavePath(const ViewScene& scene, ViewSaveFormat format);
 // The formats a scene can be saved as: its own, and for a robot every robot format the build
 // writes (MJCF with MuJoCo).
 std::vector<ViewSaveFormat> viewSaveFormats(const ViewScene& scene);
-// "txt", "json", "sph", "yaml", "urdf", "mjcf" (the scene JSON's save.format), and back for the
-// robot formats (kInvalidArgument otherwise).
+// "txt", "json", "sph", "yaml", "urdf", "mjcf", "lula" (the scene JSON's save.format), and back for
+// the robot formats (kInvalidArgument otherwise).
 std::string viewSaveFormatName(const ViewScene& scene, ViewSaveFormat format);
 Expected<ViewSaveFormat> viewRobotSaveFormat(const std::string& name);
 

@@ -264,7 +264,8 @@ ViewResponse postSave(ViewScene* scene, const nlohmann::json& body) {
   onlyFields(body, {"format"}, "body");
   std::optional<ViewSaveFormat> as;
   if (body.contains("format")) {
-    if (!body["format"].is_string()) throw BodyError{"body: 'format' must be yaml, urdf or mjcf"};
+    if (!body["format"].is_string())
+      throw BodyError{"body: 'format' must be yaml, urdf, mjcf or lula"};
     auto f = viewRobotSaveFormat(body["format"].get<std::string>());
     if (!f) return refuse(f.error());
     as = *f;

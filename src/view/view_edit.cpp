@@ -16,6 +16,7 @@
 #include "sphereset/fit.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/robot.hpp"
+#include "sphereset/robot_collision.hpp"
 #include "sphereset/sphere_io.hpp"
 #include "sphereset/view.hpp"
 #include "view/view_fit.hpp"
@@ -199,6 +200,7 @@ std::string viewSavePath(const ViewScene& scene, ViewSaveFormat format) {
   if (scene.save_path.empty() || format == scene.save_format) return scene.save_path;
   const char* ending = format == ViewSaveFormat::kRobotUrdf   ? ".urdf"
                        : format == ViewSaveFormat::kRobotMjcf ? ".xml"
+                       : format == ViewSaveFormat::kRobotLula ? ".lula.yml"
                                                               : ".yml";
   std::filesystem::path p(scene.save_path);
   // A Lula name ends in two parts (robot.lula.yml): both go; other dots stay (my.robot.v2).
@@ -215,6 +217,7 @@ std::vector<ViewSaveFormat> viewSaveFormats(const ViewScene& scene) {
   if (scene.kind != ViewKind::kRobot) return {scene.save_format};
   std::vector<ViewSaveFormat> out = {ViewSaveFormat::kRobotYaml, ViewSaveFormat::kRobotUrdf};
   if (mujocoAvailable()) out.push_back(ViewSaveFormat::kRobotMjcf);
+  out.push_back(ViewSaveFormat::kRobotLula);
   if (std::find(out.begin(), out.end(), scene.save_format) == out.end())
     out.insert(out.begin(), scene.save_format);
   return out;
@@ -224,7 +227,8 @@ Expected<ViewSaveFormat> viewRobotSaveFormat(const std::string& name) {
   if (name == "yaml") return ViewSaveFormat::kRobotYaml;
   if (name == "urdf") return ViewSaveFormat::kRobotUrdf;
   if (name == "mjcf") return ViewSaveFormat::kRobotMjcf;
-  return invalid("save: '" + name + "' is not a robot format (yaml, urdf or mjcf)");
+  if (name == "lula") return ViewSaveFormat::kRobotLula;
+  return invalid("save: '" + name + "' is not a robot format (yaml, urdf, mjcf or lula)");
 }
 
 Expected<int64_t> saveViewScene(const ViewScene& scene, std::optional<ViewSaveFormat> as) {
@@ -255,10 +259,13 @@ Expected<int64_t> saveViewScene(const ViewScene& scene, std::optional<ViewSaveFo
     }
     case ViewSaveFormat::kRobotYaml:
     case ViewSaveFormat::kRobotUrdf:
-    case ViewSaveFormat::kRobotMjcf: {
+    case ViewSaveFormat::kRobotMjcf:
+    case ViewSaveFormat::kRobotLula: {
       const std::vector<LinkSpheres> links = viewLinkSpheres(scene);
       if (format == ViewSaveFormat::kRobotUrdf)
         st = writeSphereUrdf(scene.urdf_path, path, links);
+      else if (format == ViewSaveFormat::kRobotLula)
+        st = writeLulaDescription(path, *scene.robot, links, {});
       else if (format == ViewSaveFormat::kRobotMjcf)
         st = writeSphereMjcf(scene.urdf_path, path, links, {}, scene.robot_load);
       else if (!scene.save_source.empty() && format == scene.save_format)

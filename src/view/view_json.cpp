@@ -19,6 +19,8 @@ std::string viewSaveFormatName(const ViewScene& scene, ViewSaveFormat format) {
       return "urdf";
     case ViewSaveFormat::kRobotMjcf:
       return "mjcf";
+    case ViewSaveFormat::kRobotLula:
+      return "lula";
     case ViewSaveFormat::kSet:
     case ViewSaveFormat::kTree:
       break;

@@ -4,7 +4,8 @@
 // file, but not edited.
 import { writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { writeBox, writeBoxSpheres } from './fixtures.mjs';
+import { readFileSync } from 'node:fs';
+import { writeBox, writeBoxSpheres, writeRobot } from './fixtures.mjs';
 import { check, checkNoErrors, openPage, pageStatus, runTest, startView } from './harness.mjs';
 
 await runTest(async (args, browser) => {
@@ -48,4 +49,29 @@ await runTest(async (args, browser) => {
   const refused = await hooks(() => window.sphereset.setSphere(1, 0, [0, 0, 0, 1]).then(() => null, (e) => e.message));
   check(refused && refused.includes('compared set'), `an edit of B is refused (${refused})`);
   checkNoErrors(errors.filter((e) => !e.includes('400')), 'while comparing');
+
+  const robot = writeRobot(args.work);
+  const other = join(args.work, 'two_link_b.yml');
+  writeFileSync(other, 'collision_spheres:\n  link1:\n    - "center": [0, 0, 0.2]\n      "radius": 0.3\n');
+  const before = readFileSync(other, 'utf8');
+  const live = await openPage(browser, (await startView(args, [robot.urdf, robot.spheres, other])).url);
+  const rows = await live.page.$$eval('#link-list .link .name', (n) => n.map((x) => x.textContent));
+  check(rows.includes('link1 [two_link_b.yml]') && rows.includes('link1'), `B's link listed with its file (${rows.join(', ')})`);
+  const scene = await live.page.evaluate(() => window.sphereset.scene());
+  const a1 = scene.solids.findIndex((s) => s.link === 'link1' && s.set === 0);
+  const b1 = scene.solids.findIndex((s) => s.link === 'link1' && s.set === 1);
+  await live.page.$eval('input[data-joint="joint1"]', (e) => e.scrollIntoView());
+  const slider = await (await live.page.$('input[data-joint="joint1"]')).boundingBox();
+  await live.page.mouse.click(slider.x + slider.width * 0.8, slider.y + slider.height / 2);
+  await live.page.waitForFunction(() => window.sphereset.scene().joints[0].value !== 0, { timeout: 20000 });
+  // A point of link1's frame away from its joint lands on the same pixel in both sets.
+  const [pa, pb, rest] = await live.page.evaluate((i, j) => [window.sphereset.screenOf(i, [0, 0, 0.4]),
+    window.sphereset.screenOf(j, [0, 0, 0.4]), window.sphereset.scene().joints[0].value], a1, b1);
+  check(rest > 0.5 && Math.abs(pa.x - pb.x) < 1e-6 && Math.abs(pa.y - pb.y) < 1e-6,
+    `a joint (${rest.toFixed(3)}) moves both sets' link1 alike (${pa.x.toFixed(1)},${pa.y.toFixed(1)})`);
+  await live.page.click('#save');
+  await live.page.waitForFunction(() => document.getElementById('message').textContent.startsWith('saved'), { timeout: 20000 });
+  check(readFileSync(other, 'utf8') === before, 'Save leaves the compared file as it was');
+  check((await live.page.$eval('#message', (e) => e.textContent)).includes('two_link_spheres.yml'), 'and writes the first');
+  checkNoErrors(live.errors, 'while comparing robots');
 });

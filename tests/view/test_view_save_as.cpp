@@ -20,9 +20,10 @@ TEST_F(ViewTest, ARobotIsSavedAsAnotherRobotFormatBesideItsSavePath) {
   ASSERT_EQ(j["save"]["format"], "yaml");
   std::vector<std::string> formats;
   for (const auto& a : j["save"]["as"]) formats.push_back(a["format"].get<std::string>());
-  EXPECT_EQ(formats.size(), mujocoAvailable() ? 3u : 2u);
+  EXPECT_EQ(formats.size(), mujocoAvailable() ? 4u : 3u);
   EXPECT_EQ(formats[0], "yaml");
   EXPECT_EQ(formats[1], "urdf");
+  EXPECT_EQ(formats.back(), "lula");
 
   call(&scene, post("/api/edit",
                     {{"solid", 1}, {"edits", {{{"op", "add"}, {"sphere", {0, 0, 0, 0.01}}}}}}));
@@ -39,11 +40,19 @@ TEST_F(ViewTest, ARobotIsSavedAsAnotherRobotFormatBesideItsSavePath) {
   for (const RobotLink& l : robot->links)
     for (const ViewSolid& s : scene.solids)
       if (l.name == s.link) expectSameSpheres(linkSpheres(l), s.spheres());
+  // Lula's description beside it, read back by the library's reader with the same spheres.
+  const std::string lula = call(&scene, post("/api/save", {{"format", "lula"}}))["path"];
+  EXPECT_EQ(std::filesystem::path(lula).filename(), "robot.lula.yml");
+  auto back = readLinkSpheres(lula);
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  for (const LinkSpheres& l : *back)
+    for (const ViewSolid& s : scene.solids)
+      if (l.link == s.link) expectSameSpheres(l.spheres, s.spheres());
   // The scene's own save still goes to its own file.
   EXPECT_EQ(call(&scene, post("/api/save", nlohmann::json::object()))["path"], scene.save_path);
 
   for (const nlohmann::json& bad :
-       {nlohmann::json{{"format", "lula"}}, nlohmann::json{{"format", 1}},
+       {nlohmann::json{{"format", "srdf"}}, nlohmann::json{{"format", 1}},
         nlohmann::json{{"path", "/tmp/x.yml"}}})
     call(&scene, post("/api/save", bad), 400);
   ViewScene mesh = boxScene();

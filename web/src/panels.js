@@ -104,11 +104,13 @@ export function showCertificate(solids, current, redCounts) {
     ['gap triangles', String(redCounts[current])],
     ['covered', yesNo(c.covered)],
   ];
-  if (solids.length > 1) {
-    const total = solids.reduce((sum, s) => sum + (s.certificate ? s.certificate.er_sum : 0), 0);
-    const coveredCount = solids.filter((s) => s.certificate && s.certificate.covered).length;
-    const worst = solids.reduce((m, s) => Math.max(m, s.certificate && Number.isFinite(s.certificate.protrusion) ? s.certificate.protrusion : 0), 0);
-    rows.push(['all solids', `${coveredCount} of ${solids.length} covered, E_r ${number(total)}, protrusion ${number(worst, 4)}`]);
+  // The edited set's solids (a compared set has its own column in the compare table).
+  const edited = solids.filter((s) => s.set !== 1);
+  if (edited.length > 1) {
+    const total = edited.reduce((sum, s) => sum + (s.certificate ? s.certificate.er_sum : 0), 0);
+    const coveredCount = edited.filter((s) => s.certificate && s.certificate.covered).length;
+    const worst = edited.reduce((m, s) => Math.max(m, s.certificate && Number.isFinite(s.certificate.protrusion) ? s.certificate.protrusion : 0), 0);
+    rows.push(['all solids', `${coveredCount} of ${edited.length} covered, E_r ${number(total)}, protrusion ${number(worst, 4)}`]);
   }
   const table = $('certificate');
   table.replaceChildren(...rows.map(([name, value]) => {
