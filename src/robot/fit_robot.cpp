@@ -26,14 +26,17 @@
 namespace sphereset {
 namespace {
 
-// Under a budget, each free link is also fitted at the counts within this many of the split's,
-// and the exact pick (pickCandidates) chooses among all of them: a fit's outside volume is not
-// monotone in its count (a fit with more spheres can end in a worse local minimum: the Kinova's
-// base link envelope gives E_r 0.54 at 6 spheres and 0.74 at 8), so a link may do better with
-// fewer and leave its spheres to another. A link's candidates are one progressive run (each
-// warm-started from the count below it); on the Kinova at a budget of 60, seeds 1 to 3, 2 gave
-// 4.7 % less outside volume than 1 (geometric mean) for 1.21 times the time.
+// Under a budget, each free link is also fitted at counts within this many of the split's, every
+// kCandidateStep-th, and the exact pick (pickCandidates) chooses among all of them: a fit's
+// outside volume is not monotone in its count (a fit with more spheres can end in a worse local
+// minimum: the Kinova's base link envelope gives E_r 0.54 at 6 spheres and 0.74 at 8), so a link
+// may do better with fewer and leave its spheres to another. A link's candidates are one
+// progressive run (each warm-started from the count below it). On the Kinova at a budget of 60,
+// seeds 1 to 3: spread 1 (step 1) lost 4 % of outside volume to spread 2; spread 2 with step 2
+// (the split's count and 2 either side) took 0.86 of the time of step 1 for 1.3 % more outside
+// volume (docs/benchmarks.md, "The robot budget with progressive curves").
 constexpr int kCandidateSpread = 2;
+constexpr int kCandidateStep = 2;
 // Sphere counts at which each free link is fitted to measure its curve for the budget split: up
 // to the first at or above kCurveReach times the even split's share (beyond it the split
 // extrapolates the last piece of the curve, budget.cpp), and never above the budget.
@@ -307,7 +310,8 @@ std::vector<LinkFit> fitCandidates(const RobotFitOptions& o, const std::vector<J
   return fits;
 }
 // Fits every link at its count, and free links under a budget at the curve split's count, the
-// even split's and those within kCandidateSpread of the split's (fitCandidates); then keeps, per
+// even split's and those kCandidateStep apart within kCandidateSpread of the split's
+// (fitCandidates); then keeps, per
 // link, the fit of whichever count gives the least total outside volume within the budget
 // (pickCandidates), so the result is never worse than either split. Fails with the first error
 // in link order.
@@ -319,8 +323,8 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
     tasks.emplace_back(i, j.count);
     if (j.even_count >= 0 && j.even_count != j.count) tasks.emplace_back(i, j.even_count);
     if (j.split_count < 0) continue;
-    for (int k = std::max(1, j.count - kCandidateSpread); k <= j.count + kCandidateSpread; ++k)
-      if (k != j.count && k != j.even_count) tasks.emplace_back(i, k);
+    for (int k = j.count - kCandidateSpread; k <= j.count + kCandidateSpread; k += kCandidateStep)
+      if (k >= 1 && k != j.count && k != j.even_count) tasks.emplace_back(i, k);
   }
   std::vector<LinkFit> fits = fitCandidates(o, *jobs, tasks);
   for (size_t t = 0; t < tasks.size(); ++t)
