@@ -38,29 +38,29 @@ double fitFraction(const FitProgress& p, int max_rounds) {
 void report(ViewFitJob* job, double fraction, std::string stage) {
   if (job->cancel.load()) throw Cancelled{};
   std::lock_guard<std::mutex> g(job->mutex);
-  job->fraction = std::max(job->fraction, std::min(1.0, fraction));
-  if (!stage.empty()) job->stage = std::move(stage);
+  job->status.fraction = std::max(job->status.fraction, std::min(1.0, fraction));
+  if (!stage.empty()) job->status.stage = std::move(stage);
 }
 
 // Whether the job will still change the scene: running, or done and not yet applied.
 bool pending(const ViewFitJob& job) {
-  return job.state == "running" || (job.state == "done" && !job.applied);
+  return job.status.state == "running" || (job.status.state == "done" && !job.applied);
 }
 
 void finish(ViewFitJob* job, std::vector<std::vector<Sphere>> sets,
             std::map<std::string, int> counts) {
   std::lock_guard<std::mutex> g(job->mutex);
   job->sets = std::move(sets);
-  job->counts = std::move(counts);
-  job->fraction = 1.0;
-  job->stage = "done";
-  job->state = "done";
+  job->status.counts = std::move(counts);
+  job->status.fraction = 1.0;
+  job->status.stage = "done";
+  job->status.state = "done";
 }
 
 void fail(ViewFitJob* job, const std::string& state, const std::string& error) {
   std::lock_guard<std::mutex> g(job->mutex);
-  job->state = state;
-  job->error = error;
+  job->status.state = state;
+  job->status.error = error;
 }
 
 // One solid: its link's sphere primitives (a robot's), then the fitted spheres.
@@ -125,7 +125,8 @@ Status checkRequest(const ViewScene& scene, const ViewFitRequest& r) {
   const auto bad = [](const std::string& m) { return Error{ErrorCode::kInvalidArgument, m}; };
   if (scene.fit) {
     std::lock_guard<std::mutex> g(scene.fit->mutex);
-    if (scene.fit->state == "running") return bad("a fit is running: wait for it or cancel it");
+    if (scene.fit->status.state == "running")
+      return bad("a fit is running: wait for it or cancel it");
     if (pending(*scene.fit))
       return bad("a fit has finished and is not applied yet: ask for its status");
   }
@@ -165,8 +166,8 @@ Status checkNotFitting(const ViewScene& scene, int64_t solid) {
   std::lock_guard<std::mutex> g(scene.fit->mutex);
   // A finished fit not yet applied would replace what an edit does now.
   if (!pending(*scene.fit)) return {};
-  if (std::find(scene.fit->solids.begin(), scene.fit->solids.end(), solid) ==
-      scene.fit->solids.end())
+  if (std::find(scene.fit->status.solids.begin(), scene.fit->status.solids.end(), solid) ==
+      scene.fit->status.solids.end())
     return {};
   return Error{ErrorCode::kInvalidArgument, "solid " + std::to_string(solid) +
                                                 " is being fitted: wait for the fit or cancel it"};
@@ -179,7 +180,7 @@ Status startViewFit(ViewScene* scene, const ViewFitRequest& request) {
     std::vector<std::string> links;
     for (size_t k = 0; k < scene->solids.size(); ++k) {
       if (scene->solids[k].set != 0) continue;
-      job->solids.push_back(static_cast<int64_t>(k));
+      job->status.solids.push_back(static_cast<int64_t>(k));
       links.push_back(scene->solids[k].link);
     }
     RobotFitOptions o;
@@ -193,7 +194,7 @@ Status startViewFit(ViewScene* scene, const ViewFitRequest& request) {
            [robot = scene->robot, o, links](ViewFitJob* j) { runBudgetFit(j, robot, o, links); });
   } else {
     const ViewSolid& s = scene->solids[static_cast<size_t>(request.solid)];
-    job->solids.push_back(request.solid);
+    job->status.solids.push_back(request.solid);
     std::vector<Sphere> primitives;
     if (scene->robot) {
       for (const RobotLink& l : scene->robot->links)
@@ -212,17 +213,12 @@ ViewFitStatus viewFitStatus(ViewScene* scene) {
   if (!scene->fit) return out;
   ViewFitJob& job = *scene->fit;
   std::lock_guard<std::mutex> g(job.mutex);
-  out.state = job.state;
-  out.fraction = job.fraction;
-  out.stage = job.stage;
-  out.error = job.error;
-  out.solids = job.solids;
-  out.counts = job.counts;
-  if (job.state == "done" && !job.applied) {
+  out = job.status;
+  if (job.status.state == "done" && !job.applied) {
     job.applied = true;
     out.applied = true;
-    for (size_t i = 0; i < job.solids.size(); ++i) {
-      ViewSolid& s = scene->solids[static_cast<size_t>(job.solids[i])];
+    for (size_t i = 0; i < job.status.solids.size(); ++i) {
+      ViewSolid& s = scene->solids[static_cast<size_t>(job.status.solids[i])];
       if (job.sets[i].empty()) continue;  // a link the budget skipped keeps its set
       s.sets[static_cast<size_t>(s.level)] = std::move(job.sets[i]);
       certifyViewSolid(&s);

@@ -16,19 +16,19 @@
 namespace sphereset {
 
 struct ViewFitJob {
-  std::vector<int64_t> solids;  // the solids it replaces, in the scene's order
   std::atomic<bool> cancel{false};
   std::mutex mutex;  // guards what follows
-  std::string state = "running";
-  double fraction = 0.0;
-  std::string stage = "starting";
-  std::string error;
-  std::vector<std::vector<Sphere>> sets;  // per entry of `solids`, when done
-  std::map<std::string, int> counts;
+  // What viewFitStatus answers (status.solids: the solids it replaces, in the scene's order);
+  // status.applied stays false here, `applied` says whether a status applied it.
+  ViewFitStatus status;
+  std::vector<std::vector<Sphere>> sets;  // per entry of status.solids, when done
   bool applied = false;
   std::thread thread;  // last: started once everything above is set
 
-  ViewFitJob() = default;
+  ViewFitJob() {
+    status.state = "running";
+    status.stage = "starting";
+  }
   ViewFitJob(const ViewFitJob&) = delete;
   ViewFitJob& operator=(const ViewFitJob&) = delete;
   // Cancels and waits: a scene (and the server holding it) never outlives its fit's thread.

@@ -87,12 +87,12 @@ TEST_F(ViewTest, AFinishedFitIsAppliedBeforeTheSolidEditsAgain) {
   for (;;) {
     {
       std::lock_guard<std::mutex> g(scene.fit->mutex);
-      if (scene.fit->state != "running") break;
+      if (scene.fit->status.state != "running") break;
     }
     ASSERT_LT(std::chrono::steady_clock::now(), end);
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
-  ASSERT_EQ(scene.fit->state, "done") << scene.fit->error;
+  ASSERT_EQ(scene.fit->status.state, "done") << scene.fit->status.error;
   const auto edit =
       post("/api/edit", {{"solid", 0}, {"edits", {{{"op", "delete"}, {"index", 0}}}}});
   call(&scene, edit, 400);
