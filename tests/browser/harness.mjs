@@ -110,13 +110,13 @@ export async function pageMessage(page) {
   return page.$eval('#message', (e) => ({ text: e.textContent, error: e.classList.contains('error') }));
 }
 
-// Distinct colours of a PNG and, given a second one of the same size, the pixels that differ;
-// decoded by the browser itself in a blank page.
-export async function pixelStats(browser, png, other = null) {
+// Runs body(pngBase64, ...) in a blank page where window.decodePng(base64) gives a PNG's
+// { width, height, data (RGBA) }, decoded by the browser itself.
+async function withDecoder(browser, body, ...args) {
   const page = await browser.newPage();
   try {
-    return await page.evaluate(async (a, b) => {
-      const decode = async (base64) => {
+    await page.evaluate(() => {
+      window.decodePng = async (base64) => {
         const image = new Image();
         image.src = `data:image/png;base64,${base64}`;
         await image.decode();
@@ -125,28 +125,48 @@ export async function pixelStats(browser, png, other = null) {
         canvas.height = image.height;
         const context = canvas.getContext('2d');
         context.drawImage(image, 0, 0);
-        return context.getImageData(0, 0, image.width, image.height).data;
+        return { width: image.width, height: image.height,
+          data: context.getImageData(0, 0, image.width, image.height).data };
       };
-      const pixels = await decode(a);
-      const colours = new Set();
-      for (let i = 0; i < pixels.length; i += 4) {
-        colours.add((pixels[i] << 16) | (pixels[i + 1] << 8) | pixels[i + 2]);
-      }
-      let differing = null;
-      if (b) {
-        const second = await decode(b);
-        differing = 0;
-        for (let i = 0; i < pixels.length; i += 4) {
-          if (pixels[i] !== second[i] || pixels[i + 1] !== second[i + 1] || pixels[i + 2] !== second[i + 2]) {
-            differing++;
-          }
-        }
-      }
-      return { colours: colours.size, differing };
-    }, png.toString('base64'), other ? other.toString('base64') : null);
+    });
+    return await page.evaluate(body, ...args);
   } finally {
     await page.close();
   }
+}
+
+// Distinct colours of a PNG and, given a second one of the same size, the pixels that differ.
+export function pixelStats(browser, png, other = null) {
+  return withDecoder(browser, async (a, b) => {
+    const pixels = (await window.decodePng(a)).data;
+    const colours = new Set();
+    for (let i = 0; i < pixels.length; i += 4) {
+      colours.add((pixels[i] << 16) | (pixels[i + 1] << 8) | pixels[i + 2]);
+    }
+    let differing = null;
+    if (b) {
+      const second = (await window.decodePng(b)).data;
+      differing = 0;
+      for (let i = 0; i < pixels.length; i += 4) {
+        if (pixels[i] !== second[i] || pixels[i + 1] !== second[i + 1] || pixels[i + 2] !== second[i + 2]) {
+          differing++;
+        }
+      }
+    }
+    return { colours: colours.size, differing };
+  }, png.toString('base64'), other ? other.toString('base64') : null);
+}
+
+// The pixels of a PNG whose [r, g, b] satisfy `predicateSource` (an expression of r, g and b),
+// and its size.
+export function countPixels(browser, png, predicateSource) {
+  return withDecoder(browser, async (base64, source) => {
+    const { width, height, data } = await window.decodePng(base64);
+    const predicate = new Function('r', 'g', 'b', `return ${source};`);
+    let count = 0;
+    for (let i = 0; i < data.length; i += 4) if (predicate(data[i], data[i + 1], data[i + 2])) count++;
+    return { count, width, height };
+  }, png.toString('base64'), predicateSource);
 }
 
 // The view's canvas only: the panel beside it holds text that changes on its own.

@@ -7,31 +7,9 @@
 import { readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { writeBox } from './fixtures.mjs';
-import { canvasShot, check, checkNoErrors, near, openPage, runTest, startView } from './harness.mjs';
-
-// Pixels of a PNG matching a predicate on [r, g, b], and its size, decoded by the browser.
-async function countPixels(browser, png, predicateSource) {
-  const page = await browser.newPage();
-  try {
-    return await page.evaluate(async (base64, source) => {
-      const image = new Image();
-      image.src = `data:image/png;base64,${base64}`;
-      await image.decode();
-      const canvas = document.createElement('canvas');
-      canvas.width = image.width;
-      canvas.height = image.height;
-      const context = canvas.getContext('2d');
-      context.drawImage(image, 0, 0);
-      const pixels = context.getImageData(0, 0, image.width, image.height).data;
-      const predicate = new Function('r', 'g', 'b', `return ${source};`);
-      let count = 0;
-      for (let i = 0; i < pixels.length; i += 4) if (predicate(pixels[i], pixels[i + 1], pixels[i + 2])) count++;
-      return { count, width: image.width, height: image.height };
-    }, png.toString('base64'), predicateSource);
-  } finally {
-    await page.close();
-  }
-}
+import {
+  canvasShot, check, checkNoErrors, countPixels, near, openPage, runTest, startView,
+} from './harness.mjs';
 
 const magenta = 'r > 180 && b > 180 && g < 90';
 
