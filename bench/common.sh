@@ -24,6 +24,16 @@ skip_without_shared() {
     exit 0
   fi
 }
+# The page's packages (puppeteer-core) and Chromium, for the view benchmarks: sets `modules`,
+# or exits saying how to get them.
+require_view_page() {
+  modules=$PWD/build/web/npm/node_modules
+  if [ ! -d "$modules/puppeteer-core" ] || ! command -v chromium > /dev/null; then
+    echo "$1: needs the page's packages ($modules) and Chromium:" \
+      "bash scripts/build_and_test.sh" >&2
+    exit 1
+  fi
+}
 bench_meshes() {
   if [ ${#args[@]} -gt 0 ]; then meshes=("${args[@]}"); else meshes=("$@"); fi
 }

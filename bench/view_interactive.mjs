@@ -7,26 +7,17 @@
 //     [--chromium CHROMIUM] -- MESH SPHERES
 import { performance } from 'node:perf_hooks';
 
-import { launchBrowser, parseArgs, startView } from '../tests/browser/harness.mjs';
+import { parseArgs } from '../tests/browser/harness.mjs';
+import { openTimedView } from './view_timing.mjs';
 
 const split = process.argv.indexOf('--');
 const [mesh, spheres] = process.argv.slice(split + 1);
 process.argv = process.argv.slice(0, split);
 const args = parseArgs();
 
-const t0 = performance.now();
-const { url, child } = await startView(args, [mesh, spheres]);
-const served = performance.now();
-const browser = await launchBrowser(args);
+const view = await openTimedView(args, [mesh, spheres], { width: 900, height: 600 });
+const { page, errors } = view;
 try {
-  const page = await browser.newPage();
-  await page.setViewport({ width: 900, height: 600 });
-  const errors = [];
-  page.on('pageerror', (e) => errors.push(e.message));
-  const t1 = performance.now();
-  await page.goto(url, { waitUntil: 'load' });
-  await page.evaluate(() => window.sphereset.ready);
-  const ready = performance.now();
   const info = await page.evaluate(() => {
     const s = window.sphereset.scene();
     return { triangles: s.solids[0].triangles, spheres: s.solids[0].spheres.length,
@@ -40,11 +31,10 @@ try {
   if (errors.length) throw new Error(`page errors: ${errors.join(' | ')}`);
   const name = mesh.split('/').pop();
   console.log('mesh,triangles,spheres,serve_s,page_ready_s,interactive_s,edit_ms,server_edit_ms');
-  console.log([name, info.triangles, info.spheres, ((served - t0) / 1000).toFixed(2),
-    ((ready - t1) / 1000).toFixed(2), ((ready - t0) / 1000 - (t1 - served) / 1000).toFixed(2),
-    (edited - t2).toFixed(0), (1000 * cert.seconds).toFixed(1)].join(','));
+  console.log([name, info.triangles, info.spheres, view.serve_s.toFixed(2), view.ready_s.toFixed(2),
+    view.interactive_s.toFixed(2), (edited - t2).toFixed(0), (1000 * cert.seconds).toFixed(1)].join(','));
 } finally {
-  await browser.close();
-  child.kill();
+  await view.browser.close();
+  view.child.kill();
 }
 process.exit(0);

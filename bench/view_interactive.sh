@@ -12,12 +12,7 @@ cd "$(dirname "$0")/.."
 args=()
 source bench/common.sh
 skip_without_shared view_interactive.sh
-modules=$PWD/build/web/npm/node_modules
-if [ ! -d "$modules/puppeteer-core" ] || ! command -v chromium > /dev/null; then
-  echo "view_interactive.sh: needs the page's packages ($modules) and Chromium:" \
-    "bash scripts/build_and_test.sh" >&2
-  exit 1
-fi
+require_view_page view_interactive.sh
 n=${N:-64}
 out=${OUT:-bench/results/view_interactive.csv}
 tmp=$(mktemp -d)

@@ -9,7 +9,8 @@
 //     [--chromium CHROMIUM] -- ROBOT.urdf SPHERES.yml [--package-path DIR]
 import { performance } from 'node:perf_hooks';
 
-import { launchBrowser, parseArgs, startView } from '../tests/browser/harness.mjs';
+import { parseArgs } from '../tests/browser/harness.mjs';
+import { openTimedView } from './view_timing.mjs';
 
 const split = process.argv.indexOf('--');
 const viewArgs = process.argv.slice(split + 1);
@@ -22,19 +23,9 @@ const median = (values) => {
   return v[Math.floor(v.length / 2)];
 };
 
-const t0 = performance.now();
-const { url, child } = await startView(args, viewArgs);
-const served = performance.now();
-const browser = await launchBrowser(args);
+const view = await openTimedView(args, viewArgs, { width: 1200, height: 800 });
+const { page, errors } = view;
 try {
-  const page = await browser.newPage();
-  await page.setViewport({ width: 1200, height: 800 });
-  const errors = [];
-  page.on('pageerror', (e) => errors.push(e.message));
-  const t1 = performance.now();
-  await page.goto(url, { waitUntil: 'load' });
-  await page.evaluate(() => window.sphereset.ready);
-  const ready = performance.now();
   const info = await page.evaluate(() => {
     const s = window.sphereset.scene();
     return { links: s.solids.length, spheres: s.solids.reduce((n, x) => n + x.spheres.length, 0),
@@ -61,12 +52,12 @@ try {
   }
   if (errors.length) throw new Error(`page errors: ${errors.join(' | ')}`);
   console.log('robot,links,spheres,serve_s,page_ready_s,interactive_s,edit_median_ms,edit_max_ms,pose_median_ms,pose_max_ms');
-  console.log([viewArgs[0].split('/').pop(), info.links, info.spheres, ((served - t0) / 1000).toFixed(2),
-    ((ready - t1) / 1000).toFixed(2), ((ready - t0) / 1000 - (t1 - served) / 1000).toFixed(2),
+  console.log([viewArgs[0].split('/').pop(), info.links, info.spheres, view.serve_s.toFixed(2),
+    view.ready_s.toFixed(2), view.interactive_s.toFixed(2),
     median(edits).toFixed(0), Math.max(...edits).toFixed(0), median(poses).toFixed(0),
     Math.max(...poses).toFixed(0)].join(','));
 } finally {
-  await browser.close();
-  child.kill();
+  await view.browser.close();
+  view.child.kill();
 }
 process.exit(0);
