@@ -34,12 +34,7 @@ export class FitPanel {
     const app = this.app;
     if (this.running) throw new Error('a fit is running');
     const body = { ...request, quality: $('fit-quality').value };
-    const count = body.spheres !== undefined ? body.spheres : body.budget;
-    if (!Number.isInteger(count) || count < 1) {
-      const message = `the ${body.budget !== undefined ? 'budget' : 'sphere count'} must be a whole number of at least 1`;
-      panels.showMessage(message, 'error');
-      throw new Error(message);
-    }
+    // The counts are checked by the server (startViewFit), which says what is wrong.
     const before = app.scene.solids.map((s) => s.spheres.map((x) => x.slice()));
     await app.run(() => app.api.fit(body));
     this.running = true;
