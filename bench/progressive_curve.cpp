@@ -2,9 +2,10 @@
 // or with --repair made a solid as `sphereset fit` makes it, its original triangles bounded too),
 // the default fit (fitPreset) at each count of COUNTS, then one progressive run through the
 // same counts with the options of the largest (--only-progressive: the run alone). One CSV row
-// per (method, count): E_r (outside volume over the solid's volume), the certified protrusion
-// over the bounding-box diagonal (with --protrusion; -1 without), the fit's seconds and, for the
-// progressive run, the seconds since its start (sampling included, the checks not).
+// per (method, count), with the mesh and the seed: E_r (outside volume over the solid's volume),
+// the certified protrusion over the bounding-box diagonal (with --protrusion; -1 without), the
+// fit's seconds and, for the progressive run, the seconds since its start (sampling included, the
+// checks not).
 //
 //   progressive_curve MESH [--counts 8,16,32,64] [--seed 1] [--quality default] [--protrusion]
 //                          [--only-progressive] [--repair]
@@ -27,7 +28,7 @@ using namespace sphereset;
 namespace {
 
 constexpr const char* kHeader =
-    "mesh,method,n,er_sum,protrusion_of_diagonal,fit_s,run_s,covered";
+    "mesh,seed,method,n,er_sum,protrusion_of_diagonal,fit_s,run_s,covered";
 
 int die(const std::string& m) {
   std::fprintf(stderr, "progressive_curve: %s\n", m.c_str());
@@ -98,8 +99,10 @@ int main(int argc, char** argv) {
     }
   }
   RepairOptions ro;
-  if (repair) ro.operations = cgalSolidOperations();
-  else ro.enabled = false;
+  if (repair)
+    ro.operations = cgalSolidOperations();
+  else
+    ro.enabled = false;
   auto solid = loadSolid(path, ro);
   if (!solid) return die(solid.error().message);
   const SolidIndex index(solid->repair.solid);
@@ -114,8 +117,9 @@ int main(int argc, char** argv) {
     auto f = fitSpheres(index, fo);
     if (!f) return die(name + ": " + f.error().message);
     const Row r = judge(index, f->spheres, f->energy, volume, protrusion, original);
-    std::printf("%s,independent,%d,%.6g,%.6g,%.4f,%.4f,%d\n", name.c_str(), n, r.er,
-                r.protrusion, f->seconds.total, f->seconds.total, r.covered ? 1 : 0);
+    std::printf("%s,%llu,independent,%d,%.6g,%.6g,%.4f,%.4f,%d\n", name.c_str(),
+                static_cast<unsigned long long>(seed), n, r.er, r.protrusion, f->seconds.total,
+                f->seconds.total, r.covered ? 1 : 0);
     std::fflush(stdout);
   }
   const auto t0 = std::chrono::steady_clock::now();
@@ -132,8 +136,9 @@ int main(int argc, char** argv) {
     const auto tj = std::chrono::steady_clock::now();
     const Row r = judge(index, f->spheres, f->energy, volume, protrusion, original);
     judged += secondsSince(tj);
-    std::printf("%s,progressive,%d,%.6g,%.6g,%.4f,%.4f,%d\n", name.c_str(), n, r.er,
-                r.protrusion, f->seconds.total, run_s, r.covered ? 1 : 0);
+    std::printf("%s,%llu,progressive,%d,%.6g,%.6g,%.4f,%.4f,%d\n", name.c_str(),
+                static_cast<unsigned long long>(seed), n, r.er, r.protrusion, f->seconds.total,
+                run_s, r.covered ? 1 : 0);
     std::fflush(stdout);
   }
   return 0;
