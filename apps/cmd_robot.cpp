@@ -135,9 +135,8 @@ void printSummary(const RobotFitResult& r, const CollisionMatrix& m, double seco
                      j.limit_met ? "met" : "NOT met");
   if (r.budget_split)
     std::fprintf(stderr,
-                 "budget: outside volume %.6g of the links it split (split by curves %.6g, "
-                 "even split %.6g)\n",
-                 r.outside_volume, r.split_outside_volume, r.even_outside_volume);
+                 "budget: outside volume %.6g of the links it split (split by curves %.6g)\n",
+                 r.outside_volume, r.split_outside_volume);
   std::fprintf(stderr,
                "E_r is against each link's fitted solid: its envelope when openings is above 0 "
                "(openings narrower than that closed, the hollow behind them inside), else its "

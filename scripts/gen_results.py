@@ -96,7 +96,7 @@ CLASSES = {
         name="RobotFitResult",
         doc='''A whole robot fitted (robot_fit.hpp's RobotFitResult): ``links`` in the robot's order
     (the links with geometry); with a budget, the total outside volume as chosen and for the
-    curve split and the even split alone.''',
+    curve split alone.''',
         before=[("robot", "str", "the robot's name"), ("urdf", "str", "the URDF read"),
                 ("links", "List[RobotLinkFit]", "the links with geometry, in order")],
         after=[],

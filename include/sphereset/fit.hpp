@@ -257,6 +257,11 @@ struct ProgressiveOptions {
   // through 1, 2, 3, 4, 6, ... 64: E_r 0.83 at 64 with 1, 0.17 with 2); 1 suits a few counts
   // next to each other started from one settled clustering (the robot's candidates).
   int start_ratio = 2;
+  // Whether a count that start()'s warm_from clustered is taken as it is (only ended with this
+  // run's options) or clustered by this run from the largest count below it: a quick run's
+  // clustering taken as it is ends as a quick fit (docs/benchmarks.md, "The robot budget with
+  // progressive curves").
+  bool adopt = true;
 };
 
 class ProgressiveFit {
@@ -280,14 +285,14 @@ class ProgressiveFit {
 
   // The fit at `count` spheres (1 to maxCount()), as fitSpheres ends one (bound, shrinking,
   // refinement, padding). Its clustering starts from a clustering of a smaller count
-  // (ProgressiveOptions::start_ratio): the clusters whose split in two lowers the outside volume most
-  // are split (2-means, both halves refitted) until there are `count`, then the rounds and
+  // (ProgressiveOptions::start_ratio): the clusters whose split in two lowers the outside volume
+  // most are split (2-means, both halves refitted) until there are `count`, then the rounds and
   // teleports of the clustering run again (fewer of them than a fit from seeds gets). A count
   // fitted before returns its fit again (split_first and seconds those of its first call); with
   // no clustering to start from, the clustering starts from seeds as fitSpheres does (the same
-  // spheres when the run's points are that count's: up to 50 spheres by default). Every count clusters the points of a fit at options.num_spheres,
-  // sampled by start(). The same calls in the same order give the same spheres for any thread count.
-  // FitResult::seconds is this call's.
+  // spheres when the run's points are that count's: up to 50 spheres by default). Every count
+  // clusters the points of a fit at options.num_spheres, sampled by start(). The same calls in the
+  // same order give the same spheres for any thread count. FitResult::seconds is this call's.
   // Errors: kInvalidArgument for a count out of range or clusters that cannot all be placed.
   // options.progress is called as fitSpheres calls it (FitProgress::spheres = count), and may
   // throw to cancel.
@@ -296,8 +301,8 @@ class ProgressiveFit {
   // protrusion (evaluate.hpp) to lower the set's; kInvalidArgument when its size does not match
   // or the fit would not start from a smaller count.
   Expected<FitResult> fit(int count, std::span<const double> split_first = {});
-  // The count fit(count) starts from: `count` itself if clustered, else the largest smaller
-  // count clustered, or 0 (from seeds).
+  // The count fit(count) starts from: `count` itself if clustered (by warm_from only when
+  // ProgressiveOptions::adopt), else the largest smaller count clustered, or 0 (from seeds).
   int startCount(int count) const;
   int maxCount() const;
 

@@ -48,11 +48,6 @@ LinkFitCurve curveEnvelope(const LinkFitCurve& curve);
 Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& curves,
                                        const std::vector<int>& fixed, int budget);
 
-// The counts of an even split: `budget` spread over the free links (fixed[i] < 0) as evenly as
-// possible, the remainder one each to the first free links; fixed links keep theirs. Errors as
-// splitBudget's.
-Expected<std::vector<int>> evenSplit(const std::vector<int>& fixed, int budget);
-
 // One fitted candidate for a link: its sphere count and the outside volume the fit measured.
 struct LinkCandidate {
   int count = 0;
@@ -63,7 +58,8 @@ struct LinkCandidate {
 // `budget` and the total outside volume is least (exact, by dynamic programming over the
 // totals reachable; ties go to the smaller total count, then to earlier candidates). Returns
 // the index chosen per link. The robot command fits each link at the count of the curve split
-// and of the even split and picks between them, so its total is never worse than either.
+// and at counts either side of it and picks among them, so its total is never worse than the
+// split's.
 // Errors (kInvalidArgument): an empty list, or no choice within the budget.
 Expected<std::vector<int>> pickCandidates(const std::vector<std::vector<LinkCandidate>>& candidates,
                                           int budget);
@@ -153,10 +149,10 @@ struct RobotLinkFit {
   EvalResult eval;                 // when fitted: of the fitted spheres, before padding
   double outside_volume = 0.0;     // Σ outside volume of the fitted spheres, before padding
   double padding = 0.0;
-  LinkFitCurve curve;                            // under a budget: the quick fits' outside volumes
-  int split_count = -1, even_count = -1;         // under a budget: both splits' counts...
-  double split_volume = 0.0, even_volume = 0.0;  // ...and their fits' outside volumes
-  double seconds = 0.0;                          // fitting (all its fits), without repair
+  LinkFitCurve curve;             // under a budget: the quick fits' outside volumes
+  int split_count = -1;           // under a budget: the curve split's count...
+  double split_volume = 0.0;      // ...and its fit's outside volume
+  double seconds = 0.0;           // fitting (all its fits), without repair
   double protrusion_limit = 0.0;  // its limit (max_protrusion or link_max_protrusion; 0: none)
   bool limit_met = true;          // covered and within its limit (true without a limit)
 };
@@ -164,8 +160,8 @@ struct RobotLinkFit {
 struct RobotFitResult {
   std::vector<RobotLinkFit> links;  // the links with geometry, in the robot's order
   bool budget_split = false;        // some link's count came from the budget
-  // Totals over the links the budget split: as chosen, and for each split alone.
-  double outside_volume = 0.0, split_outside_volume = 0.0, even_outside_volume = 0.0;
+  // Totals over the links the budget split: as chosen, and for the curve split alone.
+  double outside_volume = 0.0, split_outside_volume = 0.0;
   bool tolerance = false;     // some link had a protrusion limit...
   bool tolerance_met = true;  // ...and every such link met it
   double seconds = 0.0;

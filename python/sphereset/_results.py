@@ -285,10 +285,6 @@ class RobotLinkFit:
     """the curve split's count (-1: no budget)"""
     split_volume: float
     """its fit's outside volume"""
-    even_count: int
-    """the even split's count (-1: no budget)"""
-    even_volume: float
-    """its fit's outside volume"""
     seconds: float
     """seconds fitting the link (all its fits), without repair"""
     protrusion_limit: float
@@ -309,7 +305,7 @@ class RobotLinkFit:
 class RobotFitResult:
     """A whole robot fitted (robot_fit.hpp's RobotFitResult): ``links`` in the robot's order
     (the links with geometry); with a budget, the total outside volume as chosen and for the
-    curve split and the even split alone."""
+    curve split alone."""
 
     robot: str
     """the robot's name"""
@@ -323,8 +319,6 @@ class RobotFitResult:
     """Σ outside volume of the links the budget split"""
     split_outside_volume: float
     """the same for the curve split alone"""
-    even_outside_volume: float
-    """the same for the even split alone"""
     tolerance: bool
     """some link had a protrusion limit"""
     tolerance_met: bool

@@ -190,23 +190,22 @@ Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const Fi
 
 namespace {
 
-// The count a fit at `count` starts from: `count` itself when clustered (adopted), else the
+// The count a fit at `count` starts from: `count` itself when clustered and `adopt`, else the
 // largest clustered count below it and at most count / ratio, else 0 (from seeds).
-int startFrom(const std::map<int, detail::Clustering>& done, int count, int ratio) {
-  if (done.contains(count)) return count;
+int startFrom(const std::map<int, detail::Clustering>& done, int count, int ratio, bool adopt) {
+  if (adopt && done.contains(count)) return count;
   auto above = done.upper_bound(ratio <= 1 ? count - 1 : count / ratio);
   return above == done.begin() ? 0 : std::prev(above)->first;
 }
 
-// The clustering of `count` spheres: the one adopted from another run (start's warm_from) if
-// there is one, else from seeds when no smaller count was clustered, else from the largest
-// smaller count's, split (splitClusters) and clustered again.
+// The clustering of `count` spheres: the one another run (start's warm_from) made, taken as it
+// is (ProgressiveOptions::adopt); else from seeds when no smaller count was clustered; else from
+// the largest smaller count's, split (splitClusters) and clustered again.
 detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet& ps,
-                                const std::map<int, detail::Clustering>& done, int count, int ratio,
-                                std::span<const double> split_first, const FitOptions& o,
-                                FitResult* res, detail::ProgressScope* scope) {
+                                const std::map<int, detail::Clustering>& done, int count, int from,
+                                const ProgressiveOptions& po, std::span<const double> split_first,
+                                const FitOptions& o, FitResult* res, detail::ProgressScope* scope) {
   const auto progress = [&](int it, double e) { scope->report("clustering", it, e); };
-  const int from = startFrom(done, count, ratio);
   if (from == count) return done.at(count);  // adopted
   if (from == 0) {
     scope->report("clustering", 0, 0.0);
@@ -219,15 +218,18 @@ detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet&
   if (static_cast<int>(split.spheres.size()) != count) return {};
   FitOptions warm = o;
   warm.max_iterations = std::min(o.max_iterations, kWarmRounds);
-  const int teleports = ratio <= 1 ? std::min(o.max_failed_teleports, kSettledFailedTeleports)
-                                   : o.max_failed_teleports;
+  const int teleports = po.start_ratio <= 1
+                            ? std::min(o.max_failed_teleports, kSettledFailedTeleports)
+                            : o.max_failed_teleports;
   return detail::clusterFrom(index, ps, std::move(split), warm, teleports, res, progress);
 }
 
 }  // namespace
 
 int ProgressiveFit::startCount(int count) const {
-  return startFrom(impl_->clusterings, count, impl_->progressive.start_ratio);
+  if (impl_->fits.contains(count)) return count;  // clustered by this run
+  return startFrom(impl_->clusterings, count, impl_->progressive.start_ratio,
+                   impl_->progressive.adopt);
 }
 
 Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split_first) {
@@ -250,8 +252,8 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
     return Error{ErrorCode::kInvalidArgument,
                  "split_first needs one value per sphere of the count the fit starts from (" +
                      std::to_string(from) + ")"};
-  detail::Clustering c = clusterCount(m.index, m.ps, m.clusterings, count,
-                                      m.progressive.start_ratio, split_first, o, &res, &scope);
+  detail::Clustering c = clusterCount(m.index, m.ps, m.clusterings, count, from, m.progressive,
+                                      split_first, o, &res, &scope);
   res.converged = c.converged;
   if (c.spheres.empty())
     return Error{ErrorCode::kInvalidArgument,

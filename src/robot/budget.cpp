@@ -143,27 +143,6 @@ Expected<std::vector<int>> splitBudget(const std::vector<LinkFitCurve>& measured
   return count;
 }
 
-Expected<std::vector<int>> evenSplit(const std::vector<int>& fixed, int budget) {
-  int free_links = 0, used = 0;
-  for (int f : fixed) {
-    free_links += f < 0;
-    used += f >= 0 ? f : 1;
-  }
-  if (used > budget) return budgetError(budget, used);
-  std::vector<int> count(fixed.size(), 0);
-  const int spare = budget - (used - free_links);  // spheres for the free links
-  int k = 0;
-  for (size_t i = 0; i < fixed.size(); ++i) {
-    if (fixed[i] >= 0) {
-      count[i] = fixed[i];
-      continue;
-    }
-    count[i] = spare / free_links + (k < spare % free_links ? 1 : 0);
-    ++k;
-  }
-  return count;
-}
-
 Expected<std::vector<int>> pickCandidates(const std::vector<std::vector<LinkCandidate>>& cand,
                                           int budget) {
   // Layer i maps each total count reachable with links [0, i) to the least outside volume

@@ -1,15 +1,17 @@
 // fitRobot: collision spheres for every link of a robot (robot_fit.hpp). Each link's collision
 // geometry (visual when it has none) is one solid (linkSolid), fitted like a mesh file; sphere
 // primitives stay exact spheres. Counts: fixed per link, or a budget split over the links by
-// marginal gain on quick fits at a few counts (budget.cpp), checked against an even split by
-// fitting both (pickCandidates). Links are prepared and fitted in parallel; every fit gives the
-// same spheres for any thread count, and so does the whole.
+// marginal gain on quick fits at a few counts (budget.cpp), then each link fitted at the split's
+// count and counts either side of it, the best combination kept (pickCandidates). Links are
+// prepared and fitted in parallel; every fit gives the same spheres for any thread count, and so
+// does the whole.
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -17,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "robot/largest_first.hpp"
 #include "robot/link_keys.hpp"
 #include "robot/protrusion_split.hpp"
 #include "sphereset/limits.hpp"
@@ -34,12 +37,15 @@ namespace {
 // progressive run (each warm-started from the count below it). On the Kinova at a budget of 60,
 // seeds 1 to 3: spread 1 (step 1) lost 4 % of outside volume to spread 2; spread 2 with step 2
 // (the split's count and 2 either side) took 0.86 of the time of step 1 for 1.3 % more outside
-// volume (docs/benchmarks.md, "The robot budget with progressive curves").
+// volume. The count of an even split (the budget shared alike) is no candidate: it took 8 % of
+// the time for 0.8 % less outside volume (docs/benchmarks.md, "The robot budget with progressive
+// curves").
 constexpr int kCandidateSpread = 2;
 constexpr int kCandidateStep = 2;
 // Sphere counts at which each free link is fitted to measure its curve for the budget split: up
-// to the first at or above kCurveReach times the even split's share (beyond it the split
-// extrapolates the last piece of the curve, budget.cpp), and never above the budget.
+// to the first at or above kCurveReach times the even share (the budget over the free links;
+// beyond it the split extrapolates the last piece of the curve, budget.cpp), and never above the
+// budget.
 constexpr int kCurveCounts[] = {1, 2, 4, 8, 16, 32};
 constexpr double kCurveReach = 2.0;
 // The curve fits are quick ones: fewer points and rounds than the final fit (each count of the
@@ -64,12 +70,11 @@ struct Job {
   // Under a budget: the curve's progressive run, whose clusterings the link's fits start from.
   std::unique_ptr<ProgressiveFit> curve_run;
   int count = 0;         // the count chosen
-  int split_count = -1;  // under a budget: the curve split's count and the even split's
-  int even_count = -1;
+  int split_count = -1;  // under a budget: the curve split's count
   std::vector<Sphere> spheres;
   EvalResult eval;
   double outside_volume = 0.0;  // of the chosen fit (Σ over its spheres, before padding)
-  double split_volume = 0.0, even_volume = 0.0;  // of the fits at split_count and even_count
+  double split_volume = 0.0;    // of the fit at split_count
   double seconds = 0.0;
 };
 
@@ -161,7 +166,16 @@ Expected<std::vector<Job>> prepareLinks(const RobotFitOptions& o, const Robot& r
   const double reach = curves ? kCurveReach * o.budget / static_cast<double>(free_links) : 0.0;
   StepReporter steps(o, "link curves", free_links);
   std::vector<Status> status(jobs.size());
-  tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t i) {
+  // The largest mesh files first (their repairs are single-threaded).
+  std::vector<double> bytes(jobs.size(), 0.0);
+  for (size_t i = 0; i < jobs.size(); ++i)
+    for (const LinkGeometry& g : jobs[i].link->geometry) {
+      if (g.kind != LinkGeometry::Kind::kMesh) continue;
+      std::error_code ec;
+      const auto size = std::filesystem::file_size(g.mesh_path, ec);
+      if (!ec) bytes[i] += static_cast<double>(size);
+    }
+  detail::forEachLargestFirst(bytes, [&](size_t i) {
     Job& j = jobs[i];
     const RobotLink& link = *j.link;
     const std::string name = o.name + ": link '" + link.name + "'";
@@ -190,7 +204,7 @@ Expected<std::vector<Job>> prepareLinks(const RobotFitOptions& o, const Robot& r
   return jobs;
 }
 // The sphere counts: fixed links, then, under a budget, the split by measured curves
-// (split_count) and the even split (even_count); the fits decide between them (fitLinks).
+// (split_count); the fits decide around it (fitLinks).
 Status chooseCounts(const RobotFitOptions& o, std::vector<Job>* jobs) {
   bool any_free = false;
   for (Job& j : *jobs) {
@@ -228,15 +242,10 @@ Status chooseCounts(const RobotFitOptions& o, std::vector<Job>* jobs) {
   };
   auto split = splitBudget(curves, fixed, o.budget - primitives);
   if (!split) return budgetError(split.error());
-  auto even = evenSplit(fixed, o.budget - primitives);
-  if (!even) return budgetError(even.error());
   for (size_t i = 0; i < jobs->size(); ++i) {
     Job& j = (*jobs)[i];
     j.count = (*split)[i];
-    if (j.fixed < 0) {
-      j.split_count = (*split)[i];
-      j.even_count = (*even)[i];
-    }
+    if (j.fixed < 0) j.split_count = (*split)[i];
   }
   return {};
 }
@@ -286,7 +295,15 @@ std::vector<LinkFit> fitCandidates(const RobotFitOptions& o, const std::vector<J
   std::vector<std::vector<size_t>> of_link(jobs.size());
   for (size_t t = 0; t < tasks.size(); ++t) of_link[tasks[t].first].push_back(t);
   StepReporter steps(o, "link fits", static_cast<int64_t>(tasks.size()));
-  tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t i) {
+  // The costliest links first: triangles times the spheres of all their fits.
+  std::vector<double> cost(jobs.size(), 0.0);
+  for (size_t t = 0; t < tasks.size(); ++t) {
+    const Job& j = jobs[tasks[t].first];
+    if (j.index)
+      cost[tasks[t].first] +=
+          static_cast<double>(j.index->mesh().triangles.size()) * tasks[t].second;
+  }
+  detail::forEachLargestFirst(cost, [&](size_t i) {
     const Job& j = jobs[i];
     std::vector<size_t>& mine = of_link[i];
     std::unique_ptr<ProgressiveFit> run;
@@ -298,7 +315,8 @@ std::vector<LinkFit> fitCandidates(const RobotFitOptions& o, const std::vector<J
         // Counts next to each other from the curve's settled clustering: each from the one
         // below it (on the Kinova at 60, seeds 1-3: 3.5 % less outside volume than from at
         // most half, in 0.87 times the time).
-        if (auto r = ProgressiveFit::start(*j.index, top, j.curve_run.get(), {.start_ratio = 1}))
+        if (auto r = ProgressiveFit::start(*j.index, top, j.curve_run.get(),
+                                           {.start_ratio = 1, .adopt = false}))
           run = std::make_unique<ProgressiveFit>(std::move(r).value());
     }
     for (size_t t : mine) {
@@ -309,22 +327,20 @@ std::vector<LinkFit> fitCandidates(const RobotFitOptions& o, const std::vector<J
   });
   return fits;
 }
-// Fits every link at its count, and free links under a budget at the curve split's count, the
-// even split's and those kCandidateStep apart within kCandidateSpread of the split's
-// (fitCandidates); then keeps, per
-// link, the fit of whichever count gives the least total outside volume within the budget
-// (pickCandidates), so the result is never worse than either split. Fails with the first error
-// in link order.
+// Fits every link at its count, and free links under a budget at the curve split's count and
+// those kCandidateStep apart within kCandidateSpread of it (fitCandidates); then keeps, per link,
+// the fit of whichever count gives the least total outside volume within the budget
+// (pickCandidates), so the result is never worse than the split's. Fails with the first error in
+// link order.
 Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
   std::vector<std::pair<size_t, int>> tasks;  // (link, count)
   for (size_t i = 0; i < jobs->size(); ++i) {
     const Job& j = (*jobs)[i];
     if (j.decided) continue;
     tasks.emplace_back(i, j.count);
-    if (j.even_count >= 0 && j.even_count != j.count) tasks.emplace_back(i, j.even_count);
     if (j.split_count < 0) continue;
     for (int k = j.count - kCandidateSpread; k <= j.count + kCandidateSpread; k += kCandidateStep)
-      if (k >= 1 && k != j.count && k != j.even_count) tasks.emplace_back(i, k);
+      if (k >= 1 && k != j.count) tasks.emplace_back(i, k);
   }
   std::vector<LinkFit> fits = fitCandidates(o, *jobs, tasks);
   for (size_t t = 0; t < tasks.size(); ++t)
@@ -346,13 +362,10 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
   for (const Job& j : *jobs) budget += j.decided ? 0 : j.count;
   auto pick = pickCandidates(cand, budget);
   if (!pick) return pick.error();
-  // What each split would have cost, for the report.
+  // What the split would have cost, for the report.
   for (size_t i = 0; i < jobs->size(); ++i)
-    for (size_t t : fit_of[i]) {
-      Job& j = (*jobs)[i];
-      if (fits[t].count == j.split_count) j.split_volume = fits[t].outside_volume;
-      if (fits[t].count == j.even_count) j.even_volume = fits[t].outside_volume;
-    }
+    for (size_t t : fit_of[i])
+      if (fits[t].count == (*jobs)[i].split_count) (*jobs)[i].split_volume = fits[t].outside_volume;
   // eval's certificates of the fits kept only, the links in parallel.
   std::vector<std::string> error(jobs->size());
   tbb::parallel_for(size_t{0}, jobs->size(), [&](size_t i) {
@@ -507,9 +520,7 @@ Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) 
     l.padding = j.padding;
     l.curve = std::move(j.curve);
     l.split_count = j.split_count;
-    l.even_count = j.even_count;
     l.split_volume = j.split_volume;
-    l.even_volume = j.even_volume;
     l.seconds = j.seconds;
     l.protrusion_limit = j.limit;
     l.limit_met = j.limit_met;
@@ -521,7 +532,6 @@ Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) 
       res.budget_split = true;
       res.outside_volume += l.outside_volume;
       res.split_outside_volume += l.split_volume;
-      res.even_outside_volume += l.even_volume;
     }
     res.links.push_back(std::move(l));
   }

@@ -107,7 +107,7 @@ set_tests_properties(cli.robot_same_on_any_thread_count PROPERTIES
                      DEPENDS "cli.robot_one_thread;cli.robot_two_threads")
 cli_test(robot_budget_summary 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --budget 12 --quality fast -o ${work}/three_budget.yml
-         STDERR "budget: outside volume [0-9.e-]+ of the links it split .split by curves [0-9.e-]+, even split [0-9.e-]+.")
+         STDERR "budget: outside volume [0-9.e-]+ of the links it split .split by curves [0-9.e-]+.")
 
 # Several outputs of one fit; the self-collision pairs by sampling the joint space.
 cli_test(robot_srdf 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot} --quality fast

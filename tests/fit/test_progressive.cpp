@@ -171,6 +171,32 @@ TEST(ProgressiveFit, WarmFromAdoptsAnotherRunsClusterings) {
   EXPECT_FALSE(ProgressiveFit::start(other, quickOptions(8), &*quick).ok());  // another solid
 }
 
+TEST(ProgressiveFit, WithoutAdoptingACountIsClusteredAgainFromTheOneBelow) {
+  const Mesh link = test::robotLink();
+  const SolidIndex idx(link);
+  auto quick = ProgressiveFit::start(idx, quickOptions(8));
+  ASSERT_TRUE(quick.ok());
+  ASSERT_TRUE(quick->fit(2).ok());
+  auto quick4 = quick->fit(4);
+  ASSERT_TRUE(quick4.ok());
+  FitOptions full = fitPreset(8);
+  full.seed = 3;
+  auto adopting = ProgressiveFit::start(idx, full, &*quick, {.start_ratio = 1});
+  auto own = ProgressiveFit::start(idx, full, &*quick, {.start_ratio = 1, .adopt = false});
+  ASSERT_TRUE(adopting.ok() && own.ok());
+  EXPECT_EQ(adopting->startCount(4), 4);
+  EXPECT_EQ(own->startCount(4), 2);  // the quick run's 4 is a start for 5 and up only
+  auto taken = adopting->fit(4);
+  auto clustered = own->fit(4);
+  ASSERT_TRUE(taken.ok() && clustered.ok());
+  EXPECT_EQ(taken->iterations, 0);  // only ended
+  EXPECT_GT(clustered->iterations, 0);
+  EXPECT_EQ(clustered->points, taken->points);  // this run's points, not the quick run's
+  EXPECT_EQ(test::uncoveredSurfacePoints(link, clustered->spheres, 20), 0);
+  EXPECT_EQ(own->startCount(4), 4);  // its own now
+  EXPECT_EQ(own->startCount(6), 4);
+}
+
 TEST(ProgressiveFit, SplitFirstSplitsTheSpheresGiven) {
   // From 4 to 5 spheres, each of the four singled out in turn: the split goes where it is told,
   // so the fits differ (ignored, all four would be the same fit), and each bounds the solid.

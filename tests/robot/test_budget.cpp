@@ -147,13 +147,6 @@ TEST(RobotBudget, SplitUsesTheEnvelopeNotTheNoise) {
   EXPECT_GE((*s)[0], 4);
 }
 
-TEST(RobotBudget, EvenSplitSpreadsTheRemainderOverTheFirstFreeLinks) {
-  auto s = evenSplit({-1, 2, -1, -1}, 13);  // 11 for three free links: 4, 4, 3
-  ASSERT_TRUE(s.ok());
-  EXPECT_EQ(*s, (std::vector<int>{4, 2, 4, 3}));
-  EXPECT_FALSE(evenSplit({5, -1}, 5).ok());
-}
-
 // Brute force over every combination: the least total outside volume within the budget.
 double bestByEnumeration(const std::vector<std::vector<LinkCandidate>>& cand, int budget) {
   double best = std::numeric_limits<double>::infinity();

@@ -41,7 +41,7 @@ const RobotLinkFit* find(const RobotFitResult& r, const std::string& link) {
   return nullptr;
 }
 
-TEST(FitRobot, BudgetIsKeptEveryLinkCoveredAndNeitherSplitBeaten) {
+TEST(FitRobot, BudgetIsKeptEveryLinkCoveredAndTheSplitNotBeaten) {
   const Robot robot = test::threeLinkRobot();
   RobotFitOptions o = fastOptions();
   o.budget = 12;
@@ -58,7 +58,6 @@ TEST(FitRobot, BudgetIsKeptEveryLinkCoveredAndNeitherSplitBeaten) {
   }
   EXPECT_LE(total, 12u);
   EXPECT_LE(r->outside_volume, r->split_outside_volume * (1 + 1e-12));
-  EXPECT_LE(r->outside_volume, r->even_outside_volume * (1 + 1e-12));
   // The tool link is one sphere primitive, kept exact.
   const RobotLinkFit* tool = find(*r, "tool");
   ASSERT_NE(tool, nullptr);
