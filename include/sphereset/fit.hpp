@@ -258,9 +258,9 @@ struct ProgressiveOptions {
   // next to each other started from one settled clustering (the robot's candidates).
   int start_ratio = 2;
   // Whether a count that start()'s warm_from clustered is taken as it is (only ended with this
-  // run's options) or clustered by this run from the largest count below it: a quick run's
-  // clustering taken as it is ends as a quick fit (docs/benchmarks.md, "The robot budget with
-  // progressive curves").
+  // run's options) or clustered by this run, started as start_ratio says from a smaller count:
+  // a quick run's clustering taken as it is ends as a quick fit (docs/benchmarks.md, "The robot
+  // budget with progressive curves").
   bool adopt = true;
 };
 
@@ -275,7 +275,8 @@ class ProgressiveFit {
   // With `warm_from` (a run on the same solid, e.g. a quicker one), its clusterings are this
   // run's as if it had made them (their clusters are positions, so they carry over to this
   // run's points): a count it clustered is only ended (bound, refinement...) with this run's
-  // options, and larger counts start from them; its fits are not taken.
+  // options (ProgressiveOptions::adopt; else clustered again), and larger counts start from
+  // them; its fits are not taken.
   static Expected<ProgressiveFit> start(const SolidIndex& index, const FitOptions& options,
                                         const ProgressiveFit* warm_from = nullptr,
                                         const ProgressiveOptions& progressive = {});
@@ -302,7 +303,8 @@ class ProgressiveFit {
   // or the fit would not start from a smaller count.
   Expected<FitResult> fit(int count, std::span<const double> split_first = {});
   // The count fit(count) starts from: `count` itself if clustered (by warm_from only when
-  // ProgressiveOptions::adopt), else the largest smaller count clustered, or 0 (from seeds).
+  // ProgressiveOptions::adopt), else the largest smaller count clustered within
+  // ProgressiveOptions::start_ratio, or 0 (from seeds).
   int startCount(int count) const;
   int maxCount() const;
 

@@ -169,7 +169,7 @@ struct RobotFitResult {
 
 // The results as field lists (result_fields.hpp), for `sphereset robot --json` and Python's
 // RobotLinkFit/RobotFitResult: a link's counts, flags, E_r, outside volume, padding, budget
-// curve and both splits (-1 and 0 where they do not apply); the robot's totals.
+// curve and the curve split (-1 and 0 where they do not apply); the robot's totals.
 std::vector<ResultField> robotLinkFields(const RobotLinkFit& link);
 std::vector<ResultField> robotFitFields(const RobotFitResult& result);
 

@@ -8,19 +8,17 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "robot/largest_first.hpp"
 #include "robot/link_keys.hpp"
+#include "robot/link_tasks.hpp"
 #include "robot/protrusion_split.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/robot_fit.hpp"
@@ -88,24 +86,6 @@ struct LinkFit {
   std::string error;
 };
 
-// RobotFitOptions::steps, one call at a time, counting the units done.
-class StepReporter {
- public:
-  StepReporter(const RobotFitOptions& o, std::string stage, int64_t total)
-      : o_(o), stage_(std::move(stage)), total_(total) {}
-  void done(const std::string& link) {
-    if (!o_.steps) return;
-    std::lock_guard<std::mutex> lock(mutex_);
-    o_.steps(RobotProgress{stage_, ++done_, total_, link});
-  }
-
- private:
-  const RobotFitOptions& o_;
-  std::string stage_;
-  int64_t total_, done_ = 0;
-  std::mutex mutex_;
-};
-
 FitOptions linkFitOptions(const RobotFitOptions& o, const Job& j, int n, bool quick) {
   // The quality presets of `fit` (fit.hpp); the curve fits are quick ones: the fast preset
   // with fewer points and rounds, and without the coverage-aware refinement (refine.cpp): the
@@ -164,7 +144,7 @@ Expected<std::vector<Job>> prepareLinks(const RobotFitOptions& o, const Robot& r
     }
   const bool curves = o.budget > 0 && free_links > 0 && !o.toleranceActive();
   const double reach = curves ? kCurveReach * o.budget / static_cast<double>(free_links) : 0.0;
-  StepReporter steps(o, "link curves", free_links);
+  detail::StepReporter steps(o, "link curves", free_links);
   std::vector<Status> status(jobs.size());
   // The largest mesh files first (their repairs are single-threaded).
   std::vector<double> bytes(jobs.size(), 0.0);
@@ -294,7 +274,7 @@ std::vector<LinkFit> fitCandidates(const RobotFitOptions& o, const std::vector<J
   std::vector<LinkFit> fits(tasks.size());
   std::vector<std::vector<size_t>> of_link(jobs.size());
   for (size_t t = 0; t < tasks.size(); ++t) of_link[tasks[t].first].push_back(t);
-  StepReporter steps(o, "link fits", static_cast<int64_t>(tasks.size()));
+  detail::StepReporter steps(o, "link fits", static_cast<int64_t>(tasks.size()));
   // The costliest links first: triangles times the spheres of all their fits.
   std::vector<double> cost(jobs.size(), 0.0);
   for (size_t t = 0; t < tasks.size(); ++t) {
@@ -314,7 +294,9 @@ std::vector<LinkFit> fitCandidates(const RobotFitOptions& o, const std::vector<J
       if (ProgressiveFit::allows(top))
         // Counts next to each other from the curve's settled clustering: each from the one
         // below it (on the Kinova at 60, seeds 1-3: 3.5 % less outside volume than from at
-        // most half, in 0.87 times the time).
+        // most half, in 0.87 times the time). A count of the curve is clustered again, not
+        // taken as the quick fit's clustering (adopt): at a budget of 30, 3.5 % less outside
+        // volume in 1.11 times the time (docs/benchmarks.md).
         if (auto r = ProgressiveFit::start(*j.index, top, j.curve_run.get(),
                                            {.start_ratio = 1, .adopt = false}))
           run = std::make_unique<ProgressiveFit>(std::move(r).value());
@@ -450,7 +432,8 @@ Status applyProtrusionLimits(const RobotFitOptions& o, std::vector<Job>* jobs) {
       return linkFitOptions(o, *job, n, false);
     };
   }
-  StepReporter steps(o, "link tolerance", o.budget > 0 ? rest : static_cast<int64_t>(links.size()));
+  detail::StepReporter steps(o, "link tolerance",
+                             o.budget > 0 ? rest : static_cast<int64_t>(links.size()));
   auto picks = detail::fitToProtrusion(links, o.budget > 0 ? rest : 0,
                                        [&](const std::string& link, int units) {
                                          for (int u = 0; u < units; ++u) steps.done(link);

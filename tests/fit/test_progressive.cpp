@@ -191,7 +191,6 @@ TEST(ProgressiveFit, WithoutAdoptingACountIsClusteredAgainFromTheOneBelow) {
   ASSERT_TRUE(taken.ok() && clustered.ok());
   EXPECT_EQ(taken->iterations, 0);  // only ended
   EXPECT_GT(clustered->iterations, 0);
-  EXPECT_EQ(clustered->points, taken->points);  // this run's points, not the quick run's
   EXPECT_EQ(test::uncoveredSurfacePoints(link, clustered->spheres, 20), 0);
   EXPECT_EQ(own->startCount(4), 4);  // its own now
   EXPECT_EQ(own->startCount(6), 4);

@@ -1,5 +1,5 @@
 // The whole-robot fit (fitRobot) on the synthetic three-link robot: every fitted link is
-// covered (checked by brute force too), the budget is kept and never loses to either split,
+// covered (checked by brute force too), the budget is kept and never loses to the curve split,
 // fixed and skipped links are honoured, and the result does not depend on the thread count.
 // A long chain of boxes: memory follows the links being fitted, not the links.
 #include <gtest/gtest.h>
