@@ -203,8 +203,8 @@ int startFrom(const std::map<int, detail::Clustering>& done, int count, int rati
 // the largest smaller count's, split (splitClusters) and clustered again.
 detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet& ps,
                                 const std::map<int, detail::Clustering>& done, int count, int from,
-                                const ProgressiveOptions& po, std::span<const double> split_first,
-                                const FitOptions& o, FitResult* res, detail::ProgressScope* scope) {
+                                int ratio, std::span<const double> split_first, const FitOptions& o,
+                                FitResult* res, detail::ProgressScope* scope) {
   const auto progress = [&](int it, double e) { scope->report("clustering", it, e); };
   if (from == count) return done.at(count);  // adopted
   if (from == 0) {
@@ -218,9 +218,8 @@ detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet&
   if (static_cast<int>(split.spheres.size()) != count) return {};
   FitOptions warm = o;
   warm.max_iterations = std::min(o.max_iterations, kWarmRounds);
-  const int teleports = po.start_ratio <= 1
-                            ? std::min(o.max_failed_teleports, kSettledFailedTeleports)
-                            : o.max_failed_teleports;
+  const int teleports = ratio <= 1 ? std::min(o.max_failed_teleports, kSettledFailedTeleports)
+                                   : o.max_failed_teleports;
   return detail::clusterFrom(index, ps, std::move(split), warm, teleports, res, progress);
 }
 
@@ -252,8 +251,8 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
     return Error{ErrorCode::kInvalidArgument,
                  "split_first needs one value per sphere of the count the fit starts from (" +
                      std::to_string(from) + ")"};
-  detail::Clustering c = clusterCount(m.index, m.ps, m.clusterings, count, from, m.progressive,
-                                      split_first, o, &res, &scope);
+  detail::Clustering c = clusterCount(m.index, m.ps, m.clusterings, count, from,
+                                      m.progressive.start_ratio, split_first, o, &res, &scope);
   res.converged = c.converged;
   if (c.spheres.empty())
     return Error{ErrorCode::kInvalidArgument,

@@ -13,11 +13,12 @@
 namespace sphereset {
 namespace {
 
-FitOptions quickOptions(int max_count) {
-  FitOptions o = fitPreset(max_count, FitQuality::kFast);
+FitOptions seededOptions(int max_count, FitQuality quality) {
+  FitOptions o = fitPreset(max_count, quality);
   o.seed = 3;
   return o;
 }
+FitOptions quickOptions(int max_count) { return seededOptions(max_count, FitQuality::kFast); }
 
 TEST(ProgressiveFit, EveryCountBoundsTheSolidWithItsCount) {
   const Mesh torus = test::makeTorus(1.0, 0.3, 24, 12);
@@ -156,8 +157,7 @@ TEST(ProgressiveFit, WarmFromAdoptsAnotherRunsClusterings) {
   auto quick = ProgressiveFit::start(idx, quickOptions(8));
   ASSERT_TRUE(quick.ok());
   ASSERT_TRUE(quick->fit(4).ok());
-  FitOptions full = fitPreset(8);
-  full.seed = 3;
+  const FitOptions full = seededOptions(8, FitQuality::kDefault);
   auto run = ProgressiveFit::start(idx, full, &*quick);
   ASSERT_TRUE(run.ok());
   EXPECT_EQ(run->startCount(4), 4);  // adopted: only ended with this run's options
@@ -179,8 +179,7 @@ TEST(ProgressiveFit, WithoutAdoptingACountIsClusteredAgainFromTheOneBelow) {
   ASSERT_TRUE(quick->fit(2).ok());
   auto quick4 = quick->fit(4);
   ASSERT_TRUE(quick4.ok());
-  FitOptions full = fitPreset(8);
-  full.seed = 3;
+  const FitOptions full = seededOptions(8, FitQuality::kDefault);
   auto adopting = ProgressiveFit::start(idx, full, &*quick, {.start_ratio = 1});
   auto own = ProgressiveFit::start(idx, full, &*quick, {.start_ratio = 1, .adopt = false});
   ASSERT_TRUE(adopting.ok() && own.ok());
