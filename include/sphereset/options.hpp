@@ -16,7 +16,7 @@ namespace sphereset {
 enum class OptionType {
   kInteger,   // a whole number in [min, max]
   kUnsigned,  // a whole number from 0 to 2^64 - 1 (seeds)
-  kReal,      // a finite number in [min, max]
+  kReal,      // a finite number in [min, max] (or (min, max] with above_min)
   kChoice,    // one of `choices`
 };
 
@@ -34,6 +34,9 @@ struct OptionSpec {
   // A word accepted in place of a number on kReal rows ("auto"): the value is kAutomatic and
   // the library chooses it from the input. Null when the row takes numbers only.
   const char* automatic = nullptr;
+  // kReal rows: `min` itself is refused, a value must be above it (limits and tolerances, where
+  // 0 would mean none: the user leaves the option out instead).
+  bool above_min = false;
 };
 // The value of a kReal row given its `automatic` word.
 inline constexpr double kAutomatic = -1.0;
@@ -49,8 +52,9 @@ struct OptionValue {
 
 // `text` parsed and checked as `spec` says. kInvalidArgument "NAME 'TEXT': expected an integer
 // from 1 to 1000000" (or "a number from 0 to 16", "an integer from 0 to 18446744073709551615",
-// "fast, default or best") for anything else, including trailing characters, NaN, infinities,
-// numbers out of range and signs on unsigned values. A keyed row's text is KEY=VALUE (split at the
+// "fast, default or best"; "a number above 0 and at most 1e+30" for an above_min row) for anything
+// else, including trailing characters, NaN, infinities, numbers out of range and signs on unsigned
+// values. A keyed row's text is KEY=VALUE (split at the
 // last '='; KEY not empty): "NAME 'TEXT': expected LINK=VALUE, VALUE an integer from 0 to 10".
 Expected<OptionValue> parseOption(const OptionSpec& spec, const std::string& text);
 

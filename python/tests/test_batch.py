@@ -99,7 +99,7 @@ def test_tolerance_crosses_to_the_workers(tmp_path):
         assert line["spheres"] >= 1 and line["protrusion"] > 0 and line["covered"]
     with pytest.raises(ss.InvalidArgumentError, match="max_er 'nan'"):
         batch.list_items(str(src / "list.csv"), batch.batch_options(max_er=float("nan")))
-    with pytest.raises(ss.InvalidArgumentError, match="max_er '0': a tolerance must be above 0"):
+    with pytest.raises(ss.InvalidArgumentError, match="max_er '0': expected a number above 0"):
         batch.list_items(str(src / "list.csv"), batch.batch_options(max_er=0))
 
 

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "eval/count_search.hpp"
 #include "sphereset/evaluate.hpp"
@@ -35,17 +37,23 @@ constexpr OptionSpec kToleranceOptions[] = {
      0,
      limits::kMaxCoordinate,
      {},
-     "0",
-     "The fewest spheres whose certified protrusion is at most this (a length; with a trailing "
-     "%, a percentage of the bounding-box diagonal); 0: no limit"},
+     "none",
+     "The fewest spheres whose certified protrusion is at most this (a length above 0; with a "
+     "trailing %, a percentage of the bounding-box diagonal)",
+     nullptr,
+     nullptr,
+     true},
     {"max_er",
      "--max-er",
      OptionType::kReal,
      0,
      1e6,
      {},
-     "0",
-     "The fewest spheres whose E_r (summed outside volume / volume) is at most this; 0: no limit"},
+     "none",
+     "The fewest spheres whose E_r (summed outside volume / volume) is at most this (above 0)",
+     nullptr,
+     nullptr,
+     true},
     {"max_spheres",
      "--max-spheres",
      OptionType::kInteger,
@@ -73,12 +81,11 @@ Status setToleranceOption(ToleranceOptions* o, const std::string& name, const st
   const bool percent = name == "max_protrusion" && !value.empty() && value.back() == '%';
   if (percent) value.pop_back();
   auto parsed = parseTableOption(kToleranceOptions, "tolerance", name, value);
+  if (!parsed && percent)  // the message quotes the text as given, its '%' included
+    return Error{parsed.error().code,
+                 "max_protrusion '" + text + "': expected a percentage of the diagonal above 0"};
   if (!parsed) return parsed.error();
   const std::string_view n = parsed->spec->name;
-  if ((n == "max_protrusion" || n == "max_er") && !(parsed->value.real > 0.0))
-    return Error{
-        ErrorCode::kInvalidArgument,
-        std::string(n) + " '" + text + "': a tolerance must be above 0 (leave it out for none)"};
   if (n == "max_protrusion") {
     o->max_protrusion = percent ? 0.0 : parsed->value.real;
     o->max_protrusion_fraction = percent ? parsed->value.real / 100.0 : 0.0;
@@ -103,12 +110,18 @@ Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& 
 Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
                                             const ToleranceOptions& t) {
   const auto t0 = std::chrono::steady_clock::now();
+  // Each limit that is set (0: none), and the cap, as the option's text would be checked.
+  const std::pair<const char*, double> set[] = {{"max_protrusion", t.max_protrusion},
+                                                {"max_protrusion", t.max_protrusion_fraction},
+                                                {"max_er", t.max_er},
+                                                {"max_spheres", t.max_spheres}};
+  for (const auto& [name, value] : set)
+    if (value != 0.0 || std::string_view(name) == "max_spheres")
+      if (Status st = checkTableValue(kToleranceOptions, "tolerance", name, value); !st)
+        return st.error();
   if (!t.active())
     return Error{ErrorCode::kInvalidArgument,
                  "a tolerance search needs max_protrusion or max_er above 0"};
-  if (t.max_spheres < 1 || t.max_spheres > limits::kMaxSpheres)
-    return Error{ErrorCode::kInvalidArgument,
-                 "max_spheres must be from 1 to " + std::to_string(limits::kMaxSpheres)};
   if (Status st = checkFitRequest(request); !st) return st.error();
   if (Status st = checkToleranceRequest(request, t); !st) return st.error();
   const double diag = index.bounds().diagonal();

@@ -66,10 +66,13 @@ constexpr OptionSpec kRobotOptions[] = {
      0,
      limits::kMaxCoordinate,
      {},
-     "0",
-     "The certified protrusion of every fitted link's padded spheres at most this (a length; 0: "
-     "no limit): alone, each link's fewest spheres that meet it; with a budget, the split that "
-     "keeps the worst link furthest under its limit"},
+     "none",
+     "The certified protrusion of every fitted link's padded spheres at most this (a length "
+     "above 0): alone, each link's fewest spheres that meet it; with a budget, the split that "
+     "keeps the worst link furthest under its limit",
+     nullptr,
+     nullptr,
+     true},
     {"link_max_protrusion",
      "--link-max-protrusion",
      OptionType::kReal,
@@ -78,7 +81,9 @@ constexpr OptionSpec kRobotOptions[] = {
      {},
      "none",
      "LINK=D: the link's protrusion limit instead of max_protrusion (above 0); repeatable",
-     "LINK"},
+     "LINK",
+     nullptr,
+     true},
     {"link_solid", "--link-solid", OptionType::kChoice, 0, 0, kLinkSolids, "envelope",
      "envelope: each link's walls with the hollow behind openings up to fill_openings (auto: "
      "the link's smallest extent, where that encloses a hollow) inside, what a planner treats "
@@ -92,15 +97,6 @@ constexpr OptionSpec kRobotOptions[] = {
 }  // namespace
 
 std::span<const OptionSpec> robotFitOptionTable() { return kRobotOptions; }
-
-namespace {
-
-Error zeroLimitError(const std::string& link) {
-  return Error{ErrorCode::kInvalidArgument,
-               "link_max_protrusion: link '" + link + "': a protrusion limit must be above 0"};
-}
-
-}  // namespace
 
 Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std::string& text) {
   auto parsed = parseTableOption(kRobotOptions, "robot", name, text);
@@ -120,16 +116,8 @@ Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std:
   if (n == "link_spheres") o->link_spheres[v.key] = static_cast<int>(v.integer);
   if (n == "padding") o->padding = v.real;
   if (n == "link_padding") o->link_padding[v.key] = v.real;
-  if (n == "max_protrusion") {
-    if (!(v.real > 0.0))
-      return Error{ErrorCode::kInvalidArgument,
-                   "max_protrusion '" + text + "': a limit must be above 0 (leave it out for none)"};
-    o->max_protrusion = v.real;
-  }
-  if (n == "link_max_protrusion") {
-    if (!(v.real > 0.0)) return zeroLimitError(v.key);
-    o->link_max_protrusion[v.key] = v.real;
-  }
+  if (n == "max_protrusion") o->max_protrusion = v.real;
+  if (n == "link_max_protrusion") o->link_max_protrusion[v.key] = v.real;
   const LinkSolid solid = v.choice == "walls" ? LinkSolid::kWalls : LinkSolid::kEnvelope;
   if (n == "link_solid") o->link_solid = solid;
   if (n == "link_solid_for") o->link_solid_for[v.key] = solid;
@@ -158,10 +146,15 @@ Status checkRobotFitOptions(const RobotFitOptions& o) {
   // Each number as its text, through the same parser as every front door's.
   const std::pair<const char*, double> values[] = {{"budget", o.budget},
                                                    {"default_link_spheres", o.default_link_spheres},
-                                                   {"padding", o.padding},
-                                                   {"max_protrusion", o.max_protrusion}};
+                                                   {"padding", o.padding}};
   for (const auto& [name, value] : values)
     if (Status st = checkTableValue(kRobotOptions, "robot", name, value); !st) return st;
+  // max_protrusion 0 is the field's "none" (a user leaves the option out); any other value is
+  // checked as the option's text would be.
+  if (o.max_protrusion != 0.0)
+    if (Status st = checkTableValue(kRobotOptions, "robot", "max_protrusion", o.max_protrusion);
+        !st)
+      return st;
   for (const auto& [link, count] : o.link_spheres)
     if (Status st = checkTableValue(kRobotOptions, "robot", "link_spheres", count, link); !st)
       return st;
@@ -172,7 +165,6 @@ Status checkRobotFitOptions(const RobotFitOptions& o) {
     if (Status st = checkTableValue(kRobotOptions, "robot", "link_max_protrusion", limit, link);
         !st)
       return st;
-    if (!(limit > 0.0)) return zeroLimitError(link);
     if (o.link_spheres.contains(link))
       return Error{ErrorCode::kInvalidArgument, "link '" + link +
                                                     "' has both link_spheres and "

@@ -31,9 +31,12 @@ std::string expectation(const OptionSpec& spec) {
       return "an integer from 0 to " + std::to_string(std::numeric_limits<uint64_t>::max());
     case OptionType::kReal:
       return (spec.max == std::numeric_limits<double>::max()
-                  ? "a finite number >= " + detail::numberText(spec.min)
-                  : "a number from " + detail::numberText(spec.min) + " to " +
-                        detail::numberText(spec.max)) +
+                  ? "a finite number " + std::string(spec.above_min ? "> " : ">= ") +
+                        detail::numberText(spec.min)
+              : spec.above_min ? "a number above " + detail::numberText(spec.min) +
+                                     " and at most " + detail::numberText(spec.max)
+                               : "a number from " + detail::numberText(spec.min) + " to " +
+                                     detail::numberText(spec.max)) +
              (spec.automatic ? " or " + std::string(spec.automatic) : std::string());
     case OptionType::kChoice:
       return choiceList(spec.choices);
@@ -79,8 +82,8 @@ Expected<OptionValue> parseOption(const OptionSpec& spec, const std::string& ful
         break;
       }
       v.real = 0.0;
-      ok = detail::parseNumber(text, &v.real) && std::isfinite(v.real) && v.real >= spec.min &&
-           v.real <= spec.max;
+      ok = detail::parseNumber(text, &v.real) && std::isfinite(v.real) &&
+           (spec.above_min ? v.real > spec.min : v.real >= spec.min) && v.real <= spec.max;
       break;
     }
     case OptionType::kChoice:

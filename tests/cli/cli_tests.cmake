@@ -349,9 +349,9 @@ cli_test(fit_tolerance_best_effort 10 ARGS fit ${link} --max-protrusion 0.000000
 cli_test(fit_tolerance_with_n 2 ARGS fit ${link} -n 8 --max-er 0.5 -o ${work}/never_tol2.json
          STDERR "n and a tolerance .max_protrusion, max_er. exclude each other" FORBID ${work}/never_tol2.json)
 cli_test(fit_tolerance_zero 2 ARGS fit ${link} --max-protrusion 0 -o ${work}/never_tol5.json
-         STDERR "max_protrusion '0': a tolerance must be above 0" FORBID ${work}/never_tol5.json)
+         STDERR "max_protrusion '0': expected a number above 0 and at most" FORBID ${work}/never_tol5.json)
 cli_test(fit_tolerance_nan 2 ARGS fit ${link} --max-er nan -o ${work}/never_tol3.json
-         STDERR "max_er 'nan': expected a number from 0 to 1000000" FORBID ${work}/never_tol3.json)
+         STDERR "max_er 'nan': expected a number above 0 and at most 1000000" FORBID ${work}/never_tol3.json)
 cli_test(fit_curve_without_tolerance 2 ARGS fit ${link} -n 4 --curve ${work}/never_curve.csv
          -o ${work}/never_tol4.json STDERR "--curve and --best-effort go with a tolerance"
          FORBID ${work}/never_tol4.json)

@@ -25,7 +25,7 @@ cli_test(robot_max_protrusion_best_effort 10 ARGS robot ${robot}/three_link.urdf
          -o ${work}/three_best_effort.yml -q FILE ${work}/three_best_effort.yml)
 cli_test(robot_link_max_protrusion_zero 2 ARGS robot ${robot}/three_link.urdf --package-path
          ${robot} --link-max-protrusion link2=0 -o ${work}/never_tol2.yml -q
-         STDERR "link_max_protrusion: link 'link2': a protrusion limit must be above 0"
+         STDERR "link_max_protrusion 'link2=0': expected LINK=VALUE, VALUE a number above 0 and"
          FORBID ${work}/never_tol2.yml)
 cli_test(robot_link_counts 0 ARGS robot ${robot}/three_link.urdf --package-path ${robot}
          --link-spheres base_link=2 --link-spheres link1=0 --link-spheres link2=3 --quality fast

@@ -136,7 +136,18 @@ TEST(ToleranceFit, BadRequestsAreRefused) {
   EXPECT_EQ(fitToTolerance(index, fastRequest(), t).error().code, ErrorCode::kInvalidArgument);
   t.max_er = 0.5;
   t.max_spheres = 0;
-  EXPECT_FALSE(fitToTolerance(index, fastRequest(), t).ok());
+  auto capped = fitToTolerance(index, fastRequest(), t);
+  ASSERT_FALSE(capped.ok());
+  EXPECT_NE(capped.error().message.find("max_spheres '0': expected an integer from 1"),
+            std::string::npos);
+  // A limit set in the struct is checked as its option's text: a negative one is not ignored.
+  t.max_spheres = 4;
+  t.max_protrusion = -1.0;
+  auto negative = fitToTolerance(index, fastRequest(), t);
+  ASSERT_FALSE(negative.ok());
+  EXPECT_EQ(negative.error().message,
+            "max_protrusion '-1': expected a number above 0 and at most 1e+30");
+  t.max_protrusion = 0.0;
   ToleranceOptions o;
   EXPECT_TRUE(setToleranceOption(&o, "max_protrusion", "5%").ok());
   EXPECT_DOUBLE_EQ(o.max_protrusion_fraction, 0.05);
@@ -149,8 +160,11 @@ TEST(ToleranceFit, BadRequestsAreRefused) {
   EXPECT_FALSE(setToleranceOption(&o, "max_er", "-0.1").ok());
   auto zero = setToleranceOption(&o, "max_er", "0");
   ASSERT_FALSE(zero.ok());
-  EXPECT_NE(zero.error().message.find("max_er '0': a tolerance must be above 0"),
-            std::string::npos);
+  EXPECT_EQ(zero.error().message, "max_er '0': expected a number above 0 and at most 1000000");
+  auto zero_percent = setToleranceOption(&o, "max_protrusion", "0%");
+  ASSERT_FALSE(zero_percent.ok());
+  EXPECT_EQ(zero_percent.error().message,
+            "max_protrusion '0%': expected a percentage of the diagonal above 0");
   EXPECT_FALSE(setToleranceOption(&o, "max_spheres", "0").ok());
 }
 

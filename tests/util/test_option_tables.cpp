@@ -99,6 +99,34 @@ TEST(OptionTables, KeyedRowsTakeKeyEqualsValue) {
                 "budget '10000000': expected an integer from 0 to 1000000");
 }
 
+// Limits and tolerances (0 would mean none) refuse 0 in their rows, whichever door: the setters'
+// text and the checkers' structs get the row's message; a struct's 0 is the field's "none".
+TEST(OptionTables, LimitRowsRefuseTheirLowerEnd) {
+  RobotFitOptions o;
+  expectRefused(setRobotFitOption(&o, "max_protrusion", "0"),
+                "max_protrusion '0': expected a number above 0 and at most 1e+30");
+  expectRefused(setRobotFitOption(&o, "link_max_protrusion", "l=-0"),
+                "link_max_protrusion 'l=-0': expected LINK=VALUE, VALUE a number above 0 and at "
+                "most 1e+30");
+  ASSERT_TRUE(setRobotFitOption(&o, "max_protrusion", "1e-12").ok());
+  EXPECT_EQ(o.max_protrusion, 1e-12);
+  o.max_protrusion = 0.0;
+  EXPECT_TRUE(checkRobotFitOptions(o).ok());
+  o.max_protrusion = -1.0;
+  expectRefused(checkRobotFitOptions(o),
+                "max_protrusion '-1': expected a number above 0 and at most 1e+30");
+  o.max_protrusion = 0.0;
+  o.link_max_protrusion["l"] = 0.0;
+  expectRefused(checkRobotFitOptions(o),
+                "link_max_protrusion 'l=0': expected LINK=VALUE, VALUE a number above 0 and at "
+                "most 1e+30");
+  ToleranceOptions t;
+  expectRefused(setToleranceOption(&t, "max_er", "nan"),
+                "max_er 'nan': expected a number above 0 and at most 1000000");
+  ASSERT_TRUE(setToleranceOption(&t, "max_er", "1e-9").ok());
+  EXPECT_EQ(t.max_er, 1e-9);
+}
+
 TEST(OptionTables, LinkSolidForDecidesLinks) {
   RobotFitOptions o;
   ASSERT_TRUE(setRobotFitOption(&o, "link_solid", "walls").ok());
