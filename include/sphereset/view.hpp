@@ -158,6 +158,9 @@ Expected<ViewScene> robotViewScene(const Robot& robot, const std::string& urdf,
 // exact E_r, with the original triangles when the repair changed them (a fresh incremental
 // certificate, certificate.hpp, stored in `solid->engine`).
 void certifyViewSolid(ViewSolid* solid);
+// The solid's shown set replaced by `spheres` (checked already) and certified in full; the
+// caller counts the scene's version on (once for a change of several solids).
+void replaceViewSet(ViewSolid* solid, std::vector<Sphere> spheres);
 // The CERTIFICATE of docs/view.md from the solid's incremental certificate (empty for an empty
 // set); the uncovered triangles are ids into the displayed mesh.
 ViewCertificate viewCertificate(const ViewSolid& solid);

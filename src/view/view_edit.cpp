@@ -43,13 +43,6 @@ Status checkEditSphere(const std::string& what, const Sphere& s) {
   return checkSphere(what, s, ErrorCode::kInvalidArgument);
 }
 
-// The shown set replaced by `spheres`, certified in full, one version more.
-void storeSet(ViewScene* scene, ViewSolid* solid, std::vector<Sphere> spheres) {
-  solid->sets[static_cast<size_t>(solid->level)] = std::move(spheres);
-  certifyViewSolid(solid);
-  ++scene->version;
-}
-
 // Edits of one request the incremental certificate takes one by one; more (a request of thousands
 // of adds took 18 s at 8 000, each add rebuilding the certificate's sphere index) get one full
 // certificate of the edited set, which costs about as much as a few dozen single edits.
@@ -158,7 +151,8 @@ Status boundViewSolid(ViewScene* scene, int64_t solid) {
   bo.original = (*s)->input->original();
   auto bounded = boundSpheres(*(*s)->index, (*s)->spheres(), bo);
   if (!bounded) return bounded.error();
-  storeSet(scene, *s, std::move(bounded).value());
+  replaceViewSet(*s, std::move(bounded).value());
+  ++scene->version;
   return {};
 }
 

@@ -218,10 +218,9 @@ ViewFitStatus viewFitStatus(ViewScene* scene) {
     job.applied = true;
     out.applied = true;
     for (size_t i = 0; i < job.status.solids.size(); ++i) {
-      ViewSolid& s = scene->solids[static_cast<size_t>(job.status.solids[i])];
       if (job.sets[i].empty()) continue;  // a link the budget skipped keeps its set
-      s.sets[static_cast<size_t>(s.level)] = std::move(job.sets[i]);
-      certifyViewSolid(&s);
+      replaceViewSet(&scene->solids[static_cast<size_t>(job.status.solids[i])],
+                     std::move(job.sets[i]));
     }
     ++scene->version;
   }

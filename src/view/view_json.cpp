@@ -7,6 +7,8 @@
 #include <numbers>
 #include <string>
 
+#include "sphereset/fit.hpp"
+#include "sphereset/options.hpp"
 #include "view/view_page.hpp"
 
 namespace sphereset {
@@ -117,6 +119,15 @@ nlohmann::json collisions(const ViewScene& sc) {
           {"contact", viewContactPairs(sc)}};
 }
 
+// The fit request's quality row (fitRequestOptions): the names the page offers and its default,
+// so that the page lists what the library takes, not a copy of it.
+nlohmann::json fitChoices() {
+  const OptionSpec* quality = findOption(fitRequestOptions(), "quality");
+  nlohmann::json names = nlohmann::json::array();
+  for (const char* name : quality->choices) names.push_back(name);
+  return {{"qualities", names}, {"quality", quality->default_text}};
+}
+
 nlohmann::json scene(const ViewScene& sc) {
   nlohmann::json solids = nlohmann::json::array();
   for (const ViewSolid& s : sc.solids) solids.push_back(solid(s));
@@ -128,6 +139,7 @@ nlohmann::json scene(const ViewScene& sc) {
           {"joints", joints(sc)},
           {"poses", poses(sc)},
           {"collisions", collisions(sc)},
+          {"fit", fitChoices()},
           {"save", save(sc)}};
 }
 

@@ -254,6 +254,11 @@ void certifyViewSolid(ViewSolid* solid) {
   solid->certificate = viewCertificate(*solid);
 }
 
+void replaceViewSet(ViewSolid* solid, std::vector<Sphere> spheres) {
+  solid->sets[static_cast<size_t>(solid->level)] = std::move(spheres);
+  certifyViewSolid(solid);
+}
+
 ViewCertificate viewCertificate(const ViewSolid& solid) {
   ViewCertificate c;
   c.spheres = static_cast<int64_t>(solid.spheres().size());

@@ -2,7 +2,7 @@
 // as the server applies them; undoing step by step gives back each earlier set exactly, in its
 // order, and redoing each later one.
 import assert from 'node:assert/strict';
-import { differenceEdits, inverseEdits } from '../../web/src/history.js';
+import { History, differenceEdits, inverseEdits } from '../../web/src/history.js';
 
 // The server's rule (docs/view.md): edits in order, indices into the set as each edit finds it,
 // an added sphere at the end.
@@ -60,4 +60,19 @@ const before = [[0, 0, 0, 1], [1, 0, 0, 1]];
 const after = [[0, 0, 0, 1.5], [1, 0, 0, 1]];
 assert.deepEqual(apply(after, differenceEdits(after, before)), before, 'a bound is undone by sets');
 assert.equal(differenceEdits(after, [[0, 0, 0, 1]]), null, 'no set edits between sets of other sizes');
+// A change of several solids (a robot's fit) is one step of several parts; parts without edits are
+// left out, and forgetting a solid (another tree level) drops its parts only.
+const history = new History();
+history.recordParts([{ solid: 0, edits: [{ op: 'delete', index: 0 }] }, { solid: 1, edits: [] },
+  { solid: 2, edits: [{ op: 'add', sphere: [0, 0, 0, 1] }] }]);
+assert.equal(history.undoSteps.length, 1, 'one step for the whole change');
+assert.deepEqual(history.undoSteps[0].parts.map((p) => p.solid), [0, 2], 'its parts with edits');
+history.record(1, [{ op: 'set', index: 0, sphere: [1, 1, 1, 1] }]);
+history.forget(0);
+assert.deepEqual(history.undoSteps.map((s) => s.parts.map((p) => p.solid)), [[2], [1]],
+  "forgetting solid 0 keeps the other solids' parts");
+history.forget(2);
+assert.deepEqual(history.undoSteps.map((s) => s.parts.map((p) => p.solid)), [[1]],
+  'a step left without parts is dropped');
+assert.ok(history.canUndo && !history.canRedo);
 console.log('PASS');

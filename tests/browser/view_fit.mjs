@@ -1,9 +1,16 @@
 // Fitting from the page, by mouse and keyboard: the box's sphere count typed, the quality chosen,
 // Fit: the set becomes the fit (covered, as many spheres as asked), Ctrl+Z gives the old set
 // back; a long fit shows its progress bar and Cancel stops it with nothing changed; on the test
-// robot, a budget typed and "Fit the robot" fits every link within it and names the split.
+// robot, a budget typed and "Fit the robot" fits every link within it and names the split, and one
+// Ctrl+Z gives every link its old set back (one Ctrl+Y fits them again).
 import { writeBox, writeBoxSpheres, writeRobot } from './fixtures.mjs';
 import { check, checkNoErrors, openPage, pageStatus, runTest, startView } from './harness.mjs';
+
+async function pressCtrl(page, key) {
+  await page.keyboard.down('Control');
+  await page.keyboard.press(key);
+  await page.keyboard.up('Control');
+}
 
 async function typeInto(page, selector, text) {
   await page.$eval(selector, (e) => e.scrollIntoView());
@@ -56,6 +63,14 @@ await runTest(async (args, browser) => {
   // The robot's budget.
   const robot = writeRobot(args.work);
   const live = await openPage(browser, (await startView(args, [robot.urdf, robot.spheres])).url);
+  const sets = () => live.page.evaluate(() => window.sphereset.scene().solids.map((s) => s.spheres));
+  const same = (a, b) => a.length === b.length && a.every((set, k) => set.length === b[k].length &&
+    set.every((s, i) => s.every((v, j) => v === b[k][i][j])));
+  // Until the links hold `want` exactly (JSON keeps every digit of a double).
+  const waitForSets = (want) => live.page.waitForFunction(
+    (w) => JSON.stringify(window.sphereset.scene().solids.map((s) => s.spheres)) === w,
+    { timeout: 20000 }, JSON.stringify(want));
+  const robotBefore = await sets();
   await typeInto(live.page, '#fit-budget', '7');
   await live.page.focus('#fit-quality');
   await live.page.keyboard.press('ArrowUp');
@@ -67,5 +82,17 @@ await runTest(async (args, browser) => {
   const message = await live.page.$eval('#message', (e) => e.textContent);
   check(scene.solids.every((s) => message.includes(`${s.link} ${s.spheres.length}`)), `the split is named per link (${message})`);
   check(await pageStatus(live.page) === 'covered', 'every link covered');
+  const fitted = await sets();
+  check(!same(fitted, robotBefore), 'the fit changed the links');
+  await live.page.mouse.click(5, 5);
+  await pressCtrl(live.page, 'z');
+  await waitForSets(robotBefore);
+  check(same(await sets(), robotBefore), "one Ctrl+Z gives every link its set from before the robot's fit");
+  await pressCtrl(live.page, 'z');  // nothing left: the page says so, the sets stay
+  await live.page.waitForFunction(() => document.getElementById('message').textContent === 'nothing to undo', { timeout: 20000 });
+  check(same(await sets(), robotBefore), 'a second Ctrl+Z has nothing left to undo');
+  await pressCtrl(live.page, 'y');
+  await waitForSets(fitted);
+  check(same(await sets(), fitted), 'one Ctrl+Y fits every link again');
   checkNoErrors(live.errors, "while fitting the robot's budget");
 });

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/robot.hpp"
 #include "sphereset/solid_index.hpp"
@@ -45,6 +46,11 @@ TEST_F(ViewTest, SceneHoldsTheSolidItsSetAndCertificate) {
   EXPECT_EQ(j["poses"][0], nlohmann::json({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}));
   EXPECT_EQ(j["save"]["path"], path("box.txt"));
   EXPECT_EQ(j["save"]["format"], "txt");
+  // The page's quality list is the fit request's row, default included.
+  EXPECT_EQ(j["fit"]["qualities"], nlohmann::json({"fast", "default", "best"}));
+  EXPECT_EQ(j["fit"]["quality"], "default");
+  for (const auto& name : j["fit"]["qualities"])
+    EXPECT_TRUE(fitQualityFromName(name.get<std::string>()).ok()) << name;
 }
 
 TEST_F(ViewTest, GeometryIsTheDisplayedMeshInBinary) {

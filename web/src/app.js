@@ -121,7 +121,8 @@ export class App {
   undo() { return this.step(this.history.undoSteps, this.history.redoSteps, 'undo'); }
   redo() { return this.step(this.history.redoSteps, this.history.undoSteps, 'redo'); }
 
-  // Applies the last step of `from` and files its opposite in `to`.
+  // Applies the last step of `from`, part by part, and files its opposite in `to`. A part the
+  // server refuses stays in `from` with the parts after it; the parts applied go to `to`.
   step(from, to, what) {
     return this.run(async () => {
       this.requireServer();
@@ -130,17 +131,25 @@ export class App {
         panels.showMessage(`nothing to ${what}`);
         return null;
       }
-      const before = this.solid(step.solid).spheres;
-      let answer;
-      try {
-        answer = await this.api.edit(step.solid, step.edits);
-      } catch (e) {
-        from.push(step);
-        throw e;
+      const opposite = [];
+      let answer = null;
+      const file = () => { if (opposite.length) to.push({ parts: opposite }); };
+      for (let i = 0; i < step.parts.length; i++) {
+        const part = step.parts[i];
+        const before = this.solid(part.solid).spheres;
+        try {
+          answer = await this.api.edit(part.solid, part.edits);
+        } catch (e) {
+          from.push({ parts: step.parts.slice(i) });
+          file();
+          this.refresh();
+          throw e;
+        }
+        if (this.applySet(part.solid, answer)) {
+          opposite.push({ solid: part.solid, edits: inverseEdits(before, part.edits) });
+        }
       }
-      if (this.applySet(step.solid, answer)) {
-        to.push({ solid: step.solid, edits: inverseEdits(before, step.edits) });
-      }
+      file();
       panels.showMessage('');
       this.refresh();
       return answer;

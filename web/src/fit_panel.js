@@ -1,7 +1,8 @@
 // Fits started from the page (docs/view.md, POST /api/fit): one link (or the mesh) with a count
 // and a quality, or, for a robot, every link within a budget. The server fits in a thread of its
 // own; the page asks how far it is every `pollMs` and shows a progress bar with Cancel; the
-// finished sets come back with their certificates, and Ctrl+Z undoes a fit like any change.
+// finished sets come back with their certificates, and Ctrl+Z undoes a fit like any change (a
+// robot's fit in one step, every link at once).
 import { replaceEdits } from './history.js';
 import * as panels from './panels.js';
 
@@ -21,6 +22,9 @@ export class FitPanel {
     if (app.staticMode) return;
     const robot = app.scene.kind === 'robot';
     $('fit-what').textContent = robot ? 'this link' : 'the mesh';
+    // The qualities the library takes, as the scene names them (its default chosen).
+    const { qualities, quality } = app.scene.fit;
+    $('fit-quality').replaceChildren(...qualities.map((q) => new Option(q, q, q === quality, q === quality)));
     $('budget-row').classList.toggle('hidden', !robot);
     const edited = app.scene.solids.filter((s) => s.set !== 1);
     if (robot) $('fit-budget').value = String(edited.reduce((n, s) => n + s.spheres.length, 0));
@@ -79,11 +83,12 @@ export class FitPanel {
     }
     // A selection on a refitted solid would name another sphere now.
     if (app.selection && status.solids.includes(app.selection.solid)) app.select(null);
+    // One step for the whole fit: Ctrl+Z gives every solid it refitted back at once.
     const undo = [];
     status.solids.forEach((k, i) => {
       if (app.applySet(k, status.sets[i])) undo.push({ solid: k, edits: replaceEdits(status.sets[i].spheres, before[k]) });
     });
-    for (const step of undo) app.history.record(step.solid, step.edits);
+    app.history.recordParts(undo);
     if (body.budget !== undefined) {
       const split = Object.entries(status.counts).map(([link, n]) => `${link} ${n}`).join(', ');
       panels.showMessage(`budget ${body.budget}: ${split}`, 'info');

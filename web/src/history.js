@@ -48,22 +48,31 @@ export function replaceEdits(from, to) {
   return edits;
 }
 
+// A step is one change as the user made it: its parts ({ solid, edits }) are the edits that undo
+// it on each solid it touched (a robot's fit touches every link; Ctrl+Z takes all of them back).
 export class History {
   constructor() {
-    this.undoSteps = [];  // { solid, edits }: the edits that undo a change
+    this.undoSteps = [];  // { parts: [{ solid, edits }] }
     this.redoSteps = [];
   }
 
-  record(solid, undoEdits) {
-    if (!undoEdits || !undoEdits.length) return;
-    this.undoSteps.push({ solid, edits: undoEdits });
+  record(solid, undoEdits) { this.recordParts([{ solid, edits: undoEdits }]); }
+
+  // One step over several solids; parts without edits are left out.
+  recordParts(parts) {
+    const kept = parts.filter((p) => p.edits && p.edits.length);
+    if (!kept.length) return;
+    this.undoSteps.push({ parts: kept });
     this.redoSteps = [];
   }
 
-  // A solid's set was replaced (another tree level): its steps no longer apply.
+  // A solid's set was replaced (another tree level): its parts no longer apply.
   forget(solid) {
-    this.undoSteps = this.undoSteps.filter((s) => s.solid !== solid);
-    this.redoSteps = this.redoSteps.filter((s) => s.solid !== solid);
+    const without = (steps) => steps
+      .map((s) => ({ parts: s.parts.filter((p) => p.solid !== solid) }))
+      .filter((s) => s.parts.length);
+    this.undoSteps = without(this.undoSteps);
+    this.redoSteps = without(this.redoSteps);
   }
 
   get canUndo() { return this.undoSteps.length > 0; }
