@@ -280,6 +280,8 @@ class ProgressiveFit {
   static Expected<ProgressiveFit> start(const SolidIndex& index, const FitOptions& options,
                                         const ProgressiveFit* warm_from = nullptr,
                                         const ProgressiveOptions& progressive = {});
+  // A run moved from holds nothing: it may only be assigned to or destroyed (the other members
+  // assert that it holds a run).
   ProgressiveFit(ProgressiveFit&&) noexcept;
   ProgressiveFit& operator=(ProgressiveFit&&) noexcept;
   ~ProgressiveFit();

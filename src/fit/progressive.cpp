@@ -19,6 +19,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -158,7 +159,10 @@ bool ProgressiveFit::allows(const FitOptions& options) {
          options.decimation == 0.0;
 }
 
-int ProgressiveFit::maxCount() const { return impl_->options.num_spheres; }
+int ProgressiveFit::maxCount() const {
+  assert(impl_ && "ProgressiveFit used after a move");
+  return impl_->options.num_spheres;
+}
 
 Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const FitOptions& options,
                                                const ProgressiveFit* warm_from,
@@ -179,6 +183,7 @@ Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const Fi
                  "asked for up to " + std::to_string(options.num_spheres) + " spheres but only " +
                      std::to_string(points) + " points were sampled (raise --points)"};
   if (warm_from) {
+    assert(warm_from->impl_ && "ProgressiveFit used after a move");
     if (&warm_from->impl_->index != &index)
       return Error{ErrorCode::kInvalidArgument,
                    "a progressive run can start only from a run on the same solid"};
@@ -226,12 +231,14 @@ detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet&
 }  // namespace
 
 int ProgressiveFit::startCount(int count) const {
+  assert(impl_ && "ProgressiveFit used after a move");
   if (impl_->fits.contains(count)) return count;  // clustered by this run
   return startFrom(impl_->clusterings, count, impl_->progressive.start_ratio,
                    impl_->progressive.adopt);
 }
 
 Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split_first) {
+  assert(impl_ && "ProgressiveFit used after a move");
   Impl& m = *impl_;
   if (count < 1 || count > m.options.num_spheres)
     return Error{ErrorCode::kInvalidArgument, "count " + std::to_string(count) +

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "robot/link_jobs.hpp"
 #include "robot/link_keys.hpp"
 #include "robot/link_tasks.hpp"
 #include "robot/protrusion_split.hpp"
@@ -26,6 +27,10 @@
 
 namespace sphereset {
 namespace {
+
+using detail::applyProtrusionLimits;
+using detail::Job;
+using detail::linkFitOptions;
 
 // Under a budget, each free link is also fitted at counts within this many of the split's, every
 // kCandidateStep-th, and the exact pick (pickCandidates) chooses among all of them: a fit's
@@ -46,35 +51,6 @@ constexpr int kCandidateStep = 2;
 // budget.
 constexpr int kCurveCounts[] = {1, 2, 4, 8, 16, 32};
 constexpr double kCurveReach = 2.0;
-// The curve fits are quick ones: fewer points and rounds than the final fit (each count of the
-// curve's progressive run starts from the one below it, so few rounds settle it).
-constexpr int64_t kCurvePoints = 3000;
-constexpr int kCurveRounds = 10;
-
-// One link to fit: its solid (repaired), its exact sphere primitives, and the results.
-struct Job {
-  const RobotLink* link = nullptr;
-  std::vector<std::string> files;
-  std::unique_ptr<SolidIndex> index;
-  RepairResult repair;
-  std::vector<Sphere> primitives;
-  int fixed = -1;        // -1: from the budget
-  bool decided = false;  // fitted by its protrusion limit (applyProtrusionLimits)
-  double limit = 0.0;    // its protrusion limit (0: none)
-  bool limit_met = true;
-  bool skipped = false;  // fixed at 0: not fitted
-  double padding = 0.0;
-  LinkFitCurve curve;
-  // Under a budget: the curve's progressive run, whose clusterings the link's fits start from.
-  std::unique_ptr<ProgressiveFit> curve_run;
-  int count = 0;         // the count chosen
-  int split_count = -1;  // under a budget: the curve split's count
-  std::vector<Sphere> spheres;
-  EvalResult eval;
-  double outside_volume = 0.0;  // of the chosen fit (Σ over its spheres, before padding)
-  double split_volume = 0.0;    // of the fit at split_count
-  double seconds = 0.0;
-};
 
 // One fit of a link at one count (the budget fits each free link at two counts and keeps one).
 struct LinkFit {
@@ -85,24 +61,6 @@ struct LinkFit {
   double seconds = 0.0;
   std::string error;
 };
-
-FitOptions linkFitOptions(const RobotFitOptions& o, const Job& j, int n, bool quick) {
-  // The quality presets of `fit` (fit.hpp); the curve fits are quick ones: the fast preset
-  // with fewer points and rounds, and without the coverage-aware refinement (refine.cpp): the
-  // curves only rank the links' gains. On the Kinova at a budget of 60, refining them made the
-  // robot's fit 1.2 times as long and did not lower its outside volume (docs/benchmarks.md).
-  FitOptions fo = fitPreset(n, quick ? FitQuality::kFast : o.quality);
-  if (quick) {
-    fo.target_points = kCurvePoints;
-    fo.max_iterations = kCurveRounds;
-    fo.refine = false;
-  }
-  fo.seed = o.seed;
-  fo.original = originalTriangles(j.repair);
-  if (o.progress)
-    fo.progress = [&o, &link = j.link->name](const FitProgress& p) { o.progress(link, p); };
-  return fo;
-}
 
 // Whether a link has geometry to fit (anything but sphere primitives).
 bool hasFittedGeometry(const RobotLink& link) {
@@ -374,83 +332,6 @@ Status fitLinks(const RobotFitOptions& o, std::vector<Job>* jobs) {
     j.seconds = 0.0;
     for (size_t t : fit_of[i]) j.seconds += fits[t].seconds;
     j.curve_run.reset();
-  }
-  return {};
-}
-
-// Links with a protrusion limit (RobotFitOptions::max_protrusion, link_max_protrusion): fitted
-// here (protrusion_split.cpp) and marked decided; the others are left to the budget or their
-// counts. Under a budget every free link needs a limit and shares what the fixed counts and
-// the sphere primitives leave. The limit holds the padded spheres: the fit's protrusion is held
-// to the limit minus the link's padding.
-Status applyProtrusionLimits(const RobotFitOptions& o, std::vector<Job>* jobs) {
-  if (!o.toleranceActive()) return {};
-  std::vector<detail::ProtrusionLink> links;
-  std::vector<Job*> limited;
-  int rest = o.budget;
-  for (Job& j : *jobs) {
-    rest -= static_cast<int>(j.primitives.size());
-    if (!j.index || j.fixed >= 0) {
-      rest -= std::max(0, j.fixed);
-      continue;
-    }
-    auto it = o.link_max_protrusion.find(j.link->name);
-    j.limit = it != o.link_max_protrusion.end() ? it->second : o.max_protrusion;
-    if (!(j.limit > 0.0)) {
-      if (o.budget > 0)
-        return Error{ErrorCode::kInvalidArgument,
-                     o.name + ": link '" + j.link->name +
-                         "' has no protrusion limit: with a budget, give max_protrusion for "
-                         "every link (or link_spheres for it)"};
-      continue;
-    }
-    if (!(j.limit > j.padding))
-      return Error{ErrorCode::kInvalidArgument,
-                   o.name + ": link '" + j.link->name + "': its padding " + optionText(j.padding) +
-                       " leaves nothing of its protrusion limit " + optionText(j.limit)};
-    detail::ProtrusionLink l;
-    l.name = j.link->name;
-    l.index = j.index.get();
-    l.original = originalTriangles(j.repair);
-    l.walls = envelopeWalls(j.repair);
-    l.limit = j.limit - j.padding;
-    links.push_back(std::move(l));
-    limited.push_back(&j);
-  }
-  if (links.empty()) return {};
-  if (o.budget > 0 && rest < static_cast<int>(links.size()))
-    return Error{ErrorCode::kInvalidArgument,
-                 o.name + ": budget " + std::to_string(o.budget) + " leaves " +
-                     std::to_string(std::max(0, rest)) + " spheres for the " +
-                     std::to_string(links.size()) + " links with a protrusion limit"};
-  const int cap =
-      std::min(detail::kLinkToleranceCap, o.budget > 0 ? rest - static_cast<int>(links.size()) + 1
-                                                       : detail::kLinkToleranceCap);
-  for (size_t i = 0; i < links.size(); ++i) {
-    links[i].cap = cap;
-    links[i].options_for = [&o, job = limited[i]](int n) {
-      return linkFitOptions(o, *job, n, false);
-    };
-  }
-  detail::StepReporter steps(o, "link tolerance",
-                             o.budget > 0 ? rest : static_cast<int64_t>(links.size()));
-  auto picks = detail::fitToProtrusion(links, o.budget > 0 ? rest : 0,
-                                       [&](const std::string& link, int units) {
-                                         for (int u = 0; u < units; ++u) steps.done(link);
-                                       });
-  if (!picks) return Error{picks.error().code, o.name + ": " + picks.error().message};
-  for (size_t i = 0; i < links.size(); ++i) {
-    Job& j = *limited[i];
-    detail::ProtrusionPick& p = (*picks)[i];
-    j.decided = true;
-    j.limit_met = p.met;
-    j.count = p.count;
-    j.spheres = j.primitives;
-    j.spheres.insert(j.spheres.end(), p.fit.spheres.begin(), p.fit.spheres.end());
-    for (Sphere& sp : j.spheres) sp.radius += j.padding;
-    j.eval = std::move(p.eval);
-    j.outside_volume = p.fit.energy;
-    j.seconds = p.seconds;
   }
   return {};
 }
