@@ -5,7 +5,9 @@
 // per (method, count), with the mesh and the seed: E_r (outside volume over the solid's volume),
 // the certified protrusion over the bounding-box diagonal (with --protrusion; -1 without), the
 // fit's seconds and, for the progressive run, the seconds since its start (sampling included, the
-// checks not).
+// checks not); er_clustering, the clustering's E_r before the bound (the fit's outside volume of
+// the spheres that enclose its sample points, FitResult::energy_before_bounding, over the
+// solid's volume).
 //
 //   progressive_curve MESH [--counts 8,16,32,64] [--seed 1] [--quality default] [--protrusion]
 //                          [--only-progressive] [--repair]
@@ -28,7 +30,7 @@ using namespace sphereset;
 namespace {
 
 constexpr const char* kHeader =
-    "mesh,seed,method,n,er_sum,protrusion_of_diagonal,fit_s,run_s,covered";
+    "mesh,seed,method,n,er_sum,protrusion_of_diagonal,fit_s,run_s,covered,er_clustering";
 
 int die(const std::string& m) {
   std::fprintf(stderr, "progressive_curve: %s\n", m.c_str());
@@ -117,9 +119,9 @@ int main(int argc, char** argv) {
     auto f = fitSpheres(index, fo);
     if (!f) return die(name + ": " + f.error().message);
     const Row r = judge(index, f->spheres, f->energy, volume, protrusion, original);
-    std::printf("%s,%llu,independent,%d,%.6g,%.6g,%.4f,%.4f,%d\n", name.c_str(),
+    std::printf("%s,%llu,independent,%d,%.6g,%.6g,%.4f,%.4f,%d,%.6g\n", name.c_str(),
                 static_cast<unsigned long long>(seed), n, r.er, r.protrusion, f->seconds.total,
-                f->seconds.total, r.covered ? 1 : 0);
+                f->seconds.total, r.covered ? 1 : 0, f->energy_before_bounding / volume);
     std::fflush(stdout);
   }
   const auto t0 = std::chrono::steady_clock::now();
@@ -136,9 +138,9 @@ int main(int argc, char** argv) {
     const auto tj = std::chrono::steady_clock::now();
     const Row r = judge(index, f->spheres, f->energy, volume, protrusion, original);
     judged += secondsSince(tj);
-    std::printf("%s,%llu,progressive,%d,%.6g,%.6g,%.4f,%.4f,%d\n", name.c_str(),
+    std::printf("%s,%llu,progressive,%d,%.6g,%.6g,%.4f,%.4f,%d,%.6g\n", name.c_str(),
                 static_cast<unsigned long long>(seed), n, r.er, r.protrusion, f->seconds.total,
-                run_s, r.covered ? 1 : 0);
+                run_s, r.covered ? 1 : 0, f->energy_before_bounding / volume);
     std::fflush(stdout);
   }
   return 0;

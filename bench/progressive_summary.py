@@ -3,7 +3,10 @@ progressive E_r over independent E_r (over every mesh and seed; per seed too); w
 seeds, how far independent fits of one mesh are from each other (the geometric mean over meshes
 of the largest over the smallest E_r among the seeds, per count): the noise a ratio of single
 fits carries; per mesh and seed, the seconds of the progressive run through every count over the
-seconds of one independent fit at the largest count, and their geometric mean.
+seconds of one independent fit at the largest count, and their geometric mean. Where the CSV
+has the er_clustering column, the same ratio per count before the bound (the clustering's
+outside volume over its sample points) and each method's growth through the bound (final E_r
+over the clustering's): which of the two the gap at a count comes from.
 
     python3 bench/progressive_summary.py bench/results/progressive.csv
 """
@@ -26,6 +29,8 @@ def main(path):
     seeds = sorted({r["seed"] for r in rows}, key=int)
     per_n = collections.defaultdict(list)
     per_seed_n = collections.defaultdict(list)
+    clustering = collections.defaultdict(list)  # n -> progressive / independent, before bound
+    growth = collections.defaultdict(list)  # (method, n) -> final E_r / clustering E_r
     time_ratio = {}
     for mesh, seed in runs:
         counts = sorted(n for (m, s, meth, n) in fit
@@ -36,6 +41,12 @@ def main(path):
                 ratio = float(p["er_sum"]) / float(fit[(mesh, seed, "independent", n)]["er_sum"])
                 per_n[n].append(ratio)
                 per_seed_n[(seed, n)].append(ratio)
+                i = fit[(mesh, seed, "independent", n)]
+                if p.get("er_clustering") and i.get("er_clustering"):
+                    clustering[n].append(float(p["er_clustering"]) / float(i["er_clustering"]))
+                    for method, r in (("independent", i), ("progressive", p)):
+                        growth[(method, n)].append(float(r["er_sum"]) /
+                                                   float(r["er_clustering"]))
         top = counts[-1]
         p = fit.get((mesh, seed, "progressive", top))
         if p:
@@ -50,6 +61,14 @@ def main(path):
                             if per_seed_n[(s, n)])
         print("  n = %d: %.4f (min %.3f, max %.3f; %s)" % (n, geomean(vs), min(vs), max(vs),
                                                            by_seed))
+    if clustering:
+        print("before the bound (clustering E_r), progressive / independent; growth through the "
+              "bound (E_r / clustering E_r), independent and progressive:")
+        for n, vs in sorted(clustering.items()):
+            gi, gp = growth[("independent", n)], growth[("progressive", n)]
+            print("  n = %d: %.4f (min %.3f, max %.3f); growth %.3f (%.3f to %.3f) and %.3f "
+                  "(%.3f to %.3f)" % (n, geomean(vs), min(vs), max(vs), geomean(gi), min(gi),
+                                      max(gi), geomean(gp), min(gp), max(gp)))
     if len(seeds) > 1:
         print("independent fits, largest / smallest E_r among the seeds, geometric mean over "
               "meshes:")
