@@ -205,8 +205,9 @@ Status setToleranceOption(ToleranceOptions* options, const std::string& name,
 // (max_protrusion, max_er) exclude each other: the tolerance chooses the count"). Every door
 // that takes both (fit, batch, Python) asks this before its work; fitToTolerance asks it too.
 Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& tolerance);
-// Errors: no limit set, max_spheres out of range, n given (checkToleranceRequest), the request's
-// own (checkFitRequest), those of fitSpheres and evaluateSpheres.
+// Errors: no limit set, a limit set that its option's row refuses (negative, NaN; the fraction as
+// its percentage), max_spheres out of range, n given (checkToleranceRequest), the request's own
+// (checkFitRequest), those of fitSpheres and evaluateSpheres.
 Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
                                             const ToleranceOptions& options);
 

@@ -24,7 +24,7 @@ struct OptionSpec {
   const char* name;  // the library's name: the Python keyword and the manifest column
   const char* flag;  // the command line's flags, CLI11 style ("-n,--spheres")
   OptionType type;
-  double min = 0.0, max = 0.0;           // kInteger, kReal: inclusive bounds
+  double min = 0.0, max = 0.0;           // kInteger, kReal: inclusive bounds (but see above_min)
   std::span<const char* const> choices;  // kChoice
   const char* default_text;              // the default as help shows it
   const char* help;

@@ -91,9 +91,10 @@ struct RobotFitOptions {
   // kEnvelope kept whatever its volume (RepairOptions::keep_envelope).
   std::map<std::string, LinkSolid> link_solid_for;
   int default_link_spheres = 8;
-  // Protrusion limits (a length; 0: none): the certified protrusion of a link's padded spheres
-  // from its solid (evaluate.hpp, sphereProtrusion, plus the padding) at most this, for every
-  // link fitted (max_protrusion) or for one (link_max_protrusion, instead). Without a budget, a
+  // Protrusion limits (a length above 0; max_protrusion 0: none; a link_max_protrusion entry
+  // must be above 0): the certified protrusion of a link's padded spheres from its solid
+  // (evaluate.hpp, sphereProtrusion, plus the padding) at most this, for every link fitted
+  // (max_protrusion) or for one (link_max_protrusion, instead). Without a budget, a
   // link with a limit gets the fewest spheres that meet it (at most 256); with one, every free
   // link needs a limit and the budget goes where the worst link's protrusion over its limit is
   // largest (protrusion_split.cpp). Counts fixed by link_spheres stay fixed.

@@ -36,6 +36,7 @@ py::list optionTable(std::span<const OptionSpec> table) {
                                               : "integer";
     d["min"] = o.min;
     d["max"] = o.max;
+    d["above_min"] = o.above_min;
     py::list choices;
     for (const char* c : o.choices) choices.append(c);
     d["choices"] = choices;

@@ -113,8 +113,8 @@ void setOptions(const py::dict& options, Set&& set) {
 // nests in a dict of its own.
 py::dict fieldsDict(const std::vector<ResultField>& fields);
 
-// An option table as Python sees it: one dict per row (name, flag, type, min, max, choices,
-// default, help).
+// An option table as Python sees it: one dict per row (name, flag, type, min, max, above_min,
+// choices, default, help, key, automatic).
 py::list optionTable(std::span<const OptionSpec> table);
 
 // A Python str from library text that may hold file names in bytes that are not UTF-8: decoded

@@ -262,7 +262,9 @@ def test_fit_robot_protrusion_limits():
                          max_protrusion=1e-9)
     assert tight.tolerance and not tight.tolerance_met
     assert sum(len(s) for s in tight.spheres.values()) <= 6
-    with pytest.raises(ss.InvalidArgumentError, match="link_max_protrusion 'link2=0': expected LINK=VALUE, VALUE a number above 0"):
+    with pytest.raises(ss.InvalidArgumentError,
+                       match="link_max_protrusion 'link2=0': expected LINK=VALUE, VALUE a number "
+                             "above 0"):
         ss.fit_robot(urdf, package_paths=[DATA / "robot"], link_max_protrusion={"link2": 0})
 
 

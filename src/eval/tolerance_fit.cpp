@@ -14,11 +14,13 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "eval/count_search.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/limits.hpp"
+#include "sphereset/options.hpp"
 #include "sphereset/solid_index.hpp"
 
 namespace sphereset {
@@ -81,9 +83,13 @@ Status setToleranceOption(ToleranceOptions* o, const std::string& name, const st
   const bool percent = name == "max_protrusion" && !value.empty() && value.back() == '%';
   if (percent) value.pop_back();
   auto parsed = parseTableOption(kToleranceOptions, "tolerance", name, value);
-  if (!parsed && percent)  // the message quotes the text as given, its '%' included
-    return Error{parsed.error().code,
-                 "max_protrusion '" + text + "': expected a percentage of the diagonal above 0"};
+  if (!parsed && percent) {  // the row's message, quoting the text as given ('%' included)
+    std::string m = parsed.error().message;
+    const std::string quoted = "'" + value + "'";
+    if (const size_t at = m.find(quoted); at != std::string::npos)
+      m.replace(at, quoted.size(), "'" + text + "'");
+    return Error{parsed.error().code, m};
+  }
   if (!parsed) return parsed.error();
   const std::string_view n = parsed->spec->name;
   if (n == "max_protrusion") {
@@ -110,15 +116,18 @@ Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& 
 Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
                                             const ToleranceOptions& t) {
   const auto t0 = std::chrono::steady_clock::now();
-  // Each limit that is set (0: none), and the cap, as the option's text would be checked.
-  const std::pair<const char*, double> set[] = {{"max_protrusion", t.max_protrusion},
-                                                {"max_protrusion", t.max_protrusion_fraction},
-                                                {"max_er", t.max_er},
-                                                {"max_spheres", t.max_spheres}};
-  for (const auto& [name, value] : set)
-    if (value != 0.0 || std::string_view(name) == "max_spheres")
-      if (Status st = checkTableValue(kToleranceOptions, "tolerance", name, value); !st)
-        return st.error();
+  // Each limit that is set (0: none), and the cap, as its text would be checked at a door (the
+  // fraction as the percentage a user types).
+  std::vector<std::pair<const char*, std::string>> given{
+      {"max_spheres", std::to_string(t.max_spheres)}};
+  if (t.max_protrusion != 0.0) given.emplace_back("max_protrusion", optionText(t.max_protrusion));
+  if (t.max_protrusion_fraction != 0.0)
+    given.emplace_back("max_protrusion", optionText(100.0 * t.max_protrusion_fraction) + "%");
+  if (t.max_er != 0.0) given.emplace_back("max_er", optionText(t.max_er));
+  for (const auto& [name, text] : given) {
+    ToleranceOptions scratch;
+    if (Status st = setToleranceOption(&scratch, name, text); !st) return st.error();
+  }
   if (!t.active())
     return Error{ErrorCode::kInvalidArgument,
                  "a tolerance search needs max_protrusion or max_er above 0"};

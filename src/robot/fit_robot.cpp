@@ -20,7 +20,6 @@
 #include "robot/link_jobs.hpp"
 #include "robot/link_keys.hpp"
 #include "robot/link_tasks.hpp"
-#include "robot/protrusion_split.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/robot_fit.hpp"
 #include "sphereset/solid_index.hpp"

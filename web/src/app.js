@@ -118,14 +118,18 @@ export class App {
   addSphere(k, sphere) { return this.edit(k, [{ op: 'add', sphere }]); }
   deleteSphere(k, i) { return this.edit(k, [{ op: 'delete', index: i }]); }
 
-  undo() { return this.step(this.history.undoSteps, this.history.redoSteps, 'undo'); }
-  redo() { return this.step(this.history.redoSteps, this.history.undoSteps, 'redo'); }
+  undo() { return this.step('undo'); }
+  redo() { return this.step('redo'); }
 
-  // Applies the last step of `from`, part by part, and files its opposite in `to`. A part the
-  // server refuses stays in `from` with the parts after it; the parts applied go to `to`.
-  step(from, to, what) {
+  // Applies the last undo (or redo) step, part by part, and files its opposite on the other
+  // stack. The stacks are looked up when the step runs, not when its key was pressed: a change
+  // queued before it (a fit, a level) may have recorded or forgotten steps. A part the server
+  // refuses stays, with the parts after it; the parts applied are filed as their own step.
+  step(what) {
     return this.run(async () => {
       this.requireServer();
+      const h = this.history;
+      const [from, to] = what === 'undo' ? [h.undoSteps, h.redoSteps] : [h.redoSteps, h.undoSteps];
       const step = from.pop();
       if (!step) {
         panels.showMessage(`nothing to ${what}`);

@@ -63,16 +63,20 @@ export class History {
     const kept = parts.filter((p) => p.edits && p.edits.length);
     if (!kept.length) return;
     this.undoSteps.push({ parts: kept });
-    this.redoSteps = [];
+    this.redoSteps.length = 0;
   }
 
   // A solid's set was replaced (another tree level): its parts no longer apply.
   forget(solid) {
-    const without = (steps) => steps
-      .map((s) => ({ parts: s.parts.filter((p) => p.solid !== solid) }))
-      .filter((s) => s.parts.length);
-    this.undoSteps = without(this.undoSteps);
-    this.redoSteps = without(this.redoSteps);
+    // In place: the stacks stay the same arrays.
+    const without = (steps) => {
+      const kept = steps
+        .map((s) => ({ parts: s.parts.filter((p) => p.solid !== solid) }))
+        .filter((s) => s.parts.length);
+      steps.splice(0, steps.length, ...kept);
+    };
+    without(this.undoSteps);
+    without(this.redoSteps);
   }
 
   get canUndo() { return this.undoSteps.length > 0; }
