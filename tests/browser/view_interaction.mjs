@@ -21,14 +21,38 @@ await runTest(async (args, browser) => {
   check(await page.$eval('#selection', (e) => !e.classList.contains('hidden')) && index >= 0,
     `a click selects sphere ${index}`);
 
-  // Three notches of Shift + wheel: the radius times 1.05^3, sent when the wheel rests.
+  // Three notches of Shift + wheel: the radius times 1.05^3, sent when the wheel rests (once,
+  // or in parts when the notches come slower than the rest).
   const radius = (await serverSet())[index][3];
+  const radiusIs = (r) => settle((i, want) => Math.abs(
+    window.sphereset.scene().solids[0].spheres[i][3] - want) <= 1e-9 * want, index, r)
+    .then(() => true, () => false);
   await page.keyboard.down('Shift');
   for (let i = 0; i < 3; i++) await page.mouse.wheel({ deltaY: -100 });
   await page.keyboard.up('Shift');
-  await settle((i, r) => window.sphereset.scene().solids[0].spheres[i][3] !== r, index, radius);
-  const grown = (await serverSet())[index][3];
-  check(near(grown, radius * 1.05 ** 3, 1e-9), `Shift + wheel: radius ${radius} -> ${grown}`);
+  const grown = radius * 1.05 ** 3;
+  check(await radiusIs(grown),
+    `Shift + wheel: radius ${radius} -> ${(await serverSet())[index][3]}, wanted ${grown}`);
+
+  // A notch after a rest, while the server has not answered the one sent: it starts from the
+  // radius sent, so both notches count (the server's answers held back 800 ms).
+  const holdBack = (request) => {
+    if (request.isInterceptResolutionHandled()) return;
+    if (request.url().includes('/api/edit')) setTimeout(() => request.continue(), 800);
+    else request.continue();
+  };
+  await page.setRequestInterception(true);
+  page.on('request', holdBack);
+  await page.keyboard.down('Shift');
+  await page.mouse.wheel({ deltaY: 100 });
+  await new Promise((done) => setTimeout(done, 450));  // the rest (300 ms) has sent it
+  await page.mouse.wheel({ deltaY: 100 });
+  await page.keyboard.up('Shift');
+  const shrunk = grown / 1.05 ** 2;
+  check(await radiusIs(shrunk), 'a notch during a slow answer counts: radius ' +
+    `${(await serverSet())[index][3]}, wanted ${shrunk}`);
+  page.off('request', holdBack);
+  await page.setRequestInterception(false);
 
   // Add, then a click on the box's surface.
   await page.click('#add');

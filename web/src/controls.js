@@ -226,7 +226,9 @@ function wireGizmo(app, viewer) {
 }
 
 // Shift + wheel over the view: the selected sphere's radius, 5% a notch, sent when the wheel
-// rests. Caught before the orbit controls, which would zoom.
+// rests. Caught before the orbit controls, which would zoom. A notch turned after a rest but
+// before the server's answer starts from the radius sent, not the set's older one: no notch
+// is lost to a slow answer.
 function wireWheel(app, viewer, container) {
   let pending = null;
   let timer = 0;
@@ -235,8 +237,8 @@ function wireWheel(app, viewer, container) {
     e.preventDefault();
     e.stopPropagation();
     const s = app.selection;
-    const sphere = pending && pending.solid === s.solid && pending.index === s.index
-      ? pending.sphere : app.selectedSphere().slice();
+    const sphere = (pending && pending.solid === s.solid && pending.index === s.index
+      ? pending.sphere : app.selectedSphere()).slice();
     const notch = e.deltaY || e.deltaX;  // some systems turn Shift + wheel into a sideways scroll
     sphere[3] *= notch < 0 ? 1.05 : 1 / 1.05;
     pending = { solid: s.solid, index: s.index, sphere };
@@ -247,9 +249,11 @@ function wireWheel(app, viewer, container) {
     panels.showSelection(s.index, sphere, undefined);
     clearTimeout(timer);
     timer = setTimeout(() => {
-      const { solid, index, sphere: edited } = pending;
-      pending = null;
-      quiet(app.setSphere(solid, index, edited));
+      const sent = pending;
+      const request = app.setSphere(sent.solid, sent.index, sent.sphere);
+      quiet(request);
+      const answered = () => { if (pending === sent) pending = null; };
+      request.then(answered, answered);
     }, 300);
   }, { capture: true, passive: false });
 }
