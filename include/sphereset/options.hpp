@@ -37,6 +37,9 @@ struct OptionSpec {
   // kReal rows: `min` itself is refused, a value must be above it (limits and tolerances, where
   // 0 would mean none: the user leaves the option out instead).
   bool above_min = false;
+  // kReal rows: the number may end in '%' (OptionValue::percent), checked against the same
+  // bounds; what it is a percentage of is the row's own (its help says).
+  bool percent = false;
 };
 // The value of a kReal row given its `automatic` word.
 inline constexpr double kAutomatic = -1.0;
@@ -48,6 +51,7 @@ struct OptionValue {
   double real = 0.0;              // kReal
   std::string choice;             // kChoice
   std::string key;                // keyed rows: the text before the last '='
+  bool percent = false;           // kReal rows with OptionSpec::percent: the number ended in '%'
 };
 
 // `text` parsed and checked as `spec` says. kInvalidArgument "NAME 'TEXT': expected an integer

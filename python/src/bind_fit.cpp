@@ -37,6 +37,7 @@ py::list optionTable(std::span<const OptionSpec> table) {
     d["min"] = o.min;
     d["max"] = o.max;
     d["above_min"] = o.above_min;
+    d["percent"] = o.percent;
     py::list choices;
     for (const char* c : o.choices) choices.append(c);
     d["choices"] = choices;

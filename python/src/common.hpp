@@ -114,7 +114,7 @@ void setOptions(const py::dict& options, Set&& set) {
 py::dict fieldsDict(const std::vector<ResultField>& fields);
 
 // An option table as Python sees it: one dict per row (name, flag, type, min, max, above_min,
-// choices, default, help, key, automatic).
+// percent, choices, default, help, key, automatic).
 py::list optionTable(std::span<const OptionSpec> table);
 
 // A Python str from library text that may hold file names in bytes that are not UTF-8: decoded

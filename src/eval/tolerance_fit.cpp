@@ -44,6 +44,7 @@ constexpr OptionSpec kToleranceOptions[] = {
      "trailing %, a percentage of the bounding-box diagonal)",
      nullptr,
      nullptr,
+     true,
      true},
     {"max_er",
      "--max-er",
@@ -78,20 +79,10 @@ struct Trial {
 std::span<const OptionSpec> toleranceOptionTable() { return kToleranceOptions; }
 
 Status setToleranceOption(ToleranceOptions* o, const std::string& name, const std::string& text) {
-  // A trailing '%' on max_protrusion: a percentage of the diagonal.
-  std::string value = text;
-  const bool percent = name == "max_protrusion" && !value.empty() && value.back() == '%';
-  if (percent) value.pop_back();
-  auto parsed = parseTableOption(kToleranceOptions, "tolerance", name, value);
-  if (!parsed && percent) {  // the row's message, quoting the text as given ('%' included)
-    std::string m = parsed.error().message;
-    const std::string quoted = "'" + value + "'";
-    if (const size_t at = m.find(quoted); at != std::string::npos)
-      m.replace(at, quoted.size(), "'" + text + "'");
-    return Error{parsed.error().code, m};
-  }
+  auto parsed = parseTableOption(kToleranceOptions, "tolerance", name, text);
   if (!parsed) return parsed.error();
   const std::string_view n = parsed->spec->name;
+  const bool percent = parsed->value.percent;  // max_protrusion: a percentage of the diagonal
   if (n == "max_protrusion") {
     o->max_protrusion = percent ? 0.0 : parsed->value.real;
     o->max_protrusion_fraction = percent ? parsed->value.real / 100.0 : 0.0;

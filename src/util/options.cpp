@@ -37,7 +37,8 @@ std::string expectation(const OptionSpec& spec) {
                                      " and at most " + detail::numberText(spec.max)
                                : "a number from " + detail::numberText(spec.min) + " to " +
                                      detail::numberText(spec.max)) +
-             (spec.automatic ? " or " + std::string(spec.automatic) : std::string());
+             (spec.automatic ? " or " + std::string(spec.automatic) : std::string()) +
+             (spec.percent ? ", or a percentage ending in %" : "");
     case OptionType::kChoice:
       return choiceList(spec.choices);
   }
@@ -81,6 +82,8 @@ Expected<OptionValue> parseOption(const OptionSpec& spec, const std::string& ful
         ok = true;
         break;
       }
+      v.percent = spec.percent && !text.empty() && text.back() == '%';
+      if (v.percent) text.pop_back();
       v.real = 0.0;
       ok = detail::parseNumber(text, &v.real) && std::isfinite(v.real) &&
            (spec.above_min ? v.real > spec.min : v.real >= spec.min) && v.real <= spec.max;

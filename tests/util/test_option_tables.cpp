@@ -127,6 +127,30 @@ TEST(OptionTables, LimitRowsRefuseTheirLowerEnd) {
   EXPECT_EQ(t.max_er, 1e-9);
 }
 
+// A percent row takes a number with or without a trailing '%' (the same bounds either way) and
+// quotes the text as given when it refuses it; a row without it refuses the '%'.
+TEST(OptionTables, PercentRowsTakeATrailingPercentSign) {
+  constexpr OptionSpec row{"limit", "--limit", OptionType::kReal, 0,       50,   {},
+                           "none",  "",        nullptr,           nullptr, true, true};
+  auto percent = parseOption(row, "5%");
+  ASSERT_TRUE(percent.ok());
+  EXPECT_EQ(percent->real, 5.0);
+  EXPECT_TRUE(percent->percent);
+  auto plain = parseOption(row, "5");
+  ASSERT_TRUE(plain.ok());
+  EXPECT_FALSE(plain->percent);
+  for (const char* bad : {"%", "5%%", "%5", "0%", "51%", "nan%", " 5%"}) {
+    auto refused = parseOption(row, bad);
+    ASSERT_FALSE(refused.ok()) << bad;
+    EXPECT_EQ(refused.error().message, "limit '" + std::string(bad) +
+                                           "': expected a number above 0 and at most 50, or a "
+                                           "percentage ending in %");
+  }
+  RobotFitOptions o;  // the robot's limit is a length only
+  expectRefused(setRobotFitOption(&o, "max_protrusion", "5%"),
+                "max_protrusion '5%': expected a number above 0 and at most 1e+30");
+}
+
 TEST(OptionTables, LinkSolidForDecidesLinks) {
   RobotFitOptions o;
   ASSERT_TRUE(setRobotFitOption(&o, "link_solid", "walls").ok());
