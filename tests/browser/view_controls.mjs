@@ -1,9 +1,10 @@
 // The page's controls and its listed defects, driven by the mouse and keyboard against
 // `sphereset view` of a box: a typed radius leaves the centre as the set holds it (not as its
-// field rounds it), Shift + wheel lights no handle of the gizmo, the colours are each sphere's
-// fraction outside (a sphere off the solid stays red whatever the others do) unless the relative
-// scale is chosen, the gaps are drawn in their own colour on top of the spheres, the fields and
-// buttons fit the panel, "?" shows the mouse and keys, and PNG saves the page's state.
+// field rounds it), Shift + wheel lights no handle of the gizmo nor the pointer on the centre its
+// free-move handle, the colours are each sphere's fraction outside (a sphere off the solid stays
+// red whatever the others do) unless the relative scale is chosen, the gaps are drawn in their
+// own colour on top of the spheres, the fields and buttons fit the panel, "?" shows the mouse and
+// keys, and PNG saves the page's state.
 import { readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { writeBox } from './fixtures.mjs';
@@ -44,6 +45,15 @@ await runTest(async (args, browser) => {
   check(await hooks(() => window.sphereset.gizmoAxis()) === null, 'Shift + wheel lights no handle of the gizmo');
   const grownFrom = await hooks((i) => window.sphereset.scene().solids[0].spheres[i][3], selected.index);
   await settle((i, r) => window.sphereset.scene().solids[0].spheres[i][3] !== r, selected.index, grownFrom);
+
+  // The pointer resting on the selected sphere's centre never lights the gizmo's free-move
+  // handle (all three coordinates at once: taken out; an arrow seen end-on may light).
+  const hub = await hooks((i) => window.sphereset.screenOf(0, window.sphereset.scene().solids[0].spheres[i]),
+    selected.index);
+  await page.mouse.move(hub.x + 3, hub.y + 3);
+  await page.mouse.move(hub.x, hub.y);
+  const lit = await hooks(() => window.sphereset.gizmoAxis());
+  check(lit !== 'XYZ', `the pointer on the selected centre lights no free-move handle (${lit})`);
 
   // Select the big sphere (index 0) at its centre on the screen and type only its radius.
   const at = await hooks(() => window.sphereset.screenOf(0, window.sphereset.scene().solids[0].spheres[0]));

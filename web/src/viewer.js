@@ -364,9 +364,10 @@ export class Viewer {
 
 // The gizmo's centre handle moves the sphere in the screen's plane, changing all three
 // coordinates at once, and lights up whenever the pointer rests at the centre of a selected
-// sphere: it is taken out, the axes and planes stay.
+// sphere: it is taken out, the axes and planes stay. The handles are found through the
+// controls' helper (getHelper), on the child that three.js marks isTransformControlsGizmo.
 function dropFreeMoveHandle(gizmo) {
-  const parts = gizmo._gizmo;  // three.js keeps the handles on this member
+  const parts = gizmo.getHelper().children.find((c) => c.isTransformControlsGizmo);
   if (!parts) return;
   for (const group of [parts.gizmo && parts.gizmo.translate, parts.picker && parts.picker.translate]) {
     if (!group) continue;
