@@ -186,7 +186,7 @@ void addTableOptions(CLI::App* cmd, TableArgs* a, std::span<const OptionSpec> ta
   for (const OptionSpec& o : table) {
     if (std::find(skip.begin(), skip.end(), std::string_view(o.name)) != skip.end()) continue;
     const char* type = o.type == OptionType::kChoice ? "TEXT"
-                       : o.type == OptionType::kReal ? "FLOAT"
+                       : o.type == OptionType::kReal ? (o.percent ? "FLOAT[%]" : "FLOAT")
                                                      : "INT";
     // No CLI11 checks: the library parses and checks the text (one message for every door).
     const std::string help = std::string(o.help) + " (default " + o.default_text + ")";
