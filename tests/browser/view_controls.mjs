@@ -50,8 +50,21 @@ await runTest(async (args, browser) => {
   // handle (all three coordinates at once: taken out; an arrow seen end-on may light).
   const hub = await hooks((i) => window.sphereset.screenOf(0, window.sphereset.scene().solids[0].spheres[i]),
     selected.index);
+  const frames = () => hooks(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+  const sphereOf = await hooks((i) => window.sphereset.scene().solids[0].spheres[i], selected.index);
+  const along = await hooks((c) => window.sphereset.screenOf(0, [c[0] + 0.01, c[1], c[2]]), sphereOf);
+  const norm = Math.hypot(along.x - hub.x, along.y - hub.y);
+  let arrow = null;  // the pointer along the x arrow lights it: the hover is read
+  for (let t = 8; t < 240 && !arrow; t += 4) {
+    const at = { x: hub.x + t * (along.x - hub.x) / norm, y: hub.y + t * (along.y - hub.y) / norm };
+    await page.mouse.move(at.x, at.y);
+    await frames();
+    if (await hooks(() => window.sphereset.gizmoAxis()) === 'X') arrow = at;
+  }
+  check(arrow !== null, 'the pointer along the x arrow lights it');
   await page.mouse.move(hub.x + 3, hub.y + 3);
   await page.mouse.move(hub.x, hub.y);
+  await frames();
   const lit = await hooks(() => window.sphereset.gizmoAxis());
   check(lit !== 'XYZ', `the pointer on the selected centre lights no free-move handle (${lit})`);
 

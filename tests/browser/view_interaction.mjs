@@ -35,23 +35,35 @@ await runTest(async (args, browser) => {
     `Shift + wheel: radius ${radius} -> ${(await serverSet())[index][3]}, wanted ${grown}`);
 
   // A notch after a rest, while the server has not answered the one sent: it starts from the
-  // radius sent, so both notches count (the server's answers held back 800 ms).
-  const holdBack = (request) => {
+  // radius sent, so both notches count. The first edit's request is held until the second notch
+  // has turned; every request is counted.
+  let sentFirst = null;
+  const firstSent = new Promise((done) => { sentFirst = done; });
+  let letFirstGo = null;
+  const secondTurned = new Promise((done) => { letFirstGo = done; });
+  let edits = 0;
+  const holdFirst = (request) => {
     if (request.isInterceptResolutionHandled()) return;
-    if (request.url().includes('/api/edit')) setTimeout(() => request.continue(), 800);
-    else request.continue();
+    const go = () => request.continue().catch(() => {});
+    if (!request.url().includes('/api/edit')) return go();
+    edits += 1;
+    if (edits > 1) return go();
+    sentFirst(true);
+    return secondTurned.then(go);
   };
+  page.on('request', holdFirst);
   await page.setRequestInterception(true);
-  page.on('request', holdBack);
   await page.keyboard.down('Shift');
   await page.mouse.wheel({ deltaY: 100 });
-  await new Promise((done) => setTimeout(done, 450));  // the rest (300 ms) has sent it
+  const rested = await Promise.race([firstSent, new Promise((done) => setTimeout(done, 20000, false))]);
   await page.mouse.wheel({ deltaY: 100 });
   await page.keyboard.up('Shift');
+  letFirstGo();
   const shrunk = grown / 1.05 ** 2;
-  check(await radiusIs(shrunk), 'a notch during a slow answer counts: radius ' +
+  check(rested && await radiusIs(shrunk), 'a notch during a slow answer counts: radius ' +
     `${(await serverSet())[index][3]}, wanted ${shrunk}`);
-  page.off('request', holdBack);
+  check(edits === 2, `the two notches, a rest apart, were sent as two edits (${edits})`);
+  page.off('request', holdFirst);
   await page.setRequestInterception(false);
 
   // Add, then a click on the box's surface.
@@ -88,5 +100,23 @@ await runTest(async (args, browser) => {
   });
   await settle((i) => window.sphereset.scene().solids[0].spheres[i][3] === 0.7, selected);
   check(true, `the radius field sets sphere ${selected}'s radius`);
+
+  // A notch, then Delete before the wheel rests: the notch is sent first, to the sphere it
+  // turned, so Ctrl+Z brings that sphere back grown and no other sphere changed.
+  const kept = await serverSet();
+  await page.keyboard.down('Shift');
+  await page.mouse.wheel({ deltaY: -100 });
+  await page.keyboard.up('Shift');
+  await page.keyboard.press('Delete');
+  await settle((n) => window.sphereset.sphereCount(0) === n, kept.length - 1);
+  await new Promise((done) => setTimeout(done, 600));  // past the wheel's rest (300 ms)
+  await page.keyboard.down('Control');
+  await page.keyboard.press('z');
+  await page.keyboard.up('Control');
+  await settle((n) => window.sphereset.sphereCount(0) === n, kept.length);
+  const restored = await serverSet();
+  const grownOnly = restored.every((sphere, i) => sphere.every((v, j) =>
+    (i === selected && j === 3 ? near(v, kept[i][3] * 1.05, 1e-12) : v === kept[i][j])));
+  check(grownOnly, `a notch then Delete: the notch went to sphere ${selected} before it was deleted`);
   checkNoErrors(errors, 'while using the mouse and keys');
 });

@@ -24,6 +24,7 @@ export class App {
     this.current = 0;       // the solid the certificate panel shows
     this.newestVersion = -Infinity;
     this.queue = Promise.resolve();
+    this.heldBack = [];  // functions that send an edit the page holds back (the wheel's radius)
     this.redCounts = [];
     this.addMode = false;
     this.colorScale = 'absolute';  // colors.js: 'absolute' or 'relative'
@@ -66,8 +67,10 @@ export class App {
     this.viewer.renderNow();
   }
 
-  // Runs fn after every earlier request has been answered; a failure is shown and rethrown.
+  // Runs fn after every earlier request has been answered; a failure is shown and rethrown. An
+  // edit held back (heldBack) is sent first, so requests run in the order the user made them.
   run(fn) {
+    for (const send of this.heldBack) send();
     const result = this.queue.then(fn);
     this.queue = result.catch(() => {});
     return result.catch((e) => {
@@ -102,12 +105,15 @@ export class App {
 
   // --- edits ------------------------------------------------------------------------------
 
+  // edits: a list, or a function that makes it from the set as it is when the edit runs (after
+  // every earlier request).
   edit(k, edits) {
     return this.run(async () => {
       this.requireServer();
       const before = this.solid(k).spheres;
-      const answer = await this.api.edit(k, edits);
-      if (this.applySet(k, answer)) this.history.record(k, inverseEdits(before, edits));
+      const list = typeof edits === 'function' ? edits() : edits;
+      const answer = await this.api.edit(k, list);
+      if (this.applySet(k, answer)) this.history.record(k, inverseEdits(before, list));
       panels.showMessage('');
       this.refresh();
       return answer;
@@ -115,6 +121,17 @@ export class App {
   }
 
   setSphere(k, i, sphere) { return this.edit(k, [{ op: 'set', index: i, sphere }]); }
+  // One coordinate of a sphere (0-2 the centre's, 3 the radius): the others are the set's when
+  // the edit runs, so an edit queued before it stays.
+  setCoordinate(k, i, j, value) {
+    return this.edit(k, () => {
+      const held = this.solid(k).spheres[i];
+      if (!held) throw new Error(`sphere ${i} is no longer in the set`);
+      const sphere = held.slice();
+      sphere[j] = value;
+      return [{ op: 'set', index: i, sphere }];
+    });
+  }
   addSphere(k, sphere) { return this.edit(k, [{ op: 'add', sphere }]); }
   deleteSphere(k, i) { return this.edit(k, [{ op: 'delete', index: i }]); }
 

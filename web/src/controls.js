@@ -226,35 +226,56 @@ function wireGizmo(app, viewer) {
 }
 
 // Shift + wheel over the view: the selected sphere's radius, 5% a notch, sent when the wheel
-// rests. Caught before the orbit controls, which would zoom. A notch turned after a rest but
-// before the server's answer starts from the radius sent, not the set's older one: no notch
-// is lost to a slow answer.
+// rests. Caught before the orbit controls, which would zoom. The wheel owns the radius only: the
+// centre is the set's when the edit runs (app.setCoordinate), so a move queued meanwhile stays. A
+// notch turned after a rest but before the server's answer starts from the radius sent (no notch
+// is lost to a slow answer), an answer that comes while more notches wait shows them again, and
+// any other request (a notch on another sphere, Delete, Ctrl+Z, ...) first sends the notches
+// waiting (app.heldBack).
 function wireWheel(app, viewer, container) {
-  let pending = null;
+  let pending = null;  // { solid, index, radius, sent }
   let timer = 0;
+  const show = (p) => {
+    const held = app.solid(p.solid).spheres[p.index];
+    if (!held) return;
+    const sphere = [held[0], held[1], held[2], p.radius];
+    viewer.solids[p.solid].spheres.preview(p.index, sphere);
+    const s = app.selection;
+    if (s && s.solid === p.solid && s.index === p.index) {
+      viewer.placeHandle(sphere);
+      panels.showSelection(p.index, sphere, undefined);
+    }
+    viewer.requestRender();
+  };
+  const send = () => {
+    clearTimeout(timer);
+    const p = pending;
+    if (!p || p.sent) return;
+    p.sent = true;
+    const request = app.setCoordinate(p.solid, p.index, 3, p.radius);
+    quiet(request);
+    const answered = () => {
+      if (pending === p) pending = null;
+      else if (pending) show(pending);  // later notches, drawn again over the answer
+    };
+    request.then(answered, answered);
+  };
+  app.heldBack.push(send);
   container.addEventListener('wheel', (e) => {
     if (!e.shiftKey || !app.selection) return;
     e.preventDefault();
     e.stopPropagation();
     const s = app.selection;
-    const sphere = (pending && pending.solid === s.solid && pending.index === s.index
-      ? pending.sphere : app.selectedSphere()).slice();
+    const same = pending && pending.solid === s.solid && pending.index === s.index;
+    if (pending && !same) send();  // app.run would too; before `pending` is replaced
     const notch = e.deltaY || e.deltaX;  // some systems turn Shift + wheel into a sideways scroll
-    sphere[3] *= notch < 0 ? 1.05 : 1 / 1.05;
-    pending = { solid: s.solid, index: s.index, sphere };
+    const from = same ? pending.radius : app.selectedSphere()[3];
+    const radius = from * (notch < 0 ? 1.05 : 1 / 1.05);
+    pending = { solid: s.solid, index: s.index, radius, sent: false };
     viewer.gizmo.axis = null;  // no handle lights up under a pointer that only turns the wheel
-    viewer.solids[s.solid].spheres.preview(s.index, sphere);
-    viewer.placeHandle(sphere);
-    viewer.requestRender();
-    panels.showSelection(s.index, sphere, undefined);
+    show(pending);
     clearTimeout(timer);
-    timer = setTimeout(() => {
-      const sent = pending;
-      const request = app.setSphere(sent.solid, sent.index, sent.sphere);
-      quiet(request);
-      const answered = () => { if (pending === sent) pending = null; };
-      request.then(answered, answered);
-    }, 300);
+    timer = setTimeout(send, 300);
   }, { capture: true, passive: false });
 }
 
@@ -282,8 +303,8 @@ function wireKeys(app) {
   });
 }
 
-// A field changes its own coordinate only: the others are sent as the set holds them, never as
-// the fields show them (rounded to 7 digits).
+// A field changes its own coordinate only: the others are sent as the set holds them when the
+// edit runs, never as the fields show them (rounded to 7 digits).
 function wireSelectionFields(app) {
   panels.selectionFields.forEach((id, j) => {
     $(id).addEventListener('change', () => {
@@ -297,9 +318,7 @@ function wireSelectionFields(app) {
         return;
       }
       if (value === sphere[j]) return;
-      const edited = sphere.slice();
-      edited[j] = value;
-      quiet(app.setSphere(s.solid, s.index, edited));
+      quiet(app.setCoordinate(s.solid, s.index, j, value));
     });
   });
 }
