@@ -58,8 +58,10 @@ struct OptionValue {
 // from 1 to 1000000" (or "a number from 0 to 16", "an integer from 0 to 18446744073709551615",
 // "fast, default or best"; "a number above 0 and at most 1e+30" for an above_min row) for anything
 // else, including trailing characters, NaN, infinities, numbers out of range and signs on unsigned
-// values. A keyed row's text is KEY=VALUE (split at the
-// last '='; KEY not empty): "NAME 'TEXT': expected LINK=VALUE, VALUE an integer from 0 to 10".
+// values. A keyed row's text is KEY=VALUE (split at the last '='; KEY not empty): "NAME 'TEXT':
+// expected LINK=VALUE, VALUE an integer from 0 to 10". A percent row's number may end in one '%',
+// taken off before the range is checked (not after the automatic word); its message adds
+// ", optionally followed by %" and quotes the text as given.
 Expected<OptionValue> parseOption(const OptionSpec& spec, const std::string& text);
 
 // "n, quality, seed, ..." : the names of a table, for messages listing them.

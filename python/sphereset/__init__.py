@@ -301,7 +301,7 @@ def evaluate(mesh: MeshLike, spheres: Any, *, seed: Optional[int] = None,
 
 def eval_option_table() -> List[Dict[str, Any]]:
     """The evaluation's options (name, flag, type, min, max, above_min, percent, choices, default,
-    help): the keywords of :func:`evaluate` and the flags of ``sphereset eval``."""
+    help, key, automatic): the keywords of :func:`evaluate` and the flags of ``sphereset eval``."""
     return _core._eval_option_table()
 
 

@@ -159,7 +159,7 @@ def _parser() -> argparse.ArgumentParser:
     # The tolerance's options: one per row of the library's tolerance table.
     for row in _core._tolerance_option_table():
         p.add_argument(*row["flag"].split(","), dest=row["name"], default=None,
-                       metavar=row["type"].upper(),
+                       metavar=row["type"].upper() + ("[%]" if row["percent"] else ""),
                        help=f'{row["help"]} (default {row["default"]})')
     # The repair's options: one per row of the library's repair table, parsed by the library.
     for row in _core._repair_option_table():

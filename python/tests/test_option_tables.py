@@ -75,12 +75,10 @@ def test_repair_keywords_have_one_home():
     assert (opts["wrap_alpha"], opts["weld_tolerance"], opts["fill_cavities"]) == (0.25, -1.0, False)
 
 
-
 def test_percent_rows_are_marked():
-    # A row that takes a trailing '%' says so; only fit's protrusion tolerance does (the robot's
-    # limits are lengths).
-    marked = {(t.__name__, row["name"]) for t in (core._tolerance_option_table,
-                                                  core._robot_option_table,
-                                                  core._fit_option_table)
-              for row in t() if row["percent"]}
+    # A row that takes a trailing '%' says so; of every table, only fit's protrusion tolerance
+    # does (the robot's limits are lengths).
+    tables = [getattr(core, name) for name in dir(core) if name.endswith("_option_table")]
+    assert len(tables) >= 9
+    marked = {(t.__name__, row["name"]) for t in tables for row in t() if row["percent"]}
     assert marked == {("_tolerance_option_table", "max_protrusion")}

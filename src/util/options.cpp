@@ -38,7 +38,7 @@ std::string expectation(const OptionSpec& spec) {
                                : "a number from " + detail::numberText(spec.min) + " to " +
                                      detail::numberText(spec.max)) +
              (spec.automatic ? " or " + std::string(spec.automatic) : std::string()) +
-             (spec.percent ? ", or a percentage ending in %" : "");
+             (spec.percent ? ", optionally followed by %" : "");
     case OptionType::kChoice:
       return choiceList(spec.choices);
   }

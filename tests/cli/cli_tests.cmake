@@ -350,8 +350,8 @@ cli_test(fit_tolerance_with_n 2 ARGS fit ${link} -n 8 --max-er 0.5 -o ${work}/ne
          STDERR "n and a tolerance .max_protrusion, max_er. exclude each other" FORBID ${work}/never_tol2.json)
 cli_test(fit_tolerance_zero 2 ARGS fit ${link} --max-protrusion 0 -o ${work}/never_tol5.json
          STDERR "max_protrusion '0': expected a number above 0 and at most" FORBID ${work}/never_tol5.json)
-cli_test(fit_tolerance_percent_word 2 ARGS fit ${link} --max-protrusion 5%% -o ${work}/never_tol6.json
-         STDERR "max_protrusion '5%%': expected a number above 0 and at most 1e.30, or a percentage ending in %"
+cli_test(fit_tolerance_percent_twice 2 ARGS fit ${link} --max-protrusion 5%% -o ${work}/never_tol6.json
+         STDERR "max_protrusion '5%%': expected a number above 0 and at most 1e.30, optionally followed by %"
          FORBID ${work}/never_tol6.json)
 cli_test(fit_help_percent 0 ARGS fit --help STDOUT "--max-protrusion FLOAT.%.")
 cli_test(fit_tolerance_nan 2 ARGS fit ${link} --max-er nan -o ${work}/never_tol3.json

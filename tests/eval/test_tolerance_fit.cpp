@@ -145,16 +145,16 @@ TEST(ToleranceFit, BadRequestsAreRefused) {
   t.max_protrusion = -1.0;
   auto negative = fitToTolerance(index, fastRequest(), t);
   ASSERT_FALSE(negative.ok());
-  EXPECT_EQ(negative.error().message,
-            "max_protrusion '-1': expected a number above 0 and at most 1e+30, or a "
-            "percentage ending in %");
+  EXPECT_EQ(
+      negative.error().message,
+      "max_protrusion '-1': expected a number above 0 and at most 1e+30, optionally followed by %");
   t.max_protrusion = 0.0;
   t.max_protrusion_fraction = -0.05;  // checked as the percentage a user would type
   auto fraction = fitToTolerance(index, fastRequest(), t);
   ASSERT_FALSE(fraction.ok());
   EXPECT_EQ(fraction.error().message,
-            "max_protrusion '-5%': expected a number above 0 and at most 1e+30, or a "
-            "percentage ending in %");
+            "max_protrusion '-5%': expected a number above 0 and at most 1e+30, optionally "
+            "followed by %");
   t.max_protrusion_fraction = 0.0;
   ToleranceOptions o;
   EXPECT_TRUE(setToleranceOption(&o, "max_protrusion", "5%").ok());
@@ -171,9 +171,9 @@ TEST(ToleranceFit, BadRequestsAreRefused) {
   EXPECT_EQ(zero.error().message, "max_er '0': expected a number above 0 and at most 1000000");
   auto zero_percent = setToleranceOption(&o, "max_protrusion", "0%");
   ASSERT_FALSE(zero_percent.ok());
-  EXPECT_EQ(zero_percent.error().message,
-            "max_protrusion '0%': expected a number above 0 and at most 1e+30, or a "
-            "percentage ending in %");
+  EXPECT_EQ(
+      zero_percent.error().message,
+      "max_protrusion '0%': expected a number above 0 and at most 1e+30, optionally followed by %");
   EXPECT_FALSE(setToleranceOption(&o, "max_spheres", "0").ok());
 }
 

@@ -142,9 +142,9 @@ TEST(OptionTables, PercentRowsTakeATrailingPercentSign) {
   for (const char* bad : {"%", "5%%", "%5", "0%", "51%", "nan%", " 5%"}) {
     auto refused = parseOption(row, bad);
     ASSERT_FALSE(refused.ok()) << bad;
-    EXPECT_EQ(refused.error().message, "limit '" + std::string(bad) +
-                                           "': expected a number above 0 and at most 50, or a "
-                                           "percentage ending in %");
+    EXPECT_EQ(refused.error().message,
+              "limit '" + std::string(bad) +
+                  "': expected a number above 0 and at most 50, optionally followed by %");
   }
   RobotFitOptions o;  // the robot's limit is a length only
   expectRefused(setRobotFitOption(&o, "max_protrusion", "5%"),
