@@ -14,7 +14,6 @@
 #include <string>
 #include <string_view>
 #include <utility>
-#include <vector>
 
 #include "eval/count_search.hpp"
 #include "sphereset/evaluate.hpp"
@@ -107,17 +106,21 @@ Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& 
 Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
                                             const ToleranceOptions& t) {
   const auto t0 = std::chrono::steady_clock::now();
-  // Each limit that is set (0: none), and the cap, as its text would be checked at a door (the
-  // fraction as the percentage a user types).
-  std::vector<std::pair<const char*, std::string>> given{
-      {"max_spheres", std::to_string(t.max_spheres)}};
-  if (t.max_protrusion != 0.0) given.emplace_back("max_protrusion", optionText(t.max_protrusion));
-  if (t.max_protrusion_fraction != 0.0)
-    given.emplace_back("max_protrusion", optionText(100.0 * t.max_protrusion_fraction) + "%");
-  if (t.max_er != 0.0) given.emplace_back("max_er", optionText(t.max_er));
-  for (const auto& [name, text] : given) {
+  // The cap and each limit that is set (0: none), checked by its row as a door's text would be
+  // (checkTableValue); the fraction as the percentage a user types.
+  if (Status st = checkTableValue(kToleranceOptions, "tolerance", "max_spheres", t.max_spheres);
+      !st)
+    return st.error();
+  for (const auto& [name, value] :
+       {std::pair<const char*, double>{"max_protrusion", t.max_protrusion},
+        std::pair<const char*, double>{"max_er", t.max_er}})
+    if (value != 0.0)
+      if (Status st = checkTableValue(kToleranceOptions, "tolerance", name, value); !st)
+        return st.error();
+  if (t.max_protrusion_fraction != 0.0) {
     ToleranceOptions scratch;
-    if (Status st = setToleranceOption(&scratch, name, text); !st) return st.error();
+    const std::string percent = optionText(100.0 * t.max_protrusion_fraction) + "%";
+    if (Status st = setToleranceOption(&scratch, "max_protrusion", percent); !st) return st.error();
   }
   if (!t.active())
     return Error{ErrorCode::kInvalidArgument,
