@@ -313,6 +313,7 @@ class ProgressiveFit {
  private:
   struct Impl;
   explicit ProgressiveFit(std::unique_ptr<Impl> impl);
+  Impl& run() const;  // the run held, asserted (a moved-from object holds none)
   std::unique_ptr<Impl> impl_;
 };
 

@@ -87,8 +87,9 @@ std::string optionText(double value);
 // A value already in a struct checked against its row, as if a user had typed it: the shortest
 // text that reads back as `value` ("1e+200", "0.5", "nan") through parseTableOption, so a
 // struct set in code is refused with the message a typed value gets. `key` prefixes the text
-// as KEY= for keyed rows.
+// as KEY= for keyed rows; `percent` suffixes it with '%' for a percent row's value given as the
+// percentage a user types (the row refuses it if it is not a percent row).
 Status checkTableValue(std::span<const OptionSpec> table, const char* what, const std::string& name,
-                       double value, const std::string& key = {});
+                       double value, const std::string& key = {}, bool percent = false);
 
 }  // namespace sphereset

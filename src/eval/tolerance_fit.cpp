@@ -107,7 +107,7 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
                                             const ToleranceOptions& t) {
   const auto t0 = std::chrono::steady_clock::now();
   // The cap and each limit that is set (0: none), checked by its row as a door's text would be
-  // (checkTableValue); the fraction as the percentage a user types.
+  // (checkTableValue); the fraction as the percentage a user types ("5%").
   if (Status st = checkTableValue(kToleranceOptions, "tolerance", "max_spheres", t.max_spheres);
       !st)
     return st.error();
@@ -117,11 +117,11 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
     if (value != 0.0)
       if (Status st = checkTableValue(kToleranceOptions, "tolerance", name, value); !st)
         return st.error();
-  if (t.max_protrusion_fraction != 0.0) {
-    ToleranceOptions scratch;
-    const std::string percent = optionText(100.0 * t.max_protrusion_fraction) + "%";
-    if (Status st = setToleranceOption(&scratch, "max_protrusion", percent); !st) return st.error();
-  }
+  if (t.max_protrusion_fraction != 0.0)
+    if (Status st = checkTableValue(kToleranceOptions, "tolerance", "max_protrusion",
+                                    100.0 * t.max_protrusion_fraction, {}, true);
+        !st)
+      return st.error();
   if (!t.active())
     return Error{ErrorCode::kInvalidArgument,
                  "a tolerance search needs max_protrusion or max_er above 0"};

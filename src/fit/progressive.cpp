@@ -154,15 +154,17 @@ ProgressiveFit::ProgressiveFit(ProgressiveFit&&) noexcept = default;
 ProgressiveFit& ProgressiveFit::operator=(ProgressiveFit&&) noexcept = default;
 ProgressiveFit::~ProgressiveFit() = default;
 
+ProgressiveFit::Impl& ProgressiveFit::run() const {
+  assert(impl_ && "ProgressiveFit used after a move");
+  return *impl_;
+}
+
 bool ProgressiveFit::allows(const FitOptions& options) {
   return options.method == FitMethod::kVariational && options.restarts == 1 &&
          options.decimation == 0.0;
 }
 
-int ProgressiveFit::maxCount() const {
-  assert(impl_ && "ProgressiveFit used after a move");
-  return impl_->options.num_spheres;
-}
+int ProgressiveFit::maxCount() const { return run().options.num_spheres; }
 
 Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const FitOptions& options,
                                                const ProgressiveFit* warm_from,
@@ -183,11 +185,10 @@ Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const Fi
                  "asked for up to " + std::to_string(options.num_spheres) + " spheres but only " +
                      std::to_string(points) + " points were sampled (raise --points)"};
   if (warm_from) {
-    assert(warm_from->impl_ && "ProgressiveFit used after a move");
-    if (&warm_from->impl_->index != &index)
+    if (&warm_from->run().index != &index)
       return Error{ErrorCode::kInvalidArgument,
                    "a progressive run can start only from a run on the same solid"};
-    for (const auto& [count, c] : warm_from->impl_->clusterings)
+    for (const auto& [count, c] : warm_from->run().clusterings)
       if (count <= options.num_spheres) impl->clusterings.emplace(count, c);
   }
   return ProgressiveFit(std::move(impl));
@@ -231,15 +232,13 @@ detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet&
 }  // namespace
 
 int ProgressiveFit::startCount(int count) const {
-  assert(impl_ && "ProgressiveFit used after a move");
-  if (impl_->fits.contains(count)) return count;  // clustered by this run
-  return startFrom(impl_->clusterings, count, impl_->progressive.start_ratio,
-                   impl_->progressive.adopt);
+  const Impl& m = run();
+  if (m.fits.contains(count)) return count;  // clustered by this run
+  return startFrom(m.clusterings, count, m.progressive.start_ratio, m.progressive.adopt);
 }
 
 Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split_first) {
-  assert(impl_ && "ProgressiveFit used after a move");
-  Impl& m = *impl_;
+  Impl& m = run();
   if (count < 1 || count > m.options.num_spheres)
     return Error{ErrorCode::kInvalidArgument, "count " + std::to_string(count) +
                                                   " is outside 1 to " +

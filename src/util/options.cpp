@@ -131,13 +131,14 @@ std::string optionText(double value) {
 }
 
 Status checkTableValue(std::span<const OptionSpec> table, const char* what, const std::string& name,
-                       double value, const std::string& key) {
+                       double value, const std::string& key, bool percent) {
   // Whole numbers for integer rows as a user types them ("10000000", not "1e+07").
   const OptionSpec* spec = findOption(table, name);
   const bool whole = spec && spec->type != OptionType::kReal && std::isfinite(value) &&
                      value == std::floor(value) && std::fabs(value) < 9e18;
   std::string text = whole ? std::to_string(static_cast<int64_t>(value)) : optionText(value);
   if (spec && spec->automatic && value == kAutomatic) text = spec->automatic;
+  if (percent) text += "%";
   if (!key.empty()) text = key + "=" + text;
   if (auto v = parseTableOption(table, what, name, text); !v) return v.error();
   return {};

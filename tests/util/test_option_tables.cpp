@@ -149,6 +149,15 @@ TEST(OptionTables, PercentRowsTakeATrailingPercentSign) {
   RobotFitOptions o;  // the robot's limit is a length only
   expectRefused(setRobotFitOption(&o, "max_protrusion", "5%"),
                 "max_protrusion '5%': expected a number above 0 and at most 1e+30");
+  // A struct's percentage, checked as the text a user would type.
+  const OptionSpec table[] = {row};
+  EXPECT_TRUE(checkTableValue(table, "test", "limit", 5.0, {}, true).ok());
+  expectRefused(checkTableValue(table, "test", "limit", 60.0, {}, true),
+                "limit '60%': expected a number above 0 and at most 50, optionally followed by %");
+  const OptionSpec length_only[] = {
+      {"limit", "--limit", OptionType::kReal, 0, 50, {}, "none", "", nullptr, nullptr, true}};
+  expectRefused(checkTableValue(length_only, "test", "limit", 5.0, {}, true),
+                "limit '5%': expected a number above 0 and at most 50");
 }
 
 TEST(OptionTables, LinkSolidForDecidesLinks) {
