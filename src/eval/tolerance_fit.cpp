@@ -39,8 +39,9 @@ constexpr OptionSpec kToleranceOptions[] = {
      limits::kMaxCoordinate,
      {},
      "none",
-     "The fewest spheres whose certified protrusion is at most this (a length above 0; with a "
-     "trailing %, a percentage of the bounding-box diagonal)",
+     "Of the counts tried (1, 2, 4, ..., then a bisection), the fewest spheres whose certified "
+     "protrusion is at most this (a length above 0; with a trailing %, a percentage of the "
+     "bounding-box diagonal)",
      nullptr,
      nullptr,
      true,
@@ -52,7 +53,8 @@ constexpr OptionSpec kToleranceOptions[] = {
      1e6,
      {},
      "none",
-     "The fewest spheres whose E_r (summed outside volume / volume) is at most this (above 0)",
+     "Of the counts tried, the fewest spheres whose E_r (summed outside volume / volume) is at "
+     "most this (above 0)",
      nullptr,
      nullptr,
      true},

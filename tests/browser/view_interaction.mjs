@@ -1,7 +1,8 @@
 // The page driven by the mouse and keyboard, as a user drives it, against `sphereset view` of a
-// box: a click selects a sphere, Shift + wheel grows its radius, Add then a click on the surface
-// adds a sphere of 5% of the diagonal there, the Delete key removes the selected sphere, Ctrl+Z
-// brings it back and Ctrl+Y removes it again; every change is the server's set afterwards.
+// box: a click selects a sphere (the panel shows its protrusion bound), Shift + wheel grows its
+// radius, Add then a click on the surface adds a sphere of 5% of the diagonal there, the Delete
+// key removes the selected sphere, Ctrl+Z brings it back and Ctrl+Y removes it again; every
+// change is the server's set afterwards.
 import { writeBox, writeBoxSpheres } from './fixtures.mjs';
 import { check, checkNoErrors, near, openPage, runTest, startView } from './harness.mjs';
 
@@ -20,6 +21,15 @@ await runTest(async (args, browser) => {
   const index = await page.$eval('#sel-index', (e) => Number(e.textContent.replace('#', '')));
   check(await page.$eval('#selection', (e) => !e.classList.contains('hidden')) && index >= 0,
     `a click selects sphere ${index}`);
+  // The panel shows that sphere's own certified protrusion bound, the certificate's.
+  const shownBound = () => page.$eval('#sel-protrusion', (e) => e.textContent);
+  const boundOf = () => page.evaluate((i) => window.sphereset.certificate(0).sphere_protrusion[i], index);
+  const bound = await boundOf();
+  const largest = await page.evaluate(() => window.sphereset.certificate(0).protrusion);
+  check(Number.isFinite(bound) && bound > 0 && bound <= largest,
+    `sphere ${index}'s protrusion bound ${bound} is positive and at most the set's ${largest}`);
+  check(await shownBound() === `at most ${Number(bound.toPrecision(4))}`,
+    `the panel shows it (${await shownBound()})`);
 
   // Three notches of Shift + wheel: the radius times 1.05^3, sent when the wheel rests (once,
   // or in parts when the notches come slower than the rest).
@@ -33,6 +43,10 @@ await runTest(async (args, browser) => {
   const grown = radius * 1.05 ** 3;
   check(await radiusIs(grown),
     `Shift + wheel: radius ${radius} -> ${(await serverSet())[index][3]}, wanted ${grown}`);
+  // Grown, the sphere reaches farther out: the panel follows the new certificate.
+  const grownBound = await boundOf();
+  check(grownBound > bound && await shownBound() === `at most ${Number(grownBound.toPrecision(4))}`,
+    `its protrusion bound grows with it: ${bound} -> ${grownBound}, shown ${await shownBound()}`);
 
   // A notch after a rest, while the server has not answered the one sent: it starts from the
   // radius sent, so both notches count. The first edit's request is held until the second notch

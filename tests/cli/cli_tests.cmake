@@ -335,12 +335,13 @@ if(SPHERESET_WITH_REPAIR)
 endif()
 
 # fit with a tolerance: the fewest spheres whose certified protrusion is within 12 % of the
-# diagonal (the count tried below it did not meet it), the curve on request; a tolerance no
+# diagonal (a count tried below it did not meet it), the curve on request; a tolerance no
 # count up to the cap meets is exit 10 with nothing written, or the best set with
 # --best-effort; -n with a tolerance, and bad tolerances, are exit 2.
 cli_test(fit_tolerance 0 ARGS fit ${link} --max-protrusion 12% --quality fast --curve
          ${work}/link_curve.csv -o ${work}/link_tol.json --json -q
-         FILE ${work}/link_curve.csv STDOUT "\"tolerance\":\\{\"curve\":.*\"met\":true")
+         FILE ${work}/link_curve.csv
+         STDOUT "\"tolerance\":\\{\"curve\":.*\"meets\":false.*\"met\":true")
 cli_test(fit_tolerance_not_met 10 ARGS fit ${link} --max-protrusion 0.0000001 --max-spheres 4
          --quality fast -o ${work}/never_tol.json -q
          STDERR "no count up to 4 meets the tolerance .best: n = [0-9]+, protrusion" FORBID ${work}/never_tol.json)
@@ -357,5 +358,8 @@ cli_test(fit_help_percent 0 ARGS fit --help STDOUT "--max-protrusion FLOAT.%.")
 cli_test(fit_tolerance_nan 2 ARGS fit ${link} --max-er nan -o ${work}/never_tol3.json
          STDERR "max_er 'nan': expected a number above 0 and at most 1000000" FORBID ${work}/never_tol3.json)
 cli_test(fit_curve_without_tolerance 2 ARGS fit ${link} -n 4 --curve ${work}/never_curve.csv
-         -o ${work}/never_tol4.json STDERR "--curve and --best-effort go with a tolerance"
+         -o ${work}/never_tol4.json STDERR "--curve, --best-effort and --max-spheres go with a tolerance"
          FORBID ${work}/never_tol4.json)
+cli_test(fit_cap_without_tolerance 2 ARGS fit ${link} -n 4 --max-spheres 8
+         -o ${work}/never_tol7.json STDERR "--max-spheres go with a tolerance"
+         FORBID ${work}/never_tol7.json)

@@ -311,11 +311,14 @@ export class App {
       return;
     }
     const solid = this.solid(s.solid);
-    const outside = (solid.certificate || {}).outside_volume || [];
+    const certificate = solid.certificate || {};
+    const outside = certificate.outside_volume || [];
+    const protrusion = certificate.sphere_protrusion || [];
     this.viewer.setGizmoEnabled(this.editable(s.solid));
     panels.setSelectionEditable(this.editable(s.solid));
     this.viewer.select(s.solid, sphere);
-    panels.showSelection(s.index, sphere, outside[s.index], this.solidName(s.solid));
+    panels.showSelection(s.index, sphere, outside[s.index], this.solidName(s.solid),
+      protrusion[s.index]);
   }
 
   // --- what is shown ----------------------------------------------------------------------

@@ -145,8 +145,10 @@ export function showSolidChoice(solids, current, onChange) {
   select.onchange = () => onChange(Number(select.value));
 }
 
-// sphere: [x,y,z,r] or null to hide the panel; link: the name of its solid.
-export function showSelection(index, sphere, outside, link) {
+// sphere: [x,y,z,r] or null to hide the panel; link: the name of its solid; outside and
+// protrusion: its outside volume and certified protrusion bound (undefined while an edit is only
+// previewed: shown as n/a until the server certifies it).
+export function showSelection(index, sphere, outside, link, protrusion) {
   $('selection').classList.toggle('hidden', !sphere);
   if (!sphere) return;
   $('sel-index').textContent = `#${index}`;
@@ -155,6 +157,7 @@ export function showSelection(index, sphere, outside, link) {
     if (document.activeElement !== $(id)) $(id).value = number(sphere[j], 7);
   });
   $('sel-outside').textContent = number(outside);
+  $('sel-protrusion').textContent = Number.isFinite(protrusion) ? `at most ${number(protrusion, 4)}` : 'n/a';
 }
 
 
