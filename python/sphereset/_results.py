@@ -277,6 +277,8 @@ class RobotLinkFit:
     """Σ outside volume of the fitted spheres"""
     protrusion: float
     """certified: no point of the link's spheres (padded) is farther than this from the fitted solid (length)"""
+    sphere_protrusion: np.ndarray
+    """each fitted sphere's certified bound (padded), in the order the fitted spheres follow the primitives in `spheres`"""
     padding: float
     """added to every radius"""
     budget_curve: Dict[str, np.ndarray]

@@ -10,6 +10,9 @@ namespace sphereset {
 
 std::vector<ResultField> robotLinkFields(const RobotLinkFit& j) {
   std::vector<int64_t> counts(j.curve.counts.begin(), j.curve.counts.end());
+  std::vector<double> sphere_protrusion;
+  if (j.fitted)
+    for (double b : j.eval.sphere_protrusion) sphere_protrusion.push_back(b + j.padding);
   return {
       {"link", j.link, "the link's name"},
       {"count", static_cast<int64_t>(j.spheres.size()), "spheres, primitives included"},
@@ -31,6 +34,9 @@ std::vector<ResultField> robotLinkFields(const RobotLinkFit& j) {
       {"protrusion", j.fitted ? j.eval.protrusion + j.padding : 0.0,
        "certified: no point of the link's spheres (padded) is farther than this from the "
        "fitted solid (length)"},
+      {"sphere_protrusion", sphere_protrusion,
+       "each fitted sphere's certified bound (padded), in the order the fitted spheres follow "
+       "the primitives in `spheres`"},
       {"padding", j.padding, "added to every radius"},
       {"budget_curve.counts", counts, "under a budget: the quick fits' sphere counts"},
       {"budget_curve.outside_volume", j.curve.outside_volume, "and their outside volumes"},

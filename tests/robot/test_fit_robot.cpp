@@ -104,6 +104,14 @@ TEST(FitRobot, ProtrusionLimitGivesEachLinkItsFewestSpheresThatMeetIt) {
     // The padded spheres' certified protrusion is within the limit.
     EXPECT_LE(l.eval.protrusion + l.padding, limit) << l.link;
     expectPointsCovered(l.repair.original, l.spheres);
+    // Per sphere (the result's field): one padded bound per fitted sphere, the largest the
+    // link's.
+    std::vector<double> per;
+    for (const ResultField& f : robotLinkFields(l))
+      if (std::string(f.name) == "sphere_protrusion") per = std::get<std::vector<double>>(f.value);
+    ASSERT_EQ(per.size(), l.spheres.size() - static_cast<size_t>(l.primitives)) << l.link;
+    EXPECT_DOUBLE_EQ(*std::max_element(per.begin(), per.end()), l.eval.protrusion + l.padding);
+    for (double b : per) EXPECT_GE(b, l.padding) << l.link;
   }
   EXPECT_GE(limited, 2);
   // A limit no count meets within the cap: reported, not an error.
