@@ -205,8 +205,11 @@ Status setToleranceOption(ToleranceOptions* options, const std::string& name,
 // (max_protrusion, max_er) exclude each other: the tolerance chooses the count"). Every door
 // that takes both (fit, batch, Python) asks this before its work; fitToTolerance asks it too.
 Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& tolerance);
-// Errors: no limit set, a limit set that its option's row refuses (negative, NaN; the fraction as
-// its percentage), max_spheres out of range, n given (checkToleranceRequest), the request's own
+// The options of a tolerance search (kInvalidArgument): no limit set, a limit set that its
+// option's row refuses (negative, NaN; the fraction as its percentage), max_spheres out of range.
+// fitToTolerance asks it; a door asks it before loading or repairing anything.
+Status checkToleranceOptions(const ToleranceOptions& tolerance);
+// Errors: those of checkToleranceOptions, n given (checkToleranceRequest), the request's own
 // (checkFitRequest), those of fitSpheres and evaluateSpheres.
 Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
                                             const ToleranceOptions& options);

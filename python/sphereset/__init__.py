@@ -252,20 +252,33 @@ def fit(mesh: MeshLike, n: int = 32, *, seed: int = 1, quality: str = "default",
 def fit_to_tolerance(mesh: MeshLike, *, max_protrusion: Union[float, str, None] = None,
                      max_er: Optional[float] = None, max_spheres: Optional[int] = None,
                      seed: int = 1, quality: str = "default", padding: float = 0.0,
+                     points: int = 0, iterations: Optional[int] = None,
+                     restarts: Optional[int] = None, decimation: Optional[float] = None,
+                     optimizer: str = "powell", init: str = "fps", method: str = "variational",
+                     progress: Optional[ProgressCallback] = None,
                      repair_options: Dict[str, Any]) -> Dict[str, Any]:
-    """The fewest spheres that meet a tolerance, as ``sphereset fit --max-protrusion D --max-er
-    X`` finds them (the same library call): ``max_protrusion`` a length, or "P%" of the
-    bounding-box diagonal, bounding the certified protrusion; ``max_er`` bounding E_r;
-    ``max_spheres`` the cap (256). Returns {"met", "n", "protrusion_limit", "fit" (a FitResult),
-    "eval" (the check's fields, ``protrusion`` included), "curve" (every count tried: n, er_sum,
-    protrusion, covered, meets, seconds), "seconds"}; when no count up to the cap meets it,
-    "met" is False and "fit" is the best count tried (the command exits 10 instead).
+    """Of the counts tried, the fewest spheres that meet a tolerance, as ``sphereset fit
+    --max-protrusion D --max-er X`` finds them (the same library call): ``max_protrusion`` a
+    length, or "P%" of the bounding-box diagonal, bounding the certified protrusion; ``max_er``
+    bounding E_r; ``max_spheres`` the cap (256). The fit keywords are :func:`fit`'s (without
+    ``n``: the tolerance chooses it); the tolerance and the fit options are checked before the
+    mesh is read or repaired. ``progress`` is called after each count tried with {"n", "er_sum",
+    "protrusion", "covered", "meets", "seconds"}; an exception it raises ends the search and
+    propagates, and so does Ctrl-C (KeyboardInterrupt) between counts.
+
+    Returns {"met", "n", "protrusion_limit", "fit" (a FitResult), "eval" (the check's fields,
+    ``protrusion`` included), "curve" (every count tried, as ``progress`` gets them),
+    "seconds"}; when no count up to the cap meets it, "met" is False and "fit" is the best count
+    tried (the command exits 10 instead).
     """
     tolerance = dict(max_protrusion=max_protrusion, max_er=max_er, max_spheres=max_spheres)
-    options = dict(quality=quality, seed=seed, padding=padding)
+    options = dict(quality=quality, seed=seed, padding=padding, points=points,
+                   iterations=iterations, restarts=restarts, decimation=decimation,
+                   optimizer=optimizer, init=init, method=method)
     _core._check_fit_options(options)
+    _core._check_tolerance(tolerance)
     s = solid(mesh, **repair_options)
-    d = _core._fit_to_tolerance(s, options, tolerance)
+    d = _core._fit_to_tolerance(s, options, tolerance, progress)
     d["fit"] = FitResult(**d["fit"])
     return d
 

@@ -129,6 +129,26 @@ py::list resultSchema(const std::vector<ResultField>& fields) {
 
 namespace {
 
+// A tolerance search's options from Python keywords (None: unset), parsed by their rows.
+ToleranceOptions toleranceOptions(const py::dict& tolerance) {
+  ToleranceOptions to;
+  setOptions(tolerance, [&](const std::string& name, const std::string& text) {
+    return setToleranceOption(&to, name, text);
+  });
+  return to;
+}
+
+py::dict curvePointDict(const CurvePoint& c) {
+  py::dict p;
+  p["n"] = c.n;
+  p["er_sum"] = c.er_sum;
+  p["protrusion"] = c.protrusion;
+  p["covered"] = c.covered;
+  p["meets"] = c.meets;
+  p["seconds"] = c.seconds;
+  return p;
+}
+
 py::dict optionsDict(const FitOptions& fo) {
   py::dict d;
   d["n"] = fo.num_spheres;
@@ -173,13 +193,17 @@ void bindFit(py::module_& m) {
       py::arg("solid"), py::arg("options"), py::arg("progress"));
   m.def(
       "_fit_to_tolerance",
-      [](const std::shared_ptr<PySolid>& solid, const py::dict& options,
-         const py::dict& tolerance) {
+      [](const std::shared_ptr<PySolid>& solid, const py::dict& options, const py::dict& tolerance,
+         const py::object& progress) {
         const FitRequest rq = fitRequest(options);
-        ToleranceOptions to;
-        setOptions(tolerance, [&](const std::string& name, const std::string& text) {
-          return setToleranceOption(&to, name, text);
-        });
+        ToleranceOptions to = toleranceOptions(tolerance);
+        // After each count tried; Ctrl-C and an exception it raises end the search there.
+        const py::object* cb = &progress;
+        to.progress = [cb](const CurvePoint& c) {
+          py::gil_scoped_acquire gil;
+          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+          if (!cb->is_none()) (*cb)(curvePointDict(c));
+        };
         to.original = solid->original();
         to.walls = solid->walls();
         Expected<ToleranceFitResult> r = Error{ErrorCode::kInvalidArgument, "not run"};
@@ -194,16 +218,7 @@ void bindFit(py::module_& m) {
         fit["options"] = optionsDict(fitOptionsFor(at));
         fit["repair"] = repairDict(solid->repair);
         py::list curve;
-        for (const CurvePoint& c : r->curve) {
-          py::dict p;
-          p["n"] = c.n;
-          p["er_sum"] = c.er_sum;
-          p["protrusion"] = c.protrusion;
-          p["covered"] = c.covered;
-          p["meets"] = c.meets;
-          p["seconds"] = c.seconds;
-          curve.append(p);
-        }
+        for (const CurvePoint& c : r->curve) curve.append(curvePointDict(c));
         py::dict d;
         d["met"] = r->met;
         d["n"] = r->n;
@@ -214,8 +229,15 @@ void bindFit(py::module_& m) {
         d["seconds"] = r->seconds;
         return d;
       },
-      py::arg("solid"), py::arg("options"), py::arg("tolerance"));
+      py::arg("solid"), py::arg("options"), py::arg("tolerance"), py::arg("progress"));
   m.def("_tolerance_option_table", [] { return optionTable(toleranceOptionTable()); });
+  m.def(
+      "_check_tolerance",
+      [](const py::dict& tolerance) {
+        if (Status st = checkToleranceOptions(toleranceOptions(tolerance)); !st)
+          raise(st.error().code, st.error().message);
+      },
+      py::arg("tolerance"));
   m.def(
       "_check_fit_options", [](const py::dict& options) { fitRequest(options); },
       py::arg("options"));

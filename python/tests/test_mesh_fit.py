@@ -378,3 +378,29 @@ def test_fit_to_tolerance_same_as_the_command(cli, tmp_path):
     assert not none["met"] and [c["n"] for c in none["curve"]] == [1, 2]
     with pytest.raises(ss.InvalidArgumentError, match="max_er 'nan'"):
         ss.fit_to_tolerance(LINK, max_er=float("nan"))
+
+
+def test_fit_to_tolerance_takes_the_fit_keywords(tmp_path):
+    """fit_to_tolerance takes fit's keywords (the same spheres as the command given them), calls
+    progress after each count tried, and refuses a bad tolerance or option before it reads the
+    mesh (a missing file is not what it reports)."""
+    seen = []
+    t = ss.fit_to_tolerance(LINK, max_protrusion="12%", quality="fast", iterations=5,
+                            points=800, progress=seen.append)
+    assert t["fit"].options["iterations"] == 5 and t["fit"].options["points"] == 800
+    assert seen == t["curve"] and t["met"] and seen[-1]["n"] > 0
+    missing = str(tmp_path / "missing.stl")
+    with pytest.raises(ss.InvalidArgumentError, match="max_protrusion '-1'"):
+        ss.fit_to_tolerance(missing, max_protrusion=-1)
+    with pytest.raises(ss.InvalidArgumentError, match="needs max_protrusion or max_er"):
+        ss.fit_to_tolerance(missing, max_spheres=8)
+    with pytest.raises(ss.InvalidArgumentError, match="restarts '0'"):
+        ss.fit_to_tolerance(missing, max_er=1.0, restarts=0)
+
+    class Stop(Exception):
+        pass
+
+    def stop(point):
+        raise Stop(point["n"])
+    with pytest.raises(Stop):
+        ss.fit_to_tolerance(LINK, max_protrusion="12%", quality="fast", progress=stop)

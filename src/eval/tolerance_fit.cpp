@@ -105,28 +105,32 @@ Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& 
   return {};
 }
 
-Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
-                                            const ToleranceOptions& t) {
-  const auto t0 = std::chrono::steady_clock::now();
+Status checkToleranceOptions(const ToleranceOptions& t) {
   // The cap and each limit that is set (0: none), checked by its row as a door's text would be
   // (checkTableValue); the fraction as the percentage a user types ("5%").
   if (Status st = checkTableValue(kToleranceOptions, "tolerance", "max_spheres", t.max_spheres);
       !st)
-    return st.error();
+    return st;
   for (const auto& [name, value] :
        {std::pair<const char*, double>{"max_protrusion", t.max_protrusion},
         std::pair<const char*, double>{"max_er", t.max_er}})
     if (value != 0.0)
-      if (Status st = checkTableValue(kToleranceOptions, "tolerance", name, value); !st)
-        return st.error();
+      if (Status st = checkTableValue(kToleranceOptions, "tolerance", name, value); !st) return st;
   if (t.max_protrusion_fraction != 0.0)
     if (Status st = checkTableValue(kToleranceOptions, "tolerance", "max_protrusion",
                                     100.0 * t.max_protrusion_fraction, {}, true);
         !st)
-      return st.error();
+      return st;
   if (!t.active())
     return Error{ErrorCode::kInvalidArgument,
                  "a tolerance search needs max_protrusion or max_er above 0"};
+  return {};
+}
+
+Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
+                                            const ToleranceOptions& t) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (Status st = checkToleranceOptions(t); !st) return st.error();
   if (Status st = checkFitRequest(request); !st) return st.error();
   if (Status st = checkToleranceRequest(request, t); !st) return st.error();
   const double diag = index.bounds().diagonal();
