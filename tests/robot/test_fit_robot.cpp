@@ -134,6 +134,38 @@ TEST(FitRobot, ProtrusionLimitGivesEachLinkItsFewestSpheresThatMeetIt) {
   EXPECT_LE(total, 8u);  // within the budget
 }
 
+// A limit with a budget: the budget's spheres go where the worst link is furthest over its limit.
+// With room for every link's fewest count (and some), every link meets it within the budget; with
+// one sphere a link, the budget holds and the result says the limit is not met.
+TEST(FitRobot, ProtrusionLimitWithABudgetMeetsItWithinTheBudget) {
+  const Robot robot = test::threeLinkRobot();
+  RobotFitOptions o = fastOptions();
+  o.max_protrusion = 0.05;
+  auto alone = fitRobot(robot, o);
+  ASSERT_TRUE(alone.ok()) << alone.error().message;
+  size_t fewest = 0;
+  for (const RobotLinkFit& l : alone->links) fewest += l.spheres.size();
+  o.budget = static_cast<int>(fewest) + 6;
+  auto r = fitRobot(robot, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_TRUE(r->tolerance && r->tolerance_met);
+  size_t total = 0;
+  for (const RobotLinkFit& l : r->links) {
+    total += l.spheres.size();
+    if (!l.fitted) continue;
+    EXPECT_TRUE(l.limit_met && l.covered) << l.link;
+    EXPECT_LE(l.eval.protrusion + l.padding, 0.05) << l.link;
+  }
+  EXPECT_LE(total, static_cast<size_t>(o.budget));
+  o.budget = static_cast<int>(r->links.size());
+  auto one_each = fitRobot(robot, o);
+  ASSERT_TRUE(one_each.ok()) << one_each.error().message;
+  EXPECT_FALSE(one_each->tolerance_met);
+  total = 0;
+  for (const RobotLinkFit& l : one_each->links) total += l.spheres.size();
+  EXPECT_LE(total, static_cast<size_t>(o.budget));
+}
+
 TEST(FitRobot, ProtrusionLimitWithRestartsFitsEachCountAlone) {
   // --quality best has restarts and decimation, which a progressive run cannot honour: the
   // limited link's counts are independent fits, and the limit is met all the same.
