@@ -181,8 +181,10 @@ struct ToleranceOptions {
   int max_spheres = 256;
   const Mesh* original = nullptr;
   const Mesh* walls = nullptr;
-  std::function<void(const CurvePoint&)> progress;  // after each count tried
-  bool active() const;                              // some limit is set
+  // After each count tried, from the calling thread; may throw to end the search (the exception
+  // propagates, nothing is returned).
+  std::function<void(const CurvePoint&)> progress;
+  bool active() const;  // some limit is set
 };
 struct ToleranceFitResult {
   bool met = false;

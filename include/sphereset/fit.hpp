@@ -313,7 +313,9 @@ class ProgressiveFit {
  private:
   struct Impl;
   explicit ProgressiveFit(std::unique_ptr<Impl> impl);
-  Impl& run() const;  // the run held, asserted (a moved-from object holds none)
+  // The run held, asserted (a moved-from object holds none).
+  const Impl& impl() const;
+  Impl& impl();
   std::unique_ptr<Impl> impl_;
 };
 

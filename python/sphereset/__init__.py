@@ -275,8 +275,8 @@ def fit_to_tolerance(mesh: MeshLike, *, max_protrusion: Union[float, str, None] 
     options = dict(quality=quality, seed=seed, padding=padding, points=points,
                    iterations=iterations, restarts=restarts, decimation=decimation,
                    optimizer=optimizer, init=init, method=method)
+    _core._check_tolerance(tolerance)  # in fitToTolerance's order: the tolerance, then the fit
     _core._check_fit_options(options)
-    _core._check_tolerance(tolerance)
     s = solid(mesh, **repair_options)
     d = _core._fit_to_tolerance(s, options, tolerance, progress)
     d["fit"] = FitResult(**d["fit"])

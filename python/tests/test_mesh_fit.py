@@ -381,9 +381,9 @@ def test_fit_to_tolerance_same_as_the_command(cli, tmp_path):
 
 
 def test_fit_to_tolerance_takes_the_fit_keywords(tmp_path):
-    """fit_to_tolerance takes fit's keywords (the same spheres as the command given them), calls
-    progress after each count tried, and refuses a bad tolerance or option before it reads the
-    mesh (a missing file is not what it reports)."""
+    """fit_to_tolerance takes fit's keywords (the result's options are them), calls progress
+    after each count tried, ends the search when progress raises, and refuses a bad tolerance or
+    option before it reads the mesh (a missing file is not what it reports)."""
     seen = []
     t = ss.fit_to_tolerance(LINK, max_protrusion="12%", quality="fast", iterations=5,
                             points=800, progress=seen.append)
@@ -400,7 +400,11 @@ def test_fit_to_tolerance_takes_the_fit_keywords(tmp_path):
     class Stop(Exception):
         pass
 
+    calls = []
+
     def stop(point):
+        calls.append(point["n"])
         raise Stop(point["n"])
     with pytest.raises(Stop):
         ss.fit_to_tolerance(LINK, max_protrusion="12%", quality="fast", progress=stop)
+    assert calls == [1]

@@ -154,7 +154,12 @@ ProgressiveFit::ProgressiveFit(ProgressiveFit&&) noexcept = default;
 ProgressiveFit& ProgressiveFit::operator=(ProgressiveFit&&) noexcept = default;
 ProgressiveFit::~ProgressiveFit() = default;
 
-ProgressiveFit::Impl& ProgressiveFit::run() const {
+const ProgressiveFit::Impl& ProgressiveFit::impl() const {
+  assert(impl_ && "ProgressiveFit used after a move");
+  return *impl_;
+}
+
+ProgressiveFit::Impl& ProgressiveFit::impl() {
   assert(impl_ && "ProgressiveFit used after a move");
   return *impl_;
 }
@@ -164,7 +169,7 @@ bool ProgressiveFit::allows(const FitOptions& options) {
          options.decimation == 0.0;
 }
 
-int ProgressiveFit::maxCount() const { return run().options.num_spheres; }
+int ProgressiveFit::maxCount() const { return impl().options.num_spheres; }
 
 Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const FitOptions& options,
                                                const ProgressiveFit* warm_from,
@@ -185,10 +190,10 @@ Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const Fi
                  "asked for up to " + std::to_string(options.num_spheres) + " spheres but only " +
                      std::to_string(points) + " points were sampled (raise --points)"};
   if (warm_from) {
-    if (&warm_from->run().index != &index)
+    if (&warm_from->impl().index != &index)
       return Error{ErrorCode::kInvalidArgument,
                    "a progressive run can start only from a run on the same solid"};
-    for (const auto& [count, c] : warm_from->run().clusterings)
+    for (const auto& [count, c] : warm_from->impl().clusterings)
       if (count <= options.num_spheres) impl->clusterings.emplace(count, c);
   }
   return ProgressiveFit(std::move(impl));
@@ -232,13 +237,13 @@ detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet&
 }  // namespace
 
 int ProgressiveFit::startCount(int count) const {
-  const Impl& m = run();
+  const Impl& m = impl();
   if (m.fits.contains(count)) return count;  // clustered by this run
   return startFrom(m.clusterings, count, m.progressive.start_ratio, m.progressive.adopt);
 }
 
 Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split_first) {
-  Impl& m = run();
+  Impl& m = impl();
   if (count < 1 || count > m.options.num_spheres)
     return Error{ErrorCode::kInvalidArgument, "count " + std::to_string(count) +
                                                   " is outside 1 to " +
