@@ -43,13 +43,7 @@ py::dict toleranceDict(const ToleranceOptions& t) {
   return d;
 }
 ToleranceOptions toleranceFrom(const py::object& o) {
-  ToleranceOptions t;
-  if (o.is_none()) return t;
-  for (const auto& [key, value] : o.cast<py::dict>()) {
-    if (value.is_none()) continue;
-    check(setToleranceOption(&t, key.cast<std::string>(), py::str(value).cast<std::string>()));
-  }
-  return t;
+  return o.is_none() ? ToleranceOptions{} : toleranceOptions(o.cast<py::dict>());
 }
 
 py::dict itemDict(const BatchItem& i) {

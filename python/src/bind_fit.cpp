@@ -25,6 +25,14 @@ FitRequest fitRequest(const py::dict& options) {
 
 FitOptions fitOptions(const py::dict& options) { return fitOptionsFor(fitRequest(options)); }
 
+ToleranceOptions toleranceOptions(const py::dict& tolerance) {
+  ToleranceOptions to;
+  setOptions(tolerance, [&](const std::string& name, const std::string& text) {
+    return setToleranceOption(&to, name, text);
+  });
+  return to;
+}
+
 py::list optionTable(std::span<const OptionSpec> table) {
   py::list rows;
   for (const OptionSpec& o : table) {
@@ -128,15 +136,6 @@ py::list resultSchema(const std::vector<ResultField>& fields) {
 }
 
 namespace {
-
-// A tolerance search's options from Python keywords (None: unset), parsed by their rows.
-ToleranceOptions toleranceOptions(const py::dict& tolerance) {
-  ToleranceOptions to;
-  setOptions(tolerance, [&](const std::string& name, const std::string& text) {
-    return setToleranceOption(&to, name, text);
-  });
-  return to;
-}
 
 py::dict curvePointDict(const CurvePoint& c) {
   py::dict p;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common.hpp"
+#include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 
 namespace sphereset::python {
@@ -29,5 +30,10 @@ FitOptions fitOptions(const py::dict& options);
 void installProgress(FitOptions* fo, const py::object& progress);
 
 py::dict fitResultDict(const FitResult& r, double volume);
+
+// A tolerance search's keyword arguments, by the names of the library's tolerance table
+// (toleranceOptionTable(): max_protrusion as a length or "P%", max_er, max_spheres); None keeps
+// a limit unset. Parsed by setToleranceOption, whose error is raised.
+ToleranceOptions toleranceOptions(const py::dict& tolerance);
 
 }  // namespace sphereset::python
