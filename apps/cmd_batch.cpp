@@ -31,6 +31,7 @@ struct BatchArgs {
   std::string format = "json";
   int jobs = 1;
   bool force = false, dry_run = false, html = false;
+  bool best_effort = false;  // BatchOptions::best_effort
 };
 
 // With --html, the view's static page of an item written beside its sphere file
@@ -88,9 +89,10 @@ class Progress {
     if (r.status == BatchStatus::kError)
       std::snprintf(item, sizeof item, "error: %s", r.error.c_str());
     else
-      std::snprintf(item, sizeof item, "%s -> %s %s, %d spheres, E_r %.4f%s (%.1f s)",
+      std::snprintf(item, sizeof item, "%s -> %s %s, %d spheres, E_r %.4f%s%s (%.1f s)",
                     r.mesh.c_str(), r.output.c_str(), batchStatusName(r.status), r.spheres,
-                    r.er_sum, r.covered ? "" : ", NOT covered", r.seconds);
+                    r.er_sum, r.covered ? "" : ", NOT covered",
+                    r.tolerance_met ? "" : ", tolerance NOT met (best count)", r.seconds);
     char line[256];
     std::snprintf(line, sizeof line,
                   "batch: %zu/%zu items (%zu failed, %zu skipped), %.1f items/min, %s",
@@ -130,6 +132,7 @@ int runBatch(const BatchArgs& c) {
   options.repair = std::move(repair).value();
   options.format = c.format;
   options.resume = !c.force;
+  options.best_effort = c.best_effort;
   auto items = listBatchItems(a.mesh.path, options);
   if (!items) return fail(items.error());
   const std::string& out = a.out_path;
@@ -239,6 +242,9 @@ Command registerBatch(CLI::App& app) {
   cmd->add_flag("--html", c->html,
                 "Also write each item's page beside its sphere file (OUT/a/b.html): its solid, "
                 "spheres and certificate, as `sphereset view --html` writes it");
+  cmd->add_flag("--best-effort", c->best_effort,
+                "An item whose tolerance no count up to its cap meets: write the best count found "
+                "(report: tolerance_met false; exit 10) instead of failing the item");
   cmd->add_flag("--force", c->force, "Fit every item again, even those up to date");
   cmd->add_flag("--dry-run", c->dry_run,
                 "List the items (mesh -> output, n, up to date or not) on stdout and stop");

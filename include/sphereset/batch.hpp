@@ -34,6 +34,10 @@ struct BatchOptions {
   // max_er, max_spheres; evaluate.hpp): when one is set, an item's count is the fewest that
   // meet it (fitToTolerance), not n. Its original and walls are the item's own.
   ToleranceOptions tolerance;
+  // An item whose tolerance no count up to its cap meets: false, the item is an error and
+  // nothing is written; true, the best count found is written (status ok, tolerance_met false)
+  // and the run ends with kExitToleranceNotMet (`sphereset batch --best-effort`).
+  bool best_effort = false;
   // How a mesh that is not a clean solid is made one, as `sphereset fit --repair ...` does. The
   // union and the wrapping (operations) are not part of the core library: callers that link
   // sphereset_repair set them to cgalSolidOperations() (repair_cgal.hpp), as the CLI does;
@@ -122,7 +126,7 @@ struct BatchItemReport {
   bool covered = false;
   // The certified protrusion of the spheres written (evaluate.hpp; NaN on error), and whether the
   // item's tolerance was met (true without one; an item whose tolerance no count meets is an
-  // error and writes nothing).
+  // error and writes nothing, unless BatchOptions::best_effort writes its best count).
   double protrusion = 0.0;
   bool tolerance_met = true;
   std::string repair;  // repairName of what made the solid ("none", "welded", ...); "" on error
@@ -147,6 +151,7 @@ Expected<BatchItemReport> parseReportLine(const std::string& line);
 struct BatchTotals {
   size_t items = 0, fitted = 0, skipped = 0, failed = 0;
   size_t uncovered = 0;  // written (fitted or skipped) but not covered
+  size_t unmet = 0;      // written (BatchOptions::best_effort) but missing their tolerance
 };
 
 // Counts one item. An item skipped as up to date keeps its recorded coverage: a resumed batch
@@ -156,6 +161,7 @@ void countBatchItem(const BatchItemReport& report, BatchTotals* totals);
 // How a run ends: its summary ("12 items: 10 fitted, 1 skipped, 1 failed"), and the exit code
 // of exit_codes.hpp with, when it is not kExitOk, the one line that says why, naming the input
 // and the report: kExitItemsFailed when some item failed (the others are written), else
+// kExitToleranceNotMet when some item written with best_effort missed its tolerance, else
 // kExitUncovered when some item failed its coverage check (written anyway).
 struct BatchEnd {
   std::string summary;
@@ -183,9 +189,10 @@ BatchItemReport runBatchItem(const BatchItem& item, const std::string& out_dir,
                              const BatchOptions& options);
 
 // Whether the item is up to date in `out_dir`: its sphere file exists, its record exists with
-// status ok, the record's fingerprint equals batchFingerprint(item, options), the sphere file
-// still has the digest recorded, and so has every file the mesh referenced when it was fitted
-// (LoadReport::files: a glTF's .bin buffers, an OBJ's .mtl).
+// status ok (and its tolerance met, unless options.best_effort), the record's fingerprint equals
+// batchFingerprint(item, options), the sphere file still has the digest recorded, and so has every
+// file the mesh referenced when it was fitted (LoadReport::files: a glTF's .bin buffers, an OBJ's
+// .mtl).
 bool batchItemDone(const BatchItem& item, const std::string& out_dir, const BatchOptions& options);
 
 // The report of an up-to-date item (status kSkipped, figures and seconds from its record), or

@@ -18,7 +18,7 @@ enum ExitCode : int {
   kExitUncovered = 7,         // fit, tree, batch: a result failed its own coverage check (written)
   kExitItemsFailed = 8,       // batch: some items failed (each is reported; the others are written)
   kExitNoPage = 9,            // view: this build has no page (web/ was not built)
-  kExitToleranceNotMet = 10,  // fit, robot: no count up to the cap meets the tolerance asked for
+  kExitToleranceNotMet = 10,  // fit, robot, batch: no count up to the cap meets the tolerance
 };
 
 constexpr int exitCodeFor(ErrorCode code) {
@@ -44,7 +44,7 @@ inline constexpr const char* kExitCodesHelp =
     "7 the result failed its own coverage check (fit, tree: the file is still written),\n"
     "8 some items of a batch failed (batch: the others are written; see report.jsonl),\n"
     "9 this build has no page for `view` (web/ was not built),\n"
-    "10 no count up to --max-spheres meets fit's tolerance, or a robot link misses its\n"
-    "protrusion limit (what was found is written only with --best-effort).";
+    "10 no count up to --max-spheres meets fit's tolerance (or a batch item's), or a robot\n"
+    "link misses its protrusion limit (what was found is written only with --best-effort).";
 
 }  // namespace sphereset

@@ -45,7 +45,7 @@ def batch_options(n: Optional[int] = None, *, quality: str = "default", seed: in
                   optimizer: str = "powell", init: str = "fps", method: str = "variational",
                   format: str = "json", resume: bool = True,  # noqa: A002
                   threads: int = 0, max_protrusion: Any = None, max_er: Optional[float] = None,
-                  max_spheres: Optional[int] = None,
+                  max_spheres: Optional[int] = None, best_effort: bool = False,
                   repair_options: Dict[str, Any]) -> Dict[str, Any]:
     """The options of a batch as a plain dict (picklable, sent to the workers): the fit and
     repair options of ``sphereset fit``, the sphere file format, resuming, and the threads of
@@ -53,7 +53,9 @@ def batch_options(n: Optional[int] = None, *, quality: str = "default", seed: in
     tolerance (``max_protrusion``, a length or
     "P%" of the diagonal; ``max_er``; ``max_spheres``, the cap) makes each item's count the
     fewest that meet it, as ``sphereset fit --max-protrusion`` does (a manifest line may give
-    its own; n and a tolerance on one line are refused)."""
+    its own; n and a tolerance on one line are refused). An item no count up to its cap meets is
+    an error item, or with ``best_effort`` its best count written (``tolerance_met`` false), as
+    ``sphereset batch --best-effort``."""
     return {
         "tolerance": {"max_protrusion": max_protrusion, "max_er": max_er,
                       "max_spheres": max_spheres},
@@ -64,7 +66,7 @@ def batch_options(n: Optional[int] = None, *, quality: str = "default", seed: in
                 "method": method},
         **_repair_args(repair_options),
         "format": format, "resume": bool(resume),
-        "threads": int(threads),
+        "threads": int(threads), "best_effort": bool(best_effort),
     }
 
 
@@ -172,6 +174,9 @@ def _parser() -> argparse.ArgumentParser:
                    help="sphere file format (default json)")
     p.add_argument("--force", action="store_true",
                    help="fit every item again, even those up to date")
+    p.add_argument("--best-effort", dest="best_effort", action="store_true",
+                   help="an item whose tolerance no count up to its cap meets: write the best "
+                        "count found (tolerance_met false; exit 10) instead of failing the item")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
     return p
 
@@ -221,7 +226,7 @@ def main(argv: Optional[List[str]] = None) -> int:
             **{k: v for k, v in fit.items() if v is not None},
             **{k: v for k, v in tolerance.items() if v is not None}, **repair,
             format=a.format,
-            resume=not a.force, threads=threads)
+            resume=not a.force, threads=threads, best_effort=a.best_effort)
         try:
             lines = run_batch(a.input, a.output, opts, client, quiet=a.quiet)
         except _core.Error as e:

@@ -68,7 +68,7 @@ BatchItem itemFrom(const py::dict& d) {
 
 // Options dict: {"fit": request, "tolerance": {max_protrusion, max_er, max_spheres} (optional),
 // "repair": "auto"/"off", "weld_tolerance", "fill_cavities", "wrap_alpha", "wrap_offset",
-// "fill_openings" (text), "format", "resume", "threads"}.
+// "fill_openings" (text), "format", "resume", "threads", "best_effort" (optional)}.
 BatchOptions optionsFrom(const py::dict& d) {
   BatchOptions o;
   o.fit = requestFrom(d["fit"].cast<py::dict>());
@@ -79,6 +79,7 @@ BatchOptions optionsFrom(const py::dict& d) {
   o.format = d["format"].cast<std::string>();
   o.resume = d["resume"].cast<bool>();
   o.threads = d["threads"].cast<int>();
+  if (d.contains("best_effort")) o.best_effort = d["best_effort"].cast<bool>();
   return o;
 }
 

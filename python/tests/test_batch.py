@@ -97,6 +97,16 @@ def test_tolerance_crosses_to_the_workers(tmp_path):
         line = json.loads(batch.process_item(item, str(out), opts))
         assert line["status"] == "ok" and line["n"] == 0 and line["tolerance_met"]
         assert line["spheres"] >= 1 and line["protrusion"] > 0 and line["covered"]
+    # A tolerance no count up to the cap meets: an error item, or with best_effort the best count
+    # written with tolerance_met false.
+    for best_effort in (False, True):
+        strict = batch.batch_options(quality="fast", max_protrusion=1e-7, max_spheres=2,
+                                     best_effort=best_effort)
+        item = batch.list_items(str(src / "list.csv"), strict)[1]
+        line = json.loads(batch.process_item(item, str(tmp_path / f"unmet{best_effort}"), strict))
+        assert not line["tolerance_met"]
+        assert line["status"] == ("ok" if best_effort else "error")
+        assert (line["spheres"] >= 1) == best_effort
     with pytest.raises(ss.InvalidArgumentError, match="max_er 'nan'"):
         batch.list_items(str(src / "list.csv"), batch.batch_options(max_er=float("nan")))
     with pytest.raises(ss.InvalidArgumentError, match="max_er '0': expected a number above 0"):

@@ -150,7 +150,7 @@ Status fitItem(const BatchItem& item, const std::string& out_dir, const BatchOpt
     t.progress = nullptr;
     auto found = fitToTolerance(index, item.fit, t);
     if (!found) return Error{found.error().code, item.mesh + ": " + found.error().message};
-    if (!found->met) {
+    if (!found->met && !options.best_effort) {
       char what[200];
       std::snprintf(what, sizeof what,
                     ": no count up to %d meets the tolerance (best: n = %d, protrusion %.6g, "
@@ -158,6 +158,7 @@ Status fitItem(const BatchItem& item, const std::string& out_dir, const BatchOpt
                     t.max_spheres, found->n, found->eval.protrusion, found->eval.er_sum);
       return Error{ErrorCode::kInvalidArgument, item.mesh + what};
     }
+    rep->tolerance_met = found->met;  // false only with best_effort: its best count is written
     spheres = std::move(found->fit.spheres);
     energy = found->fit.energy;
     tolerance_check = std::move(found->eval);
@@ -213,6 +214,8 @@ std::optional<BatchItemReport> upToDate(const BatchItem& item, const std::string
   while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
   auto rec = parseReportLine(line);
   if (!rec || rec->status != BatchStatus::kOk || rec->output != item.output) return std::nullopt;
+  // A best-effort set is up to date only for a run that would write it again.
+  if (!rec->tolerance_met && !options.best_effort) return std::nullopt;
   auto bytes = detail::readFileText(item.mesh);
   if (!bytes || fingerprintOf(*bytes, item, options) != rec->fingerprint) return std::nullopt;
   if (fileDigest(outputPath(out_dir, item)) != j["output_digest"].get<std::string>())

@@ -144,6 +144,7 @@ void countBatchItem(const BatchItemReport& r, BatchTotals* t) {
   if (r.status == BatchStatus::kError) ++t->failed;
   if (r.status == BatchStatus::kOk) ++t->fitted;
   if (r.status != BatchStatus::kError && !r.covered) ++t->uncovered;
+  if (r.status != BatchStatus::kError && !r.tolerance_met) ++t->unmet;
 }
 
 BatchEnd batchEnd(const BatchTotals& t, const std::string& input, const std::string& out_dir) {
@@ -155,6 +156,10 @@ BatchEnd batchEnd(const BatchTotals& t, const std::string& input, const std::str
   if (t.failed > 0) {
     end.exit_code = kExitItemsFailed;
     end.message = input + ": " + std::to_string(t.failed) + of + "failed (see " + report + ")";
+  } else if (t.unmet > 0) {
+    end.exit_code = kExitToleranceNotMet;
+    end.message = input + ": " + std::to_string(t.unmet) + of +
+                  "missed their tolerance (the best count found written; see " + report + ")";
   } else if (t.uncovered > 0) {
     end.exit_code = kExitUncovered;
     end.message = input + ": " + std::to_string(t.uncovered) + of +

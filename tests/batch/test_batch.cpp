@@ -309,6 +309,32 @@ TEST_F(BatchTest, ToleranceColumnsChooseTheCount) {
   EXPECT_NE(r.error.find("no count up to 2 meets the tolerance"), std::string::npos) << r.error;
   EXPECT_FALSE(r.tolerance_met);
   EXPECT_FALSE(fs::exists(path("out/never.json")));
+  // With best_effort the best count is written (status ok, tolerance not met), the same spheres
+  // fitToTolerance gives as its best; a later run is up to date only if it also takes the best
+  // effort, and without it the item is an error again.
+  BatchOptions best = o;
+  best.best_effort = true;
+  const BatchItemReport b = runBatchItem(never, path("out"), best);
+  ASSERT_EQ(b.status, BatchStatus::kOk) << b.error;
+  EXPECT_FALSE(b.tolerance_met);
+  auto written = readSpheres(path("out/never.json"));
+  ASSERT_TRUE(written.ok());
+  auto mesh = loadMesh(never.mesh);
+  ASSERT_TRUE(mesh.ok());
+  const SolidIndex never_index(mesh->mesh);
+  auto t = fitToTolerance(never_index, never.fit, never.tolerance);
+  ASSERT_TRUE(t.ok() && !t->met);
+  EXPECT_EQ(static_cast<int>(written->size()), t->n);
+  EXPECT_EQ(b.spheres, t->n);
+  EXPECT_EQ(b.protrusion, t->eval.protrusion);
+  EXPECT_GT(b.protrusion, 0.0000001);
+  auto back = parseReportLine(reportLine(b));
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  EXPECT_FALSE(back->tolerance_met);
+  EXPECT_TRUE(batchItemDone(never, path("out"), best));
+  EXPECT_FALSE(batchItemDone(never, path("out"), o));
+  EXPECT_EQ(processBatchItem(never, path("out"), best).status, BatchStatus::kSkipped);
+  EXPECT_EQ(processBatchItem(never, path("out"), o).status, BatchStatus::kError);
 }
 
 TEST_F(BatchTest, ItemRunsInAnArenaWithTheSameResult) {

@@ -41,6 +41,27 @@ TEST(BatchEnd, FailuresOutrankGapsAndASkippedItemKeepsItsCoverage) {
   EXPECT_EQ(end.message, "in: 1 of 4 items failed (see out/report.jsonl)");
 }
 
+TEST(BatchEnd, AMissedToleranceOutranksCoverageButNotAFailure) {
+  // Items written with best_effort whose tolerance no count met: exit 10, below a failed item
+  // (8) and above an uncovered one (7); a failed item is not also counted as unmet.
+  BatchTotals t;
+  countBatchItem(item(BatchStatus::kOk, false), &t);
+  BatchItemReport unmet = item(BatchStatus::kSkipped, true);
+  unmet.tolerance_met = false;
+  countBatchItem(unmet, &t);
+  EXPECT_EQ(t.unmet, 1u);
+  BatchEnd end = batchEnd(t, "in", "out");
+  EXPECT_EQ(end.exit_code, kExitToleranceNotMet);
+  EXPECT_EQ(end.message,
+            "in: 1 of 2 items missed their tolerance (the best count found written; see "
+            "out/report.jsonl)");
+  BatchItemReport failed = item(BatchStatus::kError, false);
+  failed.tolerance_met = false;
+  countBatchItem(failed, &t);
+  EXPECT_EQ(t.unmet, 1u);
+  EXPECT_EQ(batchEnd(t, "in", "out").exit_code, kExitItemsFailed);
+}
+
 TEST(ExitCodes, OneCodePerErrorCode) {
   EXPECT_EQ(exitCodeFor(ErrorCode::kInvalidArgument), 2);
   EXPECT_EQ(exitCodeFor(ErrorCode::kUnreadable), 3);

@@ -235,8 +235,9 @@ cli_test(batch_failed_dry_run 0 ARGS batch ${work}/batch_in -o ${work}/batch_in_
          --quality fast --dry-run
          STDOUT "bad.stl -> bad.json n=4 to fit\n.*fr3_link1_collision.stl -> fr3_link1_collision.json n=4 up to date\n.*cavity.off -> sub/cavity.json n=4 up to date")
 set_tests_properties(cli.batch_failed_dry_run PROPERTIES DEPENDS cli.batch_failed_item)
+# --force: the first run fits both items whatever an earlier, interrupted run left in the folder.
 cli_test(batch_first 0 ARGS batch ${work}/batch_ok -o ${work}/batch_ok_out -n 4 --quality fast
-         --format txt STDERR "2 items: 2 fitted, 0 skipped, 0 failed"
+         --format txt --force STDERR "2 items: 2 fitted, 0 skipped, 0 failed"
          FILE ${work}/batch_ok_out/fr3_link1_collision.txt SPHERES 4)
 cli_test(batch_resumed 0 ARGS batch ${work}/batch_ok -o ${work}/batch_ok_out -n 4 --quality fast
          --format txt STDERR "2 items: 0 fitted, 2 skipped, 0 failed")
@@ -248,6 +249,15 @@ cli_test(batch_csv 0 ARGS batch ${work}/batch.csv -o ${work}/batch_csv_out --qua
          FILE ${work}/batch_csv_out/robot/link3.txt SPHERES 3)
 cli_test(batch_jsonl 0 ARGS batch ${work}/batch.jsonl -o ${work}/batch_jsonl_out --quality fast -q
          --format sph FILE ${work}/batch_jsonl_out/cavity.sph SPHERES 5)
+# A tolerance no count up to the cap meets: each item fails (exit 8, nothing written), or with
+# --best-effort its best count is written and the run ends with exit 10.
+cli_test(batch_tolerance_unmet 8 ARGS batch ${work}/batch_ok -o ${work}/batch_unmet_out
+         --max-protrusion 0.0000001 --max-spheres 2 --quality fast --format txt -q
+         STDERR "2 of 2 items failed" FORBID ${work}/batch_unmet_out/fr3_link1_collision.txt)
+cli_test(batch_best_effort 10 ARGS batch ${work}/batch_ok -o ${work}/batch_best_out
+         --max-protrusion 0.0000001 --max-spheres 2 --quality fast --format txt --best-effort
+         --force -q STDERR "2 of 2 items missed their tolerance .the best count found written"
+         FILE ${work}/batch_best_out/fr3_link1_collision.txt)
 cli_test(batch_bad_manifest 4 ARGS batch ${work}/batch_bad.csv -o ${work}/never40 -q
          STDERR "batch_bad.csv:2: n 'abc': expected an integer" FORBID ${work}/never40)
 cli_test(batch_missing 3 ARGS batch ${work}/missing_folder -o ${work}/never41 -q
