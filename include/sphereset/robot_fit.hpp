@@ -100,7 +100,16 @@ struct RobotFitOptions {
   // largest (protrusion_split.cpp). Counts fixed by link_spheres stay fixed.
   double max_protrusion = 0.0;
   std::map<std::string, double> link_max_protrusion;
-  bool toleranceActive() const { return max_protrusion > 0.0 || !link_max_protrusion.empty(); }
+  // The same limits as fractions of each link's own solid's bounding-box diagonal (the option's
+  // text "P%" gives P / 100; 0: none). A row sets one form: max_protrusion or its fraction, and
+  // a link's entry in one of the two maps, never both. A link's own limit (either map) comes
+  // before the robot's.
+  double max_protrusion_fraction = 0.0;
+  std::map<std::string, double> link_max_protrusion_fraction;
+  bool toleranceActive() const {
+    return max_protrusion > 0.0 || max_protrusion_fraction > 0.0 || !link_max_protrusion.empty() ||
+           !link_max_protrusion_fraction.empty();
+  }
   std::string name;  // prefixes messages (e.g. the URDF's path)
   // Each link fit's progress (fit.hpp), with the link's name. Called from the threads that fit
   // the links, several at once; it must be thread-safe. It may throw to cancel: the exception

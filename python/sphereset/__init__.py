@@ -558,8 +558,8 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
               collision_group: int = -1,
               seed: int = 1, quality: str = "default", link_solid: str = "envelope",
               link_solid_for: Optional[Dict[str, str]] = None,
-              max_protrusion: Optional[float] = None,
-              link_max_protrusion: Optional[Dict[str, float]] = None,
+              max_protrusion: Union[float, str, None] = None,
+              link_max_protrusion: Optional[Dict[str, Union[float, str]]] = None,
               repair_options: Dict[str, Any]) -> RobotFitResult:
     """Fits collision spheres to every link of a URDF or MJCF (.xml, read by MuJoCo) robot, like
     ``sphereset robot`` (the same library call, options and defaults, so the same spheres for
@@ -576,8 +576,9 @@ def fit_robot(urdf: PathLike, *, budget: int = 0, default_link_spheres: int = 8,
     behind openings up to ``fill_openings`` (0 or "auto": the link's smallest extent) inside;
     "walls" fits the walls alone; ``link_solid_for`` {link: "envelope" or "walls"} instead for
     those links (an envelope chosen so is kept even where it encloses no hollow).
-    ``max_protrusion`` (a length above 0; None: none) holds every fitted link's padded spheres within that
-    certified protrusion, ``link_max_protrusion`` {link: length} instead for those links: alone,
+    ``max_protrusion`` (a length above 0, or "P%" of each link's bounding-box diagonal; None:
+    none) holds every fitted link's padded spheres within that certified protrusion,
+    ``link_max_protrusion`` {link: length or "P%"} instead for those links: alone,
     each such link gets its fewest spheres that meet it; with ``budget``, every free link needs
     a limit and the budget goes where the worst link is furthest over its limit. A limit not
     met is not an error: see each link's ``limit_met`` and the result's ``tolerance_met``.

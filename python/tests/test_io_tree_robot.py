@@ -266,6 +266,14 @@ def test_fit_robot_protrusion_limits():
                        match="link_max_protrusion 'link2=0': expected LINK=VALUE, VALUE a number "
                              "above 0"):
         ss.fit_robot(urdf, package_paths=[DATA / "robot"], link_max_protrusion={"link2": 0})
+    # "P%": a percentage of each link's own diagonal, so the links' limits differ; the length
+    # given for link2 is its own.
+    pct = ss.fit_robot(urdf, package_paths=[DATA / "robot"], quality="fast",
+                       max_protrusion="30%", link_max_protrusion={"link2": 0.06})
+    limits = {lf.link: lf.protrusion_limit for lf in pct.links if lf.fitted}
+    assert limits["link2"] == 0.06
+    assert all(0 < v for v in limits.values()) and len(set(limits.values())) == len(limits)
+    assert pct.tolerance_met
 
 
 def test_fit_robot_link_solid_for():

@@ -346,10 +346,9 @@ Expected<RobotFitResult> fitRobot(const Robot& robot, const RobotFitOptions& o) 
     return st.error();
   if (Status st = checkLinkSolids(robot, o.repair, o.link_solid, o.link_solid_for, o.name); !st)
     return st.error();
-  if (Status st =
-          detail::checkLinkKeys(robot, o.link_max_protrusion, "link_max_protrusion", o.name);
-      !st)
-    return st.error();
+  for (const auto* limits : {&o.link_max_protrusion, &o.link_max_protrusion_fraction})
+    if (Status st = detail::checkLinkKeys(robot, *limits, "link_max_protrusion", o.name); !st)
+      return st.error();
   auto jobs = prepareLinks(o, robot);
   if (!jobs) return jobs.error();
   for (Job& j : *jobs) {

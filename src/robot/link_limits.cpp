@@ -31,6 +31,22 @@ FitOptions linkFitOptions(const RobotFitOptions& o, const Job& j, int n, bool qu
   return fo;
 }
 
+namespace {
+
+// The link's protrusion limit as a length: its own (a length, or a fraction of its solid's
+// diagonal), else the robot's (either form); 0 when none applies.
+double linkProtrusionLimit(const RobotFitOptions& o, const Job& j) {
+  const double diagonal = j.index->bounds().diagonal();
+  if (auto it = o.link_max_protrusion.find(j.link->name); it != o.link_max_protrusion.end())
+    return it->second;
+  if (auto it = o.link_max_protrusion_fraction.find(j.link->name);
+      it != o.link_max_protrusion_fraction.end())
+    return it->second * diagonal;
+  return o.max_protrusion > 0.0 ? o.max_protrusion : o.max_protrusion_fraction * diagonal;
+}
+
+}  // namespace
+
 Status applyProtrusionLimits(const RobotFitOptions& o, std::vector<Job>* jobs) {
   if (!o.toleranceActive()) return {};
   std::vector<ProtrusionLink> links;
@@ -42,8 +58,7 @@ Status applyProtrusionLimits(const RobotFitOptions& o, std::vector<Job>* jobs) {
       rest -= std::max(0, j.fixed);
       continue;
     }
-    auto it = o.link_max_protrusion.find(j.link->name);
-    j.limit = it != o.link_max_protrusion.end() ? it->second : o.max_protrusion;
+    j.limit = linkProtrusionLimit(o, j);
     if (!(j.limit > 0.0)) {
       if (o.budget > 0)
         return Error{ErrorCode::kInvalidArgument,

@@ -68,10 +68,12 @@ constexpr OptionSpec kRobotOptions[] = {
      {},
      "none",
      "The certified protrusion of every fitted link's padded spheres at most this (a length "
-     "above 0): alone, each link's fewest spheres that meet it; with a budget, the split that "
-     "keeps the worst link furthest under its limit",
+     "above 0; with a trailing %, a percentage of each link's bounding-box diagonal): alone, "
+     "each link's fewest spheres that meet it; with a budget, the split that keeps the worst "
+     "link furthest under its limit",
      nullptr,
      nullptr,
+     true,
      true},
     {"link_max_protrusion",
      "--link-max-protrusion",
@@ -80,9 +82,11 @@ constexpr OptionSpec kRobotOptions[] = {
      limits::kMaxCoordinate,
      {},
      "none",
-     "LINK=D: the link's protrusion limit instead of max_protrusion (above 0); repeatable",
+     "LINK=D: the link's protrusion limit instead of max_protrusion (above 0; D% of the "
+     "link's diagonal); repeatable",
      "LINK",
      nullptr,
+     true,
      true},
     {"link_solid", "--link-solid", OptionType::kChoice, 0, 0, kLinkSolids, "envelope",
      "envelope: each link's walls with the hollow behind openings up to fill_openings (auto: "
@@ -104,10 +108,12 @@ Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std:
   const OptionValue& v = parsed->value;
   const std::string_view n = parsed->spec->name;
   // A link named twice in one keyed row used to keep the last value silently.
-  const bool repeated = (n == "link_spheres" && o->link_spheres.count(v.key) > 0) ||
-                        (n == "link_padding" && o->link_padding.count(v.key) > 0) ||
-                        (n == "link_solid_for" && o->link_solid_for.count(v.key) > 0) ||
-                        (n == "link_max_protrusion" && o->link_max_protrusion.count(v.key) > 0);
+  const bool repeated =
+      (n == "link_spheres" && o->link_spheres.count(v.key) > 0) ||
+      (n == "link_padding" && o->link_padding.count(v.key) > 0) ||
+      (n == "link_solid_for" && o->link_solid_for.count(v.key) > 0) ||
+      (n == "link_max_protrusion" && (o->link_max_protrusion.count(v.key) > 0 ||
+                                      o->link_max_protrusion_fraction.count(v.key) > 0));
   if (repeated)
     return Error{ErrorCode::kInvalidArgument,
                  std::string(n) + " '" + text + "': link '" + v.key + "' is given twice"};
@@ -116,8 +122,15 @@ Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std:
   if (n == "link_spheres") o->link_spheres[v.key] = static_cast<int>(v.integer);
   if (n == "padding") o->padding = v.real;
   if (n == "link_padding") o->link_padding[v.key] = v.real;
-  if (n == "max_protrusion") o->max_protrusion = v.real;
-  if (n == "link_max_protrusion") o->link_max_protrusion[v.key] = v.real;
+  // A percent row's value is a fraction of the link's diagonal: one form per limit.
+  const double length = v.percent ? 0.0 : v.real, fraction = v.percent ? v.real / 100.0 : 0.0;
+  if (n == "max_protrusion") {
+    o->max_protrusion = length;
+    o->max_protrusion_fraction = fraction;
+  }
+  if (n == "link_max_protrusion")
+    (v.percent ? o->link_max_protrusion_fraction : o->link_max_protrusion)[v.key] =
+        v.percent ? fraction : length;
   const LinkSolid solid = v.choice == "walls" ? LinkSolid::kWalls : LinkSolid::kEnvelope;
   if (n == "link_solid") o->link_solid = solid;
   if (n == "link_solid_for") o->link_solid_for[v.key] = solid;
@@ -155,6 +168,15 @@ Status checkRobotFitOptions(const RobotFitOptions& o) {
     if (Status st = checkTableValue(kRobotOptions, "robot", "max_protrusion", o.max_protrusion);
         !st)
       return st;
+  // The fractions as the percentages a user types ("5%").
+  if (o.max_protrusion_fraction != 0.0)
+    if (Status st = checkTableValue(kRobotOptions, "robot", "max_protrusion",
+                                    100.0 * o.max_protrusion_fraction, {}, true);
+        !st)
+      return st;
+  if (o.max_protrusion != 0.0 && o.max_protrusion_fraction != 0.0)
+    return Error{ErrorCode::kInvalidArgument,
+                 "max_protrusion is given both as a length and as a fraction: give one"};
   for (const auto& [link, count] : o.link_spheres)
     if (Status st = checkTableValue(kRobotOptions, "robot", "link_spheres", count, link); !st)
       return st;
@@ -169,6 +191,17 @@ Status checkRobotFitOptions(const RobotFitOptions& o) {
       return Error{ErrorCode::kInvalidArgument, "link '" + link +
                                                     "' has both link_spheres and "
                                                     "link_max_protrusion: give one"};
+  }
+  for (const auto& [link, fraction] : o.link_max_protrusion_fraction) {
+    if (Status st = checkTableValue(kRobotOptions, "robot", "link_max_protrusion", 100.0 * fraction,
+                                    link, true);
+        !st)
+      return st;
+    if (o.link_spheres.contains(link) || o.link_max_protrusion.contains(link))
+      return Error{ErrorCode::kInvalidArgument,
+                   "link '" + link + "' has both " +
+                       (o.link_spheres.contains(link) ? "link_spheres" : "a length") +
+                       " and a fraction as its link_max_protrusion: give one"};
   }
   for (const auto& [link, solid] : o.link_solid_for)
     if (auto v = parseTableOption(kRobotOptions, "robot", "link_solid_for",

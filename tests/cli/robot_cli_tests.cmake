@@ -16,6 +16,11 @@ cli_test(robot_max_protrusion 0 ARGS robot ${robot}/three_link.urdf --package-pa
          --max-protrusion 0.05 --link-max-protrusion link2=0.06 --quality fast
          -o ${work}/three_tol.json --json -q FILE ${work}/three_tol.json
          STDOUT "\"protrusion_limit\":0.06.*\"tolerance\":true,\"tolerance_met\":true")
+# A percentage is of each link's own diagonal: the JSON's limits are lengths, each link's own.
+cli_test(robot_max_protrusion_percent 0 ARGS robot ${robot}/three_link.urdf --package-path
+         ${robot} --max-protrusion 30% --link-max-protrusion link2=0.06 --quality fast
+         -o ${work}/three_tol_percent.json --json -q FILE ${work}/three_tol_percent.json
+         STDOUT "\"protrusion_limit\":0\\.[0-9]+.*\"protrusion_limit\":0.06.*\"tolerance_met\":true")
 cli_test(robot_max_protrusion_not_met 10 ARGS robot ${robot}/three_link.urdf --package-path
          ${robot} --max-protrusion 0.000000001 --budget 6 --quality fast -o ${work}/never_tol.yml -q
          STDERR "three_link.urdf: the protrusion limit is not met .base_link [0-9.e-]+ > 1e-09 with [0-9]+ spheres.*; nothing written"

@@ -220,6 +220,45 @@ TEST(FitRobot, ProtrusionLimitsRefuseWhatCannotHold) {
   EXPECT_FALSE(setRobotFitOption(&t, "max_protrusion", "0").ok());
   EXPECT_TRUE(setRobotFitOption(&t, "link_max_protrusion", "link1=0.01").ok());
   EXPECT_FALSE(setRobotFitOption(&t, "link_max_protrusion", "link1=0.02").ok());  // twice
+  EXPECT_FALSE(setRobotFitOption(&t, "link_max_protrusion", "link1=2%").ok());    // twice too
+  EXPECT_FALSE(setRobotFitOption(&t, "max_protrusion", "0%").ok());
+  EXPECT_FALSE(setRobotFitOption(&t, "max_protrusion", "5%%").ok());
+  // A struct set in code is checked as the text would be.
+  t = RobotFitOptions{};
+  t.max_protrusion = 0.01;
+  t.max_protrusion_fraction = 0.05;
+  EXPECT_FALSE(checkRobotFitOptions(t).ok());
+  t.max_protrusion = 0.0;
+  t.link_max_protrusion_fraction = {{"link1", -0.1}};
+  EXPECT_FALSE(checkRobotFitOptions(t).ok());
+}
+
+// A limit given as a percentage ("P%") is a fraction of each link's own solid's bounding-box
+// diagonal; a link's own length comes before it. The row keeps one form: the later text wins.
+TEST(FitRobot, PercentLimitsAreFractionsOfEachLinksDiagonal) {
+  const Robot robot = test::threeLinkRobot();
+  RobotFitOptions o = fastOptions();
+  ASSERT_TRUE(setRobotFitOption(&o, "max_protrusion", "0.5").ok());
+  ASSERT_TRUE(setRobotFitOption(&o, "max_protrusion", "20%").ok());
+  EXPECT_EQ(o.max_protrusion, 0.0);
+  EXPECT_DOUBLE_EQ(o.max_protrusion_fraction, 0.2);
+  ASSERT_TRUE(setRobotFitOption(&o, "link_max_protrusion", "link2=0.06").ok());
+  ASSERT_TRUE(setRobotFitOption(&o, "link_max_protrusion", "link1=15%").ok());
+  auto r = fitRobot(robot, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  int fraction_links = 0;
+  for (const RobotLinkFit& l : r->links) {
+    if (!l.fitted) continue;
+    const double diagonal = SolidIndex(l.repair.solid).bounds().diagonal();
+    const double expected = l.link == "link2" ? 0.06 : (l.link == "link1" ? 0.15 : 0.2) * diagonal;
+    fraction_links += l.link != "link2";
+    EXPECT_DOUBLE_EQ(l.protrusion_limit, expected) << l.link;
+    if (l.limit_met) {
+      EXPECT_LE(l.eval.protrusion + l.padding, expected) << l.link;
+    }
+  }
+  EXPECT_GE(fraction_links, 1);
+  EXPECT_TRUE(r->tolerance_met);
 }
 
 TEST(FitRobot, LinkSolidForDecidesOneLink) {
