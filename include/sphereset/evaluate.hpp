@@ -184,6 +184,9 @@ struct ToleranceOptions {
   // After each count tried, from the calling thread; may throw to end the search (the exception
   // propagates, nothing is returned).
   std::function<void(const CurvePoint&)> progress;
+  // Each fit's progress within a count, as FitOptions::progress (FitProgress::spheres is the
+  // count being fitted); may throw to end the search mid-fit, as progress may.
+  std::function<void(const FitProgress&)> fit_progress;
   bool active() const;  // some limit is set
 };
 struct ToleranceFitResult {

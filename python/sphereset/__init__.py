@@ -264,7 +264,8 @@ def fit_to_tolerance(mesh: MeshLike, *, max_protrusion: Union[float, str, None] 
     ``n``: the tolerance chooses it); the tolerance and the fit options are checked before the
     mesh is read or repaired. ``progress`` is called after each count tried with {"n", "er_sum",
     "protrusion", "covered", "meets", "seconds"}; an exception it raises ends the search and
-    propagates, and so does Ctrl-C (KeyboardInterrupt) between counts.
+    propagates, and Ctrl-C raises KeyboardInterrupt at the next progress report of the fit
+    running (every round and every 0.25 s), ending the search.
 
     Returns {"met", "n", "protrusion_limit", "fit" (a FitResult), "eval" (the check's fields,
     ``protrusion`` included), "curve" (every count tried, as ``progress`` gets them),

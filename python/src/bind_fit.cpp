@@ -196,12 +196,18 @@ void bindFit(py::module_& m) {
          const py::object& progress) {
         const FitRequest rq = fitRequest(options);
         ToleranceOptions to = toleranceOptions(tolerance);
-        // After each count tried; Ctrl-C and an exception it raises end the search there.
+        // After each count tried; an exception it raises ends the search there.
         const py::object* cb = &progress;
         to.progress = [cb](const CurvePoint& c) {
           py::gil_scoped_acquire gil;
+          if (!cb->is_none()) (*cb)(curvePointDict(c));  // every count finished is reported
           if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-          if (!cb->is_none()) (*cb)(curvePointDict(c));
+        };
+        // Within each count's fit too, at its progress reports: Ctrl-C need not wait for the
+        // count to end.
+        to.fit_progress = [](const FitProgress&) {
+          py::gil_scoped_acquire gil;
+          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         };
         to.original = solid->original();
         to.walls = solid->walls();

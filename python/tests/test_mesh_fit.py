@@ -408,3 +408,26 @@ def test_fit_to_tolerance_takes_the_fit_keywords(tmp_path):
     with pytest.raises(Stop):
         ss.fit_to_tolerance(LINK, max_protrusion="12%", quality="fast", progress=stop)
     assert calls == [1]
+
+    # A signal while a count is being fitted is handled inside that fit: progress reports every
+    # count finished, and the count running when the signal came never finishes.
+    def alarm(*_):
+        raise KeyboardInterrupt()
+
+    s = ss.solid(LINK)
+    counts = []
+
+    def arm(point):
+        counts.append(point["n"])
+        if point["n"] == 1:
+            signal.setitimer(signal.ITIMER_REAL, 0.02)  # the next count's fit takes much longer
+
+    old = signal.signal(signal.SIGALRM, alarm)
+    try:
+        with pytest.raises(KeyboardInterrupt) as info:
+            ss.fit_to_tolerance(s, max_protrusion="0.1%", quality="best", progress=arm)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+    assert counts == [1]
+    assert [e.name for e in info.traceback][-2:] == ["fit_to_tolerance", "alarm"]

@@ -166,6 +166,7 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
             std::max<int64_t>(n, std::min<int64_t>(top.num_spheres, request.points)));
       FitOptions top_options = fitOptionsFor(top);
       top_options.original = t.original;
+      top_options.progress = t.fit_progress;
       auto p = ProgressiveFit::start(index, top_options, progressive ? &*progressive : nullptr);
       if (!p) return p.error();
       progressive.emplace(std::move(p).value());
@@ -179,6 +180,7 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
     r.num_spheres = n;
     FitOptions fo = fitOptionsFor(r);
     fo.original = t.original;
+    fo.progress = t.fit_progress;
     auto fit = fitAt(n, fo);
     if (!fit) return fit.error();
     auto ev =

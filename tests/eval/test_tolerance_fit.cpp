@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <vector>
 
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
@@ -128,6 +129,31 @@ TEST(ToleranceFit, FewPointsBoundTheRunsWindow) {
   auto both = fitToTolerance(index, given, t);
   ASSERT_FALSE(both.ok());
   EXPECT_NE(both.error().message.find("n and a tolerance"), std::string::npos);
+}
+
+// fit_progress reports each count's fit from inside it (FitProgress::spheres is the count being
+// fitted, in the order the counts are tried), and a throw from it ends the search mid-fit: the
+// count running never reaches `progress`.
+TEST(ToleranceFit, FitProgressReportsInsideEachCountAndMayCancel) {
+  const SolidIndex index(test::robotLink());
+  ToleranceOptions t;
+  t.max_protrusion_fraction = 0.06;
+  t.max_spheres = 64;
+  std::vector<int> fitted, finished;
+  t.fit_progress = [&](const FitProgress& p) {
+    if (fitted.empty() || fitted.back() != p.spheres) fitted.push_back(p.spheres);
+  };
+  t.progress = [&](const CurvePoint& c) { finished.push_back(c.n); };
+  auto r = fitToTolerance(index, fastRequest(), t);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(fitted, finished);  // every count's fit reported, in the order tried
+  struct Stop {};
+  finished.clear();
+  t.fit_progress = [&](const FitProgress& p) {
+    if (p.spheres == 2) throw Stop{};
+  };
+  EXPECT_THROW(fitToTolerance(index, fastRequest(), t), Stop);
+  EXPECT_EQ(finished, std::vector<int>{1});
 }
 
 TEST(ToleranceFit, BadRequestsAreRefused) {
