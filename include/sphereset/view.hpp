@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "sphereset/certificate.hpp"
+#include "sphereset/evaluate.hpp"
 #include "sphereset/load.hpp"
 #include "sphereset/repair.hpp"
 #include "sphereset/robot.hpp"
@@ -187,13 +188,19 @@ Status setViewLevel(ViewScene* scene, int64_t solid, int64_t level);
 Status setViewJoints(ViewScene* scene, const std::map<std::string, double>& joints);
 // A fit started from the page (POST /api/fit), run in a thread of its own while the page keeps
 // asking how far it is: solid `solid`'s set fitted afresh with `spheres` spheres (a link's sphere
-// primitives first, as `sphereset robot` does), or, with `budget` > 0, every link of a robot
-// fitted by fitRobot's budget split. `quality` is fit.hpp's preset; the seed is 1.
+// primitives first, as `sphereset robot` does), or with the fewest that meet `tolerance`
+// (fitToTolerance, as `sphereset fit --max-protrusion`; when no count up to its cap meets it,
+// the best count found is applied and the status says so); or, with `robot` (or `budget` > 0),
+// every link of a robot fitted by fitRobot: within `budget`, and with a tolerance's
+// max_protrusion as every link's limit (RobotFitOptions::max_protrusion or its fraction; a
+// robot takes no max_er or max_spheres). `quality` is fit.hpp's preset; the seed is 1.
 struct ViewFitRequest {
   int64_t solid = 0;
   int spheres = 0;
   int budget = 0;
+  bool robot = false;
   FitQuality quality = FitQuality::kDefault;
+  ToleranceOptions tolerance;  // its limits and cap only (original, walls, progress unused)
 };
 // How a fit is: "idle" (none started), "running", "done", "cancelled" or "failed"; `fraction` of
 // its work (0 to 1, an estimate from its rounds), `stage` in words, the error of a failed one,
@@ -204,14 +211,19 @@ struct ViewFitStatus {
   std::string stage;
   std::string error;
   std::vector<int64_t> solids;        // the solids it fits
-  std::map<std::string, int> counts;  // the robot budget's split: link -> spheres
+  std::map<std::string, int> counts;  // a robot's split (link -> spheres); a tolerance's count
+                                      // for one solid (its link, or "mesh" -> spheres)
+  bool tolerance = false;             // the fit had a tolerance or protrusion limit
+  bool tolerance_met = true;          // and met it (else the best found was applied)
   bool applied = false;               // this call applied it to the scene
 };
 // Starts a fit. Errors (kInvalidArgument, nothing starts): a fit running already or finished
 // and not yet applied (viewFitStatus applies it), an unknown
 // solid, a tree's solid (trees are fitted by `sphereset tree`), spheres outside [1,
-// limits::kMaxSpheres] without a budget, a budget on a mesh or below one per link, options
-// fitRequestOptions refuses.
+// limits::kMaxSpheres] without a budget or a tolerance, spheres with a tolerance, a tolerance
+// checkToleranceOptions refuses, a budget on a mesh or below one per link, a robot fit without
+// a budget or a max_protrusion, a robot's max_er or max_spheres, options fitRequestOptions
+// refuses.
 Status startViewFit(ViewScene* scene, const ViewFitRequest& request);
 // How the fit is; a finished one is applied to the scene the first time it is asked for (its
 // solids get the new sets and their certificates, the version grows by one).

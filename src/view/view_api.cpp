@@ -16,7 +16,9 @@
 #include <utility>
 #include <vector>
 
+#include "sphereset/evaluate.hpp"
 #include "sphereset/limits.hpp"
+#include "sphereset/options.hpp"
 #include "sphereset/view.hpp"
 #include "view/view_json.hpp"
 #include "view/view_page.hpp"
@@ -276,19 +278,56 @@ ViewResponse postSave(ViewScene* scene, const nlohmann::json& body) {
       {{"path", viewSavePath(*scene, as.value_or(scene->save_format))}, {"bytes", *bytes}});
 }
 
-// POST /api/fit {"solid": K, "spheres": n, "quality": q} or {"budget": B, "quality": q}.
+// The tolerance's rows of a fit body (max_protrusion a number or a text such as "5%", max_er,
+// max_spheres), each handed to the library's table as the text a user types; a bad value is
+// refused in the table's words.
+Status setBodyTolerance(const nlohmann::json& body, ToleranceOptions* t) {
+  for (const char* name : {"max_protrusion", "max_er", "max_spheres"}) {
+    if (!body.contains(name)) continue;
+    const nlohmann::json& v = body[name];
+    std::string text;
+    if (v.is_string())
+      text = v.get<std::string>();
+    else if (v.is_number_integer())
+      text = std::to_string(v.get<int64_t>());
+    else if (v.is_number())
+      text = optionText(v.get<double>());
+    else
+      throw BodyError{std::string("body: '") + name + "' must be a number or a text"};
+    if (Status st = setToleranceOption(t, name, text); !st) return st;
+  }
+  return {};
+}
+
+// POST /api/fit {"solid": K, "spheres": n, "quality": q}, {"solid": K, "max_protrusion": D,
+// "max_er": X, "max_spheres": M, "quality": q} (a tolerance instead of n), or for a robot
+// {"budget": B, "max_protrusion": D, "quality": q} ("robot": true instead of a budget with a
+// limit).
 ViewResponse postFit(ViewScene* scene, const nlohmann::json& body) {
-  onlyFields(body, {"solid", "spheres", "budget", "quality"}, "body");
+  onlyFields(
+      body,
+      {"solid", "spheres", "budget", "robot", "quality", "max_protrusion", "max_er", "max_spheres"},
+      "body");
   ViewFitRequest r;
-  if (body.contains("budget")) {
-    onlyFields(body, {"budget", "quality"}, "body");
-    r.budget = static_cast<int>(
-        std::clamp<int64_t>(integerField(body, "budget", "body"), 0, limits::kMaxSpheres + 1));
-    if (r.budget == 0) throw BodyError{"body: 'budget' must be at least 1"};
+  if (Status st = setBodyTolerance(body, &r.tolerance); !st) return refuse(st.error());
+  if (body.contains("budget") || body.contains("robot")) {
+    onlyFields(body, {"budget", "robot", "quality", "max_protrusion", "max_er", "max_spheres"},
+               "body");
+    if (body.contains("robot")) {
+      if (!body["robot"].is_boolean() || !body["robot"].get<bool>())
+        throw BodyError{"body: 'robot' must be true"};
+      r.robot = true;
+    }
+    if (body.contains("budget")) {
+      r.budget = static_cast<int>(
+          std::clamp<int64_t>(integerField(body, "budget", "body"), 0, limits::kMaxSpheres + 1));
+      if (r.budget == 0) throw BodyError{"body: 'budget' must be at least 1"};
+    }
   } else {
     r.solid = integerField(body, "solid", "body");
-    r.spheres = static_cast<int>(
-        std::clamp<int64_t>(integerField(body, "spheres", "body"), 0, limits::kMaxSpheres + 1));
+    if (body.contains("spheres") || !r.tolerance.active())
+      r.spheres = static_cast<int>(
+          std::clamp<int64_t>(integerField(body, "spheres", "body"), 0, limits::kMaxSpheres + 1));
   }
   if (body.contains("quality")) {
     const nlohmann::json& q = body["quality"];
@@ -305,9 +344,11 @@ ViewResponse postFit(ViewScene* scene, const nlohmann::json& body) {
 ViewResponse postFitStatus(ViewScene* scene, const nlohmann::json& body) {
   onlyFields(body, {}, "body");
   const ViewFitStatus st = viewFitStatus(scene);
-  nlohmann::json j = {{"state", st.state},     {"fraction", st.fraction},  {"stage", st.stage},
-                      {"error", st.error},     {"solids", st.solids},      {"counts", st.counts},
-                      {"applied", st.applied}, {"version", scene->version}};
+  nlohmann::json j = {{"state", st.state},         {"fraction", st.fraction},
+                      {"stage", st.stage},         {"error", st.error},
+                      {"solids", st.solids},       {"counts", st.counts},
+                      {"tolerance", st.tolerance}, {"tolerance_met", st.tolerance_met},
+                      {"applied", st.applied},     {"version", scene->version}};
   if (st.applied) {
     nlohmann::json sets = nlohmann::json::array();
     for (const int64_t k : st.solids) sets.push_back(setAnswer(*scene, k));

@@ -6,10 +6,12 @@
 #include "view/view_fit.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
 #include <memory>
 #include <utility>
 
+#include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/robot_fit.hpp"
@@ -48,10 +50,12 @@ bool pending(const ViewFitJob& job) {
 }
 
 void finish(ViewFitJob* job, std::vector<std::vector<Sphere>> sets,
-            std::map<std::string, int> counts) {
+            std::map<std::string, int> counts, bool tolerance = false, bool met = true) {
   std::lock_guard<std::mutex> g(job->mutex);
   job->sets = std::move(sets);
   job->status.counts = std::move(counts);
+  job->status.tolerance = tolerance;
+  job->status.tolerance_met = met;
   job->status.fraction = 1.0;
   job->status.stage = "done";
   job->status.state = "done";
@@ -81,6 +85,35 @@ void runSolidFit(ViewFitJob* job, std::shared_ptr<const SolidIndex> index,
   finish(job, {std::move(set)}, {});
 }
 
+// One solid, the fewest spheres that meet the tolerance (fitToTolerance): each count tried moves
+// the bar on (a doubling then a bisection: about twice the cap's bits of counts), its fits report
+// their rounds as the stage and check for a cancel; the best count found is applied when none
+// meets it.
+void runToleranceFit(ViewFitJob* job, std::shared_ptr<const SolidIndex> index,
+                     std::shared_ptr<const SolidInput> input, std::vector<Sphere> primitives,
+                     const ViewFitRequest& request, const std::string& name) {
+  ToleranceOptions t = request.tolerance;
+  t.original = input->original();
+  t.walls = input->walls();
+  const double expected = 2.0 * std::log2(static_cast<double>(std::max(2, t.max_spheres))) + 1.0;
+  int tried = 0;
+  t.progress = [job, &tried, expected](const CurvePoint& p) {
+    ++tried;
+    report(job, tried / expected,
+           "n " + std::to_string(p.n) + (p.meets ? " meets it" : " does not meet it"));
+  };
+  t.fit_progress = [job](const FitProgress& p) {
+    report(job, 0.0, "n " + std::to_string(p.spheres) + ": " + p.phase);
+  };
+  FitRequest fr;
+  fr.quality = request.quality;
+  auto found = fitToTolerance(*index, fr, t);
+  if (!found) return fail(job, "failed", found.error().message);
+  std::vector<Sphere> set = std::move(primitives);
+  set.insert(set.end(), found->fit.spheres.begin(), found->fit.spheres.end());
+  finish(job, {std::move(set)}, {{name, found->n}}, true, found->met);
+}
+
 // A robot's budget: fitRobot with the scene's solids' options; each solid gets its link's set.
 void runBudgetFit(ViewFitJob* job, std::shared_ptr<const Robot> robot, RobotFitOptions o,
                   std::vector<std::string> links) {
@@ -102,7 +135,7 @@ void runBudgetFit(ViewFitJob* job, std::shared_ptr<const Robot> robot, RobotFitO
     const auto at = std::find(links.begin(), links.end(), l.link);
     if (at != links.end()) sets[static_cast<size_t>(at - links.begin())] = l.spheres;
   }
-  finish(job, std::move(sets), std::move(counts));
+  finish(job, std::move(sets), std::move(counts), fit->tolerance, fit->tolerance_met);
 }
 
 // Runs `body` on the job's thread: a cancellation or an exception ends the job, never the
@@ -130,8 +163,19 @@ Status checkRequest(const ViewScene& scene, const ViewFitRequest& r) {
     if (pending(*scene.fit))
       return bad("a fit has finished and is not applied yet: ask for its status");
   }
-  if (r.budget != 0) {
-    if (scene.kind != ViewKind::kRobot || !scene.robot) return bad("fit: a budget is for robots");
+  const bool tolerance = r.tolerance.active();
+  if (tolerance)
+    if (Status st = checkToleranceOptions(r.tolerance); !st) return st;
+  if (r.budget != 0 || r.robot) {
+    if (scene.kind != ViewKind::kRobot || !scene.robot)
+      return bad(r.budget != 0 ? "fit: a budget is for robots" : "fit: the scene is no robot");
+    if (r.tolerance.max_er > 0.0 || r.tolerance.max_spheres != ToleranceOptions{}.max_spheres)
+      return bad(
+          "fit: a robot takes max_protrusion as every link's limit, not max_er or "
+          "max_spheres (each link's cap is its own)");
+    if (r.budget == 0 && !tolerance)
+      return bad("fit: a robot fit needs a budget or max_protrusion");
+    if (r.budget == 0) return {};
     const auto least = static_cast<int64_t>(std::count_if(
         scene.solids.begin(), scene.solids.end(), [](const ViewSolid& s) { return s.set == 0; }));
     if (r.budget < least || r.budget > limits::kMaxSpheres)
@@ -147,8 +191,15 @@ Status checkRequest(const ViewScene& scene, const ViewFitRequest& r) {
   if (scene.solids[static_cast<size_t>(r.solid)].tree)
     return bad("fit: a tree's levels are fitted by `sphereset tree`, not one at a time");
   FitRequest fr;
-  fr.num_spheres = r.spheres;
   fr.quality = r.quality;
+  if (tolerance) {
+    // The count is the tolerance's to choose: spheres given with one is refused in the library's
+    // words (checkToleranceRequest).
+    fr.count_given = r.spheres != 0;
+    if (fr.count_given) fr.num_spheres = r.spheres;
+    return checkToleranceRequest(fr, r.tolerance);
+  }
+  fr.num_spheres = r.spheres;
   if (Status st = checkFitRequest(fr); !st) return st;
   if (r.spheres < 1) return bad("fit: the sphere count must be at least 1");
   return {};
@@ -176,7 +227,7 @@ Status checkNotFitting(const ViewScene& scene, int64_t solid) {
 Status startViewFit(ViewScene* scene, const ViewFitRequest& request) {
   if (Status st = checkRequest(*scene, request); !st) return st;
   auto job = std::make_shared<ViewFitJob>();
-  if (request.budget != 0) {
+  if (request.budget != 0 || request.robot) {
     std::vector<std::string> links;
     for (size_t k = 0; k < scene->solids.size(); ++k) {
       if (scene->solids[k].set != 0) continue;
@@ -190,6 +241,10 @@ Status startViewFit(ViewScene* scene, const ViewFitRequest& request) {
     o.link_solid = scene->link_solid;
     o.link_solid_for = scene->link_solid_for;
     o.name = scene->urdf_path;
+    // The tolerance's protrusion limit, in either form, is every link's (a fraction: of each
+    // link's own diagonal).
+    o.max_protrusion = request.tolerance.max_protrusion;
+    o.max_protrusion_fraction = request.tolerance.max_protrusion_fraction;
     launch(job,
            [robot = scene->robot, o, links](ViewFitJob* j) { runBudgetFit(j, robot, o, links); });
   } else {
@@ -200,8 +255,12 @@ Status startViewFit(ViewScene* scene, const ViewFitRequest& request) {
       for (const RobotLink& l : scene->robot->links)
         if (l.name == s.link) primitives = linkSpheres(l);
     }
-    launch(job, [index = s.index, input = s.input, primitives, request](ViewFitJob* j) {
-      runSolidFit(j, index, input, primitives, request);
+    const std::string name = s.link.empty() ? "mesh" : s.link;
+    launch(job, [index = s.index, input = s.input, primitives, request, name](ViewFitJob* j) {
+      if (request.tolerance.active())
+        runToleranceFit(j, index, input, primitives, request, name);
+      else
+        runSolidFit(j, index, input, primitives, request);
     });
   }
   scene->fit = std::move(job);

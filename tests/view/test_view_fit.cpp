@@ -13,6 +13,7 @@
 #include <tuple>
 #include <vector>
 
+#include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "view/view_fit.hpp"
 #include "view/view_fixture.hpp"
@@ -118,6 +119,61 @@ TEST_F(ViewTest, ARobotsBudgetFitsEveryLinkWithinIt) {
   }
 }
 
+// A tolerance instead of a count: the set applied is fitToTolerance's with the same options, and
+// the status names its count and whether it was met; a tolerance no count meets applies the best
+// count found and says so.
+TEST_F(ViewTest, APageFitToAToleranceIsTheLibrarysSearch) {
+  ViewScene scene = boxScene();
+  call(&scene, post("/api/fit", {{"solid", 0}, {"max_protrusion", "20%"}, {"quality", "fast"}}));
+  nlohmann::json done = waitForFit(&scene);
+  ASSERT_EQ(done["state"], "done") << done.dump();
+  EXPECT_TRUE(done["tolerance"].get<bool>());
+  EXPECT_TRUE(done["tolerance_met"].get<bool>());
+  ToleranceOptions t;
+  ASSERT_TRUE(setToleranceOption(&t, "max_protrusion", "20%").ok());
+  t.original = scene.solids[0].input->original();
+  t.walls = scene.solids[0].input->walls();
+  FitRequest fr;
+  fr.quality = FitQuality::kFast;
+  auto found = fitToTolerance(*scene.solids[0].index, fr, t);
+  ASSERT_TRUE(found.ok() && found->met);
+  EXPECT_EQ(done["counts"]["mesh"].get<int>(), found->n);
+  expectSameSpheres(scene.solids[0].spheres(), found->fit.spheres);
+  // Nothing meets 1e-9 within two spheres: the best of the counts tried is applied, not met.
+  call(&scene,
+       post("/api/fit",
+            {{"solid", 0}, {"max_protrusion", 1e-9}, {"max_spheres", 2}, {"quality", "fast"}}));
+  done = waitForFit(&scene);
+  ASSERT_EQ(done["state"], "done") << done.dump();
+  EXPECT_TRUE(done["tolerance"].get<bool>());
+  EXPECT_FALSE(done["tolerance_met"].get<bool>());
+  EXPECT_LE(scene.solids[0].spheres().size(), 2u);
+  EXPECT_TRUE(scene.solids[0].certificate.covered);
+}
+
+// A robot with a protrusion limit: alone, every link its fewest spheres within it; with a budget,
+// the budget holds. The limits are each link's (a percentage: of each link's own diagonal).
+TEST_F(ViewTest, ARobotFitTakesAProtrusionLimit) {
+  ViewScene scene = robotScene();
+  call(&scene, post("/api/fit", {{"robot", true}, {"max_protrusion", "30%"}, {"quality", "fast"}}));
+  nlohmann::json done = waitForFit(&scene);
+  ASSERT_EQ(done["state"], "done") << done.dump();
+  EXPECT_TRUE(done["tolerance"].get<bool>() && done["tolerance_met"].get<bool>());
+  for (const ViewSolid& s : scene.solids) {
+    EXPECT_TRUE(s.certificate.covered) << s.link;
+    // The view's certificate is looser than the fit's (0.01 of the diagonal against 0.001).
+    ASSERT_TRUE(s.certificate.protrusion.has_value()) << s.link;
+    EXPECT_LE(*s.certificate.protrusion, (0.3 + 0.01) * s.index->bounds().diagonal()) << s.link;
+  }
+  call(&scene, post("/api/fit", {{"budget", 4}, {"max_protrusion", 1e-9}, {"quality", "fast"}}));
+  done = waitForFit(&scene);
+  ASSERT_EQ(done["state"], "done") << done.dump();
+  EXPECT_FALSE(done["tolerance_met"].get<bool>());
+  int total = 0;
+  for (const auto& [link, n] : done["counts"].items()) total += n.get<int>();
+  EXPECT_LE(total, 4);
+}
+
 TEST_F(ViewTest, BadFitRequestsStartNothing) {
   ViewScene scene = boxScene();
   for (const nlohmann::json& body : {
@@ -130,6 +186,13 @@ TEST_F(ViewTest, BadFitRequestsStartNothing) {
            nlohmann::json{{"solid", 0}, {"spheres", 4}, {"path", "/tmp/x"}},
            nlohmann::json{{"budget", 8}},
            nlohmann::json{{"solid", 0}},
+           nlohmann::json{{"solid", 0}, {"spheres", 4}, {"max_protrusion", "5%"}},
+           nlohmann::json{{"solid", 0}, {"max_protrusion", "-1"}},
+           nlohmann::json{{"solid", 0}, {"max_protrusion", "5%%"}},
+           nlohmann::json{{"solid", 0}, {"max_er", "nan"}},
+           nlohmann::json{{"solid", 0}, {"max_er", true}},
+           nlohmann::json{{"solid", 0}, {"max_spheres", 8}},
+           nlohmann::json{{"robot", true}, {"max_protrusion", "5%"}},
        })
     call(&scene, post("/api/fit", body), 400);
   // The routes keep the server's checks: no token, another site's Origin, a foreign Host.
@@ -150,6 +213,14 @@ TEST_F(ViewTest, BadFitRequestsStartNothing) {
   call(&tree, post("/api/fit", {{"solid", 0}, {"spheres", 4}}), 400);
   ViewScene robot = robotScene();
   call(&robot, post("/api/fit", {{"budget", 1}}), 400);  // below one per link
+  for (const nlohmann::json& body : {
+           nlohmann::json{{"robot", true}},
+           nlohmann::json{{"robot", false}, {"max_protrusion", "5%"}},
+           nlohmann::json{{"robot", true}, {"max_er", 1}},
+           nlohmann::json{{"budget", 8}, {"max_protrusion", "5%"}, {"max_spheres", 8}},
+       })
+    call(&robot, post("/api/fit", body), 400);
+  EXPECT_EQ(call(&robot, post("/api/fit/status", nlohmann::json::object()))["state"], "idle");
 }
 
 }  // namespace
