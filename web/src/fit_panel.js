@@ -1,5 +1,6 @@
 // Fits started from the page (docs/view.md, POST /api/fit): one link (or the mesh) with a count
-// and a quality, or, for a robot, every link within a budget. The server fits in a thread of its
+// and a quality, or with the fewest spheres within a max protrusion, or, for a robot, every link
+// within a budget, a max protrusion, or both. The server fits in a thread of its
 // own; the page asks how far it is every `pollMs` and shows a progress bar with Cancel; the
 // finished sets come back with their certificates, and Ctrl+Z undoes a fit like any change (a
 // robot's fit in one step, every link at once).
@@ -28,9 +29,32 @@ export class FitPanel {
     $('budget-row').classList.toggle('hidden', !robot);
     const edited = app.scene.solids.filter((s) => s.set !== 1);
     if (robot) $('fit-budget').value = String(edited.reduce((n, s) => n + s.spheres.length, 0));
-    $('fit').onclick = () => this.start({ solid: app.current, spheres: Number($('fit-spheres').value) }).catch(() => {});
-    $('fit-robot').onclick = () => this.start({ budget: Number($('fit-budget').value) }).catch(() => {});
+    $('fit').onclick = () => this.start(this.solidRequest()).catch(() => {});
+    $('fit-robot').onclick = () => this.start(this.robotRequest()).catch(() => {});
     $('fit-cancel').onclick = () => { app.api.fitCancel().catch((e) => panels.showMessage(e.message, 'error')); };
+  }
+
+  // The max protrusion typed (a length or "P%"; the server's table checks it), or none.
+  tolerance() {
+    const text = $('fit-tolerance').value.trim();
+    return text === '' ? undefined : text;
+  }
+
+  // The shown solid: the fewest spheres within the max protrusion when one is typed, else the count.
+  solidRequest() {
+    const limit = this.tolerance();
+    return limit === undefined ? { solid: this.app.current, spheres: Number($('fit-spheres').value) }
+      : { solid: this.app.current, max_protrusion: limit };
+  }
+
+  // Every link: within the budget, each held to the max protrusion when one is typed (an empty
+  // budget with one: each link its fewest within it).
+  robotRequest() {
+    const limit = this.tolerance();
+    const budget = $('fit-budget').value.trim();
+    const request = budget === '' && limit !== undefined ? { robot: true } : { budget: Number(budget) };
+    if (limit !== undefined) request.max_protrusion = limit;
+    return request;
   }
 
   // Starts a fit and resolves with its last status once it has ended (done, cancelled, failed).
@@ -89,9 +113,17 @@ export class FitPanel {
       if (app.applySet(k, status.sets[i])) undo.push({ solid: k, edits: replaceEdits(status.sets[i].spheres, before[k]) });
     });
     app.history.recordParts(undo);
+    const split = Object.entries(status.counts).map(([link, n]) => `${link} ${n}`).join(', ');
+    const missed = status.tolerance && !status.tolerance_met;
+    const limit = body.max_protrusion !== undefined
+      ? `max protrusion ${body.max_protrusion} ${missed ? 'NOT met: the best found, ' : 'met: '}` : '';
     if (body.budget !== undefined) {
-      const split = Object.entries(status.counts).map(([link, n]) => `${link} ${n}`).join(', ');
-      panels.showMessage(`budget ${body.budget}: ${split}`, 'info');
+      panels.showMessage(`budget ${body.budget}: ${limit}${split}`, missed ? 'error' : 'info');
+    } else if (body.robot) {
+      panels.showMessage(`${limit}${split}`, missed ? 'error' : 'info');
+    } else if (limit) {
+      const n = Object.values(status.counts)[0];
+      panels.showMessage(`${limit}${n} spheres (${body.quality})`, missed ? 'error' : 'info');
     } else {
       panels.showMessage(`fitted ${body.spheres} spheres (${body.quality})`, 'info');
     }
