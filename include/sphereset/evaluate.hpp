@@ -219,6 +219,35 @@ Status checkToleranceOptions(const ToleranceOptions& tolerance);
 Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
                                             const ToleranceOptions& options);
 
+// The curve of E_r and certified protrusion against the count, from one run (curve_fit.cpp):
+// the fit at each of `counts` (increasing, each from 1 to limits::kMaxSpheres; none: every count
+// from 1 to max_spheres), as fitToTolerance fits its counts (one progressive run, ProgressiveFit,
+// for the largest count when the request allows one, each count started from a clustering of at
+// most half its count; else independent fits), each checked as `sphereset fit` checks its
+// result. CurvePoint::meets is false (no tolerance). The same request and counts give the same
+// curve for any thread count.
+struct CurveOptions {
+  std::vector<int> counts;
+  int max_spheres = 64;  // the counts 1 ... max_spheres when `counts` is empty
+  const Mesh* original = nullptr;
+  const Mesh* walls = nullptr;
+  // After each count, and within each count's fit, as ToleranceOptions' (either may throw to end
+  // the run; nothing is returned).
+  std::function<void(const CurvePoint&)> progress;
+  std::function<void(const FitProgress&)> fit_progress;
+};
+struct CurveResult {
+  std::vector<CurvePoint> points;            // one per count, in order
+  std::vector<std::vector<Sphere>> spheres;  // the fit at each count (padded as the request says)
+  bool progressive = false;                  // one progressive run (else independent fits)
+  double seconds = 0.0;
+};
+// Errors (kInvalidArgument): counts not increasing or out of range, max_spheres out of range,
+// a request checkFitRequest refuses or that gives n (the counts are the curve's); those of
+// fitSpheres and evaluateSpheres.
+Expected<CurveResult> fitCurve(const SolidIndex& index, const FitRequest& request,
+                               const CurveOptions& options);
+
 // Shadows of the mesh and of the spheres on a ground plane just under the mesh's lowest point
 // (a square 3 times the object's largest extent, resolution² pixels), lit by `lights`
 // directional lights spread evenly over the upper hemisphere. See shadow.cpp.

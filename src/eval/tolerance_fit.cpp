@@ -15,6 +15,7 @@
 #include <string_view>
 #include <utility>
 
+#include "eval/checked_count.hpp"
 #include "eval/count_search.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
@@ -69,11 +70,7 @@ constexpr OptionSpec kToleranceOptions[] = {
 };
 
 // One count: the fit at n and its check.
-struct Trial {
-  FitResult fit;
-  EvalResult eval;
-  CurvePoint point;
-};
+using Trial = detail::CheckedCount;
 
 }  // namespace
 
@@ -183,19 +180,11 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
     fo.progress = t.fit_progress;
     auto fit = fitAt(n, fo);
     if (!fit) return fit.error();
-    auto ev =
-        evaluateSpheres(index, fit->spheres, fitCheckEvalOptions(fo.seed, t.original, t.walls));
-    if (!ev) return ev.error();
-    Trial trial{std::move(fit).value(), std::move(ev).value(), {}};
-    CurvePoint& p = trial.point;
-    p.n = n;
-    p.er_sum = trial.eval.er_sum;
-    p.protrusion = trial.eval.protrusion;
-    p.covered =
-        trial.eval.surface_covered && trial.eval.interior_covered && trial.eval.original_covered;
+    auto trial = detail::checkCount(index, std::move(fit).value(), fo, t.walls, n, s0);
+    if (!trial) return trial.error();
+    CurvePoint& p = trial->point;
     p.meets = p.covered && (limit <= 0.0 || p.protrusion <= limit) &&
               (t.max_er <= 0.0 || p.er_sum <= t.max_er);
-    p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
     out.curve.push_back(p);
     if (t.progress) t.progress(p);
     return trial;

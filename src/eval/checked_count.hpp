@@ -1,0 +1,38 @@
+// Private: one count's fit checked as `sphereset fit` checks its result (fitCheckEvalOptions),
+// shared by the tolerance search (tolerance_fit.cpp) and the curve of a run (curve_fit.cpp).
+#pragma once
+
+#include <chrono>
+#include <utility>
+
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/solid_index.hpp"
+
+namespace sphereset::detail {
+
+// The fit at one count, its check and its point of the curve (`meets` left false: the caller's
+// tolerance decides it).
+struct CheckedCount {
+  FitResult fit;
+  EvalResult eval;
+  CurvePoint point;
+};
+
+// Checks `fit` (the fit at n with options `fo`) and fills the point; `start` is when the count's
+// fit began (CurvePoint::seconds covers the fit and its check).
+inline Expected<CheckedCount> checkCount(const SolidIndex& index, FitResult fit,
+                                         const FitOptions& fo, const Mesh* walls, int n,
+                                         std::chrono::steady_clock::time_point start) {
+  auto ev = evaluateSpheres(index, fit.spheres, fitCheckEvalOptions(fo.seed, fo.original, walls));
+  if (!ev) return ev.error();
+  CheckedCount c{std::move(fit), std::move(ev).value(), {}};
+  c.point.n = n;
+  c.point.er_sum = c.eval.er_sum;
+  c.point.protrusion = c.eval.protrusion;
+  c.point.covered = c.eval.surface_covered && c.eval.interior_covered && c.eval.original_covered;
+  c.point.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return c;
+}
+
+}  // namespace sphereset::detail

@@ -1,0 +1,117 @@
+// The curve of a run (fitCurve): one point per count, each the certified check of the set it
+// returns (re-evaluated here), the fits those of one progressive run (or of independent fits when
+// the request does not allow one), every count 1 ... max_spheres by default, progress per count
+// that may cancel, and bad counts refused.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <vector>
+
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/limits.hpp"
+#include "sphereset/solid_index.hpp"
+#include "test_meshes.hpp"
+
+namespace sphereset {
+namespace {
+
+FitRequest quick() {
+  FitRequest r;
+  r.quality = FitQuality::kFast;
+  return r;
+}
+
+void expectSameSpheres(const std::vector<Sphere>& a, const std::vector<Sphere>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].center, b[i].center) << i;
+    EXPECT_EQ(a[i].radius, b[i].radius) << i;
+  }
+}
+
+TEST(FitCurve, EachPointIsTheCheckOfItsSetFromOneProgressiveRun) {
+  const SolidIndex index(test::robotLink());
+  CurveOptions o;
+  o.counts = {1, 2, 4, 8};
+  std::vector<int> reported;
+  o.progress = [&](const CurvePoint& p) { reported.push_back(p.n); };
+  auto c = fitCurve(index, quick(), o);
+  ASSERT_TRUE(c.ok()) << c.error().message;
+  EXPECT_TRUE(c->progressive);
+  EXPECT_EQ(reported, o.counts);
+  ASSERT_EQ(c->points.size(), 4u);
+  ASSERT_EQ(c->spheres.size(), 4u);
+  // The run's fits, count by count: a ProgressiveFit for the largest count asked the same.
+  FitRequest top = quick();
+  top.num_spheres = 8;
+  auto run = ProgressiveFit::start(index, fitOptionsFor(top));
+  ASSERT_TRUE(run.ok());
+  for (size_t i = 0; i < 4; ++i) {
+    const CurvePoint& p = c->points[i];
+    EXPECT_EQ(p.n, o.counts[i]);
+    EXPECT_EQ(static_cast<int>(c->spheres[i].size()), p.n);
+    EXPECT_FALSE(p.meets);
+    auto fit = run->fit(p.n);
+    ASSERT_TRUE(fit.ok());
+    expectSameSpheres(c->spheres[i], fit->spheres);
+    // Its figures are the check of that set.
+    auto ev = evaluateSpheres(index, c->spheres[i], fitCheckEvalOptions(1, nullptr, nullptr));
+    ASSERT_TRUE(ev.ok());
+    EXPECT_EQ(p.er_sum, ev->er_sum) << p.n;
+    EXPECT_EQ(p.protrusion, ev->protrusion) << p.n;
+    EXPECT_TRUE(p.covered) << p.n;
+  }
+}
+
+TEST(FitCurve, EveryCountByDefaultAndIndependentFitsWhenTheRequestAsks) {
+  const SolidIndex index(test::robotLink());
+  CurveOptions o;
+  o.max_spheres = 3;
+  FitRequest r = quick();
+  r.restarts = 2;  // not a progressive run's
+  auto c = fitCurve(index, r, o);
+  ASSERT_TRUE(c.ok()) << c.error().message;
+  EXPECT_FALSE(c->progressive);
+  ASSERT_EQ(c->points.size(), 3u);
+  for (int n = 1; n <= 3; ++n) {
+    EXPECT_EQ(c->points[n - 1].n, n);
+    FitRequest at = r;
+    at.num_spheres = n;
+    auto fit = fitSpheres(index, fitOptionsFor(at));
+    ASSERT_TRUE(fit.ok());
+    expectSameSpheres(c->spheres[n - 1], fit->spheres);
+  }
+}
+
+TEST(FitCurve, ProgressMayCancelAndBadCountsAreRefused) {
+  const SolidIndex index(test::robotLink());
+  CurveOptions o;
+  o.counts = {1, 2, 3};
+  o.progress = [](const CurvePoint& p) {
+    if (p.n == 2) throw std::runtime_error("stop");
+  };
+  EXPECT_THROW(fitCurve(index, quick(), o), std::runtime_error);
+  const auto refused = [&](CurveOptions bad, const FitRequest& r, const char* words) {
+    auto c = fitCurve(index, r, bad);
+    ASSERT_FALSE(c.ok()) << words;
+    EXPECT_EQ(c.error().code, ErrorCode::kInvalidArgument);
+    EXPECT_NE(c.error().message.find(words), std::string::npos) << c.error().message;
+  };
+  CurveOptions bad;
+  bad.counts = {2, 2};
+  refused(bad, quick(), "expected increasing counts");
+  bad.counts = {0, 1};
+  refused(bad, quick(), "counts: 0 is not from 1");
+  bad.counts = {limits::kMaxSpheres + 1};
+  refused(bad, quick(), "is not from 1");
+  bad.counts.clear();
+  bad.max_spheres = 0;
+  refused(bad, quick(), "max_spheres 0");
+  FitRequest with_n = quick();
+  ASSERT_TRUE(setFitRequestOption(&with_n, "n", "4").ok());
+  refused(CurveOptions{}, with_n, "n and a curve's counts exclude each other");
+}
+
+}  // namespace
+}  // namespace sphereset
