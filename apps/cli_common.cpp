@@ -14,6 +14,7 @@
 #ifdef SPHERESET_WITH_REPAIR
 #include "sphereset/load.hpp"
 #include "sphereset/repair_cgal.hpp"
+#include "sphereset/sphere_io.hpp"
 #endif
 
 namespace sphereset::cli {
@@ -285,6 +286,26 @@ int coverageExit(const std::string& mesh, const std::string& what, const std::st
 
 std::string jsonText(const nlohmann::json& j, int indent) {
   return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+Status writeCurve(const std::string& path, const std::vector<CurvePoint>& points) {
+  std::string text = "n,er_sum,protrusion,covered,meets,seconds\n";
+  for (const CurvePoint& p : points) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%d,%d,%.3f\n", p.n, p.er_sum, p.protrusion,
+                  p.covered ? 1 : 0, p.meets ? 1 : 0, p.seconds);
+    text += line;
+  }
+  return writeTextFile(path, text);
+}
+
+nlohmann::json curvePointJson(const CurvePoint& p) {
+  return {{"n", p.n},
+          {"er_sum", p.er_sum},
+          {"protrusion", p.protrusion},
+          {"covered", p.covered},
+          {"meets", p.meets},
+          {"seconds", p.seconds}};
 }
 
 }  // namespace sphereset::cli

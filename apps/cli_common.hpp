@@ -189,4 +189,11 @@ int coverageExit(const std::string& mesh, const std::string& what, const std::st
 // internal error after the work was done).
 std::string jsonText(const nlohmann::json& j, int indent = -1);
 
+// Points of a curve (a tolerance search's counts tried, or `curve`'s counts) as CSV: n, E_r,
+// certified protrusion, covered, meets, seconds; written atomically.
+Status writeCurve(const std::string& path, const std::vector<CurvePoint>& points);
+
+// A curve point as the JSON summaries give it: n, er_sum, protrusion, covered, meets, seconds.
+nlohmann::json curvePointJson(const CurvePoint& p);
+
 }  // namespace sphereset::cli

@@ -78,19 +78,6 @@ void printFitSummary(const FitArgs& a, const FitResult& r, const EvalResult& ev,
                  in.repair.fill_openings, ev.er_walls);
 }
 
-// The counts a tolerance search tried, as CSV: n, E_r, certified protrusion, covered, meets,
-// seconds (atomically written).
-Status writeCurve(const std::string& path, const ToleranceFitResult& t) {
-  std::string text = "n,er_sum,protrusion,covered,meets,seconds\n";
-  for (const CurvePoint& p : t.curve) {
-    char line[160];
-    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%d,%d,%.3f\n", p.n, p.er_sum, p.protrusion,
-                  p.covered ? 1 : 0, p.meets ? 1 : 0, p.seconds);
-    text += line;
-  }
-  return writeTextFile(path, text);
-}
-
 // fit with a tolerance: the fewest spheres that meet it (fitToTolerance), the curve on request,
 // exit 10 when no count up to the cap meets it (the best set written only with --best-effort).
 int runToleranceFit(const FitCommandArgs& c, const ToleranceOptions& tolerance) {
@@ -115,7 +102,7 @@ int runToleranceFit(const FitCommandArgs& c, const ToleranceOptions& tolerance) 
   auto t = fitToTolerance(index, *request, to);
   if (!t) return fail(Error{t.error().code, a.mesh.path + ": " + t.error().message});
   if (!c.curve.empty())
-    if (Status st = writeCurve(c.curve, *t); !st) return fail(st.error());
+    if (Status st = writeCurve(c.curve, t->curve); !st) return fail(st.error());
   if (t->met || c.best_effort) {
     SphereFileMeta meta;
     meta.name =
@@ -132,12 +119,7 @@ int runToleranceFit(const FitCommandArgs& c, const ToleranceOptions& tolerance) 
                       {"max_er", tolerance.max_er},
                       {"seconds", t->seconds}};
     nlohmann::json curve = nlohmann::json::array();
-    for (const CurvePoint& p : t->curve)
-      curve.push_back({{"n", p.n},
-                       {"er_sum", p.er_sum},
-                       {"protrusion", p.protrusion},
-                       {"covered", p.covered},
-                       {"meets", p.meets}});
+    for (const CurvePoint& p : t->curve) curve.push_back(curvePointJson(p));
     j["tolerance"]["curve"] = curve;
     std::cout << jsonText(j) << '\n';
   }

@@ -16,6 +16,7 @@ struct Command {
 Command registerCheck(CLI::App& app);    // cmd_check.cpp
 Command registerEval(CLI::App& app);     // cmd_eval.cpp
 Command registerFit(CLI::App& app);      // cmd_fit.cpp
+Command registerCurve(CLI::App& app);    // cmd_curve.cpp
 Command registerTree(CLI::App& app);     // cmd_tree.cpp
 Command registerRender(CLI::App& app);   // cmd_render.cpp
 Command registerExport(CLI::App& app);   // cmd_export.cpp

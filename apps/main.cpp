@@ -21,9 +21,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 4096));
   // In the order of --help.
   const std::vector<Command> commands = {
-      registerCheck(app),  registerEval(app),    registerFit(app),   registerTree(app),
-      registerRender(app), registerExport(app),  registerQuery(app), registerRobot(app),
-      registerBatch(app),  registerAnimate(app), registerView(app)};
+      registerCheck(app), registerEval(app),   registerFit(app),     registerCurve(app),
+      registerTree(app),  registerRender(app), registerExport(app),  registerQuery(app),
+      registerRobot(app), registerBatch(app),  registerAnimate(app), registerView(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

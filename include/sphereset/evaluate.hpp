@@ -242,9 +242,12 @@ struct CurveResult {
   bool progressive = false;                  // one progressive run (else independent fits)
   double seconds = 0.0;
 };
-// Errors (kInvalidArgument): counts not increasing or out of range, max_spheres out of range,
-// a request checkFitRequest refuses or that gives n (the counts are the curve's); those of
-// fitSpheres and evaluateSpheres.
+// The options of a curve (kInvalidArgument): counts not increasing or out of range,
+// max_spheres out of range, a request that gives n (the counts are the curve's). fitCurve asks
+// it; a door asks it before loading anything.
+Status checkCurveOptions(const FitRequest& request, const CurveOptions& options);
+// Errors: those of checkCurveOptions and checkFitRequest; those of fitSpheres and
+// evaluateSpheres.
 Expected<CurveResult> fitCurve(const SolidIndex& index, const FitRequest& request,
                                const CurveOptions& options);
 

@@ -79,7 +79,7 @@ __all__ = [
     "split_budget", "curve_volume", "Animation", "AnimateResult", "mean_value_coordinates",
     "mean_value_weights", "point_bone_weights", "skin_points", "load_animation", "animate",
     "RobotLinkFit", "RobotFitResult", "fit_robot", "robot_contacts", "trajectory_contacts",
-    "sample_self_collisions", "fit_to_tolerance",
+    "sample_self_collisions", "fit_to_tolerance", "fit_curve",
 ]
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -282,6 +282,34 @@ def fit_to_tolerance(mesh: MeshLike, *, max_protrusion: Union[float, str, None] 
     d = _core._fit_to_tolerance(s, options, tolerance, progress)
     d["fit"] = FitResult(**d["fit"])
     return d
+
+
+@_repair_keywords
+def fit_curve(mesh: MeshLike, *, counts: Optional[Sequence[int]] = None, max_spheres: int = 64,
+              seed: int = 1, quality: str = "default", padding: float = 0.0, points: int = 0,
+              iterations: Optional[int] = None, restarts: Optional[int] = None,
+              decimation: Optional[float] = None, optimizer: str = "powell", init: str = "fps",
+              method: str = "variational", progress: Optional[ProgressCallback] = None,
+              repair_options: Dict[str, Any]) -> Dict[str, Any]:
+    """E_r and the certified protrusion at every count from 1 to ``max_spheres`` (or at
+    ``counts``, increasing) from one run, as ``sphereset curve`` gives them (the same library
+    call, fitCurve): the fits of one progressive run for the largest count (independent fits
+    when the options do not allow one), each checked as ``fit`` checks its result. The fit
+    keywords are :func:`fit`'s (without ``n``); the counts and options are checked before the mesh
+    is read. ``progress`` gets each count's point ({"n", "er_sum", "protrusion", "covered",
+    "meets", "seconds"}) when it is done; an exception it raises ends the run, and Ctrl-C raises
+    KeyboardInterrupt within a count's fit.
+
+    Returns {"curve": [point per count], "spheres": [(n, 4) array per count], "progressive",
+    "seconds"}.
+    """
+    options = dict(quality=quality, seed=seed, padding=padding, points=points,
+                   iterations=iterations, restarts=restarts, decimation=decimation,
+                   optimizer=optimizer, init=init, method=method)
+    wanted = [int(n) for n in counts] if counts is not None else []
+    _core._check_curve(options, wanted, int(max_spheres))
+    s = solid(mesh, **repair_options)
+    return _core._fit_curve(s, options, wanted, int(max_spheres), progress)
 
 
 @_repair_keywords

@@ -235,6 +235,55 @@ void bindFit(py::module_& m) {
         return d;
       },
       py::arg("solid"), py::arg("options"), py::arg("tolerance"), py::arg("progress"));
+  m.def(
+      "_fit_curve",
+      [](const std::shared_ptr<PySolid>& solid, const py::dict& options,
+         const std::vector<int>& counts, int max_spheres, const py::object& progress) {
+        const FitRequest rq = fitRequest(options);
+        CurveOptions co;
+        co.counts = counts;
+        co.max_spheres = max_spheres;
+        // After each count (the callback first, then Ctrl-C), and within each count's fit.
+        const py::object* cb = &progress;
+        co.progress = [cb](const CurvePoint& c) {
+          py::gil_scoped_acquire gil;
+          if (!cb->is_none()) (*cb)(curvePointDict(c));
+          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        };
+        co.fit_progress = [](const FitProgress&) {
+          py::gil_scoped_acquire gil;
+          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        };
+        co.original = solid->original();
+        co.walls = solid->walls();
+        Expected<CurveResult> r = Error{ErrorCode::kInvalidArgument, "not run"};
+        {
+          py::gil_scoped_release release;
+          r = fitCurve(*solid->index, rq, co);
+        }
+        if (!r) raise(r.error().code, solid->name + ": " + r.error().message);
+        py::list curve, spheres;
+        for (const CurvePoint& c : r->points) curve.append(curvePointDict(c));
+        for (const std::vector<Sphere>& set : r->spheres) spheres.append(spheresToArray(set));
+        py::dict d;
+        d["curve"] = curve;
+        d["spheres"] = spheres;
+        d["progressive"] = r->progressive;
+        d["seconds"] = r->seconds;
+        return d;
+      },
+      py::arg("solid"), py::arg("options"), py::arg("counts"), py::arg("max_spheres"),
+      py::arg("progress"));
+  m.def(
+      "_check_curve",
+      [](const py::dict& options, const std::vector<int>& counts, int max_spheres) {
+        CurveOptions co;
+        co.counts = counts;
+        co.max_spheres = max_spheres;
+        if (Status st = checkCurveOptions(fitRequest(options), co); !st)
+          raise(st.error().code, st.error().message);
+      },
+      py::arg("options"), py::arg("counts"), py::arg("max_spheres"));
   m.def("_tolerance_option_table", [] { return optionTable(toleranceOptionTable()); });
   m.def(
       "_check_tolerance",

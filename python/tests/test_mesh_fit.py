@@ -431,3 +431,30 @@ def test_fit_to_tolerance_takes_the_fit_keywords(tmp_path):
         signal.signal(signal.SIGALRM, old)
     assert counts == [1]
     assert [e.name for e in info.traceback][-2:] == ["fit_to_tolerance", "alarm"]
+
+
+def test_fit_curve_is_the_commands_curve(cli, tmp_path):
+    """fit_curve gives every count's point and set, the same figures as `sphereset curve` (the
+    same library call), each point the check of its set; bad counts are refused before the mesh
+    is read."""
+    seen = []
+    c = ss.fit_curve(LINK, max_spheres=4, quality="fast", progress=seen.append)
+    assert [p["n"] for p in c["curve"]] == [1, 2, 3, 4] and seen == c["curve"]
+    assert c["progressive"] and [len(s) for s in c["spheres"]] == [1, 2, 3, 4]
+    out = tmp_path / "curve.csv"
+    cli("curve", str(LINK), "--max-spheres", "4", "--quality", "fast", "-o", str(out), "-q")
+    rows = out.read_text().splitlines()
+    assert rows[0] == "n,er_sum,protrusion,covered,meets,seconds"
+    for row, p in zip(rows[1:], c["curve"]):
+        n, er, prot, covered = row.split(",")[:4]
+        assert (int(n), float(er), float(prot), covered) == (p["n"], p["er_sum"],
+                                                             p["protrusion"], "1")
+    # Each point is the check of its set.
+    ev = ss.evaluate(LINK, c["spheres"][2])
+    assert ev.protrusion["bound"] == pytest.approx(c["curve"][2]["protrusion"], rel=1e-12)
+    missing = str(tmp_path / "missing.stl")
+    with pytest.raises(ss.InvalidArgumentError, match="expected increasing counts"):
+        ss.fit_curve(missing, counts=[4, 2])
+    with pytest.raises(ss.InvalidArgumentError, match="max_spheres 0"):
+        ss.fit_curve(missing, max_spheres=0)
+

@@ -13,7 +13,6 @@
 #include "sphereset/limits.hpp"
 
 namespace sphereset {
-namespace {
 
 Status checkCurveOptions(const FitRequest& request, const CurveOptions& o) {
   const auto bad = [](const std::string& m) { return Error{ErrorCode::kInvalidArgument, m}; };
@@ -32,8 +31,6 @@ Status checkCurveOptions(const FitRequest& request, const CurveOptions& o) {
   }
   return {};
 }
-
-}  // namespace
 
 Expected<CurveResult> fitCurve(const SolidIndex& index, const FitRequest& request,
                                const CurveOptions& o) {

@@ -367,6 +367,17 @@ cli_test(fit_tolerance_percent_twice 2 ARGS fit ${link} --max-protrusion 5%% -o 
 cli_test(fit_help_percent 0 ARGS fit --help STDOUT "--max-protrusion FLOAT.%.")
 cli_test(fit_tolerance_nan 2 ARGS fit ${link} --max-er nan -o ${work}/never_tol3.json
          STDERR "max_er 'nan': expected a number above 0 and at most 1000000" FORBID ${work}/never_tol3.json)
+# curve: every count from 1 to N from one progressive run, as CSV (and JSON on request); counts
+# not increasing, not numbers, or with --max-spheres are exit 2, before anything is written.
+cli_test(curve 0 ARGS curve ${link} --max-spheres 4 --quality fast -o ${work}/curve.csv --json -q
+         FILE ${work}/curve.csv
+         STDOUT "\"covered\":true.*\"n\":1,.*\"n\":2,.*\"n\":3,.*\"n\":4,.*\"progressive\":true")
+cli_test(curve_counts_order 2 ARGS curve ${link} --counts 4,2 -o ${work}/never_curve2.csv -q
+         STDERR "counts: 2 after 4: expected increasing counts" FORBID ${work}/never_curve2.csv)
+cli_test(curve_counts_text 2 ARGS curve ${link} --counts 2,x -o ${work}/never_curve3.csv -q
+         STDERR "counts '2,x': expected integers separated by commas" FORBID ${work}/never_curve3.csv)
+cli_test(curve_n 2 ARGS curve ${link} -n 4 -o ${work}/never_curve4.csv -q
+         FORBID ${work}/never_curve4.csv)
 cli_test(fit_curve_without_tolerance 2 ARGS fit ${link} -n 4 --curve ${work}/never_curve.csv
          -o ${work}/never_tol4.json STDERR "--curve, --best-effort and --max-spheres go with a tolerance"
          FORBID ${work}/never_tol4.json)
