@@ -76,9 +76,11 @@ def test_repair_keywords_have_one_home():
 
 
 def test_percent_rows_are_marked():
-    # A row that takes a trailing '%' says so; of every table, only fit's protrusion tolerance
-    # does (the robot's limits are lengths).
+    # A row that takes a trailing '%' says so: the protrusion limits, fit's (of the diagonal)
+    # and the robot's (of each link's diagonal).
     tables = [getattr(core, name) for name in dir(core) if name.endswith("_option_table")]
     assert len(tables) >= 9
     marked = {(t.__name__, row["name"]) for t in tables for row in t() if row["percent"]}
-    assert marked == {("_tolerance_option_table", "max_protrusion")}
+    assert marked == {("_tolerance_option_table", "max_protrusion"),
+                      ("_robot_option_table", "max_protrusion"),
+                      ("_robot_option_table", "link_max_protrusion")}

@@ -103,23 +103,27 @@ TEST(OptionTables, KeyedRowsTakeKeyEqualsValue) {
 // text and the checkers' structs get the row's message; a struct's 0 is the field's "none".
 TEST(OptionTables, LimitRowsRefuseTheirLowerEnd) {
   RobotFitOptions o;
-  expectRefused(setRobotFitOption(&o, "max_protrusion", "0"),
-                "max_protrusion '0': expected a number above 0 and at most 1e+30");
+  expectRefused(
+      setRobotFitOption(&o, "max_protrusion", "0"),
+      "max_protrusion '0': expected a number above 0 and at most 1e+30, optionally followed "
+      "by %");
   expectRefused(setRobotFitOption(&o, "link_max_protrusion", "l=-0"),
                 "link_max_protrusion 'l=-0': expected LINK=VALUE, VALUE a number above 0 and at "
-                "most 1e+30");
+                "most 1e+30, optionally followed by %");
   ASSERT_TRUE(setRobotFitOption(&o, "max_protrusion", "1e-12").ok());
   EXPECT_EQ(o.max_protrusion, 1e-12);
   o.max_protrusion = 0.0;
   EXPECT_TRUE(checkRobotFitOptions(o).ok());
   o.max_protrusion = -1.0;
-  expectRefused(checkRobotFitOptions(o),
-                "max_protrusion '-1': expected a number above 0 and at most 1e+30");
+  expectRefused(
+      checkRobotFitOptions(o),
+      "max_protrusion '-1': expected a number above 0 and at most 1e+30, optionally followed "
+      "by %");
   o.max_protrusion = 0.0;
   o.link_max_protrusion["l"] = 0.0;
   expectRefused(checkRobotFitOptions(o),
                 "link_max_protrusion 'l=0': expected LINK=VALUE, VALUE a number above 0 and at "
-                "most 1e+30");
+                "most 1e+30, optionally followed by %");
   ToleranceOptions t;
   expectRefused(setToleranceOption(&t, "max_er", "nan"),
                 "max_er 'nan': expected a number above 0 and at most 1000000");
@@ -146,9 +150,13 @@ TEST(OptionTables, PercentRowsTakeATrailingPercentSign) {
               "limit '" + std::string(bad) +
                   "': expected a number above 0 and at most 50, optionally followed by %");
   }
-  RobotFitOptions o;  // the robot's limit is a length only
-  expectRefused(setRobotFitOption(&o, "max_protrusion", "5%"),
-                "max_protrusion '5%': expected a number above 0 and at most 1e+30");
+  RobotFitOptions o;  // the robot's limit: a length, or a percentage of each link's diagonal
+  ASSERT_TRUE(setRobotFitOption(&o, "max_protrusion", "5%").ok());
+  EXPECT_EQ(o.max_protrusion, 0.0);
+  EXPECT_DOUBLE_EQ(o.max_protrusion_fraction, 0.05);
+  expectRefused(setRobotFitOption(&o, "max_protrusion", "5%%"),
+                "max_protrusion '5%%': expected a number above 0 and at most 1e+30, optionally "
+                "followed by %");
   // A struct's percentage, checked as the text a user would type.
   const OptionSpec table[] = {row};
   EXPECT_TRUE(checkTableValue(table, "test", "limit", 5.0, {}, true).ok());
