@@ -1,10 +1,10 @@
 // sphereset curve: E_r and the certified protrusion against the sphere count from one run
 // (fitCurve, evaluate.hpp), written as CSV: what a user reads to choose a count or a tolerance.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -12,7 +12,6 @@
 #include "commands.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
-#include "sphereset/limits.hpp"
 #include "sphereset/solid_index.hpp"
 #include "sphereset/sphere_io.hpp"
 
@@ -22,30 +21,28 @@ namespace {
 struct CurveArgs {
   FitArgs fit;  // the mesh, its repair, the fit's options but n; out_path is the CSV
   std::string counts;
+  bool counts_given = false;
   int max_spheres = CurveOptions{}.max_spheres;
   bool json = false;
 };
 
-// "1,2,4,8" as counts; the library checks their range and order (checkCurveOptions).
+// "1,2,4,8" as counts: digits only between the commas (no sign, space or empty item); the
+// library checks their range and order (checkCurveOptions).
 Expected<std::vector<int>> parseCounts(const std::string& text) {
+  const Error bad{ErrorCode::kInvalidArgument,
+                  "counts '" + text + "': expected integers separated by commas"};
   std::vector<int> counts;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    size_t used = 0;
-    int n = 0;
-    try {
-      n = std::stoi(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != item.size())
-      return Error{ErrorCode::kInvalidArgument,
-                   "counts '" + text + "': expected integers separated by commas"};
-    counts.push_back(n);
+  size_t start = 0;
+  for (;;) {
+    const size_t end = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, end - start);
+    if (item.empty() || item.size() > 9 ||
+        item.find_first_not_of("0123456789") != std::string::npos)
+      return bad;
+    counts.push_back(std::stoi(item));
+    if (end == text.size()) break;
+    start = end + 1;
   }
-  if (counts.empty())
-    return Error{ErrorCode::kInvalidArgument, "counts '': expected integers separated by commas"};
   return counts;
 }
 
@@ -56,7 +53,7 @@ int runCurve(const CurveArgs& c) {
   if (!request) return fail(request.error());
   CurveOptions o;
   o.max_spheres = c.max_spheres;
-  if (!c.counts.empty()) {
+  if (c.counts_given) {
     auto counts = parseCounts(c.counts);
     if (!counts) return fail(counts.error());
     o.counts = std::move(counts).value();
@@ -119,12 +116,18 @@ Command registerCurve(CLI::App& app) {
   addMeshArgs(cmd, &a.mesh);
   cmd->add_option("-o,--output", a.out_path, "Output CSV, one row per count")->required();
   addFitTuningArgs(cmd, &a, false);
+  // Both checked by the library (checkCurveOptions), in its words.
   auto* up_to = cmd->add_option("--max-spheres", c->max_spheres,
-                                "The counts 1, 2, ..., N (each count's fit and its check)")
-                    ->capture_default_str()
-                    ->check(CLI::Range(1, limits::kMaxSpheres));
-  cmd->add_option("--counts", c->counts,
-                  "Only these counts, increasing, separated by commas (e.g. 1,2,4,8,16,32,64)")
+                                "The counts 1, 2, ..., N (at most 1024): each count's fit and "
+                                "its check")
+                    ->capture_default_str();
+  cmd->add_option_function<std::string>(
+         "--counts",
+         [c](const std::string& text) {
+           c->counts = text;
+           c->counts_given = true;
+         },
+         "Only these counts, increasing, separated by commas (e.g. 1,2,4,8,16,32,64)")
       ->excludes(up_to);
   cmd->add_flag("--json", c->json, "Print the curve as one JSON object on stdout");
   cmd->add_flag("-q,--quiet", a.quiet, "No progress on stderr");

@@ -161,8 +161,9 @@ Expected<ProtrusionResult> sphereProtrusion(const SolidIndex& solid,
 // The fewest spheres that meet a tolerance: a certified protrusion of at most max_protrusion
 // (length) or max_protrusion_fraction of the bounding-box diagonal (the smaller when both), and
 // an E_r of at most max_er, each 0 for no limit, capped at max_spheres (tolerance_fit.cpp: fits
-// at 1, 2, 4, ... spheres until one meets it, then bisection; the fits of one progressive run,
-// ProgressiveFit, when the request allows one, else independent fits). The result is
+// at 1, 2, 4, ... spheres until one meets it, then bisection; the fits of progressive runs,
+// ProgressiveFit, each started from the last one's clusterings, when the request allows them,
+// else independent fits). The result is
 // the fit and check of the smallest count tried that met it (met), or else of the best count
 // tried (covered first, then the smaller protrusion, or E_r without a protrusion limit), and
 // every count tried (`curve`, in the order tried). `original` and `walls` as EvalOptions'.
@@ -196,7 +197,7 @@ struct ToleranceFitResult {
   FitResult fit;
   EvalResult eval;
   std::vector<CurvePoint> curve;
-  bool progressive = false;  // the counts were fits of one progressive run
+  bool progressive = false;  // the counts were fits of progressive runs
   double seconds = 0.0;
 };
 // The table of the tolerance options (options.hpp): max_protrusion (a trailing % makes it a
@@ -220,15 +221,19 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
                                             const ToleranceOptions& options);
 
 // The curve of E_r and certified protrusion against the count, from one run (curve_fit.cpp):
-// the fit at each of `counts` (increasing, each from 1 to limits::kMaxSpheres; none: every count
-// from 1 to max_spheres), as fitToTolerance fits its counts (one progressive run, ProgressiveFit,
-// for the largest count when the request allows one, each count started from a clustering of at
-// most half its count; else independent fits), each checked as `sphereset fit` checks its
-// result. CurvePoint::meets is false (no tolerance). The same request and counts give the same
-// curve for any thread count.
+// the fit at each of `counts` (increasing, each from 1 to limits::kMaxCurveCount; none: every
+// count from 1 to max_spheres), as the fits of one progressive run (ProgressiveFit) that samples
+// the points of the largest count, each count's clustering started from that of the largest count
+// already clustered at most half its size (from seeds when there is none); independent fits
+// when the request does not allow a run (restarts, decimation, a baseline method). Each is
+// checked as `sphereset fit` checks its result. CurvePoint::meets is false (no tolerance). The
+// same request and counts give the same curve for any thread count. A count's set differs from
+// the tolerance search's at that count, whose runs sample the points of other counts.
 struct CurveOptions {
   std::vector<int> counts;
-  int max_spheres = 64;  // the counts 1 ... max_spheres when `counts` is empty
+  // The counts 1 ... max_spheres when `counts` is empty (from 1 to limits::kMaxCurveCount,
+  // checked either way).
+  int max_spheres = 64;
   const Mesh* original = nullptr;
   const Mesh* walls = nullptr;
   // After each count, and within each count's fit, as ToleranceOptions' (either may throw to end

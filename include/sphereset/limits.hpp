@@ -34,6 +34,9 @@ inline constexpr int64_t kMaxUnionSamples = 100000000;      // Monte Carlo sampl
 inline constexpr int64_t kMaxProximitySegments = 10000000;  // proximity segments
 inline constexpr int kMaxShadowResolution = 4096;           // pixels per side
 inline constexpr int kMaxShadowLights = 4096;               // lights
+// A curve's largest count (fitCurve): a run keeps every count's clustering of its points (100
+// per sphere of the largest count), so memory grows with the square of the largest count.
+inline constexpr int kMaxCurveCount = 1024;
 inline constexpr int kMaxSurfaceDepth = 16;   // splits in four of a triangle by the certificate
 inline constexpr int kMaxInteriorDepth = 12;  // octree levels below the 8³ grid
 

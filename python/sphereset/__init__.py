@@ -21,6 +21,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import inspect
+import operator
 import os
 from dataclasses import dataclass, field
 from typing import (Any, Callable, Dict, List, Optional, Sequence, TypeVar, Union,
@@ -306,10 +307,12 @@ def fit_curve(mesh: MeshLike, *, counts: Optional[Sequence[int]] = None, max_sph
     options = dict(quality=quality, seed=seed, padding=padding, points=points,
                    iterations=iterations, restarts=restarts, decimation=decimation,
                    optimizer=optimizer, init=init, method=method)
-    wanted = [int(n) for n in counts] if counts is not None else []
-    _core._check_curve(options, wanted, int(max_spheres))
+    wanted = [operator.index(n) for n in counts] if counts is not None else []
+    if counts is not None and not wanted:
+        raise InvalidArgumentError("counts []: expected at least one count")
+    _core._check_curve(options, wanted, operator.index(max_spheres))
     s = solid(mesh, **repair_options)
-    return _core._fit_curve(s, options, wanted, int(max_spheres), progress)
+    return _core._fit_curve(s, options, wanted, operator.index(max_spheres), progress)
 
 
 @_repair_keywords

@@ -457,4 +457,10 @@ def test_fit_curve_is_the_commands_curve(cli, tmp_path):
         ss.fit_curve(missing, counts=[4, 2])
     with pytest.raises(ss.InvalidArgumentError, match="max_spheres 0"):
         ss.fit_curve(missing, max_spheres=0)
-
+    with pytest.raises(ss.InvalidArgumentError, match="max_spheres 2000: expected an integer "
+                                                      "from 1 to 1024"):
+        ss.fit_curve(missing, max_spheres=2000)
+    with pytest.raises(ss.InvalidArgumentError, match="counts \\[\\]"):
+        ss.fit_curve(missing, counts=[])
+    with pytest.raises(TypeError):
+        ss.fit_curve(missing, counts=[1.5, 2])

@@ -17,14 +17,13 @@ namespace sphereset {
 Status checkCurveOptions(const FitRequest& request, const CurveOptions& o) {
   const auto bad = [](const std::string& m) { return Error{ErrorCode::kInvalidArgument, m}; };
   if (request.count_given) return bad("n and a curve's counts exclude each other: give counts");
-  if (o.counts.empty() && (o.max_spheres < 1 || o.max_spheres > limits::kMaxSpheres))
-    return bad("max_spheres " + std::to_string(o.max_spheres) + ": expected an integer from 1 to " +
-               std::to_string(limits::kMaxSpheres));
+  const std::string range = "from 1 to " + std::to_string(limits::kMaxCurveCount);
+  if (o.max_spheres < 1 || o.max_spheres > limits::kMaxCurveCount)
+    return bad("max_spheres " + std::to_string(o.max_spheres) + ": expected an integer " + range);
   for (size_t i = 0; i < o.counts.size(); ++i) {
     const int n = o.counts[i];
-    if (n < 1 || n > limits::kMaxSpheres)
-      return bad("counts: " + std::to_string(n) + " is not from 1 to " +
-                 std::to_string(limits::kMaxSpheres));
+    if (n < 1 || n > limits::kMaxCurveCount)
+      return bad("counts: " + std::to_string(n) + " is not " + range);
     if (i > 0 && n <= o.counts[i - 1])
       return bad("counts: " + std::to_string(n) + " after " + std::to_string(o.counts[i - 1]) +
                  ": expected increasing counts");

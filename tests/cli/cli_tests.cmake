@@ -377,7 +377,11 @@ cli_test(curve_counts_order 2 ARGS curve ${link} --counts 4,2 -o ${work}/never_c
 cli_test(curve_counts_text 2 ARGS curve ${link} --counts 2,x -o ${work}/never_curve3.csv -q
          STDERR "counts '2,x': expected integers separated by commas" FORBID ${work}/never_curve3.csv)
 cli_test(curve_n 2 ARGS curve ${link} -n 4 -o ${work}/never_curve4.csv -q
-         FORBID ${work}/never_curve4.csv)
+         STDERR "not expected: 4 -n" FORBID ${work}/never_curve4.csv)
+cli_test(curve_counts_empty 2 ARGS curve ${link} --counts 2,,4 -o ${work}/never_curve5.csv -q
+         STDERR "counts '2,,4': expected integers separated by commas" FORBID ${work}/never_curve5.csv)
+cli_test(curve_too_many 2 ARGS curve ${link} --max-spheres 5000 -o ${work}/never_curve6.csv -q
+         STDERR "max_spheres 5000: expected an integer from 1 to 1024" FORBID ${work}/never_curve6.csv)
 cli_test(fit_curve_without_tolerance 2 ARGS fit ${link} -n 4 --curve ${work}/never_curve.csv
          -o ${work}/never_tol4.json STDERR "--curve, --best-effort and --max-spheres go with a tolerance"
          FORBID ${work}/never_tol4.json)

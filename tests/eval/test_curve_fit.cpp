@@ -103,7 +103,7 @@ TEST(FitCurve, ProgressMayCancelAndBadCountsAreRefused) {
   refused(bad, quick(), "expected increasing counts");
   bad.counts = {0, 1};
   refused(bad, quick(), "counts: 0 is not from 1");
-  bad.counts = {limits::kMaxSpheres + 1};
+  bad.counts = {limits::kMaxCurveCount + 1};
   refused(bad, quick(), "is not from 1");
   bad.counts.clear();
   bad.max_spheres = 0;
