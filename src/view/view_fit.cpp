@@ -111,7 +111,8 @@ void runToleranceFit(ViewFitJob* job, std::shared_ptr<const SolidIndex> index,
   if (!found) return fail(job, "failed", found.error().message);
   std::vector<Sphere> set = std::move(primitives);
   set.insert(set.end(), found->fit.spheres.begin(), found->fit.spheres.end());
-  finish(job, {std::move(set)}, {{name, found->n}}, true, found->met);
+  const int count = static_cast<int>(set.size());  // a link's primitives included
+  finish(job, {std::move(set)}, {{name, count}}, true, found->met);
 }
 
 // A robot's budget: fitRobot with the scene's solids' options; each solid gets its link's set.
@@ -154,6 +155,22 @@ void launch(const std::shared_ptr<ViewFitJob>& job, Body body) {
   });
 }
 
+// The robot fit a request asks for: the scene's link solids and repair, the budget, and the
+// tolerance's protrusion limit (either form; a fraction is of each link's own diagonal) as every
+// link's.
+RobotFitOptions robotOptions(const ViewScene& scene, const ViewFitRequest& request) {
+  RobotFitOptions o;
+  o.budget = request.budget;
+  o.quality = request.quality;
+  o.repair = scene.repair;
+  o.link_solid = scene.link_solid;
+  o.link_solid_for = scene.link_solid_for;
+  o.name = scene.urdf_path;
+  o.max_protrusion = request.tolerance.max_protrusion;
+  o.max_protrusion_fraction = request.tolerance.max_protrusion_fraction;
+  return o;
+}
+
 Status checkRequest(const ViewScene& scene, const ViewFitRequest& r) {
   const auto bad = [](const std::string& m) { return Error{ErrorCode::kInvalidArgument, m}; };
   if (scene.fit) {
@@ -175,6 +192,7 @@ Status checkRequest(const ViewScene& scene, const ViewFitRequest& r) {
           "max_spheres (each link's cap is its own)");
     if (r.budget == 0 && !tolerance)
       return bad("fit: a robot fit needs a budget or max_protrusion");
+    if (Status st = checkRobotFitOptions(robotOptions(scene, r)); !st) return st;
     if (r.budget == 0) return {};
     const auto least = static_cast<int64_t>(std::count_if(
         scene.solids.begin(), scene.solids.end(), [](const ViewSolid& s) { return s.set == 0; }));
@@ -234,17 +252,7 @@ Status startViewFit(ViewScene* scene, const ViewFitRequest& request) {
       job->status.solids.push_back(static_cast<int64_t>(k));
       links.push_back(scene->solids[k].link);
     }
-    RobotFitOptions o;
-    o.budget = request.budget;
-    o.quality = request.quality;
-    o.repair = scene->repair;
-    o.link_solid = scene->link_solid;
-    o.link_solid_for = scene->link_solid_for;
-    o.name = scene->urdf_path;
-    // The tolerance's protrusion limit, in either form, is every link's (a fraction: of each
-    // link's own diagonal).
-    o.max_protrusion = request.tolerance.max_protrusion;
-    o.max_protrusion_fraction = request.tolerance.max_protrusion_fraction;
+    const RobotFitOptions o = robotOptions(*scene, request);
     launch(job,
            [robot = scene->robot, o, links](ViewFitJob* j) { runBudgetFit(j, robot, o, links); });
   } else {

@@ -192,6 +192,9 @@ TEST_F(ViewTest, BadFitRequestsStartNothing) {
            nlohmann::json{{"solid", 0}, {"max_er", "nan"}},
            nlohmann::json{{"solid", 0}, {"max_er", true}},
            nlohmann::json{{"solid", 0}, {"max_spheres", 8}},
+           nlohmann::json{{"solid", 0}, {"spheres", 0}, {"max_protrusion", "5%"}},
+           nlohmann::json{{"solid", 0}, {"spheres", -2}, {"max_er", 1}},
+           nlohmann::json{{"solid", 0}, {"spheres", 4}, {"max_spheres", 8}},
            nlohmann::json{{"robot", true}, {"max_protrusion", "5%"}},
        })
     call(&scene, post("/api/fit", body), 400);
@@ -218,8 +221,18 @@ TEST_F(ViewTest, BadFitRequestsStartNothing) {
            nlohmann::json{{"robot", false}, {"max_protrusion", "5%"}},
            nlohmann::json{{"robot", true}, {"max_er", 1}},
            nlohmann::json{{"budget", 8}, {"max_protrusion", "5%"}, {"max_spheres", 8}},
+           nlohmann::json{{"robot", true}, {"max_protrusion", "5%"}, {"max_spheres", 256}},
        })
     call(&robot, post("/api/fit", body), 400);
+  // The library checks a robot request whole before its thread starts: both forms of a limit.
+  ViewFitRequest both;
+  both.robot = true;
+  both.tolerance.max_protrusion = 0.01;
+  both.tolerance.max_protrusion_fraction = 0.05;
+  Status st = startViewFit(&robot, both);
+  ASSERT_FALSE(st.ok());
+  EXPECT_NE(st.error().message.find("both as a length and as a fraction"), std::string::npos)
+      << st.error().message;
   EXPECT_EQ(call(&robot, post("/api/fit/status", nlohmann::json::object()))["state"], "idle");
 }
 
