@@ -10,11 +10,11 @@
 #include <iostream>
 #include <map>
 
+#include "sphereset/sphere_io.hpp"
 #include "sphereset/view.hpp"
 #ifdef SPHERESET_WITH_REPAIR
 #include "sphereset/load.hpp"
 #include "sphereset/repair_cgal.hpp"
-#include "sphereset/sphere_io.hpp"
 #endif
 
 namespace sphereset::cli {

@@ -41,7 +41,7 @@ constexpr int exitCodeFor(ErrorCode code) {
 inline constexpr const char* kExitCodesHelp =
     "Exit codes: 0 success, 1 internal error, 2 bad options, 3 unreadable input,\n"
     "4 invalid data, 5 mesh is not a closed solid, 6 output could not be written,\n"
-    "7 the result failed its own coverage check (fit, tree: the file is still written),\n"
+    "7 the result failed its own coverage check (fit, curve, tree: the file is still written),\n"
     "8 some items of a batch failed (batch: the others are written; see report.jsonl),\n"
     "9 this build has no page for `view` (web/ was not built),\n"
     "10 no count up to --max-spheres meets fit's tolerance (or a batch item's), or a robot\n"

@@ -123,11 +123,11 @@ struct RobotFitOptions {
 // RobotFitOptions' numbers as one table (options.hpp): budget, default_link_spheres,
 // link_spheres (keyed LINK=N), padding, link_padding (keyed LINK=R), link_solid and
 // link_solid_for (keyed LINK=envelope|walls), max_protrusion and link_max_protrusion (keyed
-// LINK=D). The command line's flags of `sphereset robot` and
-// Python's fit_robot keywords are made from it.
-// setRobotFitOption sets a row from the text a user typed (a keyed row adds or replaces its link's
-// entry); checkRobotFitOptions checks a struct against the rows with the same messages. (quality
-// and seed are the fit table's rows, fit.hpp; the repair's are repair.hpp's.)
+// LINK=D; either may be "P%" of each link's diagonal). The command line's flags of `sphereset
+// robot` and Python's fit_robot keywords are made from it. setRobotFitOption sets a row from the
+// text a user typed (a keyed row adds or replaces its link's entry); checkRobotFitOptions checks a
+// struct against the rows with the same messages. (quality and seed are the fit table's rows,
+// fit.hpp; the repair's are repair.hpp's.)
 std::span<const OptionSpec> robotFitOptionTable();
 // The repair options `link`'s geometry is made a solid with: under its entry in `per_link`
 // (RobotFitOptions::link_solid_for), else under `all` (link_solid). Walls: fill_openings 0. An

@@ -155,7 +155,10 @@ BatchEnd batchEnd(const BatchTotals& t, const std::string& input, const std::str
   const std::string report = batchReportPath(out_dir);
   if (t.failed > 0) {
     end.exit_code = kExitItemsFailed;
-    end.message = input + ": " + std::to_string(t.failed) + of + "failed (see " + report + ")";
+    end.message = input + ": " + std::to_string(t.failed) + of + "failed" +
+                  (t.unmet > 0 ? ", " + std::to_string(t.unmet) + " more missed their tolerance"
+                               : std::string()) +
+                  " (see " + report + ")";
   } else if (t.unmet > 0) {
     end.exit_code = kExitToleranceNotMet;
     end.message = input + ": " + std::to_string(t.unmet) + of +

@@ -59,7 +59,10 @@ TEST(BatchEnd, AMissedToleranceOutranksCoverageButNotAFailure) {
   failed.tolerance_met = false;
   countBatchItem(failed, &t);
   EXPECT_EQ(t.unmet, 1u);
-  EXPECT_EQ(batchEnd(t, "in", "out").exit_code, kExitItemsFailed);
+  end = batchEnd(t, "in", "out");
+  EXPECT_EQ(end.exit_code, kExitItemsFailed);
+  EXPECT_EQ(end.message,
+            "in: 1 of 3 items failed, 1 more missed their tolerance (see out/report.jsonl)");
 }
 
 TEST(ExitCodes, OneCodePerErrorCode) {
