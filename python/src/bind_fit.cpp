@@ -135,19 +135,6 @@ py::list resultSchema(const std::vector<ResultField>& fields) {
   return rows;
 }
 
-namespace {
-
-py::dict curvePointDict(const CurvePoint& c) {
-  py::dict p;
-  p["n"] = c.n;
-  p["er_sum"] = c.er_sum;
-  p["protrusion"] = c.protrusion;
-  p["covered"] = c.covered;
-  p["meets"] = c.meets;
-  p["seconds"] = c.seconds;
-  return p;
-}
-
 py::dict optionsDict(const FitOptions& fo) {
   py::dict d;
   d["n"] = fo.num_spheres;
@@ -167,8 +154,6 @@ py::dict optionsDict(const FitOptions& fo) {
   d["restarts"] = fo.restarts;
   return d;
 }
-
-}  // namespace
 
 void bindFit(py::module_& m) {
   m.def(
@@ -190,108 +175,7 @@ void bindFit(py::module_& m) {
         return d;
       },
       py::arg("solid"), py::arg("options"), py::arg("progress"));
-  m.def(
-      "_fit_to_tolerance",
-      [](const std::shared_ptr<PySolid>& solid, const py::dict& options, const py::dict& tolerance,
-         const py::object& progress) {
-        const FitRequest rq = fitRequest(options);
-        ToleranceOptions to = toleranceOptions(tolerance);
-        // After each count tried; an exception it raises ends the search there.
-        const py::object* cb = &progress;
-        to.progress = [cb](const CurvePoint& c) {
-          py::gil_scoped_acquire gil;
-          if (!cb->is_none()) (*cb)(curvePointDict(c));  // every count finished is reported
-          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-        };
-        // Within each count's fit too, at its progress reports: Ctrl-C need not wait for the
-        // count to end.
-        to.fit_progress = [](const FitProgress&) {
-          py::gil_scoped_acquire gil;
-          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-        };
-        to.original = solid->original();
-        to.walls = solid->walls();
-        Expected<ToleranceFitResult> r = Error{ErrorCode::kInvalidArgument, "not run"};
-        {
-          py::gil_scoped_release release;
-          r = fitToTolerance(*solid->index, rq, to);
-        }
-        if (!r) raise(r.error().code, solid->name + ": " + r.error().message);
-        py::dict fit = fitResultDict(r->fit, signedVolume(solid->repair.solid));
-        FitRequest at = rq;
-        at.num_spheres = r->n;
-        fit["options"] = optionsDict(fitOptionsFor(at));
-        fit["repair"] = repairDict(solid->repair);
-        py::list curve;
-        for (const CurvePoint& c : r->curve) curve.append(curvePointDict(c));
-        py::dict d;
-        d["met"] = r->met;
-        d["n"] = r->n;
-        d["protrusion_limit"] = r->protrusion_limit;
-        d["fit"] = fit;
-        d["eval"] = fieldsDict(evalResultFields(r->eval));
-        d["curve"] = curve;
-        d["seconds"] = r->seconds;
-        return d;
-      },
-      py::arg("solid"), py::arg("options"), py::arg("tolerance"), py::arg("progress"));
-  m.def(
-      "_fit_curve",
-      [](const std::shared_ptr<PySolid>& solid, const py::dict& options,
-         const std::vector<int>& counts, int max_spheres, const py::object& progress) {
-        const FitRequest rq = fitRequest(options);
-        CurveOptions co;
-        co.counts = counts;
-        co.max_spheres = max_spheres;
-        // After each count (the callback first, then Ctrl-C), and within each count's fit.
-        const py::object* cb = &progress;
-        co.progress = [cb](const CurvePoint& c) {
-          py::gil_scoped_acquire gil;
-          if (!cb->is_none()) (*cb)(curvePointDict(c));
-          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-        };
-        co.fit_progress = [](const FitProgress&) {
-          py::gil_scoped_acquire gil;
-          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-        };
-        co.original = solid->original();
-        co.walls = solid->walls();
-        Expected<CurveResult> r = Error{ErrorCode::kInvalidArgument, "not run"};
-        {
-          py::gil_scoped_release release;
-          r = fitCurve(*solid->index, rq, co);
-        }
-        if (!r) raise(r.error().code, solid->name + ": " + r.error().message);
-        py::list curve, spheres;
-        for (const CurvePoint& c : r->points) curve.append(curvePointDict(c));
-        for (const std::vector<Sphere>& set : r->spheres) spheres.append(spheresToArray(set));
-        py::dict d;
-        d["curve"] = curve;
-        d["spheres"] = spheres;
-        d["progressive"] = r->progressive;
-        d["seconds"] = r->seconds;
-        return d;
-      },
-      py::arg("solid"), py::arg("options"), py::arg("counts"), py::arg("max_spheres"),
-      py::arg("progress"));
-  m.def(
-      "_check_curve",
-      [](const py::dict& options, const std::vector<int>& counts, int max_spheres) {
-        CurveOptions co;
-        co.counts = counts;
-        co.max_spheres = max_spheres;
-        if (Status st = checkCurveOptions(fitRequest(options), co); !st)
-          raise(st.error().code, st.error().message);
-      },
-      py::arg("options"), py::arg("counts"), py::arg("max_spheres"));
-  m.def("_tolerance_option_table", [] { return optionTable(toleranceOptionTable()); });
-  m.def(
-      "_check_tolerance",
-      [](const py::dict& tolerance) {
-        if (Status st = checkToleranceOptions(toleranceOptions(tolerance)); !st)
-          raise(st.error().code, st.error().message);
-      },
-      py::arg("tolerance"));
+  bindToleranceFits(m);
   m.def(
       "_check_fit_options", [](const py::dict& options) { fitRequest(options); },
       py::arg("options"));

@@ -68,6 +68,9 @@ std::vector<LinkSpheres> linkSpheresFrom(const py::object& o);
 
 void bindMesh(py::module_& m);
 void bindFit(py::module_& m);
+void bindToleranceFits(py::module_& m);  // bind_tolerance.cpp: fit_to_tolerance, fit_curve
+// A FitOptions as the fit result's "options" dict (bind_fit.cpp).
+py::dict optionsDict(const FitOptions& fo);
 void bindEval(py::module_& m);
 void bindTree(py::module_& m);
 void bindIo(py::module_& m);
