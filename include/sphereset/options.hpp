@@ -52,6 +52,10 @@ struct OptionValue {
   std::string choice;             // kChoice
   std::string key;                // keyed rows: the text before the last '='
   bool percent = false;           // kReal rows with OptionSpec::percent: the number ended in '%'
+  // A percent row's value in its two forms, one of them 0: the length (given without '%') and
+  // the fraction (the percentage over 100).
+  double length() const { return percent ? 0.0 : real; }
+  double fraction() const { return percent ? real / 100.0 : 0.0; }
 };
 
 // `text` parsed and checked as `spec` says. kInvalidArgument "NAME 'TEXT': expected an integer

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <utility>
 
 #include "sphereset/evaluate.hpp"
@@ -18,6 +19,18 @@ struct CheckedCount {
   EvalResult eval;
   CurvePoint point;
 };
+
+// The options of the fit at n for `request` (fitOptionsFor), its original triangles and its
+// progress: each count of a search or a curve, and a run's largest.
+inline FitOptions countOptions(const FitRequest& request, int n, const Mesh* original,
+                               const std::function<void(const FitProgress&)>& progress) {
+  FitRequest r = request;
+  r.num_spheres = n;
+  FitOptions fo = fitOptionsFor(r);
+  fo.original = original;
+  fo.progress = progress;
+  return fo;
+}
 
 // Checks `fit` (the fit at n with options `fo`) and fills the point; `start` is when the count's
 // fit began (CurvePoint::seconds covers the fit and its check).

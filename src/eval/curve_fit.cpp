@@ -40,11 +40,8 @@ Expected<CurveResult> fitCurve(const SolidIndex& index, const FitRequest& reques
   if (counts.empty())
     for (int n = 1; n <= o.max_spheres; ++n) counts.push_back(n);
   CurveResult out;
-  FitRequest top = request;
-  top.num_spheres = counts.back();
-  FitOptions top_options = fitOptionsFor(top);
-  top_options.original = o.original;
-  top_options.progress = o.fit_progress;
+  const FitOptions top_options =
+      detail::countOptions(request, counts.back(), o.original, o.fit_progress);
   out.progressive = ProgressiveFit::allows(top_options);
   std::optional<ProgressiveFit> run;
   if (out.progressive) {
@@ -54,11 +51,7 @@ Expected<CurveResult> fitCurve(const SolidIndex& index, const FitRequest& reques
   }
   for (const int n : counts) {
     const auto s0 = std::chrono::steady_clock::now();
-    FitRequest r = request;
-    r.num_spheres = n;
-    FitOptions fo = fitOptionsFor(r);
-    fo.original = o.original;
-    fo.progress = o.fit_progress;
+    const FitOptions fo = detail::countOptions(request, n, o.original, o.fit_progress);
     auto fit = run ? run->fit(n) : fitSpheres(index, fo);
     if (!fit) return fit.error();
     auto checked = detail::checkCount(index, std::move(fit).value(), fo, o.walls, n, s0);

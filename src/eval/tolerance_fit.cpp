@@ -80,10 +80,9 @@ Status setToleranceOption(ToleranceOptions* o, const std::string& name, const st
   auto parsed = parseTableOption(kToleranceOptions, "tolerance", name, text);
   if (!parsed) return parsed.error();
   const std::string_view n = parsed->spec->name;
-  const bool percent = parsed->value.percent;  // max_protrusion: a percentage of the diagonal
-  if (n == "max_protrusion") {
-    o->max_protrusion = percent ? 0.0 : parsed->value.real;
-    o->max_protrusion_fraction = percent ? parsed->value.real / 100.0 : 0.0;
+  if (n == "max_protrusion") {  // a length, or a percentage of the diagonal
+    o->max_protrusion = parsed->value.length();
+    o->max_protrusion_fraction = parsed->value.fraction();
   }
   if (n == "max_er") o->max_er = parsed->value.real;
   if (n == "max_spheres") o->max_spheres = static_cast<int>(parsed->value.integer);
@@ -156,14 +155,10 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
     if (!allowed) return fitSpheres(index, fo);
     if (!progressive || n > progressive->maxCount()) {
       // A run cannot hold more spheres than points: an explicit point count bounds the window.
-      FitRequest top = request;
-      top.num_spheres = std::min(t.max_spheres, std::max(kFirstWindow, kWindowGrowth * n));
+      int top = std::min(t.max_spheres, std::max(kFirstWindow, kWindowGrowth * n));
       if (request.points > 0)
-        top.num_spheres = static_cast<int>(
-            std::max<int64_t>(n, std::min<int64_t>(top.num_spheres, request.points)));
-      FitOptions top_options = fitOptionsFor(top);
-      top_options.original = t.original;
-      top_options.progress = t.fit_progress;
+        top = static_cast<int>(std::max<int64_t>(n, std::min<int64_t>(top, request.points)));
+      const FitOptions top_options = detail::countOptions(request, top, t.original, t.fit_progress);
       auto p = ProgressiveFit::start(index, top_options, progressive ? &*progressive : nullptr);
       if (!p) return p.error();
       progressive.emplace(std::move(p).value());
@@ -173,11 +168,7 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
   out.progressive = allowed;
   auto run = [&](int n) -> Expected<Trial> {
     const auto s0 = std::chrono::steady_clock::now();
-    FitRequest r = request;
-    r.num_spheres = n;
-    FitOptions fo = fitOptionsFor(r);
-    fo.original = t.original;
-    fo.progress = t.fit_progress;
+    const FitOptions fo = detail::countOptions(request, n, t.original, t.fit_progress);
     auto fit = fitAt(n, fo);
     if (!fit) return fit.error();
     auto trial = detail::checkCount(index, std::move(fit).value(), fo, t.walls, n, s0);

@@ -123,14 +123,13 @@ Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std:
   if (n == "padding") o->padding = v.real;
   if (n == "link_padding") o->link_padding[v.key] = v.real;
   // A percent row's value is a fraction of the link's diagonal: one form per limit.
-  const double length = v.percent ? 0.0 : v.real, fraction = v.percent ? v.real / 100.0 : 0.0;
   if (n == "max_protrusion") {
-    o->max_protrusion = length;
-    o->max_protrusion_fraction = fraction;
+    o->max_protrusion = v.length();
+    o->max_protrusion_fraction = v.fraction();
   }
   if (n == "link_max_protrusion")
     (v.percent ? o->link_max_protrusion_fraction : o->link_max_protrusion)[v.key] =
-        v.percent ? fraction : length;
+        v.percent ? v.fraction() : v.length();
   const LinkSolid solid = v.choice == "walls" ? LinkSolid::kWalls : LinkSolid::kEnvelope;
   if (n == "link_solid") o->link_solid = solid;
   if (n == "link_solid_for") o->link_solid_for[v.key] = solid;
