@@ -225,8 +225,13 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
 // count from 1 to max_spheres), as the fits of one progressive run (ProgressiveFit) that samples
 // the points of the largest count, each count's clustering started from that of the largest count
 // already clustered at most half its size (from seeds when there is none); independent fits
-// when the request does not allow a run (restarts, decimation, a baseline method). Each is
-// checked as `sphereset fit` checks its result. CurvePoint::meets is false (no tolerance). The
+// when the request does not allow a run (restarts, decimation, a baseline method). In a run, a
+// count one above the count before it is one local split of that count's set
+// (ProgressiveFit::step) unless it is a power of two or the last count: the whole curve 1 ... N
+// costs about two fits at N, and its counts between powers of two are looser than fits at those
+// counts (docs/benchmarks.md, "Progressive fitting"). Each set is checked as `sphereset fit`
+// checks its result (the steps' by the certificate of the set before, kept up to date: the same
+// figures). CurvePoint::meets is false (no tolerance). The
 // same request and counts give the same curve for any thread count. A count's set differs from
 // the tolerance search's at that count, whose runs sample the points of other counts.
 struct CurveOptions {

@@ -246,8 +246,9 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& option
 
 // Progressive fitting (beyond the paper; src/fit/progressive.cpp): the fits of one solid at
 // increasing sphere counts, each clustering started from a smaller count's: four doubling counts
-// cost about 1.7 times one fit at the largest, every count from 1 to 64 about 27 times (each
-// count is a warm clustering and a whole ending; docs/benchmarks.md, "Progressive fitting").
+// cost about 1.7 times one fit at the largest, every count from 1 to 64 by fit() about 27 times
+// (each count is a warm clustering and a whole ending); step() adds one sphere to the last count
+// for a few hundredths of a fit (docs/benchmarks.md, "Progressive fitting").
 // A class because each fit reuses the points
 // and the clusterings of the earlier ones; not for use from two threads at once.
 // How a progressive run chooses where each count starts from.
@@ -305,6 +306,15 @@ class ProgressiveFit {
   // protrusion (evaluate.hpp) to lower the set's; kInvalidArgument when its size does not match
   // or the fit would not start from a smaller count.
   Expected<FitResult> fit(int count, std::span<const double> split_first = {});
+  // The fit at `count` made from this run's last fit at count - 1 (by fit() or step()) by one
+  // local split (src/fit/local_split.cpp): the sphere whose split in two lowers the outside
+  // volume most is replaced by the two halves, and only the solid within its box is bounded
+  // again; no rounds, shrinking or refinement. Far cheaper than fit(count) and looser (a set
+  // as bounded, but with more outside volume: docs/benchmarks.md, "Progressive fitting"). A
+  // count stepped before returns its set again. Progress and cancelling as fit()'s. Errors
+  // (kInvalidArgument): count out of 2 to maxCount(), count - 1 not the last count this run
+  // fitted or stepped, no sphere that can be split.
+  Expected<FitResult> step(int count);
   // The count fit(count) starts from: `count` itself if clustered (by warm_from only when
   // ProgressiveOptions::adopt), else the largest smaller count clustered within
   // ProgressiveOptions::start_ratio, or 0 (from seeds).

@@ -164,8 +164,13 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
   return st;
 }
 
-BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth) {
+BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth,
+                         const Aabb* region) {
   BoundStats st;
+  const auto outside = [&](const Vec3& lo, double s) {
+    return region && ((lo.array() > region->max.array()).any() ||
+                      ((lo.array() + s) < region->min.array()).any());
+  };
   std::vector<Sphere>& sp = *spheres;
   const double slack = kBoundSlackRel * index.bounds().diagonal();
   const std::vector<double> sov_dr = radiusRates(index, sp, &st);
@@ -178,10 +183,12 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
     pollCancel();
     double size = 0.0;
     const Vec3 mn = rootCell(index.bounds(), k, &size);
+    if (outside(mn, size)) return;
     walkSolidCells(
         index, grid, mn, size, 0, max_depth,
         [&](const Vec3& lo, double s, int depth, double) {
           pollCancel();
+          if (outside(lo, s)) return false;
           int32_t i = -1;
           double r = 0.0;
           if (depth < max_depth) {
@@ -212,8 +219,9 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
 }
 
 std::vector<std::vector<Vec3>> soleCover(const SolidIndex& index, const std::vector<Sphere>& sp,
-                                         const std::vector<Vec3>& interior, double min_edge) {
-  const Mesh& mesh = index.mesh();
+                                         const std::vector<Vec3>& interior, double min_edge,
+                                         const Mesh* surface) {
+  const Mesh& mesh = surface ? *surface : index.mesh();
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
   const int ns = static_cast<int>(sp.size());
   const SphereGrid grid(sp);

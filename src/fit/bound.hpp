@@ -89,14 +89,18 @@ inline BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* sph
 
 // Interior coverage on the octree of cover_cells.hpp (the same test `evaluateSpheres` runs):
 // cubes down to `max_depth` whose centre lies inside the solid but in no sphere are handed
-// whole to the sphere whose outside volume grows least. One pass; radii only grow.
-BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth);
+// whole to the sphere whose outside volume grows least. One pass; radii only grow. With
+// `region`, only the cubes that meet it (a local bound: nothing outside it lost its cover).
+BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth,
+                         const Aabb* region = nullptr);
 
 // For each sphere, what it alone covers: the vertices of the surface pieces (triangles split
 // until one sphere holds each piece, as in boundSurface) that no other sphere holds, and the
 // given interior points no other sphere contains. A sphere refitted around these keeps
-// everything covered that only it covered.
+// everything covered that only it covered. The triangles are `surface`'s when given (else the
+// solid's).
 std::vector<std::vector<Vec3>> soleCover(const SolidIndex& index, const std::vector<Sphere>& sp,
-                                         const std::vector<Vec3>& interior, double min_edge);
+                                         const std::vector<Vec3>& interior, double min_edge,
+                                         const Mesh* surface = nullptr);
 
 }  // namespace sphereset::detail

@@ -25,32 +25,34 @@ constexpr int kInteriorPasses = 4;
 
 BoundStats boundWithRefits(const SolidIndex& index, std::vector<Sphere>* sp,
                            std::vector<std::vector<Vec3>>* mem, double min_edge, bool refit,
-                           const FitOptions& o, FitResult* res) {
+                           const FitOptions& o, FitResult* res, const Mesh* surface,
+                           const std::vector<bool>* refittable) {
   const int n = static_cast<int>(sp->size());
   std::vector<std::vector<Vec3>> held;
-  BoundStats b = boundSurface(index, sp, min_edge, &held);
+  BoundStats b = boundSurface(index, sp, min_edge, &held, surface);
   res->bounding_pieces += b.pieces;
   res->bounding_queries += b.queries;
   for (int pass = 0; refit && pass < kRefitPasses && b.enlarged > 0; ++pass) {
     tbb::parallel_for(0, n, [&](int i) {
-      if (held[i].empty()) return;
+      if (held[i].empty() || (refittable && !(*refittable)[i])) return;
       (*mem)[i].insert((*mem)[i].end(), held[i].begin(), held[i].end());
       (*sp)[i] =
           updateSphere(index, (*mem)[i], (*sp)[i].center, o.optimizer, o.optimizer_evaluations)
               .sphere;
     });
-    b = boundSurface(index, sp, min_edge, &held);
+    b = boundSurface(index, sp, min_edge, &held, surface);
     res->bounding_pieces += b.pieces;
     res->bounding_queries += b.queries;
   }
   return b;
 }
 
-void boundInteriorPasses(const SolidIndex& index, std::vector<Sphere>* sp, FitResult* res) {
+void boundInteriorPasses(const SolidIndex& index, std::vector<Sphere>* sp, FitResult* res,
+                         const Aabb* region) {
   // Between grid points the clusters' spheres can leave gaps (most of all for the baselines).
   // Radii only grow, so the surface stays covered.
   for (int pass = 0; pass < kInteriorPasses; ++pass) {
-    const BoundStats is = boundInterior(index, sp, kInteriorSplitDepth);
+    const BoundStats is = boundInterior(index, sp, kInteriorSplitDepth, region);
     res->bounding_queries += is.queries;
     res->bounding_interior_cells += is.pieces;
     if (is.enlarged == 0) break;

@@ -25,6 +25,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -33,10 +34,9 @@
 #include "fit/finish.hpp"
 #include "fit/fit_common.hpp"
 #include "fit/lloyd.hpp"
+#include "fit/local_split.hpp"
 #include "fit/samples.hpp"
 #include "fit/seeding.hpp"
-#include "fit/sphere_update.hpp"
-#include "fit/teleport.hpp"
 #include "sphereset/fit.hpp"
 
 namespace sphereset {
@@ -61,8 +61,7 @@ struct Piece {
   double sov = 0.0;
   bool split_known = false;
   double gain = -std::numeric_limits<double>::infinity();
-  std::vector<Vec3> a, b;
-  detail::SphereUpdate ua, ub;
+  detail::PointSplit split;
 };
 
 // The split of every piece not yet measured (in parallel, deterministic per piece).
@@ -74,15 +73,10 @@ void measureSplits(const SolidIndex& index, const FitOptions& o, std::vector<Pie
     Piece& p = (*pieces)[i];
     if (p.split_known) return;
     p.split_known = true;
-    if (p.points.size() < 2) return;
-    detail::splitTwoMeans(p.points, &p.a, &p.b);
-    if (p.a.empty() || p.b.empty()) return;
-    p.ua = detail::updateSphere(index, p.a, detail::centroid(p.a), o.optimizer,
-                                o.optimizer_evaluations);
-    p.ub = detail::updateSphere(index, p.b, detail::centroid(p.b), o.optimizer,
-                                o.optimizer_evaluations);
-    p.gain = p.sov - (p.ua.sov + p.ub.sov);
-    queries[i] = p.ua.queries + p.ub.queries;
+    p.split = detail::splitPoints(index, p.points, o);
+    if (!p.split.ok) return;
+    p.gain = p.sov - (p.split.ua.sov + p.split.ub.sov);
+    queries[i] = p.split.ua.queries + p.split.ub.queries;
   });
   res->optimizer_queries += std::accumulate(queries.begin(), queries.end(), int64_t{0});
 }
@@ -116,12 +110,12 @@ detail::Clustering splitClusters(const SolidIndex& index, const detail::Clusteri
     for (size_t i : order) {
       Piece& p = pieces[i];
       Piece half;
-      half.points = std::move(p.b);
-      half.sphere = p.ub.sphere;
-      half.sov = p.ub.sov;
-      p.points = std::move(p.a);
-      p.sphere = p.ua.sphere;
-      p.sov = p.ua.sov;
+      half.points = std::move(p.split.b);
+      half.sphere = p.split.ub.sphere;
+      half.sov = p.split.ub.sov;
+      p.points = std::move(p.split.a);
+      p.sphere = p.split.ua.sphere;
+      p.sov = p.split.ua.sov;
       p.split_known = false;
       p.gain = -std::numeric_limits<double>::infinity();
       pieces.push_back(std::move(half));
@@ -147,6 +141,8 @@ struct ProgressiveFit::Impl {
   detail::PointSet ps;                            // sampled for options.num_spheres spheres
   std::map<int, detail::Clustering> clusterings;  // by count: each fit's, before its bound
   std::map<int, FitResult> fits;                  // by count
+  std::map<int, FitResult> steps;                 // by count: step()'s
+  std::optional<detail::SplitChain> chain;        // the last count fitted or stepped
 };
 
 ProgressiveFit::ProgressiveFit(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -181,7 +177,7 @@ Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const Fi
     return Error{ErrorCode::kInvalidArgument,
                  "progressive fitting takes the variational method with one restart and no "
                  "decimation"};
-  auto impl = std::unique_ptr<Impl>(new Impl{index, options, progressive, {}, {}, {}});
+  auto impl = std::unique_ptr<Impl>(new Impl{index, options, progressive, {}, {}, {}, {}, {}});
   impl->ps = detail::samplePoints(index, detail::fitTargetPoints(options), options.interior_share,
                                   options.seed);
   const int64_t points = static_cast<int64_t>(impl->ps.points.size());
@@ -276,7 +272,40 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
   res.seconds.bounding = detail::secondsSince(tb);
   res.seconds.total = detail::secondsSince(t0);
   scope.report("done", res.iterations, res.energy);
+  m.chain = detail::startChain(res.spheres, res.outside_volume);
   m.fits[count] = res;
+  return res;
+}
+
+Expected<FitResult> ProgressiveFit::step(int count) {
+  Impl& m = impl();
+  if (auto it = m.steps.find(count); it != m.steps.end()) return it->second;
+  if (count < 2 || count > m.options.num_spheres)
+    return Error{ErrorCode::kInvalidArgument, "count " + std::to_string(count) +
+                                                  " is outside 2 to " +
+                                                  std::to_string(m.options.num_spheres)};
+  if (!m.chain || m.chain->count != count - 1)
+    return Error{ErrorCode::kInvalidArgument, "a step to " + std::to_string(count) +
+                                                  " spheres needs the run's last fit at " +
+                                                  std::to_string(count - 1)};
+  const auto t0 = detail::FitClock::now();
+  FitOptions o = m.options;
+  o.num_spheres = count;
+  FitResult res;
+  detail::ProgressScope scope(o, t0);
+  res.points = static_cast<int64_t>(m.ps.points.size());
+  res.interior_points = m.ps.interior;
+  scope.report("splitting", 0, detail::totalOf(m.chain->sov));
+  detail::SplitChain next = *m.chain;
+  if (!detail::splitLocally(m.index, m.ps, o, &next, &res))
+    return Error{ErrorCode::kInvalidArgument,
+                 "no sphere of the fit at " + std::to_string(count - 1) + " can be split"};
+  m.chain = std::move(next);
+  res.converged = true;
+  res.energy_before_bounding = res.energy;
+  res.seconds.total = detail::secondsSince(t0);
+  scope.report("done", 0, res.energy);
+  m.steps[count] = res;
   return res;
 }
 

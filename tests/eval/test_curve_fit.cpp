@@ -64,6 +64,36 @@ TEST(FitCurve, EachPointIsTheCheckOfItsSetFromOneProgressiveRun) {
   }
 }
 
+TEST(FitCurve, CountsBetweenPowersOfTwoAreStepsCheckedAsAFullEvaluationChecks) {
+  // Every count 1 ... 7: 3, 5 and 6 are one local split of the count before (ProgressiveFit::
+  // step), 1, 2, 4 and the last, 7, are fits; each point equals the full check of its set,
+  // though the steps' are made by the certificate kept up to date and the changed spheres'
+  // protrusion.
+  const SolidIndex index(test::robotLink());
+  CurveOptions o;
+  o.max_spheres = 7;
+  auto c = fitCurve(index, quick(), o);
+  ASSERT_TRUE(c.ok()) << c.error().message;
+  ASSERT_EQ(c->points.size(), 7u);
+  FitRequest top = quick();
+  top.num_spheres = 7;
+  auto run = ProgressiveFit::start(index, fitOptionsFor(top));
+  ASSERT_TRUE(run.ok());
+  for (int n = 1; n <= 7; ++n) {
+    const bool step = n == 3 || n == 5 || n == 6;
+    auto fit = step ? run->step(n) : run->fit(n);
+    ASSERT_TRUE(fit.ok()) << fit.error().message;
+    expectSameSpheres(c->spheres[n - 1], fit->spheres);
+    const CurvePoint& p = c->points[n - 1];
+    auto ev = evaluateSpheres(index, c->spheres[n - 1], fitCheckEvalOptions(1, nullptr, nullptr));
+    ASSERT_TRUE(ev.ok());
+    EXPECT_EQ(p.er_sum, ev->er_sum) << n;
+    EXPECT_EQ(p.protrusion, ev->protrusion) << n;
+    EXPECT_EQ(p.covered, ev->surface_covered && ev->interior_covered) << n;
+    EXPECT_TRUE(p.covered) << n;
+  }
+}
+
 TEST(FitCurve, EveryCountByDefaultAndIndependentFitsWhenTheRequestAsks) {
   const SolidIndex index(test::robotLink());
   CurveOptions o;

@@ -1,0 +1,46 @@
+// Private: a fit one sphere larger by a single local split (ProgressiveFit::step).
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include "fit/samples.hpp"
+#include "fit/sphere_update.hpp"
+#include "sphereset/fit.hpp"
+#include "sphereset/solid_index.hpp"
+
+namespace sphereset::detail {
+
+// A point set split in two by 2-means from its farthest pair, both halves refitted (the sphere
+// update, Eq. 5); `ok` false when a half came out empty (fewer than two distinct points).
+struct PointSplit {
+  bool ok = false;
+  std::vector<Vec3> a, b;
+  SphereUpdate ua, ub;
+};
+PointSplit splitPoints(const SolidIndex& index, const std::vector<Vec3>& points,
+                       const FitOptions& o);
+
+// A bounded fit that local splits grow one sphere at a time: its spheres as returned (padded),
+// each one's outside volume, and each one's split once measured (kept until a step changes
+// what it alone covers).
+struct SplitChain {
+  int count = 0;
+  std::vector<Sphere> spheres;
+  std::vector<double> sov;
+  std::vector<PointSplit> splits;
+  std::vector<bool> measured;
+};
+
+// The chain of a finished fit: its padded spheres and their outside volumes.
+SplitChain startChain(std::vector<Sphere> spheres, std::vector<double> sov);
+
+// One sphere more: the sphere whose split lowers the outside volume most (what it alone covers,
+// split in two and each half refitted) is replaced by its two halves, and the solid within its old
+// box is bounded again (bound.cpp, restricted: nothing outside that box lost its cover, since every
+// other sphere only grows). Fills res (spheres, outside volumes, energy, bound counters and
+// seconds). False, with the chain unchanged, when no sphere can be split.
+bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions& o,
+                  SplitChain* chain, FitResult* res);
+
+}  // namespace sphereset::detail

@@ -1,0 +1,130 @@
+// One local split (ProgressiveFit::step, src/fit/local_split.cpp): a step adds one sphere and
+// keeps the set bounded (the evaluation's certificate and a brute-force surface check), its
+// figures are those of its spheres, a chain of steps lowers the outside volume, the same calls
+// give the same spheres for any thread count, and steps that have no count before them are
+// refused.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <vector>
+
+#include "coverage_oracle.hpp"
+#include "sphereset/evaluate.hpp"
+#include "sphereset/fit.hpp"
+#include "test_meshes.hpp"
+
+namespace sphereset {
+namespace {
+
+FitOptions stepOptions(int max_count) {
+  FitOptions o = fitPreset(max_count, FitQuality::kFast);
+  o.seed = 3;
+  return o;
+}
+
+// The fit at `from`, then steps up to `to`: each step's spheres.
+std::vector<std::vector<Sphere>> stepsUpFrom(const SolidIndex& idx, const FitOptions& o, int from,
+                                             int to) {
+  auto run = ProgressiveFit::start(idx, o);
+  EXPECT_TRUE(run.ok());
+  std::vector<std::vector<Sphere>> sets;
+  auto f = run->fit(from);
+  EXPECT_TRUE(f.ok());
+  sets.push_back(f->spheres);
+  for (int n = from + 1; n <= to; ++n) {
+    auto s = run->step(n);
+    EXPECT_TRUE(s.ok()) << s.error().message;
+    if (!s.ok()) break;
+    sets.push_back(s->spheres);
+  }
+  return sets;
+}
+
+TEST(LocalSplit, EachStepAddsOneSphereAndKeepsTheBound) {
+  const Mesh torus = test::makeTorus(1.0, 0.3, 24, 12);
+  const SolidIndex idx(torus);
+  auto run = ProgressiveFit::start(idx, stepOptions(12));
+  ASSERT_TRUE(run.ok());
+  auto f = run->fit(4);
+  ASSERT_TRUE(f.ok());
+  double previous = f->energy;
+  for (int n = 5; n <= 12; ++n) {
+    auto s = run->step(n);
+    ASSERT_TRUE(s.ok()) << s.error().message;
+    ASSERT_EQ(s->spheres.size(), static_cast<size_t>(n));
+    EXPECT_EQ(test::uncoveredSurfacePoints(torus, s->spheres, 30), 0) << "n = " << n;
+    auto ev = evaluateSpheres(idx, s->spheres, fitCheckEvalOptions(1));
+    ASSERT_TRUE(ev.ok());
+    EXPECT_TRUE(ev->surface_covered && ev->interior_covered) << "n = " << n;
+    EXPECT_NEAR(s->energy, test::totalSov(idx, s->spheres), 1e-12 * s->energy) << "n = " << n;
+    ASSERT_EQ(s->outside_volume.size(), s->spheres.size());
+    previous = s->energy;
+  }
+  // Eight splits, each chosen for the outside volume it saves, end below the fit they started
+  // from (on this torus each saves some).
+  EXPECT_LT(previous, f->energy);
+  // A count stepped before is the same set.
+  auto again = run->step(12);
+  ASSERT_TRUE(again.ok());
+  EXPECT_EQ(again->energy, previous);
+}
+
+TEST(LocalSplit, PaddingStaysOnEverySphere) {
+  const Mesh link = test::robotLink();
+  const SolidIndex idx(link);
+  FitOptions o = stepOptions(6);
+  o.padding = 0.01;
+  auto run = ProgressiveFit::start(idx, o);
+  ASSERT_TRUE(run.ok());
+  ASSERT_TRUE(run->fit(4).ok());
+  auto s = run->step(5);
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  // Unpadded, the step's set still bounds the solid: the padding is on top of the bound.
+  std::vector<Sphere> bare = s->spheres;
+  for (Sphere& b : bare) b.radius -= o.padding;
+  EXPECT_EQ(test::uncoveredSurfacePoints(link, bare, 20), 0);
+}
+
+TEST(LocalSplit, SameCallsSameSpheresForAnyThreadCount) {
+  const Mesh link = test::robotLink();
+  const SolidIndex idx(link);
+  std::vector<std::vector<Sphere>> one, two;
+  {
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism, 1);
+    one = stepsUpFrom(idx, stepOptions(9), 4, 7);
+  }
+  {
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism, 2);
+    two = stepsUpFrom(idx, stepOptions(9), 4, 7);
+  }
+  ASSERT_EQ(one.size(), 4u);
+  ASSERT_EQ(one.size(), two.size());
+  for (size_t k = 0; k < one.size(); ++k) {
+    ASSERT_EQ(one[k].size(), two[k].size());
+    for (size_t i = 0; i < one[k].size(); ++i) {
+      EXPECT_EQ(one[k][i].center, two[k][i].center);
+      EXPECT_EQ(one[k][i].radius, two[k][i].radius);
+    }
+  }
+}
+
+TEST(LocalSplit, AStepNeedsTheCountBelowAsTheRunsLast) {
+  const SolidIndex idx(test::robotLink());
+  auto run = ProgressiveFit::start(idx, stepOptions(8));
+  ASSERT_TRUE(run.ok());
+  const auto refused = [&](int n, const char* words) {
+    auto s = run->step(n);
+    ASSERT_FALSE(s.ok()) << n;
+    EXPECT_EQ(s.error().code, ErrorCode::kInvalidArgument);
+    EXPECT_NE(s.error().message.find(words), std::string::npos) << s.error().message;
+  };
+  refused(3, "needs the run's last fit at 2");  // nothing fitted yet
+  ASSERT_TRUE(run->fit(2).ok());
+  refused(4, "needs the run's last fit at 3");
+  refused(1, "outside 2 to 8");
+  refused(9, "outside 2 to 8");
+  EXPECT_TRUE(run->step(3).ok());
+}
+
+}  // namespace
+}  // namespace sphereset
