@@ -306,14 +306,16 @@ class ProgressiveFit {
   // protrusion (evaluate.hpp) to lower the set's; kInvalidArgument when its size does not match
   // or the fit would not start from a smaller count.
   Expected<FitResult> fit(int count, std::span<const double> split_first = {});
-  // The fit at `count` made from this run's last fit at count - 1 (by fit() or step()) by one
-  // local split (src/fit/local_split.cpp): the sphere whose split in two lowers the outside
-  // volume most is replaced by the two halves, and only the solid within its box is bounded
-  // again; no rounds, shrinking or refinement. Far cheaper than fit(count) and looser (a set
-  // as bounded, but with more outside volume: docs/benchmarks.md, "Progressive fitting"). A
-  // count stepped before returns its set again. Progress and cancelling as fit()'s. Errors
-  // (kInvalidArgument): count out of 2 to maxCount(), count - 1 not the last count this run
-  // fitted or stepped, no sphere that can be split.
+  // The fit at `count` made from this run's last step or last fit at count - 1 or count + 1 by one
+  // local change (src/fit/local_split.cpp). Up, the sphere whose split in two lowers the outside
+  // volume most is replaced by the two halves; down, the sphere whose removal adds least is
+  // removed (the last sphere takes its index). Only the solid within the changed sphere's box
+  // is bounded again; no rounds, shrinking or refinement. Far cheaper than fit(count) and looser
+  // (a set as bounded, with more outside volume: docs/benchmarks.md, "Progressive fitting").
+  // Each call steps from the run's state (a count stepped again may differ: up from below, down
+  // from above). Progress and cancelling as fit()'s. Errors
+  // (kInvalidArgument): count out of 1 to maxCount(), neither count - 1 nor count + 1 the last
+  // count this run fitted or stepped, no sphere that can be split or removed.
   Expected<FitResult> step(int count);
   // The count fit(count) starts from: `count` itself if clustered (by warm_from only when
   // ProgressiveOptions::adopt), else the largest smaller count clustered within

@@ -1,13 +1,15 @@
 // The curve of a run (evaluate.hpp, fitCurve): E_r and the certified protrusion against the
 // sphere count, the fits of one progressive run (fit.hpp, ProgressiveFit; beyond the paper, which
 // fits one count at a time, Section 4) checked as `sphereset fit` checks its result. A count that
-// follows the one before it is one local split of that count's set (ProgressiveFit::step),
-// except the powers of two and the last count, which are fitted; the stepped counts are checked
-// by the certificate of the last set kept up to date (certificate.hpp) and the certified
-// protrusion of the spheres that changed, which give the figures a full evaluation gives
+// follows the one before it is one local change of a neighbouring count's set
+// (ProgressiveFit::step: a split up from the count below, or a removal down from the count
+// above; runOrder), except the powers of two and the last count, which are fitted; the stepped
+// counts are checked by the certificate of the last set kept up to date (certificate.hpp) and the
+// certified protrusion of the spheres that changed, which give the figures a full evaluation gives
 // (docs/benchmarks.md, "Progressive fitting": the costs and the looseness of the steps).
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -65,15 +67,18 @@ class StepChecker {
   }
 
  private:
-  // The certificate brought to `spheres`: sphere by sphere when few changed, else in full.
+  // The certificate brought to `spheres`: sphere by sphere when few changed (the last ones
+  // removed when there are fewer), else in full.
   Status update(const std::vector<Sphere>& spheres, const std::vector<size_t>& changed) {
-    if (!cert_ || spheres.size() < last_.size() || 2 * changed.size() > spheres.size()) {
+    if (!cert_ || 2 * changed.size() > spheres.size()) {
       if (cert_) return cert_->setSpheres(spheres);
       auto made = makeCoverageCertificate(index_, spheres, options_);
       if (!made) return made.error();
       cert_.emplace(std::move(made).value());
       return {};
     }
+    for (size_t i = last_.size(); i > spheres.size(); --i)
+      if (Status st = cert_->removeSphere(static_cast<int>(i - 1)); !st) return st;
     for (size_t i : changed) {
       Status st = i < last_.size() ? cert_->setSphere(static_cast<int>(i), spheres[i])
                                    : cert_->addSphere(spheres[i]);
@@ -109,6 +114,156 @@ Status checkCurveOptions(const FitRequest& request, const CurveOptions& o) {
   return {};
 }
 
+namespace {
+
+// One curve's making: each count fitted (a run's fit, else an independent fit) or stepped, then
+// checked; the points reported in increasing order of count as soon as they and the ones before
+// them are made.
+class CurveMaker {
+ public:
+  CurveMaker(const SolidIndex& index, const FitRequest& request, const CurveOptions& o,
+             std::vector<int> counts, ProgressiveFit* run, CurveResult* out)
+      : index_(index),
+        request_(request),
+        o_(o),
+        counts_(std::move(counts)),
+        run_(run),
+        out_(out),
+        checker_(index, o.original),
+        made_(counts_.size(), false) {
+    for (size_t k = 0; k < counts_.size(); ++k) steps_ = steps_ || (run && isStep(counts_, k));
+    out->points.resize(counts_.size());
+    out->spheres.resize(counts_.size());
+  }
+
+  Status make() {
+    size_t k = 0;
+    while (k < counts_.size()) {
+      if (!steps_ || !isStep(counts_, k)) {
+        if (Status st = fitted(k); !st) return st;
+        ++k;
+        continue;
+      }
+      size_t e = k;
+      while (isStep(counts_, e)) ++e;  // the last count is never a step
+      if (Status st = stretch(k, e); !st) return st;
+      k = made_[e] ? e + 1 : e;
+    }
+    return {};
+  }
+
+ private:
+  Expected<FitResult> fitAt(size_t k) {
+    const FitOptions fo = detail::countOptions(request_, counts_[k], o_.original, o_.fit_progress);
+    return run_ ? run_->fit(counts_[k]) : fitSpheres(index_, fo);
+  }
+
+  // A step, or the fit at that count when no sphere can be split or removed.
+  Expected<FitResult> stepAt(size_t k) {
+    auto s = run_->step(counts_[k]);
+    return s ? s : run_->fit(counts_[k]);
+  }
+
+  Status fitted(size_t k) {
+    const auto s0 = std::chrono::steady_clock::now();
+    auto fit = fitAt(k);
+    if (!fit) return fit.error();
+    return check(k, std::move(fit).value(), s0);
+  }
+
+  // The stepped counts k ... e - 1 between the fitted counts k - 1 and e: every one stepped up
+  // from the count below and, when count e follows them directly, down from e too (fitted
+  // first); the counts up to the crossover of least total outside volume take the upward sets,
+  // the others the downward ones (a step leaves a set close to the one it came from, so each
+  // direction is best near its own fit). Each set is checked in the order of its chain.
+  Status stretch(size_t k, size_t e) {
+    std::vector<FitResult> up, down(e - k);
+    std::vector<double> seconds_up, seconds_down(e - k);
+    for (size_t i = k; i < e; ++i) {
+      const auto s0 = std::chrono::steady_clock::now();
+      auto s = stepAt(i);
+      if (!s) return s.error();
+      up.push_back(std::move(s).value());
+      seconds_up.push_back(secondsSince(s0));
+    }
+    size_t cross = e - k;  // how many take the upward sets
+    std::optional<FitResult> top;
+    double seconds_top = 0.0;
+    if (counts_[e] == counts_[e - 1] + 1) {
+      auto s0 = std::chrono::steady_clock::now();
+      auto f = fitAt(e);
+      if (!f) return f.error();
+      top = std::move(f).value();
+      seconds_top = secondsSince(s0);
+      for (size_t i = e; i-- > k;) {
+        s0 = std::chrono::steady_clock::now();
+        auto s = stepAt(i);
+        if (!s) return s.error();
+        down[i - k] = std::move(s).value();
+        seconds_down[i - k] = secondsSince(s0);
+      }
+      double best = std::numeric_limits<double>::infinity();
+      for (size_t c = 0; c <= e - k; ++c) {
+        double total = 0.0;
+        for (size_t j = 0; j < e - k; ++j) total += j < c ? up[j].energy : down[j].energy;
+        if (total < best) best = total, cross = c;
+      }
+    }
+    for (size_t j = 0; j < cross; ++j)
+      if (Status st = check(k + j, std::move(up[j]), seconds_up[j]); !st) return st;
+    if (!top) return {};
+    if (Status st = check(e, std::move(*top), seconds_top); !st) return st;
+    for (size_t j = e - k; j-- > cross;)
+      if (Status st = check(k + j, std::move(down[j]), seconds_down[j]); !st) return st;
+    return {};
+  }
+
+  static double secondsSince(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  }
+
+  Status check(size_t k, FitResult fit, std::chrono::steady_clock::time_point s0) {
+    return check(k, std::move(fit), 0.0, s0);
+  }
+  Status check(size_t k, FitResult fit, double seconds) {
+    return check(k, std::move(fit), seconds, std::chrono::steady_clock::now());
+  }
+  // Checks count k's set (CurvePoint::seconds: `seconds` of making it, plus the time since s0).
+  Status check(size_t k, FitResult fit, double seconds, std::chrono::steady_clock::time_point s0) {
+    const int n = counts_[k];
+    if (steps_) {
+      auto checked = checker_.check(fit.spheres, n);
+      if (!checked) return checked.error();
+      out_->points[k] = *checked;
+    } else {
+      const FitOptions fo = detail::countOptions(request_, n, o_.original, o_.fit_progress);
+      auto checked = detail::checkCount(index_, std::move(fit), fo, o_.walls, n, s0);
+      if (!checked) return checked.error();
+      out_->points[k] = checked->point;
+      fit.spheres = std::move(checked->fit.spheres);
+    }
+    out_->points[k].seconds = seconds + secondsSince(s0);
+    out_->spheres[k] = std::move(fit.spheres);
+    made_[k] = true;
+    for (; reported_ < counts_.size() && made_[reported_]; ++reported_)
+      if (o_.progress) o_.progress(out_->points[reported_]);
+    return {};
+  }
+
+  const SolidIndex& index_;
+  const FitRequest& request_;
+  const CurveOptions& o_;
+  std::vector<int> counts_;
+  ProgressiveFit* run_;
+  CurveResult* out_;
+  StepChecker checker_;
+  std::vector<bool> made_;
+  size_t reported_ = 0;
+  bool steps_ = false;
+};
+
+}  // namespace
+
 Expected<CurveResult> fitCurve(const SolidIndex& index, const FitRequest& request,
                                const CurveOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -127,31 +282,8 @@ Expected<CurveResult> fitCurve(const SolidIndex& index, const FitRequest& reques
     if (!started) return started.error();
     run.emplace(std::move(started).value());
   }
-  bool steps = false;
-  for (size_t k = 0; k < counts.size(); ++k) steps = steps || (run && isStep(counts, k));
-  StepChecker checker(index, o.original);
-  for (size_t k = 0; k < counts.size(); ++k) {
-    const int n = counts[k];
-    const auto s0 = std::chrono::steady_clock::now();
-    const FitOptions fo = detail::countOptions(request, n, o.original, o.fit_progress);
-    auto fit = !run ? fitSpheres(index, fo) : isStep(counts, k) ? run->step(n) : run->fit(n);
-    if (!fit) return fit.error();
-    CurvePoint point;
-    if (steps) {
-      auto checked = checker.check(fit->spheres, n);
-      if (!checked) return checked.error();
-      point = *checked;
-      point.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
-    } else {
-      auto checked = detail::checkCount(index, std::move(fit).value(), fo, o.walls, n, s0);
-      if (!checked) return checked.error();
-      point = checked->point;
-      fit->spheres = std::move(checked->fit.spheres);
-    }
-    out.points.push_back(point);
-    out.spheres.push_back(std::move(fit->spheres));
-    if (o.progress) o.progress(out.points.back());
-  }
+  CurveMaker maker(index, request, o, std::move(counts), run ? &*run : nullptr, &out);
+  if (Status st = maker.make(); !st) return st.error();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <utility>
 
+#include "cover/sphere_grid.hpp"
 #include "fit/bound_refit.hpp"
 #include "fit/fit_common.hpp"
 #include "fit/teleport.hpp"
@@ -61,14 +62,44 @@ std::vector<Sphere> unpadded(const std::vector<Sphere>& spheres, double padding)
   return bare;
 }
 
-// Measures the split of every sphere not yet measured (in parallel, deterministic per sphere):
-// what it alone covers among the triangles near it and the interior points in it.
+// The outside volume sphere i's removal adds, to first order (as teleport.cpp's removalCosts):
+// each point only it covers joins the other sphere that grows least to hold it, about its fixed
+// centre; the grown spheres' outside volumes less sphere i's.
+double removalCost(const SolidIndex& index, const SplitChain& c, const SphereGrid& grid,
+                   const std::vector<Vec3>& owned, int i, int64_t* queries) {
+  std::vector<std::pair<int32_t, double>> grown;
+  for (const Vec3& p : owned) {
+    std::pair<double, int32_t> least[2];
+    const int m = leastGrowth(grid, &p, 1, 2, least);
+    const int k = least[0].second == i ? 1 : 0;
+    if (k >= m) return std::numeric_limits<double>::infinity();  // no other sphere
+    auto it = std::find_if(grown.begin(), grown.end(),
+                           [&](const auto& g) { return g.first == least[k].second; });
+    if (it == grown.end())
+      grown.emplace_back(least[k].second, least[k].first);
+    else
+      it->second = std::max(it->second, least[k].first);
+  }
+  double cost = -c.sov[i];
+  for (const auto& [k, g] : grown) {
+    const Sphere& s = c.spheres[k];
+    cost += index.outsideVolume({s.center, s.radius + g}).volume - c.sov[k];
+    ++*queries;
+  }
+  return cost;
+}
+
+// Measures, for every sphere not yet measured, its split (`split`) or its removal's cost (else),
+// from what it alone covers among the triangles near it and the interior points in it (in
+// parallel, deterministic per sphere).
 void measureChain(const SolidIndex& index, const PointSet& ps, const FitOptions& o, double min_edge,
-                  SplitChain* c, FitResult* res) {
+                  bool split, SplitChain* c, FitResult* res) {
   const std::vector<Sphere> bare = unpadded(c->spheres, o.padding);
+  const SphereGrid grid(bare);
+  std::vector<bool>& measured = split ? c->split_measured : c->removal_measured;
   std::vector<int64_t> queries(c->spheres.size(), 0);
   tbb::parallel_for(size_t{0}, c->spheres.size(), [&](size_t i) {
-    if (c->measured[i]) return;
+    if (measured[i]) return;
     pollCancel();
     const Sphere& s = bare[i];
     const Mesh near = trianglesMeeting(index.mesh(), ballBox(s));
@@ -76,10 +107,15 @@ void measureChain(const SolidIndex& index, const PointSet& ps, const FitOptions&
     for (int64_t k = 0; k < ps.interior; ++k)
       if ((ps.points[k] - s.center).norm() <= s.radius) inside.push_back(ps.points[k]);
     const auto owned = soleCover(index, bare, inside, min_edge, &near);
-    c->splits[i] = splitPoints(index, owned[i], o);
-    c->measured[i] = true;
-    queries[i] = c->splits[i].ua.queries + c->splits[i].ub.queries;
+    if (split) {
+      c->splits[i] = splitPoints(index, owned[i], o);
+      queries[i] = c->splits[i].ua.queries + c->splits[i].ub.queries;
+    } else {
+      c->removal[i] = removalCost(index, *c, grid, owned[i], static_cast<int>(i), &queries[i]);
+    }
   });
+  // vector<bool> is not safe to write from several threads: marked afterwards.
+  measured.assign(measured.size(), true);
   for (int64_t q : queries) res->optimizer_queries += q;
 }
 
@@ -103,16 +139,68 @@ SplitChain startChain(std::vector<Sphere> spheres, std::vector<double> sov) {
   c.sov = std::move(sov);
   c.spheres = std::move(spheres);
   c.splits.assign(c.spheres.size(), {});
-  c.measured.assign(c.spheres.size(), false);
+  c.removal.assign(c.spheres.size(), 0.0);
+  c.split_measured.assign(c.spheres.size(), false);
+  c.removal_measured.assign(c.spheres.size(), false);
   return c;
 }
+
+namespace {
+
+// Bounds again the solid within `region` (nothing outside it lost its cover): the surface's
+// triangles that meet it with refits of the `refittable` spheres (their points in `members`),
+// the interior cubes that meet it, and the original's triangles.
+void boundRegion(const SolidIndex& index, const FitOptions& o, double min_edge, const Aabb& region,
+                 std::vector<Sphere>* bare, std::vector<std::vector<Vec3>>* members,
+                 const std::vector<bool>& refittable, FitResult* res) {
+  const Mesh surface = trianglesMeeting(index.mesh(), region);
+  const bool refit = std::find(refittable.begin(), refittable.end(), true) != refittable.end();
+  boundWithRefits(index, bare, members, min_edge, refit, o, res, &surface, &refittable);
+  boundInteriorPasses(index, bare, res, &region);
+  if (o.original) {
+    const Mesh original = trianglesMeeting(*o.original, region);
+    const BoundStats ob = boundSurface(index, bare, min_edge, nullptr, &original);
+    res->bounding_pieces += ob.pieces;
+    res->bounding_queries += ob.queries;
+  }
+}
+
+// Takes the bounded set into the chain: the spheres `moved` and those whose radius the bound
+// changed from `before` get their padding, outside volume and a new measure, as do the spheres
+// near `region`; fills res.
+void takeIntoChain(const SolidIndex& index, const FitOptions& o, const std::vector<Sphere>& bare,
+                   const std::vector<Sphere>& before, const std::vector<int>& moved,
+                   const Aabb& region, SplitChain* chain, FitResult* res) {
+  SplitChain& c = *chain;
+  std::vector<int> changed;
+  for (int i = 0; i < static_cast<int>(bare.size()); ++i)
+    if (std::find(moved.begin(), moved.end(), i) != moved.end() ||
+        bare[i].radius != before[i].radius) {
+      changed.push_back(i);
+      c.spheres[i] = bare[i];
+      c.spheres[i].radius += o.padding;
+    }
+  for (size_t i = 0; i < c.spheres.size(); ++i)
+    if (boxesMeet(ballBox(c.spheres[i]), region))
+      c.split_measured[i] = c.removal_measured[i] = false;
+  tbb::parallel_for(size_t{0}, changed.size(), [&](size_t k) {
+    c.sov[changed[k]] = index.outsideVolume(c.spheres[changed[k]]).volume;
+  });
+  res->bounding_queries += static_cast<int64_t>(changed.size());
+  c.count = static_cast<int>(c.spheres.size());
+  res->spheres = c.spheres;
+  res->outside_volume = c.sov;
+  res->energy = totalOf(c.sov);
+}
+
+}  // namespace
 
 bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions& o,
                   SplitChain* chain, FitResult* res) {
   SplitChain& c = *chain;
   auto t = FitClock::now();
   const double min_edge = boundMinEdge(index, ps);
-  measureChain(index, ps, o, min_edge, &c, res);
+  measureChain(index, ps, o, min_edge, true, &c, res);
   int best = -1;
   double best_gain = -std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < c.spheres.size(); ++i) {
@@ -124,7 +212,7 @@ bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions&
   if (best < 0) return false;
   t = FitClock::now();
   const int n = static_cast<int>(c.spheres.size());
-  const Sphere old = c.spheres[best];
+  const Aabb region = ballBox(c.spheres[best]);
   PointSplit split = std::move(c.splits[best]);
   // The bound works on the radii before padding; a sphere it does not grow keeps its padded one.
   std::vector<Sphere> bare = unpadded(c.spheres, o.padding);
@@ -134,41 +222,57 @@ bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions&
   std::vector<std::vector<Vec3>> members(n + 1);
   members[best] = std::move(split.a);
   members[n] = std::move(split.b);
-  const Aabb region = ballBox(old);
-  const Mesh surface = trianglesMeeting(index.mesh(), region);
   std::vector<bool> refittable(n + 1, false);
   refittable[best] = refittable[n] = true;
-  boundWithRefits(index, &bare, &members, min_edge, true, o, res, &surface, &refittable);
-  boundInteriorPasses(index, &bare, res, &region);
-  if (o.original) {
-    const Mesh original = trianglesMeeting(*o.original, region);
-    const BoundStats ob = boundSurface(index, &bare, min_edge, nullptr, &original);
-    res->bounding_pieces += ob.pieces;
-    res->bounding_queries += ob.queries;
-  }
-  // The spheres that changed: the halves, and those the bound grew.
-  c.spheres.push_back(Sphere{});
+  boundRegion(index, o, min_edge, region, &bare, &members, refittable, res);
+  c.spheres.emplace_back();
   c.sov.push_back(0.0);
   c.splits.emplace_back();
-  c.measured.push_back(false);
-  std::vector<int> changed;
-  for (int i = 0; i <= n; ++i)
-    if (i == best || i == n || bare[i].radius != before[i].radius) {
-      changed.push_back(i);
-      c.spheres[i] = bare[i];
-      c.spheres[i].radius += o.padding;
-    }
-  // What a sphere near the old one alone covers may have changed: measured again when needed.
-  for (int i = 0; i <= n; ++i)
-    if (boxesMeet(ballBox(c.spheres[i]), region)) c.measured[i] = false;
-  tbb::parallel_for(size_t{0}, changed.size(), [&](size_t k) {
-    c.sov[changed[k]] = index.outsideVolume(c.spheres[changed[k]]).volume;
-  });
-  res->bounding_queries += static_cast<int64_t>(changed.size());
-  c.count = n + 1;
-  res->spheres = c.spheres;
-  res->outside_volume = c.sov;
-  res->energy = totalOf(c.sov);
+  c.removal.push_back(0.0);
+  c.split_measured.push_back(false);
+  c.removal_measured.push_back(false);
+  takeIntoChain(index, o, bare, before, {best, n}, region, &c, res);
+  res->seconds.bound += secondsSince(t);
+  return true;
+}
+
+bool removeLocally(const SolidIndex& index, const PointSet& ps, const FitOptions& o,
+                   SplitChain* chain, FitResult* res) {
+  SplitChain& c = *chain;
+  const int n = static_cast<int>(c.spheres.size());
+  if (n < 2) return false;
+  auto t = FitClock::now();
+  const double min_edge = boundMinEdge(index, ps);
+  measureChain(index, ps, o, min_edge, false, &c, res);
+  int worst = -1;
+  double least = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i)
+    if (c.removal[i] < least) least = c.removal[i], worst = i;
+  res->seconds.teleport += secondsSince(t);
+  if (worst < 0) return false;
+  t = FitClock::now();
+  const Aabb region = ballBox(c.spheres[worst]);
+  // The last sphere takes the removed one's place, so that the others keep their indices.
+  const auto drop = [&](auto& v) {
+    v[worst] = std::move(v.back());
+    v.pop_back();
+  };
+  drop(c.spheres);
+  drop(c.sov);
+  drop(c.splits);
+  drop(c.removal);
+  for (std::vector<bool>* m : {&c.split_measured, &c.removal_measured}) {
+    (*m)[worst] = m->back();
+    m->pop_back();
+  }
+  std::vector<Sphere> bare = unpadded(c.spheres, o.padding);
+  const std::vector<Sphere> before = bare;
+  std::vector<std::vector<Vec3>> members(bare.size());
+  boundRegion(index, o, min_edge, region, &bare, &members, std::vector<bool>(bare.size(), false),
+              res);
+  std::vector<int> moved;
+  if (worst < n - 1) moved.push_back(worst);
+  takeIntoChain(index, o, bare, before, moved, region, &c, res);
   res->seconds.bound += secondsSince(t);
   return true;
 }

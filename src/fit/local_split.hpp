@@ -29,7 +29,8 @@ struct SplitChain {
   std::vector<Sphere> spheres;
   std::vector<double> sov;
   std::vector<PointSplit> splits;
-  std::vector<bool> measured;
+  std::vector<double> removal;  // the outside volume its removal would add, to first order
+  std::vector<bool> split_measured, removal_measured;
 };
 
 // The chain of a finished fit: its padded spheres and their outside volumes.
@@ -42,5 +43,12 @@ SplitChain startChain(std::vector<Sphere> spheres, std::vector<double> sov);
 // seconds). False, with the chain unchanged, when no sphere can be split.
 bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions& o,
                   SplitChain* chain, FitResult* res);
+
+// One sphere fewer: the sphere whose removal adds least outside volume (what it alone covers
+// taken by the neighbours that grow least) is removed, the last sphere taking its index, and the
+// solid within its old box is bounded again by the others growing. False, with the chain
+// unchanged, when no sphere can be removed.
+bool removeLocally(const SolidIndex& index, const PointSet& ps, const FitOptions& o,
+                   SplitChain* chain, FitResult* res);
 
 }  // namespace sphereset::detail

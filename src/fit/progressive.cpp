@@ -141,8 +141,8 @@ struct ProgressiveFit::Impl {
   detail::PointSet ps;                            // sampled for options.num_spheres spheres
   std::map<int, detail::Clustering> clusterings;  // by count: each fit's, before its bound
   std::map<int, FitResult> fits;                  // by count
-  std::map<int, FitResult> steps;                 // by count: step()'s
   std::optional<detail::SplitChain> chain;        // the last count fitted or stepped
+  std::optional<detail::SplitChain> fitted;       // the last count fitted
 };
 
 ProgressiveFit::ProgressiveFit(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -244,7 +244,10 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
     return Error{ErrorCode::kInvalidArgument, "count " + std::to_string(count) +
                                                   " is outside 1 to " +
                                                   std::to_string(m.options.num_spheres)};
-  if (auto it = m.fits.find(count); it != m.fits.end()) return it->second;
+  if (auto it = m.fits.find(count); it != m.fits.end()) {
+    m.chain = m.fitted = detail::startChain(it->second.spheres, it->second.outside_volume);
+    return it->second;
+  }
   const auto t0 = detail::FitClock::now();
   FitOptions o = m.options;
   o.num_spheres = count;
@@ -272,22 +275,25 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
   res.seconds.bounding = detail::secondsSince(tb);
   res.seconds.total = detail::secondsSince(t0);
   scope.report("done", res.iterations, res.energy);
-  m.chain = detail::startChain(res.spheres, res.outside_volume);
+  m.chain = m.fitted = detail::startChain(res.spheres, res.outside_volume);
   m.fits[count] = res;
   return res;
 }
 
 Expected<FitResult> ProgressiveFit::step(int count) {
   Impl& m = impl();
-  if (auto it = m.steps.find(count); it != m.steps.end()) return it->second;
-  if (count < 2 || count > m.options.num_spheres)
+  if (count < 1 || count > m.options.num_spheres)
     return Error{ErrorCode::kInvalidArgument, "count " + std::to_string(count) +
-                                                  " is outside 2 to " +
+                                                  " is outside 1 to " +
                                                   std::to_string(m.options.num_spheres)};
-  if (!m.chain || m.chain->count != count - 1)
-    return Error{ErrorCode::kInvalidArgument, "a step to " + std::to_string(count) +
-                                                  " spheres needs the run's last fit at " +
-                                                  std::to_string(count - 1)};
+  const auto next_to = [&](const std::optional<detail::SplitChain>& c) {
+    return c && (c->count == count - 1 || c->count == count + 1);
+  };
+  if (!next_to(m.chain) && next_to(m.fitted)) m.chain = m.fitted;
+  if (!next_to(m.chain))
+    return Error{ErrorCode::kInvalidArgument,
+                 "a step to " + std::to_string(count) + " spheres needs the run's last fit at " +
+                     std::to_string(count - 1) + " or " + std::to_string(count + 1)};
   const auto t0 = detail::FitClock::now();
   FitOptions o = m.options;
   o.num_spheres = count;
@@ -295,17 +301,19 @@ Expected<FitResult> ProgressiveFit::step(int count) {
   detail::ProgressScope scope(o, t0);
   res.points = static_cast<int64_t>(m.ps.points.size());
   res.interior_points = m.ps.interior;
-  scope.report("splitting", 0, detail::totalOf(m.chain->sov));
+  const bool up = m.chain->count == count - 1;
+  scope.report(up ? "splitting" : "removing", 0, detail::totalOf(m.chain->sov));
   detail::SplitChain next = *m.chain;
-  if (!detail::splitLocally(m.index, m.ps, o, &next, &res))
-    return Error{ErrorCode::kInvalidArgument,
-                 "no sphere of the fit at " + std::to_string(count - 1) + " can be split"};
+  if (up ? !detail::splitLocally(m.index, m.ps, o, &next, &res)
+         : !detail::removeLocally(m.index, m.ps, o, &next, &res))
+    return Error{ErrorCode::kInvalidArgument, "no sphere of the fit at " +
+                                                  std::to_string(m.chain->count) + " can be " +
+                                                  (up ? "split" : "removed")};
   m.chain = std::move(next);
   res.converged = true;
   res.energy_before_bounding = res.energy;
   res.seconds.total = detail::secondsSince(t0);
   scope.report("done", 0, res.energy);
-  m.steps[count] = res;
   return res;
 }
 

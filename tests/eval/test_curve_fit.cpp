@@ -64,27 +64,50 @@ TEST(FitCurve, EachPointIsTheCheckOfItsSetFromOneProgressiveRun) {
   }
 }
 
+double totalEnergy(const SolidIndex& index, const std::vector<Sphere>& spheres) {
+  double e = 0.0;
+  for (const Sphere& s : spheres) e += index.outsideVolume(s).volume;
+  return e;
+}
+
 TEST(FitCurve, CountsBetweenPowersOfTwoAreStepsCheckedAsAFullEvaluationChecks) {
-  // Every count 1 ... 7: 3, 5 and 6 are one local split of the count before (ProgressiveFit::
-  // step), 1, 2, 4 and the last, 7, are fits; each point equals the full check of its set,
-  // though the steps' are made by the certificate kept up to date and the changed spheres'
-  // protrusion.
+  // Every count 1 ... 7: 1, 2, 4 and the last, 7, are the run's fits; 3, 5 and 6 are steps
+  // (ProgressiveFit::step), up from the fit below and down from the fit above, the better
+  // crossover taken. Each point equals the full check of its set, though the steps' are made
+  // by the certificate kept up to date and the changed spheres' protrusion.
   const SolidIndex index(test::robotLink());
   CurveOptions o;
   o.max_spheres = 7;
+  std::vector<int> reported;
+  o.progress = [&](const CurvePoint& p) { reported.push_back(p.n); };
   auto c = fitCurve(index, quick(), o);
   ASSERT_TRUE(c.ok()) << c.error().message;
   ASSERT_EQ(c->points.size(), 7u);
+  EXPECT_EQ(reported, (std::vector<int>{1, 2, 3, 4, 5, 6, 7}));
   FitRequest top = quick();
   top.num_spheres = 7;
   auto run = ProgressiveFit::start(index, fitOptionsFor(top));
   ASSERT_TRUE(run.ok());
-  for (int n = 1; n <= 7; ++n) {
-    const bool step = n == 3 || n == 5 || n == 6;
-    auto fit = step ? run->step(n) : run->fit(n);
-    ASSERT_TRUE(fit.ok()) << fit.error().message;
+  for (int n : {1, 2, 4, 7}) {
+    auto fit = run->fit(n);
+    ASSERT_TRUE(fit.ok());
     expectSameSpheres(c->spheres[n - 1], fit->spheres);
+  }
+  // The steps of 5 and 6: up from 4, down from 7; the curve's two sets are one of the three
+  // crossovers (up, up), (up, down), (down, down), the one of least total outside volume.
+  ASSERT_TRUE(run->fit(4).ok());
+  auto up5 = run->step(5), up6 = run->step(6);
+  ASSERT_TRUE(run->fit(7).ok());
+  auto down6 = run->step(6), down5 = run->step(5);
+  ASSERT_TRUE(up5.ok() && up6.ok() && down6.ok() && down5.ok());
+  const double chosen = totalEnergy(index, c->spheres[4]) + totalEnergy(index, c->spheres[5]);
+  EXPECT_LE(chosen, up5->energy + up6->energy);
+  EXPECT_LE(chosen, up5->energy + down6->energy);
+  EXPECT_LE(chosen, down5->energy + down6->energy);
+  for (int n = 1; n <= 7; ++n) {
+    ASSERT_EQ(static_cast<int>(c->spheres[n - 1].size()), n);
     const CurvePoint& p = c->points[n - 1];
+    EXPECT_EQ(p.n, n);
     auto ev = evaluateSpheres(index, c->spheres[n - 1], fitCheckEvalOptions(1, nullptr, nullptr));
     ASSERT_TRUE(ev.ok());
     EXPECT_EQ(p.er_sum, ev->er_sum) << n;
