@@ -293,7 +293,8 @@ class ProgressiveFit {
   // (ProgressiveOptions::start_ratio): the clusters whose split in two lowers the outside volume
   // most are split (2-means, both halves refitted) until there are `count`, then the rounds and
   // teleports of the clustering run again (fewer of them than a fit from seeds gets). A count
-  // fitted before returns its fit again (split_first and seconds those of its first call); with
+  // fitted before returns its fit again (split_first and seconds those of its first call) and is
+  // the run's last fit again for step(); with
   // no clustering to start from, the clustering starts from seeds as fitSpheres does (the same
   // spheres when the run's points are that count's: up to 50 spheres by default). Every count
   // clusters the points of a fit at options.num_spheres, sampled by start(). The same calls in the

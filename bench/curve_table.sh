@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# The whole curve against one fit: on four shared meshes, `sphereset fit MESH -n 64` and
+# `sphereset curve MESH --max-spheres 64` (every count 1 ... 64 from one progressive run, the
+# counts between powers of two stepped: evaluate.hpp, fitCurve), timed one after the other, and
+# independent fits at the stretches' middles (12, 24, 48) against the curve's sets there.
+# Into bench/results/curve_table.csv (OUT): mesh, fit and curve seconds (wall clock, the check
+# included in both), their ratio, then E_r curve / independent at 12, 24, 48 and 64.
+#   bash bench/curve_table.sh
+set -euo pipefail
+source "$(dirname "$0")/common.sh"
+skip_without_shared curve_table
+out=${OUT:-bench/results/curve_table.csv}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+exe=build/apps/sphereset
+er() { /usr/bin/python3 -c "import json,sys; print(json.load(sys.stdin)['er_sum'])"; }
+seconds() {
+  /usr/bin/python3 -c 'import subprocess, sys, time
+t = time.monotonic()
+subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+print(round(time.monotonic() - t, 3))' "$@"
+}
+echo "mesh,fit64_s,curve_s,ratio,er12_curve,er12_fit,er24_curve,er24_fit,er48_curve,er48_fit,er64_curve,er64_fit" >"$out"
+for m in organic/spot.obj cad/fandisk.obj organic/armadillo_libigl.obj cad/rocker-arm.obj; do
+  echo "curve_table: $m" >&2
+  mesh=$shared/meshes/$m
+  tf=$(seconds "$exe" fit "$mesh" -n 64 -o "$tmp/f64.sph" -q)
+  tc=$(seconds "$exe" curve "$mesh" --max-spheres 64 -o "$tmp/curve.csv" -q)
+  row="$(basename "$m"),$tf,$tc,$(/usr/bin/python3 -c "print(round($tc / $tf, 3))")"
+  for n in 12 24 48 64; do
+    c=$(awk -F, -v n="$n" 'NR > 1 && $1 == n { print $2 }' "$tmp/curve.csv")
+    f=$("$exe" fit "$mesh" -n "$n" -o "$tmp/f.sph" -q --json | er)
+    row="$row,$c,$f"
+  done
+  echo "$row" >>"$out"
+done
+cat "$out"
