@@ -226,11 +226,13 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
 // the points of the largest count, each count's clustering started from that of the largest count
 // already clustered at most half its size (from seeds when there is none); independent fits
 // when the request does not allow a run (restarts, decimation, a baseline method). In a run, a
-// count one above the count before it is one local split of that count's set
-// (ProgressiveFit::step) unless it is a power of two or the last count: the whole curve 1 ... N
-// costs about two fits at N, and its counts between powers of two are looser than fits at those
-// counts (docs/benchmarks.md, "Progressive fitting"). Each set is checked as `sphereset fit`
-// checks its result (the steps' by the certificate of the set before, kept up to date: the same
+// count one above the count before it is a local step (ProgressiveFit::step) unless it is a
+// power of two or the last count: each stretch of such counts is stepped up from the fit below
+// and, when the fit above follows it directly, down from that fit too, the counts up to the
+// crossover of least total outside volume taking the upward sets. The whole curve 1 ... 64 costs
+// 2.1 to 2.5 fits at 64, and its stepped counts are looser than fits at those counts
+// (docs/benchmarks.md, "Progressive fitting"). Each set is checked as `sphereset fit` checks its
+// result (the steps' by the certificate of the set before, kept up to date: the same
 // figures). CurvePoint::meets is false (no tolerance). The
 // same request and counts give the same curve for any thread count. A count's set differs from
 // the tolerance search's at that count, whose runs sample the points of other counts.
