@@ -34,7 +34,7 @@ enum class SphereOptimizer {
 };
 
 struct FitProgress {
-  std::string phase;  // "sampling", "clustering", "bounding"
+  std::string phase;  // "sampling", "clustering", "bounding"; a step's "splitting", "removing"
   int iteration = 0;
   double energy = 0.0;  // Σ outside volume of the spheres
   int spheres = 0;
@@ -247,8 +247,8 @@ Expected<FitResult> fitSpheres(const SolidIndex& index, const FitOptions& option
 // Progressive fitting (beyond the paper; src/fit/progressive.cpp): the fits of one solid at
 // increasing sphere counts, each clustering started from a smaller count's: four doubling counts
 // cost about 1.7 times one fit at the largest, every count from 1 to 64 by fit() about 27 times
-// (each count is a warm clustering and a whole ending); step() adds one sphere to the last count
-// for a few hundredths of a fit (docs/benchmarks.md, "Progressive fitting").
+// (each count is a warm clustering and a whole ending); step() adds or removes one sphere of the
+// last count for under a fiftieth of a fit (docs/benchmarks.md, "Progressive fitting").
 // A class because each fit reuses the points
 // and the clusterings of the earlier ones; not for use from two threads at once.
 // How a progressive run chooses where each count starts from.
@@ -311,10 +311,13 @@ class ProgressiveFit {
   // local change (src/fit/local_split.cpp). Up, the sphere whose split in two lowers the outside
   // volume most is replaced by the two halves; down, the sphere whose removal adds least is
   // removed (the last sphere takes its index). Only the solid within the changed sphere's box
-  // is bounded again; no rounds, shrinking or refinement. Far cheaper than fit(count) and looser
-  // (a set as bounded, with more outside volume: docs/benchmarks.md, "Progressive fitting").
-  // Each call steps from the run's state (a count stepped again may differ: up from below, down
-  // from above). Progress and cancelling as fit()'s. Errors
+  // is bounded again; no rounds, shrinking or refinement. Far cheaper than fit(count), usually
+  // looser (a set as bounded, with more outside volume: docs/benchmarks.md, "Progressive
+  // fitting"). Each call steps from the run's state (a count stepped again may differ: up from
+  // below, down from above). The FitResult holds the set, its outside volumes and energy, the
+  // local bound's counters and seconds (bound: the local bound; teleport: measuring the splits
+  // or removals); energy_before_bounding is the energy of the count it came from, iterations 0,
+  // converged false. Progress and cancelling as fit()'s. Errors
   // (kInvalidArgument): count out of 1 to maxCount(), neither count - 1 nor count + 1 the last
   // count this run fitted or stepped, no sphere that can be split or removed.
   Expected<FitResult> step(int count);

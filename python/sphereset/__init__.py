@@ -294,8 +294,9 @@ def fit_curve(mesh: MeshLike, *, counts: Optional[Sequence[int]] = None, max_sph
               repair_options: Dict[str, Any]) -> Dict[str, Any]:
     """E_r and the certified protrusion at every count from 1 to ``max_spheres`` (or at
     ``counts``, increasing) from one run, as ``sphereset curve`` gives them (the same library
-    call, fitCurve): the fits of one progressive run for the largest count (independent fits
-    when the options do not allow one), each checked as ``fit`` checks its result. The fit
+    call, fitCurve): the fits of one progressive run for the largest count, the counts between
+    powers of two made by local steps (usually looser than fits at those counts), or independent fits
+    when the options do not allow a run; each checked as ``fit`` checks its result. The fit
     keywords are :func:`fit`'s (without ``n``); the counts and options are checked before the mesh
     is read. ``progress`` gets each count's point ({"n", "er_sum", "protrusion", "covered",
     "meets", "seconds"}) when it is done; an exception it raises ends the run, and Ctrl-C raises

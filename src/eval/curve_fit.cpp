@@ -37,6 +37,10 @@ bool isStep(const std::vector<int>& counts, size_t k) {
 // fitCheckEvalOptions's evaluation: E_r summed, coverage and the largest protrusion bound.
 class StepChecker {
  public:
+  // A set with more than this share of its spheres changed is certified in full rather than
+  // sphere by sphere (a fit after steps, or the first set).
+  static constexpr double kEditShare = 0.5;
+
   StepChecker(const SolidIndex& index, const Mesh* original) : index_(index) {
     options_.original = original;
     protrusion_.tolerance = EvalOptions{}.protrusion_tolerance * index.bounds().diagonal();
@@ -70,7 +74,7 @@ class StepChecker {
   // The certificate brought to `spheres`: sphere by sphere when few changed (the last ones
   // removed when there are fewer), else in full.
   Status update(const std::vector<Sphere>& spheres, const std::vector<size_t>& changed) {
-    if (!cert_ || 2 * changed.size() > spheres.size()) {
+    if (!cert_ || changed.size() > kEditShare * spheres.size()) {
       if (cert_) return cert_->setSpheres(spheres);
       auto made = makeCoverageCertificate(index_, spheres, options_);
       if (!made) return made.error();
@@ -158,7 +162,9 @@ class CurveMaker {
     return run_ ? run_->fit(counts_[k]) : fitSpheres(index_, fo);
   }
 
-  // A step, or the fit at that count when no sphere can be split or removed.
+  // A step, or the fit at that count when the step cannot be made. The stretch's order keeps the
+  // run's last count next to counts_[k], so the one error a step can meet here is a set with no
+  // sphere that can be split or removed.
   Expected<FitResult> stepAt(size_t k) {
     auto s = run_->step(counts_[k]);
     return s ? s : run_->fit(counts_[k]);

@@ -90,7 +90,8 @@ inline BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* sph
 // Interior coverage on the octree of cover_cells.hpp (the same test `evaluateSpheres` runs):
 // cubes down to `max_depth` whose centre lies inside the solid but in no sphere are handed
 // whole to the sphere whose outside volume grows least. One pass; radii only grow. With
-// `region`, only the cubes that meet it (a local bound: nothing outside it lost its cover).
+// `region`, only the cubes that meet it take a sphere (a local bound: nothing outside it lost its
+// cover); the walk still descends into the others.
 BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth,
                          const Aabb* region = nullptr);
 

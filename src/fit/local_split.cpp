@@ -1,15 +1,19 @@
-// One sphere more by a single local split (beyond the paper). Reference: Wang et al. 2006,
-// Sec. 5, "Sphere Teleportation", splits a cluster in two from "the two points farthest from each
-// other" and refits both halves (Eq. 5); here that split, made on a bounded fit, is the whole step
-// from n to n + 1 spheres. Deviation: what is split is not the sphere's cluster but what it alone
-// covers (the surface pieces and interior points no other sphere holds, as the shrinking refits
-// them: shrink.cpp), so that the halves together take over its share of the bound rather than
-// its samples (splitting the clusters' points instead left steps that raised E_r: the halves
-// lost the refinement's fit to the surface between the samples and grew back in the bound). The
-// sphere whose split lowers the outside volume most (its bounded sphere's against the two
+// One sphere more or fewer by a single local split or removal (beyond the paper). Reference: Wang
+// et al. 2006, Sec. 5, "Sphere Teleportation", splits a cluster in two from "the two points
+// farthest from each other" and refits both halves (Eq. 5); here that split, made on a bounded fit,
+// is the whole step from n to n + 1 spheres. Deviation: what is split is not the sphere's cluster
+// but what it alone covers (the surface pieces and interior points no other sphere holds, as the
+// shrinking refits them: shrink.cpp), so that the halves together take over its share of the bound
+// rather than its samples (splitting the clusters' points instead left steps that raised E_r: the
+// halves lost the refinement's fit to the surface between the samples and grew back in the bound).
+// The sphere whose split lowers the outside volume most (its bounded sphere's against the two
 // refitted halves') is replaced by the halves, and only the solid within the old sphere's box is
 // bounded again (bound_refit.cpp, bound.cpp, restricted to that box). Every other sphere keeps
-// its radius or grows, so whatever lay outside the box stays covered.
+// its radius or grows, so whatever lay outside the box stays covered. One sphere fewer is the
+// other half of the paper's teleport (Sec. 5: a sphere taken from where it costs least, its
+// points left to its neighbours; teleport.cpp's removalCosts): the sphere whose removal adds
+// least (what it alone covers taken by the neighbours that grow least, about fixed centres) is
+// removed and its box bounded again by the others growing.
 //
 // The local bound splits pieces as finely as the refinement bounds its result (kRefineFineEdge of
 // the fit's smallest pieces): the sets it starts from were bounded that finely, and the fit's
@@ -114,8 +118,18 @@ void measureChain(const SolidIndex& index, const PointSet& ps, const FitOptions&
       if ((ps.points[k] - s.center).norm() <= s.radius) inside.push_back(ps.points[k]);
     const auto owned = soleCover(index, bare, inside, min_edge, &near);
     if (split) {
-      c->splits[i] = splitPoints(index, owned[i], o);
-      queries[i] = c->splits[i].ua.queries + c->splits[i].ub.queries;
+      PointSplit& h = c->splits[i];
+      h = splitPoints(index, owned[i], o);
+      queries[i] = h.ua.queries + h.ub.queries;
+      // The halves are bare; with padding they are compared padded, as the sphere they replace.
+      double halves = h.ua.sov + h.ub.sov;
+      if (h.ok && o.padding > 0.0) {
+        halves = 0.0;
+        for (const Sphere& b : {h.ua.sphere, h.ub.sphere})
+          halves += index.outsideVolume({b.center, b.radius + o.padding}).volume;
+        queries[i] += 2;
+      }
+      c->gain[i] = h.ok ? c->sov[i] - halves : -std::numeric_limits<double>::infinity();
     } else {
       c->removal[i] = removalCost(index, *c, grid, owned[i], static_cast<int>(i), &queries[i]);
     }
@@ -145,6 +159,7 @@ SplitChain startChain(std::vector<Sphere> spheres, std::vector<double> sov) {
   c.sov = std::move(sov);
   c.spheres = std::move(spheres);
   c.splits.assign(c.spheres.size(), {});
+  c.gain.assign(c.spheres.size(), 0.0);
   c.removal.assign(c.spheres.size(), 0.0);
   c.split_measured.assign(c.spheres.size(), false);
   c.removal_measured.assign(c.spheres.size(), false);
@@ -172,8 +187,8 @@ void boundRegion(const SolidIndex& index, const FitOptions& o, double min_edge, 
 }
 
 // Takes the bounded set into the chain: the spheres `moved` and those whose radius the bound
-// changed from `before` get their padding, outside volume and a new measure, as do the spheres
-// near `region`; fills res.
+// changed from `before` get their padding and outside volume, and the spheres near them or
+// `region` a new measure; fills res.
 void takeIntoChain(const SolidIndex& index, const FitOptions& o, const std::vector<Sphere>& bare,
                    const std::vector<Sphere>& before, const std::vector<int>& moved,
                    const Aabb& region, SplitChain* chain, FitResult* res) {
@@ -186,9 +201,13 @@ void takeIntoChain(const SolidIndex& index, const FitOptions& o, const std::vect
       c.spheres[i] = bare[i];
       c.spheres[i].radius += o.padding;
     }
+  // What a sphere alone covers changes where the old sphere was or a changed one now is: such
+  // spheres are measured again when next needed.
+  std::vector<Aabb> touched{region};
+  for (int i : changed) touched.push_back(ballBox(c.spheres[i]));
   for (size_t i = 0; i < c.spheres.size(); ++i)
-    if (boxesMeet(ballBox(c.spheres[i]), region))
-      c.split_measured[i] = c.removal_measured[i] = false;
+    for (const Aabb& b : touched)
+      if (boxesMeet(ballBox(c.spheres[i]), b)) c.split_measured[i] = c.removal_measured[i] = false;
   tbb::parallel_for(size_t{0}, changed.size(), [&](size_t k) {
     c.sov[changed[k]] = index.outsideVolume(c.spheres[changed[k]]).volume;
   });
@@ -210,9 +229,7 @@ bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions&
   int best = -1;
   double best_gain = -std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < c.spheres.size(); ++i) {
-    if (!c.splits[i].ok) continue;
-    const double gain = c.sov[i] - (c.splits[i].ua.sov + c.splits[i].ub.sov);
-    if (gain > best_gain) best_gain = gain, best = static_cast<int>(i);
+    if (c.splits[i].ok && c.gain[i] > best_gain) best_gain = c.gain[i], best = static_cast<int>(i);
   }
   res->seconds.teleport += secondsSince(t);
   if (best < 0) return false;
@@ -234,6 +251,7 @@ bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions&
   c.spheres.emplace_back();
   c.sov.push_back(0.0);
   c.splits.emplace_back();
+  c.gain.push_back(0.0);
   c.removal.push_back(0.0);
   c.split_measured.push_back(false);
   c.removal_measured.push_back(false);
@@ -266,6 +284,7 @@ bool removeLocally(const SolidIndex& index, const PointSet& ps, const FitOptions
   drop(c.spheres);
   drop(c.sov);
   drop(c.splits);
+  drop(c.gain);
   drop(c.removal);
   for (std::vector<bool>* m : {&c.split_measured, &c.removal_measured}) {
     (*m)[worst] = m->back();
@@ -276,9 +295,9 @@ bool removeLocally(const SolidIndex& index, const PointSet& ps, const FitOptions
   std::vector<std::vector<Vec3>> members(bare.size());
   boundRegion(index, o, min_edge, region, &bare, &members, std::vector<bool>(bare.size(), false),
               res);
-  std::vector<int> moved;
-  if (worst < n - 1) moved.push_back(worst);
-  takeIntoChain(index, o, bare, before, moved, region, &c, res);
+  // The sphere moved into `worst` kept its padded radius and outside volume (drop), so only the
+  // spheres the bound grew are taken again.
+  takeIntoChain(index, o, bare, before, {}, region, &c, res);
   res->seconds.bound += secondsSince(t);
   return true;
 }

@@ -1,4 +1,5 @@
-// Private: a fit one sphere larger by a single local split (ProgressiveFit::step).
+// Private: a fit one sphere larger or smaller by a single local split or removal
+// (ProgressiveFit::step).
 #pragma once
 
 #include <limits>
@@ -29,6 +30,7 @@ struct SplitChain {
   std::vector<Sphere> spheres;
   std::vector<double> sov;
   std::vector<PointSplit> splits;
+  std::vector<double> gain;     // the outside volume its split would save (padded, as `sov`)
   std::vector<double> removal;  // the outside volume its removal would add, to first order
   std::vector<bool> split_measured, removal_measured;
 };
@@ -40,14 +42,15 @@ SplitChain startChain(std::vector<Sphere> spheres, std::vector<double> sov);
 // split in two and each half refitted) is replaced by its two halves, and the solid within its old
 // box is bounded again (bound.cpp, restricted: nothing outside that box lost its cover, since every
 // other sphere only grows). Fills res (spheres, outside volumes, energy, bound counters and
-// seconds). False, with the chain unchanged, when no sphere can be split.
+// seconds: bound for the local bound, teleport for measuring). False when no sphere can be split:
+// the chain's measures are then up to date, its set unchanged.
 bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions& o,
                   SplitChain* chain, FitResult* res);
 
 // One sphere fewer: the sphere whose removal adds least outside volume (what it alone covers
 // taken by the neighbours that grow least) is removed, the last sphere taking its index, and the
-// solid within its old box is bounded again by the others growing. False, with the chain
-// unchanged, when no sphere can be removed.
+// solid within its old box is bounded again by the others growing. False when no sphere can be
+// removed: the chain's measures are then up to date, its set unchanged.
 bool removeLocally(const SolidIndex& index, const PointSet& ps, const FitOptions& o,
                    SplitChain* chain, FitResult* res);
 

@@ -310,8 +310,7 @@ Expected<FitResult> ProgressiveFit::step(int count) {
                                                   std::to_string(m.chain->count) + " can be " +
                                                   (up ? "split" : "removed")};
   m.chain = std::move(next);
-  res.converged = true;
-  res.energy_before_bounding = res.energy;
+  res.energy_before_bounding = detail::totalOf(m.chain->sov);  // the count it came from
   res.seconds.total = detail::secondsSince(t0);
   scope.report("done", 0, res.energy);
   return res;

@@ -3,7 +3,9 @@
 // the request does not allow one), every count 1 ... max_spheres by default, progress per count
 // that may cancel, and bad counts refused.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -114,6 +116,30 @@ TEST(FitCurve, CountsBetweenPowersOfTwoAreStepsCheckedAsAFullEvaluationChecks) {
     EXPECT_EQ(p.protrusion, ev->protrusion) << n;
     EXPECT_EQ(p.covered, ev->surface_covered && ev->interior_covered) << n;
     EXPECT_TRUE(p.covered) << n;
+  }
+}
+
+TEST(FitCurve, ASteppedCurveIsTheSameForAnyThreadCount) {
+  const SolidIndex index(test::robotLink());
+  CurveOptions o;
+  o.max_spheres = 7;
+  std::optional<CurveResult> one, two;
+  {
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism, 1);
+    auto r = fitCurve(index, quick(), o);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    one = std::move(r).value();
+  }
+  {
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism, 2);
+    auto r = fitCurve(index, quick(), o);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    two = std::move(r).value();
+  }
+  for (size_t k = 0; k < 7; ++k) {
+    expectSameSpheres(one->spheres[k], two->spheres[k]);
+    EXPECT_EQ(one->points[k].er_sum, two->points[k].er_sum);
+    EXPECT_EQ(one->points[k].protrusion, two->points[k].protrusion);
   }
 }
 

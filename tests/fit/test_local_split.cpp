@@ -83,10 +83,21 @@ TEST(LocalSplit, PaddingStaysOnEverySphere) {
   ASSERT_TRUE(run->fit(4).ok());
   auto s = run->step(5);
   ASSERT_TRUE(s.ok()) << s.error().message;
-  // Unpadded, the step's set still bounds the solid: the padding is on top of the bound.
-  std::vector<Sphere> bare = s->spheres;
-  for (Sphere& b : bare) b.radius -= o.padding;
-  EXPECT_EQ(test::uncoveredSurfacePoints(link, bare, 20), 0);
+  // Unpadded, the step's set still bounds the solid: the padding is on top of the bound; the
+  // same for a step down from the fit at 6.
+  const auto bare = [&](std::vector<Sphere> sp) {
+    for (Sphere& b : sp) b.radius -= o.padding;
+    return sp;
+  };
+  EXPECT_EQ(test::uncoveredSurfacePoints(link, bare(s->spheres), 20), 0);
+  ASSERT_TRUE(run->fit(6).ok());
+  auto down = run->step(5);
+  ASSERT_TRUE(down.ok()) << down.error().message;
+  ASSERT_EQ(down->spheres.size(), 5u);
+  EXPECT_EQ(test::uncoveredSurfacePoints(link, bare(down->spheres), 20), 0);
+  auto ev = evaluateSpheres(idx, bare(down->spheres), fitCheckEvalOptions(1));
+  ASSERT_TRUE(ev.ok());
+  EXPECT_TRUE(ev->surface_covered && ev->interior_covered);
 }
 
 TEST(LocalSplit, SameCallsSameSpheresForAnyThreadCount) {
