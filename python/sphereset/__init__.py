@@ -286,17 +286,19 @@ def fit_to_tolerance(mesh: MeshLike, *, max_protrusion: Union[float, str, None] 
 
 
 @_repair_keywords
-def fit_curve(mesh: MeshLike, *, counts: Optional[Sequence[int]] = None, max_spheres: int = 64,
+def fit_curve(mesh: MeshLike, *, counts: Optional[Sequence[int]] = None,
+              max_spheres: Optional[int] = None,
               seed: int = 1, quality: str = "default", padding: float = 0.0, points: int = 0,
               iterations: Optional[int] = None, restarts: Optional[int] = None,
               decimation: Optional[float] = None, optimizer: str = "powell", init: str = "fps",
               method: str = "variational", progress: Optional[ProgressCallback] = None,
               repair_options: Dict[str, Any]) -> Dict[str, Any]:
-    """E_r and the certified protrusion at every count from 1 to ``max_spheres`` (or at
-    ``counts``, increasing) from one run, as ``sphereset curve`` gives them (the same library
-    call, fitCurve): the fits of one progressive run for the largest count, the counts between
-    powers of two made by local steps (usually looser than fits at those counts), or independent fits
-    when the options do not allow a run; each checked as ``fit`` checks its result. The fit
+    """E_r and the certified protrusion at every count from 1 to ``max_spheres`` (None: the
+    library's default, 64) or at ``counts`` (increasing), from one run, as ``sphereset curve``
+    gives them (the same library call, fitCurve): the fits of one progressive run for the
+    largest count, the counts between powers of two made by local steps (usually looser than
+    fits at those counts), or independent fits when the options do not allow a run; each
+    checked as ``fit`` checks its result. The fit
     keywords are :func:`fit`'s (without ``n``); the counts and options are checked before the mesh
     is read. ``progress`` gets each count's point ({"n", "er_sum", "protrusion", "covered",
     "meets", "seconds"}) when it is done; an exception it raises ends the run, and Ctrl-C raises
@@ -311,9 +313,10 @@ def fit_curve(mesh: MeshLike, *, counts: Optional[Sequence[int]] = None, max_sph
     wanted = [operator.index(n) for n in counts] if counts is not None else []
     if counts is not None and not wanted:
         raise InvalidArgumentError("counts []: expected at least one count")
-    _core._check_curve(options, wanted, operator.index(max_spheres))
+    cap = None if max_spheres is None else operator.index(max_spheres)  # None: the library's 64
+    _core._check_curve(options, wanted, cap)
     s = solid(mesh, **repair_options)
-    return _core._fit_curve(s, options, wanted, operator.index(max_spheres), progress)
+    return _core._fit_curve(s, options, wanted, cap, progress)
 
 
 @_repair_keywords

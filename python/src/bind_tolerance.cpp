@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,11 +91,12 @@ void bindToleranceFits(py::module_& m) {
   m.def(
       "_fit_curve",
       [](const std::shared_ptr<PySolid>& solid, const py::dict& options,
-         const std::vector<int>& counts, int max_spheres, const py::object& progress) {
+         const std::vector<int>& counts, std::optional<int> max_spheres,
+         const py::object& progress) {
         const FitRequest rq = fitRequest(options);
         CurveOptions co;
         co.counts = counts;
-        co.max_spheres = max_spheres;
+        if (max_spheres) co.max_spheres = *max_spheres;  // else the library's default
         const CountCallbacks callbacks = countCallbacks(progress);
         co.progress = callbacks.count;
         co.fit_progress = callbacks.fit;
@@ -120,10 +122,10 @@ void bindToleranceFits(py::module_& m) {
       py::arg("progress"));
   m.def(
       "_check_curve",
-      [](const py::dict& options, const std::vector<int>& counts, int max_spheres) {
+      [](const py::dict& options, const std::vector<int>& counts, std::optional<int> max_spheres) {
         CurveOptions co;
         co.counts = counts;
-        co.max_spheres = max_spheres;
+        if (max_spheres) co.max_spheres = *max_spheres;
         if (Status st = checkCurveOptions(fitRequest(options), co); !st)
           raise(st.error().code, st.error().message);
       },

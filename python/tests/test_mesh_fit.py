@@ -449,6 +449,8 @@ def test_fit_curve_is_the_commands_curve(cli, tmp_path):
         n, er, prot, covered = row.split(",")[:4]
         assert (int(n), float(er), float(prot), covered) == (p["n"], p["er_sum"],
                                                              p["protrusion"], "1")
+    # Without max_spheres, the library's default cap: every count from 1 to 64.
+    assert [p["n"] for p in ss.fit_curve(LINK, quality="fast")["curve"]] == list(range(1, 65))
     # Each point is the check of its set.
     ev = ss.evaluate(LINK, c["spheres"][2])
     assert ev.protrusion["bound"] == pytest.approx(c["curve"][2]["protrusion"], rel=1e-12)
