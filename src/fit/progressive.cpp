@@ -232,6 +232,24 @@ detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet&
 
 }  // namespace
 
+namespace {
+
+Status countInRange(int count, int max_count) {
+  if (count >= 1 && count <= max_count) return {};
+  return Error{ErrorCode::kInvalidArgument,
+               "count " + std::to_string(count) + " is outside 1 to " + std::to_string(max_count)};
+}
+
+// A count's result before it is made: the run's points.
+FitResult pointsOf(const detail::PointSet& ps) {
+  FitResult res;
+  res.points = static_cast<int64_t>(ps.points.size());
+  res.interior_points = ps.interior;
+  return res;
+}
+
+}  // namespace
+
 int ProgressiveFit::startCount(int count) const {
   const Impl& m = impl();
   if (m.fits.contains(count)) return count;  // clustered by this run
@@ -240,10 +258,7 @@ int ProgressiveFit::startCount(int count) const {
 
 Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split_first) {
   Impl& m = impl();
-  if (count < 1 || count > m.options.num_spheres)
-    return Error{ErrorCode::kInvalidArgument, "count " + std::to_string(count) +
-                                                  " is outside 1 to " +
-                                                  std::to_string(m.options.num_spheres)};
+  if (Status st = countInRange(count, m.options.num_spheres); !st) return st.error();
   if (auto it = m.fits.find(count); it != m.fits.end()) {
     m.chain = m.fitted = detail::startChain(it->second.spheres, it->second.outside_volume);
     return it->second;
@@ -251,10 +266,8 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
   const auto t0 = detail::FitClock::now();
   FitOptions o = m.options;
   o.num_spheres = count;
-  FitResult res;
+  FitResult res = pointsOf(m.ps);
   detail::ProgressScope scope(o, t0);
-  res.points = static_cast<int64_t>(m.ps.points.size());
-  res.interior_points = m.ps.interior;
   const int from = startCount(count);
   if (!split_first.empty() &&
       (from == 0 || from == count || split_first.size() != m.clusterings.at(from).spheres.size()))
@@ -282,10 +295,7 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
 
 Expected<FitResult> ProgressiveFit::step(int count) {
   Impl& m = impl();
-  if (count < 1 || count > m.options.num_spheres)
-    return Error{ErrorCode::kInvalidArgument, "count " + std::to_string(count) +
-                                                  " is outside 1 to " +
-                                                  std::to_string(m.options.num_spheres)};
+  if (Status st = countInRange(count, m.options.num_spheres); !st) return st.error();
   const auto next_to = [&](const std::optional<detail::SplitChain>& c) {
     return c && (c->count == count - 1 || c->count == count + 1);
   };
@@ -297,12 +307,11 @@ Expected<FitResult> ProgressiveFit::step(int count) {
   const auto t0 = detail::FitClock::now();
   FitOptions o = m.options;
   o.num_spheres = count;
-  FitResult res;
+  FitResult res = pointsOf(m.ps);
   detail::ProgressScope scope(o, t0);
-  res.points = static_cast<int64_t>(m.ps.points.size());
-  res.interior_points = m.ps.interior;
   const bool up = m.chain->count == count - 1;
-  scope.report(up ? "splitting" : "removing", 0, detail::totalOf(m.chain->sov));
+  const double energy_before = detail::totalOf(m.chain->sov);
+  scope.report(up ? "splitting" : "removing", 0, energy_before);
   detail::SplitChain next = *m.chain;
   if (up ? !detail::splitLocally(m.index, m.ps, o, &next, &res)
          : !detail::removeLocally(m.index, m.ps, o, &next, &res))
@@ -310,7 +319,7 @@ Expected<FitResult> ProgressiveFit::step(int count) {
                                                   std::to_string(m.chain->count) + " can be " +
                                                   (up ? "split" : "removed")};
   m.chain = std::move(next);
-  res.energy_before_bounding = detail::totalOf(m.chain->sov);  // the count it came from
+  res.energy_before_bounding = energy_before;  // the count it came from
   res.seconds.total = detail::secondsSince(t0);
   scope.report("done", 0, res.energy);
   return res;

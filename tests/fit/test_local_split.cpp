@@ -58,6 +58,7 @@ TEST(LocalSplit, EachStepAddsOneSphereAndKeepsTheBound) {
     EXPECT_TRUE(ev->surface_covered && ev->interior_covered) << "n = " << n;
     EXPECT_NEAR(s->energy, test::totalSov(idx, s->spheres), 1e-12 * s->energy) << "n = " << n;
     ASSERT_EQ(s->outside_volume.size(), s->spheres.size());
+    EXPECT_EQ(s->energy_before_bounding, previous) << "n = " << n;  // the count it came from
     previous = s->energy;
   }
   // Eight splits, each chosen for the outside volume it saves, end below the fit they started
