@@ -46,13 +46,13 @@ class TempDirTest : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
-// A path in the temporary folder that is this process's own (for tests without the fixture).
 // A file's whole text (empty when it cannot be read).
 inline std::string readFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
+// A path in the temporary folder that is this process's own (for tests without the fixture).
 inline std::filesystem::path tempPath(const std::string& name) {
   return std::filesystem::temp_directory_path() /
          ("sphereset_" + std::to_string(::getpid()) + "_" + name);

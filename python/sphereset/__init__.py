@@ -18,20 +18,21 @@ fit (KeyboardInterrupt) at its next progress report.
 
 from __future__ import annotations
 
-import dataclasses
-import functools
-import inspect
 import operator
 import os
-from dataclasses import dataclass, field
-from typing import (Any, Callable, Dict, List, Optional, Sequence, TypeVar, Union,
-                    cast)
+from dataclasses import dataclass
+from typing import Any, Dict, List, Optional, Sequence, Union
 
 import numpy as np
 
 from . import _sphereset as _core
-from ._results import (FRAME_COLUMNS, AnimateResult, EvalResult, FitResult, RobotFitResult,
-                       RobotLinkFit)
+from ._animation import (Animation, animate, load_animation,  # noqa: F401  (re-exported)
+                         mean_value_coordinates, mean_value_weights, point_bone_weights,
+                         skin_points)
+from ._common import (REPAIR_KEYWORDS, MeshLike, PathLike,  # noqa: F401  (re-exported)
+                      ProgressCallback, _repair_args, _repair_keywords, load_mesh)
+from ._results import (AnimateResult, EvalResult, FitResult,  # noqa: F401  (re-exported)
+                       RobotFitResult, RobotLinkFit)
 from ._sphereset import (  # noqa: F401  (re-exported)
     Error,
     InvalidArgumentError,
@@ -82,75 +83,6 @@ __all__ = [
     "RobotLinkFit", "RobotFitResult", "fit_robot", "robot_contacts", "trajectory_contacts",
     "sample_self_collisions", "fit_to_tolerance", "fit_curve",
 ]
-
-PathLike = Union[str, "os.PathLike[str]"]
-MeshLike = Union[Mesh, Solid, PathLike]
-ProgressCallback = Callable[[Dict[str, Any]], None]
-
-
-def _size_text(value: Union[float, str]) -> str:
-    """A length keyword as the text the library's table parses ("auto" stays a word)."""
-    return value if isinstance(value, str) else repr(float(value))
-
-
-def _repair_keyword_values(texts: Dict[str, str]) -> Dict[str, Any]:
-    """The repair keywords of every function that makes a solid, from the texts a user typed
-    ({} for the defaults), parsed and checked by the library's repair table: repair,
-    weld_tolerance (None: automatic), fill_cavities, wrap_alpha, wrap_offset, fill_openings."""
-    d = _core._repair_option_values(texts)
-    d["weld_tolerance"] = None if d["weld_tolerance"] < 0 else d["weld_tolerance"]
-    return {k: d[k] for k in ("repair", "weld_tolerance", "fill_cavities", "wrap_alpha",
-                              "wrap_offset", "fill_openings")}
-
-
-# Defined once, here: the functions below get them from `_repair_keywords`.
-REPAIR_KEYWORDS: Dict[str, Any] = _repair_keyword_values({})
-
-_F = TypeVar("_F", bound=Callable[..., Any])
-
-
-def _repair_keywords(fn: _F) -> _F:
-    """Gives ``fn`` the repair keywords (REPAIR_KEYWORDS, keyword-only, shown in its signature)
-    and passes them to it as one dict, ``repair_options``."""
-    sig = inspect.signature(fn)
-    own = [p for name, p in sig.parameters.items() if name != "repair_options"]
-    extra = [inspect.Parameter(k, inspect.Parameter.KEYWORD_ONLY, default=v)
-             for k, v in REPAIR_KEYWORDS.items()]
-
-    @functools.wraps(fn)
-    def wrapper(*args: Any, **kwargs: Any) -> Any:
-        repair = {k: kwargs.pop(k, v) for k, v in REPAIR_KEYWORDS.items()}
-        return fn(*args, repair_options=repair, **kwargs)
-
-    wrapper.__signature__ = sig.replace(parameters=own + extra)  # type: ignore[attr-defined]
-    return cast(_F, wrapper)
-
-
-def _repair_args(ro: Dict[str, Any]) -> Dict[str, Any]:
-    """The repair keywords as the extension takes them, in its order: repair "auto"/"off"
-    (True/False too), weld_tolerance (-1: automatic), fill_cavities, wrap_alpha, wrap_offset,
-    fill_openings as text."""
-    repair = ro["repair"]
-    if repair is True:
-        repair = "auto"
-    elif repair is False:
-        repair = "off"
-    return {"repair": repair,
-            "weld_tolerance": -1.0 if ro["weld_tolerance"] is None else float(ro["weld_tolerance"]),
-            "fill_cavities": bool(ro["fill_cavities"]), "wrap_alpha": float(ro["wrap_alpha"]),
-            "wrap_offset": float(ro["wrap_offset"]),
-            "fill_openings": _size_text(ro["fill_openings"])}
-
-
-def load_mesh(path: PathLike, *, weld_tolerance: float = 0.0) -> Mesh:
-    """Reads a mesh file (OBJ, PLY, STL, OFF, DAE, glTF/GLB, ... anything assimp reads).
-
-    Vertices closer than ``weld_tolerance`` are merged (0: exact duplicates only), degenerate
-    and duplicate triangles dropped, the orientation made outward. Raises UnreadableError
-    (missing file, unknown format) or InvalidDataError (NaN, bad index, no triangles).
-    """
-    return _core._load_mesh(os.fspath(path), weld_tolerance)
-
 
 @_repair_keywords
 def solid(mesh: MeshLike, *, repair_options: Dict[str, Any]) -> Solid:
@@ -456,134 +388,6 @@ def overlaps(a: Union[SphereTree, Any], b: Union[SphereTree, Any], *, pose_a: An
     """Whether two sphere sets under their poses overlap; stops at the first overlapping pair
     (returned). ``result.overlap`` is the answer."""
     return PairQueryResult(**_core._separation(a, b, pose_a, pose_b, True))
-
-
-def mean_value_coordinates(mesh: Union[Mesh, PathLike], point: Any) -> np.ndarray:
-    """Mean value coordinates of one (3,) ``point`` over the vertices of a closed,
-    outward-oriented triangle mesh (Ju, Schaefer and Warren 2005): a (V,) float64 array ``w``
-    with ``w.sum() == 1`` and ``w @ mesh.vertices == point``, for points inside and outside the
-    solid (outside, some weights are negative). A point on a triangle gets its barycentric
-    coordinates."""
-    if not isinstance(mesh, Mesh):
-        mesh = load_mesh(mesh)
-    return _core._mean_value_coordinates(mesh, point)
-
-
-def mean_value_weights(mesh: Union[Mesh, PathLike], points: Any) -> np.ndarray:
-    """Mean value coordinates of each of (N, 3) ``points``: an (N, V) float64 array whose row i
-    holds the coordinates of point i, so that ``weights @ deformed_vertices`` moves the points
-    with the mesh. Computed in parallel, rows independent (deterministic)."""
-    if not isinstance(mesh, Mesh):
-        mesh = load_mesh(mesh)
-    return _core._mean_value_weights(mesh, points)[0]
-
-
-def point_bone_weights(mesh: Mesh, bone_weights: Any, points: Any, *,
-                       neighbours: int = 8) -> np.ndarray:
-    """Bone weights of (N, 3) ``points`` from the (V, B) ``bone_weights`` of the mesh's
-    vertices: the inverse-distance average over the ``neighbours`` nearest vertices, (N, B) rows
-    summing to 1 (0 where no nearby vertex has a bone)."""
-    return _core._point_bone_weights(mesh, bone_weights, points, int(neighbours))
-
-
-def skin_points(points: Any, weights: Any, bones: Any) -> np.ndarray:
-    """Linear blend skinning of (N, 3) ``points`` with (N, B) ``weights`` and (B, 4, 4) bone
-    transforms (rest pose to the frame): p' = Σ_b w_b T_b p; points without weight stay put."""
-    return _core._skin_points(points, weights, bones)
-
-
-@dataclass
-class Animation:
-    """A skinned, animated asset's clip (``load_animation``): the bind pose ``rest`` (welded as
-    ``load_mesh`` welds), one (V, 3) float64 vertex array per frame in ``frames`` (the rest's
-    vertices, same order) at ``times`` (seconds), the skin (``bone_weights`` (V, B) rows summing
-    to 1, or 0 for vertices no bone moves; None without bones) and each frame's (B, 4, 4) bone
-    transforms from the rest pose (``bone_transforms``)."""
-
-    path: str
-    rest: Mesh
-    frames: List[np.ndarray]
-    times: np.ndarray
-    bone_weights: Optional[np.ndarray]
-    bone_transforms: List[np.ndarray]
-    bone_names: List[str]
-    clip: str
-    clips: List[str]
-    duration: float
-
-    def __len__(self) -> int:
-        return len(self.frames)
-
-
-def load_animation(path: PathLike, clip: Optional[str] = None,
-                   fps: Optional[float] = None) -> Animation:
-    """Reads a skinned, animated asset through assimp (FBX, glTF 2.0, COLLADA, DirectX .x,
-    SMD, ...) and evaluates a clip (``clip`` None: the first) at its keyframe times, or every
-    1/``fps`` seconds. Raises UnreadableError (not readable), InvalidDataError (no triangles,
-    no animation) or InvalidArgumentError (no clip of that name: the message lists the clips;
-    ``fps`` outside the library's row: a finite number >= 0, 0 or None the keyframe times)."""
-    d = _core._load_animation(os.fspath(path), clip or "", dict(fps=fps))
-    if d["bone_weights"].shape[1] == 0:
-        d["bone_weights"] = None
-    return Animation(**d)
-
-
-
-
-def animate(rest_mesh: Union[Mesh, PathLike, None], spheres: Any,
-            frames: Union[Animation, Sequence[Any], np.ndarray], *, rebound: bool = False,
-            weighting: str = "auto", bone_neighbours: int = 8, fresh_fit: bool = False,
-            max_crossings: int = 1000, times: Any = None,
-            progress: Optional[Callable[[int, int], None]] = None) -> AnimateResult:
-    """Moves (N, 4) ``spheres`` fitted to ``rest_mesh`` through ``frames`` (paper Sec. 6), like
-    ``sphereset animate``: centres move, radii stay, and every frame is certified.
-
-    ``frames`` is a list of (V, 3) vertex arrays (or Meshes, or one (F, V, 3) array) with the
-    rest mesh's vertices in its order, or an :class:`Animation` (``rest_mesh`` may then be None:
-    its bind pose). ``weighting`` "mvc" moves the centres by mean value coordinates of the rest
-    mesh, "bones" by the bone weights of the ``bone_neighbours`` nearest rest vertices (needs an
-    Animation with a skin), "auto" bones for a skinned Animation, else mvc. ``rebound`` grows
-    radii minimally per frame to restore exact coverage; ``fresh_fit`` also fits a fresh set to
-    every frame to compare E_r (slow). ``max_crossings`` caps the crossing pairs counted per
-    frame (0 skips the check). ``progress(frame, frames)`` is called after each frame; an
-    exception it raises, or Ctrl-C, abandons the call. Raises InvalidDataError (a frame whose
-    vertex count, or a Mesh frame whose triangles, differ from the rest mesh's; a rest mesh
-    that is not the Animation's bind pose; no spheres), InvalidArgumentError (bones without a
-    skin, options out of range), NotSolidError (the rest mesh or a frame has no positive
-    volume).
-    """
-    bone_weights = None
-    bone_transforms = None
-    bind_pose = None
-    if isinstance(frames, Animation):
-        anim = frames
-        if rest_mesh is None:
-            rest_mesh = anim.rest
-        frames = anim.frames
-        if times is None:
-            times = anim.times
-        bone_weights = anim.bone_weights
-        bone_transforms = anim.bone_transforms
-        bind_pose = anim.rest
-    if rest_mesh is None:
-        raise InvalidArgumentError("rest_mesh is needed unless frames is an Animation")
-    if not isinstance(rest_mesh, Mesh):
-        rest_mesh = load_mesh(rest_mesh)
-    # The keywords of the library's animation table (animate.hpp), checked there.
-    options = dict(weighting=weighting, bone_neighbours=bone_neighbours,
-                   max_crossings=max_crossings)
-    d = _core._animate(rest_mesh, spheres, list(frames), times, bone_weights, bone_transforms,
-                       bind_pose, options, bool(rebound), bool(fresh_fit), progress)
-    fr = d.pop("frames")
-    out: Dict[str, Any] = {
-        "spheres": (np.stack([f["spheres"] for f in fr]) if fr
-                    else np.zeros((0, 0, 4), dtype=np.float64)),
-        "times": np.array([f["time"] for f in fr], dtype=np.float64),
-    }
-    for k, t in FRAME_COLUMNS.items():
-        out[k] = np.array([f[k] for f in fr], dtype=t)
-    out.update(d)
-    return AnimateResult(**out)
 
 
 @_repair_keywords

@@ -29,7 +29,7 @@ import time
 import uuid
 from typing import Any, Dict, List, Optional
 
-from . import _repair_args, _repair_keyword_values, _repair_keywords
+from ._common import _repair_args, _repair_keyword_values, _repair_keywords
 from . import _sphereset as _core
 
 __all__ = ["batch_options", "list_items", "process_item", "run_batch", "main"]

@@ -174,7 +174,7 @@ class CurveMaker {
     const auto s0 = std::chrono::steady_clock::now();
     auto fit = fitAt(k);
     if (!fit) return fit.error();
-    return check(k, std::move(fit).value(), s0);
+    return check(k, std::move(fit).value(), secondsSince(s0));
   }
 
   // The stepped counts k ... e - 1 between the fitted counts k - 1 and e: every one stepped up
@@ -228,14 +228,9 @@ class CurveMaker {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   }
 
-  Status check(size_t k, FitResult fit, std::chrono::steady_clock::time_point s0) {
-    return check(k, std::move(fit), 0.0, s0);
-  }
+  // Checks count k's set (CurvePoint::seconds: `seconds` of making it, plus the check's).
   Status check(size_t k, FitResult fit, double seconds) {
-    return check(k, std::move(fit), seconds, std::chrono::steady_clock::now());
-  }
-  // Checks count k's set (CurvePoint::seconds: `seconds` of making it, plus the time since s0).
-  Status check(size_t k, FitResult fit, double seconds, std::chrono::steady_clock::time_point s0) {
+    const auto s0 = std::chrono::steady_clock::now();
     const int n = counts_[k];
     if (steps_) {
       auto checked = checker_.check(fit.spheres, n);

@@ -1,7 +1,6 @@
 // Batch (batch.hpp): listing folders and manifests, bad manifest lines, one item fitted as
-// fitSpheres fits it, failed items, report lines, and resuming.
+// fitSpheres fits it, failed items, and resuming (the report: test_batch_report.cpp).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -33,13 +32,6 @@ std::string offText(const Mesh& m) {
   s << "OFF\n" << m.vertices.size() << ' ' << m.triangles.size() << " 0\n";
   for (const Vec3& v : m.vertices) s << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
   for (const Triangle& t : m.triangles) s << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-  return s.str();
-}
-
-std::string readAll(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
   return s.str();
 }
 
@@ -246,7 +238,7 @@ TEST_F(BatchTest, ItemGivesTheSpheresOfTheFit) {
   SphereFileMeta meta;
   meta.name = "box";
   meta.source_mesh = item.mesh;
-  EXPECT_EQ(readAll(path("out/part/box.json")),
+  EXPECT_EQ(test::readFile(path("out/part/box.json")),
             formatSpheres(SphereFormat::kJson, fit->spheres, meta));
   EXPECT_EQ(r.spheres, 3);
   EXPECT_EQ(r.num_spheres, 3);
@@ -345,7 +337,7 @@ TEST_F(BatchTest, ItemRunsInAnArenaWithTheSameResult) {
   o.threads = 1;
   item.output = "two.txt";
   ASSERT_EQ(runBatchItem(item, path("out"), o).status, BatchStatus::kOk);
-  EXPECT_EQ(readAll(path("out/one.txt")), readAll(path("out/two.txt")));
+  EXPECT_EQ(test::readFile(path("out/one.txt")), test::readFile(path("out/two.txt")));
 }
 
 TEST_F(BatchTest, FailedItemsAreReportedNotThrown) {
@@ -378,93 +370,6 @@ TEST_F(BatchTest, FailedItemsAreReportedNotThrown) {
   EXPECT_EQ(r.status, BatchStatus::kError);
   EXPECT_NE(r.error.find("box.off: "), std::string::npos) << r.error;
   EXPECT_EQ(reportLine(r).find('\n'), std::string::npos);
-}
-
-TEST(BatchReport, LineRoundTrips) {
-  BatchItemReport r;
-  r.mesh = "in/a \"b\".obj";
-  r.output = "a.json";
-  r.status = BatchStatus::kOk;
-  r.num_spheres = 32;
-  r.spheres = 32;
-  r.er_sum = 0.125;
-  r.er_union = 0.1;
-  r.covered = true;
-  r.repair = "welded";
-  r.seconds = 1.5;
-  r.fingerprint = "0123456789abcdef";
-  const std::string line = reportLine(r);
-  EXPECT_EQ(line.find('\n'), std::string::npos);
-  EXPECT_EQ(line.rfind("{\"mesh\":", 0), 0u) << line;
-  auto back = parseReportLine(line);
-  ASSERT_TRUE(back.ok()) << back.error().message;
-  EXPECT_EQ(reportLine(*back), line);
-  EXPECT_EQ(back->mesh, r.mesh);
-  EXPECT_EQ(back->repair, "welded");
-
-  r.status = BatchStatus::kError;
-  r.er_sum = std::nan("");
-  r.error = "a.obj: no such file";
-  const std::string bad = reportLine(r);
-  EXPECT_NE(bad.find("\"er_sum\":null"), std::string::npos) << bad;
-  back = parseReportLine(bad);
-  ASSERT_TRUE(back.ok());
-  EXPECT_TRUE(std::isnan(back->er_sum));
-  EXPECT_EQ(back->status, BatchStatus::kError);
-  EXPECT_EQ(back->error, r.error);
-
-  EXPECT_FALSE(parseReportLine("{\"mesh\": 3}").ok());
-  EXPECT_FALSE(parseReportLine("not json").ok());
-}
-
-TEST_F(BatchTest, ReportFileHoldsOneLinePerItemInOrder) {
-  const std::string out = path("deep/out");
-  BatchItemReport r;
-  std::string first_run;
-  {
-    auto report = BatchReport::start(out);
-    ASSERT_TRUE(report.ok()) << report.error().message;
-    EXPECT_EQ(readAll(batchPartialReportPath(out)), "");
-    for (const char* name : {"first", "second"}) {
-      r.mesh = name;
-      ASSERT_TRUE(report->append(r).ok());
-    }
-    ASSERT_TRUE(report->finish().ok());
-    first_run = readAll(batchReportPath(out));
-  }
-  EXPECT_EQ(first_run, reportLine([&] {
-                         BatchItemReport a = r;
-                         a.mesh = "first";
-                         return a;
-                       }()) +
-                           "\n" + reportLine(r) + "\n");
-  EXPECT_FALSE(std::filesystem::exists(batchPartialReportPath(out)));
-  // A run that stops before finishing (killed, or an error) leaves the last whole report.
-  {
-    auto report = BatchReport::start(out);
-    ASSERT_TRUE(report.ok());
-    ASSERT_TRUE(report->append(r).ok());
-  }
-  EXPECT_EQ(readAll(batchReportPath(out)), first_run);
-  EXPECT_EQ(readAll(batchPartialReportPath(out)), reportLine(r) + "\n");
-}
-
-// Two runs on one folder used to interleave report.jsonl and fit every item twice.
-TEST_F(BatchTest, OneRunAtATimePerOutputFolder) {
-  const std::string out = path("locked");
-  auto first = BatchReport::start(out);
-  ASSERT_TRUE(first.ok());
-  auto second = BatchReport::start(out);
-  ASSERT_FALSE(second.ok());
-  EXPECT_EQ(second.error().code, ErrorCode::kWriteFailed);
-  EXPECT_NE(second.error().message.find("another batch run (pid " + std::to_string(::getpid())),
-            std::string::npos)
-      << second.error().message;
-  ASSERT_TRUE(first->finish().ok());  // finishing releases the folder
-  auto third = BatchReport::start(out);
-  ASSERT_TRUE(third.ok());
-  BatchReport moved = std::move(third).value();
-  EXPECT_FALSE(BatchReport::start(out).ok());  // the moved-to report holds the lock
 }
 
 // Resuming used to keep the spheres of a glTF whose .bin had changed ("skipped", covered,
@@ -535,7 +440,7 @@ TEST_F(BatchTest, UpToDateItemsAreSkippedAndChangedOnesRunAgain) {
 
   // A changed sphere file or mesh, or a missing record: not up to date.
   const std::string sphere_file = path("out/box.json");
-  const std::string kept = readAll(sphere_file);
+  const std::string kept = test::readFile(sphere_file);
   std::ofstream(sphere_file, std::ios::app) << " ";
   EXPECT_FALSE(batchItemDone(item, out, o));
   std::ofstream(sphere_file, std::ios::trunc) << kept;
@@ -562,48 +467,6 @@ TEST_F(BatchTest, FailedRunOfADoneItemIsNotUpToDate) {
   box("box.off");
   EXPECT_TRUE(fs::exists(path("out/box.json")));
   EXPECT_FALSE(batchItemDone(item, path("out"), o));
-}
-
-TEST(FitPresets, NamesAndOverrides) {
-  for (FitQuality q : {FitQuality::kFast, FitQuality::kDefault, FitQuality::kBest})
-    EXPECT_EQ(fitQualityFromName(fitQualityName(q)).value(), q);
-  test::expectError(fitQualityFromName("great"), ErrorCode::kInvalidArgument, "great",
-                    "expected fast, default or best");
-  EXPECT_EQ(fitMethodFromName("octree").value(), FitMethod::kOctree);
-  EXPECT_FALSE(sphereOptimizerFromName("newton").ok());
-
-  const FitOptions fast = fitPreset(10, FitQuality::kFast);
-  EXPECT_EQ(fast.target_points, 1250);  // 0.25 × max(5000, 1000)
-  EXPECT_EQ(fast.max_iterations, 20);
-  EXPECT_EQ(fast.optimizer_evaluations, 20);
-  EXPECT_EQ(fast.max_failed_teleports, 1);
-  const FitOptions best = fitPreset(100, FitQuality::kBest);
-  EXPECT_EQ(best.target_points, 10000);
-  EXPECT_EQ(best.restarts, 4);
-  EXPECT_EQ(best.decimation, 0.5);
-  // The help's defaults restate the presets' rounds and restarts: they must follow them.
-  auto helpDefault = [](const std::string& name) {
-    for (const OptionSpec& spec : fitRequestOptions())
-      if (spec.name == name) return std::string(spec.default_text);
-    return std::string();
-  };
-  const FitOptions plain = fitPreset(10, FitQuality::kDefault);
-  EXPECT_EQ(helpDefault("iterations"), std::to_string(plain.max_iterations) + "; quality fast: " +
-                                           std::to_string(fast.max_iterations));
-  EXPECT_EQ(helpDefault("restarts"),
-            std::to_string(plain.restarts) + "; quality best: " + std::to_string(best.restarts));
-  FitRequest req;
-  req.num_spheres = 100;
-  req.quality = FitQuality::kBest;
-  req.restarts = 2;
-  req.points = 777;
-  req.seed = 9;
-  const FitOptions fo = fitOptionsFor(req);
-  EXPECT_EQ(fo.restarts, 2);
-  EXPECT_EQ(fo.decimation, 0.5);
-  EXPECT_EQ(fo.target_points, 777);
-  EXPECT_EQ(fo.seed, 9u);
-  EXPECT_EQ(fo.max_iterations, 100);
 }
 
 }  // namespace

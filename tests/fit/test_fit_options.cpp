@@ -1,4 +1,5 @@
-// The fit with unusual counts: few points per sphere, few or no interior points.
+// The fit with unusual counts (few points per sphere, few or no interior points), and the
+// presets: their names, values and what a request overrides.
 #include <gtest/gtest.h>
 
 #include "sphereset/evaluate.hpp"
@@ -92,6 +93,48 @@ TEST(FitOptions, ThinRodAlongTheBoxDiagonalSamplesABoundedGrid) {
   ASSERT_EQ(r->spheres.size(), 4u);
   EXPECT_GT(r->points, 500);  // the surface samples at least
   expectCovers(idx, r->spheres);
+}
+
+TEST(FitPresets, NamesAndOverrides) {
+  for (FitQuality q : {FitQuality::kFast, FitQuality::kDefault, FitQuality::kBest})
+    EXPECT_EQ(fitQualityFromName(fitQualityName(q)).value(), q);
+  test::expectError(fitQualityFromName("great"), ErrorCode::kInvalidArgument, "great",
+                    "expected fast, default or best");
+  EXPECT_EQ(fitMethodFromName("octree").value(), FitMethod::kOctree);
+  EXPECT_FALSE(sphereOptimizerFromName("newton").ok());
+
+  const FitOptions fast = fitPreset(10, FitQuality::kFast);
+  EXPECT_EQ(fast.target_points, 1250);  // 0.25 × max(5000, 1000)
+  EXPECT_EQ(fast.max_iterations, 20);
+  EXPECT_EQ(fast.optimizer_evaluations, 20);
+  EXPECT_EQ(fast.max_failed_teleports, 1);
+  const FitOptions best = fitPreset(100, FitQuality::kBest);
+  EXPECT_EQ(best.target_points, 10000);
+  EXPECT_EQ(best.restarts, 4);
+  EXPECT_EQ(best.decimation, 0.5);
+  // The help's defaults restate the presets' rounds and restarts: they must follow them.
+  auto helpDefault = [](const std::string& name) {
+    for (const OptionSpec& spec : fitRequestOptions())
+      if (spec.name == name) return std::string(spec.default_text);
+    return std::string();
+  };
+  const FitOptions plain = fitPreset(10, FitQuality::kDefault);
+  EXPECT_EQ(helpDefault("iterations"), std::to_string(plain.max_iterations) + "; quality fast: " +
+                                           std::to_string(fast.max_iterations));
+  EXPECT_EQ(helpDefault("restarts"),
+            std::to_string(plain.restarts) + "; quality best: " + std::to_string(best.restarts));
+  FitRequest req;
+  req.num_spheres = 100;
+  req.quality = FitQuality::kBest;
+  req.restarts = 2;
+  req.points = 777;
+  req.seed = 9;
+  const FitOptions fo = fitOptionsFor(req);
+  EXPECT_EQ(fo.restarts, 2);
+  EXPECT_EQ(fo.decimation, 0.5);
+  EXPECT_EQ(fo.target_points, 777);
+  EXPECT_EQ(fo.seed, 9u);
+  EXPECT_EQ(fo.max_iterations, 100);
 }
 
 }  // namespace
