@@ -220,11 +220,18 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
 
 std::vector<std::vector<Vec3>> soleCover(const SolidIndex& index, const std::vector<Sphere>& sp,
                                          const std::vector<Vec3>& interior, double min_edge,
-                                         const Mesh* surface) {
+                                         const Mesh* surface, int only) {
   const Mesh& mesh = surface ? *surface : index.mesh();
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
   const int ns = static_cast<int>(sp.size());
   const SphereGrid grid(sp);
+  // Whether a piece's box misses sphere `only` (then no part of it is that sphere's alone).
+  const auto misses_only = [&](const std::array<Vec3, 3>& v) {
+    if (only < 0) return false;
+    const Vec3 lo = v[0].cwiseMin(v[1]).cwiseMin(v[2]), hi = v[0].cwiseMax(v[1]).cwiseMax(v[2]);
+    const Sphere& s = sp[only];
+    return (s.center.cwiseMax(lo).cwiseMin(hi) - s.center).squaredNorm() > s.radius * s.radius;
+  };
   // Per triangle, the pieces one sphere alone holds, as (sphere, vertices).
   std::vector<std::vector<std::pair<int32_t, std::array<Vec3, 3>>>> own(nt);
   tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
@@ -234,6 +241,7 @@ std::vector<std::vector<Vec3>> soleCover(const SolidIndex& index, const std::vec
     splitPieces(
         mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], min_edge,
         [&](const std::array<Vec3, 3>& v) {
+          if (misses_only(v)) return true;
           int32_t holder = -1;
           const int h = holders(grid, v.data(), 3, &holder);
           if (h == 1) own[t].push_back({holder, v});

@@ -99,9 +99,10 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
 // until one sphere holds each piece, as in boundSurface) that no other sphere holds, and the
 // given interior points no other sphere contains. A sphere refitted around these keeps
 // everything covered that only it covered. The triangles are `surface`'s when given (else the
-// solid's).
+// solid's). With `only` (a sphere's index), only that sphere's list is made: pieces whose box
+// misses it are not split further (the other lists are then incomplete).
 std::vector<std::vector<Vec3>> soleCover(const SolidIndex& index, const std::vector<Sphere>& sp,
                                          const std::vector<Vec3>& interior, double min_edge,
-                                         const Mesh* surface = nullptr);
+                                         const Mesh* surface = nullptr, int only = -1);
 
 }  // namespace sphereset::detail

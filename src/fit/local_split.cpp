@@ -116,7 +116,7 @@ void measureChain(const SolidIndex& index, const PointSet& ps, const FitOptions&
     std::vector<Vec3> inside;
     for (int64_t k = 0; k < ps.interior; ++k)
       if ((ps.points[k] - s.center).norm() <= s.radius) inside.push_back(ps.points[k]);
-    const auto owned = soleCover(index, bare, inside, min_edge, &near);
+    const auto owned = soleCover(index, bare, inside, min_edge, &near, static_cast<int>(i));
     if (split) {
       PointSplit& h = c->splits[i];
       h = splitPoints(index, owned[i], o);
