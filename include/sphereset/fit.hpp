@@ -264,6 +264,12 @@ struct ProgressiveOptions {
   // a quick run's clustering taken as it is ends as a quick fit (docs/benchmarks.md, "The robot
   // budget with progressive curves").
   bool adopt = true;
+  // Whether the largest count (start()'s options.num_spheres) is clustered from seeds, as
+  // fitSpheres clusters it, rather than from a smaller count: its fit is then fitSpheres's own
+  // (the same spheres for the same options), for the cost of a clustering from seeds. A curve's
+  // last count (fitCurve) is so fitted: warm-started, the largest counts end about 5 % above an
+  // independent fit in outside volume (docs/benchmarks.md, "Progressive fitting").
+  bool top_from_seeds = false;
 };
 
 class ProgressiveFit {
@@ -322,8 +328,9 @@ class ProgressiveFit {
   // count this run fitted or stepped, no sphere that can be split or removed.
   Expected<FitResult> step(int count);
   // The count fit(count) starts from: `count` itself if clustered (by warm_from only when
-  // ProgressiveOptions::adopt), else the largest smaller count clustered within
-  // ProgressiveOptions::start_ratio, or 0 (from seeds).
+  // ProgressiveOptions::adopt), else 0 (from seeds) for the largest count with
+  // ProgressiveOptions::top_from_seeds, else the largest smaller count clustered within
+  // ProgressiveOptions::start_ratio, or 0.
   int startCount(int count) const;
   int maxCount() const;
 

@@ -435,8 +435,8 @@ def test_fit_to_tolerance_takes_the_fit_keywords(tmp_path):
 
 def test_fit_curve_is_the_commands_curve(cli, tmp_path):
     """fit_curve gives every count's point and set, the same figures as `sphereset curve` (the
-    same library call), each point the check of its set; bad counts are refused before the mesh
-    is read."""
+    same library call), each point the check of its set, the last set `fit`'s at that count; bad
+    counts are refused before the mesh is read."""
     seen = []
     c = ss.fit_curve(LINK, max_spheres=4, quality="fast", progress=seen.append)
     assert [p["n"] for p in c["curve"]] == [1, 2, 3, 4] and seen == c["curve"]
@@ -451,6 +451,8 @@ def test_fit_curve_is_the_commands_curve(cli, tmp_path):
                                                              p["protrusion"], "1")
     # Without max_spheres, the library's default cap: every count from 1 to 64.
     assert [p["n"] for p in ss.fit_curve(LINK, quality="fast")["curve"]] == list(range(1, 65))
+    # The last count's set is the fit `fit` gives at that count.
+    np.testing.assert_array_equal(c["spheres"][-1], ss.fit(LINK, n=4, quality="fast").spheres)
     # Each point is the check of its set.
     ev = ss.evaluate(LINK, c["spheres"][2])
     assert ev.protrusion["bound"] == pytest.approx(c["curve"][2]["protrusion"], rel=1e-12)

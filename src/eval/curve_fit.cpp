@@ -279,7 +279,9 @@ Expected<CurveResult> fitCurve(const SolidIndex& index, const FitRequest& reques
   out.progressive = ProgressiveFit::allows(top_options);
   std::optional<ProgressiveFit> run;
   if (out.progressive) {
-    auto started = ProgressiveFit::start(index, top_options);
+    ProgressiveOptions progressive;
+    progressive.top_from_seeds = true;  // the last count is fitSpheres's own fit
+    auto started = ProgressiveFit::start(index, top_options, nullptr, progressive);
     if (!started) return started.error();
     run.emplace(std::move(started).value());
   }

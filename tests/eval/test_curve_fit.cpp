@@ -1,7 +1,7 @@
 // The curve of a run (fitCurve): one point per count, each the certified check of the set it
-// returns (re-evaluated here), the fits those of one progressive run (or of independent fits when
-// the request does not allow one), every count 1 ... max_spheres by default, progress per count
-// that may cancel, and bad counts refused.
+// returns (re-evaluated here), the fits those of one progressive run whose last count is the
+// independent fit (or of independent fits when the request does not allow one), every count
+// 1 ... max_spheres by default, progress per count that may cancel, and bad counts refused.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -32,6 +32,13 @@ void expectSameSpheres(const std::vector<Sphere>& a, const std::vector<Sphere>& 
   }
 }
 
+// The run a curve makes: its last count clustered from seeds.
+ProgressiveOptions seededTop() {
+  ProgressiveOptions p;
+  p.top_from_seeds = true;
+  return p;
+}
+
 TEST(FitCurve, EachPointIsTheCheckOfItsSetFromOneProgressiveRun) {
   const SolidIndex index(test::robotLink());
   CurveOptions o;
@@ -47,8 +54,12 @@ TEST(FitCurve, EachPointIsTheCheckOfItsSetFromOneProgressiveRun) {
   // The run's fits, count by count: a ProgressiveFit for the largest count asked the same.
   FitRequest top = quick();
   top.num_spheres = 8;
-  auto run = ProgressiveFit::start(index, fitOptionsFor(top));
+  auto run = ProgressiveFit::start(index, fitOptionsFor(top), nullptr, seededTop());
   ASSERT_TRUE(run.ok());
+  // The last count is fitted from seeds: fitSpheres's own fit at 8, as `sphereset fit -n 8`.
+  auto independent = fitSpheres(index, fitOptionsFor(top));
+  ASSERT_TRUE(independent.ok());
+  expectSameSpheres(c->spheres.back(), independent->spheres);
   for (size_t i = 0; i < 4; ++i) {
     const CurvePoint& p = c->points[i];
     EXPECT_EQ(p.n, o.counts[i]);
@@ -88,7 +99,7 @@ TEST(FitCurve, CountsBetweenPowersOfTwoAreStepsCheckedAsAFullEvaluationChecks) {
   EXPECT_EQ(reported, (std::vector<int>{1, 2, 3, 4, 5, 6, 7}));
   FitRequest top = quick();
   top.num_spheres = 7;
-  auto run = ProgressiveFit::start(index, fitOptionsFor(top));
+  auto run = ProgressiveFit::start(index, fitOptionsFor(top), nullptr, seededTop());
   ASSERT_TRUE(run.ok());
   for (int n : {1, 2, 4, 7}) {
     auto fit = run->fit(n);

@@ -1,6 +1,7 @@
 // Progressive fitting (ProgressiveFit, src/fit/progressive.cpp): every count's fit bounds the
-// solid (brute force), a first count is exactly fitSpheres' fit, warm-started counts stay close
-// to independent fits, and the same calls give the same spheres for any thread count.
+// solid (brute force), a first count (and the largest, asked to) is exactly fitSpheres' fit,
+// warm-started counts stay close to independent fits, and the same calls give the same spheres
+// for any thread count.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -51,6 +52,37 @@ TEST(ProgressiveFit, AFirstCountIsTheFitFromSeeds) {
     EXPECT_EQ(p->spheres[i].center, f->spheres[i].center);
     EXPECT_EQ(p->spheres[i].radius, f->spheres[i].radius);
   }
+}
+
+TEST(ProgressiveFit, TheLargestCountFromSeedsIsTheIndependentFit) {
+  // With top_from_seeds the largest count is clustered from seeds though smaller counts were
+  // clustered before it: fitSpheres's fit at that count, bit for bit. Without it, the same
+  // count starts from half its count and differs.
+  const Mesh link = test::robotLink();
+  const SolidIndex idx(link);
+  const FitOptions o = quickOptions(8);
+  ProgressiveOptions seeded;
+  seeded.top_from_seeds = true;
+  auto run = ProgressiveFit::start(idx, o, nullptr, seeded);
+  auto warm = ProgressiveFit::start(idx, o);
+  ASSERT_TRUE(run.ok() && warm.ok());
+  for (int n : {2, 4}) ASSERT_TRUE(run->fit(n).ok() && warm->fit(n).ok());
+  EXPECT_EQ(run->startCount(8), 0);
+  EXPECT_EQ(warm->startCount(8), 4);
+  EXPECT_EQ(run->startCount(6), 2);  // below the largest, as start_ratio says
+  auto top = run->fit(8);
+  auto independent = fitSpheres(idx, o);
+  auto warm_top = warm->fit(8);
+  ASSERT_TRUE(top.ok() && independent.ok() && warm_top.ok());
+  ASSERT_EQ(top->spheres.size(), independent->spheres.size());
+  bool differs = false;
+  for (size_t i = 0; i < top->spheres.size(); ++i) {
+    EXPECT_EQ(top->spheres[i].center, independent->spheres[i].center) << i;
+    EXPECT_EQ(top->spheres[i].radius, independent->spheres[i].radius) << i;
+    differs = differs || warm_top->spheres[i].center != top->spheres[i].center;
+  }
+  EXPECT_TRUE(differs);
+  EXPECT_EQ(run->startCount(8), 8);  // fitted now: asked again, the same fit
 }
 
 TEST(ProgressiveFit, WarmStartedCountsAreCloseToIndependentFits) {
