@@ -6,9 +6,9 @@
 # Into bench/results/curve_table.csv (OUT): mesh, fit and curve seconds (wall clock, the check
 # included in both), their ratio; where the curve's time goes (from its CSV's per-count seconds,
 # each count's making and check): the fitted counts (1, 2, 4, ... 64), the fitted counts from 8
-# up (the four the curve must match independent fits at), the stepped counts, and the rest of
-# the command (loading, repair, index, the run's points, writing); then E_r curve / independent
-# at 12, 24, 48 and 64.
+# up (the four the curve must match independent fits at), the stepped counts kept, and the rest
+# of the command (loading, repair, index, the run's points, the steps of the direction not kept,
+# writing); then E_r curve / independent at 12, 24, 48 and 64.
 #   bash bench/curve_table.sh
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
