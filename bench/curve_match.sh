@@ -42,6 +42,7 @@ for seed in ${SEEDS:-1}; do
         -q --json)
       f=$(/usr/bin/python3 -c "import json; print(json.load(open('$tmp/fit.json'))['er_sum'])")
       c=$(awk -F, -v n="$n" 'NR > 1 && $1 == n { print $2 }' "$tmp/curve.csv")
+      [ -n "$c" ] || { echo "curve_match: the curve has no count $n (1 to 64)" >&2; exit 2; }
       echo "$(basename "$mesh"),$seed,$n,$c,$f,$tc,$tf" >>"$out"
     done
   done

@@ -31,8 +31,8 @@ from ._animation import (Animation, animate, load_animation,  # noqa: F401  (re-
                          skin_points)
 from ._common import (REPAIR_KEYWORDS, MeshLike, PathLike,  # noqa: F401  (re-exported)
                       ProgressCallback, _repair_args, _repair_keywords, load_mesh)
-from ._results import (AnimateResult, EvalResult, FitResult,  # noqa: F401  (re-exported)
-                       RobotFitResult, RobotLinkFit)
+from ._results import (FRAME_COLUMNS, AnimateResult, EvalResult,  # noqa: F401  (re-exported)
+                       FitResult, RobotFitResult, RobotLinkFit)
 from ._sphereset import (  # noqa: F401  (re-exported)
     Error,
     InvalidArgumentError,
@@ -229,12 +229,12 @@ def fit_curve(mesh: MeshLike, *, counts: Optional[Sequence[int]] = None,
     library's default, 64) or at ``counts`` (increasing), from one run, as ``sphereset curve``
     gives them (the same library call, fitCurve): the fits of one progressive run for the
     largest count, the counts between powers of two made by local steps (usually looser than
-    fits at those counts), or independent fits when the options do not allow a run; each
-    checked as ``fit`` checks its result. The fit
-    keywords are :func:`fit`'s (without ``n``); the counts and options are checked before the mesh
-    is read. ``progress`` gets each count's point ({"n", "er_sum", "protrusion", "covered",
-    "meets", "seconds"}) when it is done; an exception it raises ends the run, and Ctrl-C raises
-    KeyboardInterrupt within a count's fit.
+    fits at those counts), the last count clustered from seeds (the set :func:`fit` gives at
+    that count), or independent fits when the options do not allow a run; each checked as
+    ``fit`` checks its result. The fit keywords are :func:`fit`'s (without ``n``); the counts
+    and options are checked before the mesh is read. ``progress`` gets each count's point
+    ({"n", "er_sum", "protrusion", "covered", "meets", "seconds"}) when it is done; an exception
+    it raises ends the run, and Ctrl-C raises KeyboardInterrupt within a count's fit.
 
     Returns {"curve": [point per count], "spheres": [(n, 4) array per count], "progressive",
     "seconds"}.

@@ -32,8 +32,8 @@ inline FitOptions countOptions(const FitRequest& request, int n, const Mesh* ori
   return fo;
 }
 
-// Checks `fit` (the fit at n with options `fo`) and fills the point; `start` is when the count's
-// fit began (CurvePoint::seconds covers the fit and its check).
+// Checks `fit` (the fit at n with options `fo`) and fills the point; CurvePoint::seconds is the
+// time since `start` (the tolerance search passes its fit's start: the fit and its check).
 inline Expected<CheckedCount> checkCount(const SolidIndex& index, FitResult fit,
                                          const FitOptions& fo, const Mesh* walls, int n,
                                          std::chrono::steady_clock::time_point start) {

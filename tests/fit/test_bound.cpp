@@ -1,5 +1,5 @@
 // The guaranteed bound and the evaluation's coverage certificate agree: whatever the bound
-// proves covered, the certificate reports covered.
+// proves covered, the certificate reports covered; what one sphere alone covers.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -72,6 +72,32 @@ TEST(Bound, BoundSpheresCoversFromAnySetWithoutMovingCentres) {
   EXPECT_FALSE(boundSpheres(idx, {{Vec3::Zero(), -1.0}}).ok());
   o.interior_max_depth = 99;
   EXPECT_FALSE(boundSpheres(idx, before, o).ok());
+}
+
+// What one sphere alone covers (soleCover) is the same asked for that sphere only, which skips
+// the pieces that miss it, as asked for every sphere: the same points in the same order.
+TEST(Bound, SoleCoverOfOneSphereIsItsListAmongAll) {
+  const SolidIndex idx(test::robotLink());
+  auto fit = fitSpheres(idx, fitPreset(8, FitQuality::kFast));
+  ASSERT_TRUE(fit.ok()) << fit.error().message;
+  // Smaller spheres, so that pieces straddle their boundaries and are split deep.
+  std::vector<Sphere> spheres = fit->spheres;
+  for (Sphere& s : spheres) s.radius *= 0.9;
+  std::vector<Vec3> interior;
+  for (const Sphere& s : spheres) interior.push_back(s.center);
+  const double min_edge = 1e-3 * idx.bounds().diagonal();
+  const auto all = detail::soleCover(idx, spheres, interior, min_edge);
+  ASSERT_EQ(all.size(), spheres.size());
+  size_t listed = 0;
+  for (size_t i = 0; i < spheres.size(); ++i) {
+    const auto one =
+        detail::soleCover(idx, spheres, interior, min_edge, nullptr, static_cast<int>(i));
+    ASSERT_EQ(one.size(), spheres.size());
+    ASSERT_EQ(one[i].size(), all[i].size()) << i;
+    for (size_t k = 0; k < all[i].size(); ++k) EXPECT_EQ(one[i][k], all[i][k]) << i << " " << k;
+    listed += all[i].size();
+  }
+  EXPECT_GT(listed, 0u);
 }
 
 }  // namespace

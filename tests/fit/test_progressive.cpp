@@ -83,6 +83,17 @@ TEST(ProgressiveFit, TheLargestCountFromSeedsIsTheIndependentFit) {
   }
   EXPECT_TRUE(differs);
   EXPECT_EQ(run->startCount(8), 8);  // fitted now: asked again, the same fit
+  // A largest count another run clustered is adopted before it would be clustered from seeds,
+  // unless the run does not adopt.
+  ProgressiveOptions adopting = seeded, own = seeded;
+  own.adopt = false;
+  auto quick = ProgressiveFit::start(idx, o);
+  ASSERT_TRUE(quick.ok() && quick->fit(8).ok());
+  auto with_adopt = ProgressiveFit::start(idx, o, &*quick, adopting);
+  auto without = ProgressiveFit::start(idx, o, &*quick, own);
+  ASSERT_TRUE(with_adopt.ok() && without.ok());
+  EXPECT_EQ(with_adopt->startCount(8), 8);
+  EXPECT_EQ(without->startCount(8), 0);
 }
 
 TEST(ProgressiveFit, WarmStartedCountsAreCloseToIndependentFits) {
