@@ -220,24 +220,24 @@ Status checkToleranceOptions(const ToleranceOptions& tolerance);
 Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRequest& request,
                                             const ToleranceOptions& options);
 
-// The curve of E_r and certified protrusion against the count, from one run (curve_fit.cpp):
-// the fit at each of `counts` (increasing, each from 1 to limits::kMaxCurveCount; none: every
-// count from 1 to max_spheres), as the fits of one progressive run (ProgressiveFit) that samples
-// the points of the largest count, each count's clustering started from that of the largest count
-// already clustered at most half its size (from seeds when there is none), except the largest
-// count, clustered from seeds (ProgressiveOptions::top_from_seeds: its set is fitSpheres's at that
-// count, as `sphereset fit -n` gives it); independent fits when the request does not allow a run
-// (restarts, decimation, a baseline method). In a run, a count one above the count before it is a
-// local step (ProgressiveFit::step) unless it is a power of two or the last count: each stretch of
-// such counts is stepped up from the fit below and, when the fit above follows it directly, down
-// from that fit too, the counts up to the crossover of least total outside volume taking the
-// upward sets. The whole curve 1 ... 64 costs 2 to 6 fits at 64 (3 on average over the shared
-// meshes), and its stepped counts are usually looser than fits at those counts
-// (docs/benchmarks.md, "Progressive fitting"). Each set is checked as `sphereset fit` checks its
-// result (the steps' by the certificate of the set before, kept up to date: the same figures).
-// CurvePoint::meets is false (no tolerance). The same request and counts give the same curve for
-// any thread count. A count's set differs from the tolerance search's at that count, whose runs
-// sample the points of other counts.
+// The curve of E_r and certified protrusion against the count, from one run (curve_fit.cpp): the
+// fit at each of `counts` (increasing, each from 1 to limits::kMaxCurveCount; none: every count
+// from 1 to max_spheres), as the fits of one progressive run (ProgressiveFit) that samples the
+// points of the largest count, each count's clustering started from that of the largest count
+// already clustered at most half its size (from seeds when there is none), except the counts up to
+// 8 (ProgressiveOptions::seeded_up_to) and the largest count, clustered from seeds
+// (ProgressiveOptions::top_from_seeds: its set is fitSpheres's at that count, as `sphereset fit -n`
+// gives it); independent fits when the request does not allow a run (restarts, decimation, a
+// baseline method). In a run, a count one above the count before it is a local step
+// (ProgressiveFit::step) unless it is a power of two or the last count: each stretch of such counts
+// is stepped up from the fit below and, when the fit above follows it directly, down from that fit
+// too, the counts up to the crossover of least total outside volume taking the upward sets. The
+// whole curve 1 ... 64 costs 2 to 6 fits at 64 (3 on average over the shared meshes), and its
+// stepped counts are usually looser than fits at those counts (docs/benchmarks.md, "Progressive
+// fitting"). Each set is checked as `sphereset fit` checks its result (the steps' by the
+// certificate of the set before, kept up to date: the same figures). CurvePoint::meets is false (no
+// tolerance). The same request and counts give the same curve for any thread count. A count's set
+// differs from the tolerance search's at that count, whose runs sample the points of other counts.
 struct CurveOptions {
   std::vector<int> counts;
   // The counts 1 ... max_spheres when `counts` is empty (from 1 to limits::kMaxCurveCount,

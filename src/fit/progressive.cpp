@@ -257,7 +257,9 @@ int ProgressiveFit::startCount(int count) const {
   const Impl& m = impl();
   if (m.fits.contains(count)) return count;  // clustered by this run
   const bool adopted = m.progressive.adopt && m.clusterings.contains(count);
-  if (m.progressive.top_from_seeds && count == m.options.num_spheres && !adopted) return 0;
+  if (!adopted && ((m.progressive.top_from_seeds && count == m.options.num_spheres) ||
+                   count <= m.progressive.seeded_up_to))
+    return 0;
   return startFrom(m.clusterings, count, m.progressive.start_ratio, m.progressive.adopt);
 }
 
