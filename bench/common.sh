@@ -54,3 +54,13 @@ link_closed_meshes() {
   done < <(find "$mesh_dir" -type f ! -name '*.tsv' ! -name '*.md' -print0 | sort -z)
   echo "$count closed meshes under $mesh_dir" >&2
 }
+
+# wall_seconds OUT CMD...: runs CMD with its stdout into OUT (/dev/null to drop it) and its
+# stderr dropped, fails when CMD fails, and prints its wall-clock seconds.
+wall_seconds() {
+  /usr/bin/python3 -c 'import subprocess, sys, time
+t = time.monotonic()
+with open(sys.argv[1], "w") as out:
+    subprocess.run(sys.argv[2:], stdout=out, stderr=subprocess.DEVNULL, check=True)
+print(round(time.monotonic() - t, 3))' "$@"
+}

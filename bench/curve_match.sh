@@ -23,22 +23,14 @@ else
 fi
 exe=build/apps/sphereset
 mkdir -p "$(dirname "$out")"
-# Runs a command, its stdout into the file given first; prints its wall seconds.
-seconds() {
-  /usr/bin/python3 -c 'import subprocess, sys, time
-t = time.monotonic()
-with open(sys.argv[1], "w") as out:
-    subprocess.run(sys.argv[2:], stdout=out, stderr=subprocess.DEVNULL, check=True)
-print(round(time.monotonic() - t, 3))' "$@"
-}
 echo "mesh,seed,n,er_curve,er_fit,curve_s,fit_s" >"$out"
 for seed in ${SEEDS:-1}; do
   for mesh in "${meshes[@]}"; do
     echo "curve_match: $mesh, seed $seed" >&2
-    tc=$(seconds /dev/null "$exe" curve "$mesh" --max-spheres 64 --seed "$seed" \
+    tc=$(wall_seconds /dev/null "$exe" curve "$mesh" --max-spheres 64 --seed "$seed" \
       -o "$tmp/curve.csv" -q)
     for n in $counts; do
-      tf=$(seconds "$tmp/fit.json" "$exe" fit "$mesh" -n "$n" --seed "$seed" -o "$tmp/f.json" \
+      tf=$(wall_seconds "$tmp/fit.json" "$exe" fit "$mesh" -n "$n" --seed "$seed" -o "$tmp/f.json" \
         -q --json)
       f=$(/usr/bin/python3 -c "import json; print(json.load(open('$tmp/fit.json'))['er_sum'])")
       c=$(awk -F, -v n="$n" 'NR > 1 && $1 == n { print $2 }' "$tmp/curve.csv")

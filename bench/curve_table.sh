@@ -18,18 +18,12 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 exe=build/apps/sphereset
 er() { /usr/bin/python3 -c "import json,sys; print(json.load(sys.stdin)['er_sum'])"; }
-seconds() {
-  /usr/bin/python3 -c 'import subprocess, sys, time
-t = time.monotonic()
-subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
-print(round(time.monotonic() - t, 3))' "$@"
-}
 echo "mesh,fit64_s,curve_s,ratio,fitted_s,fitted_8_up_s,stepped_s,rest_s,er12_curve,er12_fit,er24_curve,er24_fit,er48_curve,er48_fit,er64_curve,er64_fit" >"$out"
 for m in organic/spot.obj cad/fandisk.obj organic/armadillo_libigl.obj cad/rocker-arm.obj; do
   echo "curve_table: $m" >&2
   mesh=$shared/meshes/$m
-  tf=$(seconds "$exe" fit "$mesh" -n 64 -o "$tmp/f64.sph" -q)
-  tc=$(seconds "$exe" curve "$mesh" --max-spheres 64 -o "$tmp/curve.csv" -q)
+  tf=$(wall_seconds /dev/null "$exe" fit "$mesh" -n 64 -o "$tmp/f64.sph" -q)
+  tc=$(wall_seconds /dev/null "$exe" curve "$mesh" --max-spheres 64 -o "$tmp/curve.csv" -q)
   row="$(basename "$m"),$tf,$tc,$(/usr/bin/python3 -c "print(round($tc / $tf, 3))")"
   row="$row,$(/usr/bin/python3 - "$tmp/curve.csv" "$tc" <<'EOF'
 import csv, sys
