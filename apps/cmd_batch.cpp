@@ -125,8 +125,6 @@ int runBatch(const BatchArgs& c) {
   for (const auto& [name, text] : c.tolerance.given())
     if (Status st = setToleranceOption(&options.tolerance, name, text); !st)
       return fail(st.error());
-  if (Status st = checkToleranceRequest(options.fit, options.tolerance); !st)
-    return fail(st.error());
   auto repair = repairOptions(a.mesh);
   if (!repair) return fail(repair.error());
   options.repair = std::move(repair).value();

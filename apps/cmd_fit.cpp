@@ -150,16 +150,13 @@ int runFit(const FitCommandArgs& c) {
   // Before any work: the output is not the input, and its folder accepts it.
   if (Status st = checkOutputPath(a.out_path, {a.mesh.path}); !st) return fail(st.error());
   ToleranceOptions tolerance;
-  bool cap_given = false;
-  for (const auto& [name, text] : c.tolerance.given()) {
+  for (const auto& [name, text] : c.tolerance.given())
     if (Status st = setToleranceOption(&tolerance, name, text); !st) return fail(st.error());
-    cap_given = cap_given || name == "max_spheres";
-  }
-  if (!c.curve.empty() || c.best_effort || cap_given)
-    if (!tolerance.active())
-      return fail(Error{ErrorCode::kInvalidArgument,
-                        "--curve, --best-effort and --max-spheres go with a tolerance "
-                        "(--max-protrusion, --max-er)"});
+  if ((!c.curve.empty() || c.best_effort) && !tolerance.active())
+    return fail(
+        Error{ErrorCode::kInvalidArgument,
+              "--curve and --best-effort go with a tolerance (--max-protrusion, --max-er)"});
+  if (Status st = checkToleranceRequest(FitRequest{}, tolerance); !st) return fail(st.error());
   if (!c.curve.empty())
     if (Status st = checkOutputPath(c.curve, {a.mesh.path, a.out_path}); !st)
       return fail(st.error());

@@ -91,12 +91,14 @@ struct BatchItem {
 //                   JSON null keeps the batch's value)
 //       max_protrusion, max_er, max_spheres
 //                   a tolerance (toleranceOptionTable, `sphereset fit --max-protrusion ...`):
-//                   the item's count is the fewest that meet it; a line may not give n with one
+//                   the item's count is the fewest that meet it; a line may not give n with one,
+//                   nor a cap without one (checkToleranceRequest, the batch's values included)
 //     In the manifest, items are run in line order.
 // Errors: kUnreadable (input missing, not a folder, .csv or .jsonl, or unreadable),
 // kInvalidData (a bad manifest line: unknown column, missing mesh, a value out of range or not
 // a number, bad JSON, two items writing the same output; the message names the file and the
-// line), kInvalidArgument (options.format unknown, options.fit out of range). An empty folder
+// line; a line against checkToleranceRequest), kInvalidArgument (options.format unknown,
+// options.fit out of range; for a folder, options against checkToleranceRequest). An empty folder
 // or manifest gives no items (not an error).
 Expected<std::vector<BatchItem>> listBatchItems(const std::string& input,
                                                 const BatchOptions& options);

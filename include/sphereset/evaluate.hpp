@@ -180,6 +180,9 @@ struct ToleranceOptions {
   double max_protrusion_fraction = 0.0;
   double max_er = 0.0;
   int max_spheres = 256;
+  // Whether max_spheres was given (setToleranceOption sets it): a cap given without a limit is
+  // refused (checkToleranceRequest) rather than ignored.
+  bool max_spheres_given = false;
   const Mesh* original = nullptr;
   const Mesh* walls = nullptr;
   // After each count tried, from the calling thread; may throw to end the search (the exception
@@ -206,10 +209,12 @@ struct ToleranceFitResult {
 std::span<const OptionSpec> toleranceOptionTable();
 Status setToleranceOption(ToleranceOptions* options, const std::string& name,
                           const std::string& text);
-// The one rule of a count and a tolerance: a request whose n was given (FitRequest::count_given)
-// and an active tolerance exclude each other (kInvalidArgument: "n and a tolerance
-// (max_protrusion, max_er) exclude each other: the tolerance chooses the count"). Every door
-// that takes both (fit, batch, Python) asks this before its work; fitToTolerance asks it too.
+// The rules of a count and a tolerance (kInvalidArgument): a request whose n was given
+// (FitRequest::count_given) and an active tolerance exclude each other ("n and a tolerance
+// (max_protrusion, max_er) exclude each other: the tolerance chooses the count"), and a cap given
+// (max_spheres_given) needs a limit ("max_spheres goes with a tolerance (max_protrusion, max_er)").
+// Every door that takes both (fit, batch and its manifest lines, Python, the view) asks this
+// before its work; fitToTolerance asks it too.
 Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& tolerance);
 // The options of a tolerance search (kInvalidArgument): no limit set, a limit set that its
 // option's row refuses (negative, NaN; the fraction as its percentage), max_spheres out of range.

@@ -111,6 +111,14 @@ def test_tolerance_crosses_to_the_workers(tmp_path):
         batch.list_items(str(src / "list.csv"), batch.batch_options(max_er=float("nan")))
     with pytest.raises(ss.InvalidArgumentError, match="max_er '0': expected a number above 0"):
         batch.list_items(str(src / "list.csv"), batch.batch_options(max_er=0))
+    # A cap with no limit would cap nothing: refused for a folder (the batch's options) and for
+    # each manifest line that gives no limit of its own; a line's own limit takes the cap.
+    with pytest.raises(ss.InvalidArgumentError, match="max_spheres goes with a tolerance"):
+        batch.list_items(str(src), batch.batch_options(max_spheres=8))
+    with pytest.raises(ss.InvalidDataError, match=r"list.csv:3: max_spheres goes with a tolerance"):
+        batch.list_items(str(src / "list.csv"), batch.batch_options(max_spheres=8))
+    items = batch.list_items(str(src / "list.csv"), batch.batch_options(max_er=3.0))
+    assert items[1]["tolerance"]["max_spheres"] is None  # not given: the library's cap
 
 
 def test_command_line_local_workers(tmp_path):

@@ -341,7 +341,11 @@ Expected<std::vector<BatchItem>> listBatchItems(const std::string& input,
   const fs::file_status s = fs::status(input, ec);
   if (ec || !fs::exists(s))
     return Error{ErrorCode::kUnreadable, input + ": no such file or folder"};
-  if (fs::is_directory(s)) return listFolder(input, options);
+  if (fs::is_directory(s)) {
+    // Every item takes the batch's request and tolerance (a manifest's lines are checked each).
+    if (Status st = checkToleranceRequest(options.fit, options.tolerance); !st) return st.error();
+    return listFolder(input, options);
+  }
   const std::string ext = detail::extensionOf(input);
   if (ext == ".csv" || ext == ".jsonl") return listManifest(input, ext, options);
   return Error{ErrorCode::kUnreadable,

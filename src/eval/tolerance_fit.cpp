@@ -85,7 +85,10 @@ Status setToleranceOption(ToleranceOptions* o, const std::string& name, const st
     o->max_protrusion_fraction = parsed->value.fraction();
   }
   if (n == "max_er") o->max_er = parsed->value.real;
-  if (n == "max_spheres") o->max_spheres = static_cast<int>(parsed->value.integer);
+  if (n == "max_spheres") {
+    o->max_spheres = static_cast<int>(parsed->value.integer);
+    o->max_spheres_given = true;
+  }
   return {};
 }
 
@@ -98,6 +101,10 @@ Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& 
     return Error{ErrorCode::kInvalidArgument,
                  "n and a tolerance (max_protrusion, max_er) exclude each other: the tolerance "
                  "chooses the count"};
+  if (tolerance.max_spheres_given && !tolerance.active())
+    return Error{ErrorCode::kInvalidArgument,
+                 "max_spheres goes with a tolerance (max_protrusion, max_er): alone it caps "
+                 "nothing"};
   return {};
 }
 

@@ -310,15 +310,11 @@ ViewResponse postFit(ViewScene* scene, const nlohmann::json& body) {
       "body");
   ViewFitRequest r;
   if (Status st = setBodyTolerance(body, &r.tolerance); !st) return refuse(st.error());
-  // By the body's keys, as the command line's flags: a count with a tolerance (the library's
-  // words), a cap without one.
-  if (r.tolerance.active() && body.contains("spheres")) {
-    FitRequest given;
-    given.count_given = true;
-    if (Status st = checkToleranceRequest(given, r.tolerance); !st) return refuse(st.error());
-  }
-  if (body.contains("max_spheres") && !r.tolerance.active())
-    throw BodyError{"body: 'max_spheres' goes with a tolerance (max_protrusion, max_er)"};
+  // By the body's keys, as the command line's flags: a count with a tolerance, or a cap without
+  // one, is refused in the library's words.
+  FitRequest given;
+  given.count_given = body.contains("spheres");
+  if (Status st = checkToleranceRequest(given, r.tolerance); !st) return refuse(st.error());
   if (body.contains("budget") || body.contains("robot")) {
     // A robot's links each have their own cap: no max_spheres.
     onlyFields(body, {"budget", "robot", "quality", "max_protrusion", "max_er"}, "body");

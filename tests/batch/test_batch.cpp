@@ -291,6 +291,10 @@ TEST_F(BatchTest, ToleranceColumnsChooseTheCount) {
   put("both.csv", "mesh,n,max_er\na.off,4,1\n");
   test::expectError(listBatchItems(path("both.csv"), quickOptions()), ErrorCode::kInvalidData,
                     "both.csv", ":2: n and a tolerance");
+  // A line's cap with no limit, from the line or the batch, would cap nothing: refused.
+  put("cap.csv", "mesh,n,max_spheres\na.off,4,8\n");
+  test::expectError(listBatchItems(path("cap.csv"), quickOptions()), ErrorCode::kInvalidData,
+                    "cap.csv", ":2: max_spheres goes with a tolerance");
   BatchItem never = (*items)[0];
   never.output = "never.json";
   never.tolerance = {};

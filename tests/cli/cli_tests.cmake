@@ -266,6 +266,9 @@ cli_test(batch_empty 0 ARGS batch ${work}/batch_empty -o ${work}/batch_empty_out
          STDERR "batch_empty: no meshes")
 cli_test(batch_bad_format 2 ARGS batch ${work}/batch_ok -o ${work}/never42 --format obj
          FORBID ${work}/never42)
+# A cap without a limit would cap nothing: refused by the library's rule before any item.
+cli_test(batch_cap_without_tolerance 2 ARGS batch ${work}/batch_ok -o ${work}/never43
+         --max-spheres 8 -q STDERR "max_spheres goes with a tolerance" FORBID ${work}/never43)
 
 # Animation: a 1 x 1 x 2 box, rest and two deformed frames with the same vertices (the top
 # sheared, then pulled out), a skinned SMD box of two bones whose top bends in a 3-frame clip
@@ -383,8 +386,8 @@ cli_test(curve_counts_empty 2 ARGS curve ${link} --counts 2,,4 -o ${work}/never_
 cli_test(curve_too_many 2 ARGS curve ${link} --max-spheres 5000 -o ${work}/never_curve6.csv -q
          STDERR "max_spheres 5000: expected an integer from 1 to 1024" FORBID ${work}/never_curve6.csv)
 cli_test(fit_curve_without_tolerance 2 ARGS fit ${link} -n 4 --curve ${work}/never_curve.csv
-         -o ${work}/never_tol4.json STDERR "--curve, --best-effort and --max-spheres go with a tolerance"
+         -o ${work}/never_tol4.json STDERR "--curve and --best-effort go with a tolerance"
          FORBID ${work}/never_tol4.json)
 cli_test(fit_cap_without_tolerance 2 ARGS fit ${link} -n 4 --max-spheres 8
-         -o ${work}/never_tol7.json STDERR "--max-spheres go with a tolerance"
+         -o ${work}/never_tol7.json STDERR "max_spheres goes with a tolerance .max_protrusion, max_er."
          FORBID ${work}/never_tol7.json)

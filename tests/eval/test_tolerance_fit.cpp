@@ -203,5 +203,23 @@ TEST(ToleranceFit, BadRequestsAreRefused) {
   EXPECT_FALSE(setToleranceOption(&o, "max_spheres", "0").ok());
 }
 
+// A cap given is marked, and one without a limit is refused (it would cap nothing); the
+// library's default cap, not given, is not; with a limit the cap is taken.
+TEST(ToleranceFit, ACapGoesWithALimit) {
+  ToleranceOptions t;
+  EXPECT_FALSE(t.max_spheres_given);
+  EXPECT_TRUE(checkToleranceRequest(fastRequest(), t).ok());
+  ASSERT_TRUE(setToleranceOption(&t, "max_spheres", "8").ok());
+  EXPECT_TRUE(t.max_spheres_given);
+  const Status alone = checkToleranceRequest(fastRequest(), t);
+  ASSERT_FALSE(alone.ok());
+  EXPECT_EQ(alone.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_EQ(alone.error().message,
+            "max_spheres goes with a tolerance (max_protrusion, max_er): alone it caps nothing");
+  ASSERT_TRUE(setToleranceOption(&t, "max_er", "2").ok());
+  EXPECT_TRUE(checkToleranceRequest(fastRequest(), t).ok());
+  EXPECT_EQ(t.max_spheres, 8);
+}
+
 }  // namespace
 }  // namespace sphereset
