@@ -150,7 +150,20 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
           if (r.sphere >= 0) req[t].add(r, v, o);
         });
   });
-  if (o.held) o.held->assign(sp.size(), {});
+  if (o.held) {
+    // Each list sized once: a bound after a large change holds millions of pieces, and lists
+    // grown by doubling would touch (and fault in) several times their final memory.
+    std::vector<size_t> sizes(sp.size(), 0);
+    for (const TriangleRequests& r : req) {
+      for (const auto& piece : r.pieces) sizes[piece.first] += 3;
+      for (const auto& c : r.centroids) ++sizes[c.first];
+    }
+    o.held->resize(sp.size());  // cleared, keeping the capacity of a list given again
+    for (size_t i = 0; i < sp.size(); ++i) {
+      (*o.held)[i].clear();
+      (*o.held)[i].reserve(sizes[i]);
+    }
+  }
   std::vector<double> radius(sp.size());
   for (size_t i = 0; i < sp.size(); ++i) radius[i] = sp[i].radius;
   for (int64_t t = 0; t < nt; ++t) {
