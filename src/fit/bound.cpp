@@ -38,9 +38,10 @@ struct TriangleRequests {
 
   void add(const Request& r, const std::array<Vec3, 3>& piece, const SurfaceBoundOptions& o) {
     ++count;
-    if (o.held && o.held_centroids)
+    const bool keep = o.held && (!o.held_for || (*o.held_for)[r.sphere]);
+    if (keep && o.held_centroids)
       centroids.emplace_back(r.sphere, (piece[0] + piece[1] + piece[2]) / 3.0);
-    else if (o.held)
+    else if (keep)
       pieces.emplace_back(r.sphere, piece);
     for (Request& g : grow)
       if (g.sphere == r.sphere) {

@@ -28,8 +28,15 @@ BoundStats boundWithRefits(const SolidIndex& index, std::vector<Sphere>* sp,
                            const FitOptions& o, FitResult* res, const Mesh* surface,
                            const std::vector<bool>* refittable) {
   const int n = static_cast<int>(sp->size());
+  // The pieces a sphere grew for are kept only for the spheres that are refitted: a local step's
+  // bound held millions of pieces for none (a removal) or all but two (a split).
   std::vector<std::vector<Vec3>> held;
-  BoundStats b = boundSurface(index, sp, min_edge, &held, surface);
+  SurfaceBoundOptions bo;
+  bo.min_edge = min_edge;
+  bo.held = refit ? &held : nullptr;
+  bo.held_for = refittable;
+  bo.surface = surface;
+  BoundStats b = boundSurface(index, sp, bo);
   res->bounding_pieces += b.pieces;
   res->bounding_queries += b.queries;
   for (int pass = 0; refit && pass < kRefitPasses && b.enlarged > 0; ++pass) {
@@ -40,7 +47,7 @@ BoundStats boundWithRefits(const SolidIndex& index, std::vector<Sphere>* sp,
           updateSphere(index, (*mem)[i], (*sp)[i].center, o.optimizer, o.optimizer_evaluations)
               .sphere;
     });
-    b = boundSurface(index, sp, min_edge, &held, surface);
+    b = boundSurface(index, sp, bo);
     res->bounding_pieces += b.pieces;
     res->bounding_queries += b.queries;
   }

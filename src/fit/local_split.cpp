@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 #include <utility>
 
 #include "cover/sphere_grid.hpp"
@@ -53,14 +54,23 @@ bool boxesMeet(const Aabb& a, const Aabb& b) {
   return (a.min.array() <= b.max.array()).all() && (a.max.array() >= b.min.array()).all();
 }
 
-// The triangles of `mesh` whose bounding box meets `box`, with all of its vertices.
+// The triangles of `mesh` whose bounding box meets `box`, in their order, with only the vertices
+// they use (a step near one sphere of a large mesh copied all of its vertices).
 Mesh trianglesMeeting(const Mesh& mesh, const Aabb& box) {
   Mesh out;
-  out.vertices = mesh.vertices;
+  std::unordered_map<int32_t, int32_t> index_of;  // the mesh's vertex -> out's
   for (const Triangle& t : mesh.triangles) {
     Aabb b;
     for (int k = 0; k < 3; ++k) b.extend(mesh.vertices[t[k]]);
-    if (boxesMeet(b, box)) out.triangles.push_back(t);
+    if (!boxesMeet(b, box)) continue;
+    Triangle kept;
+    for (int k = 0; k < 3; ++k) {
+      const auto [it, fresh] =
+          index_of.try_emplace(t[k], static_cast<int32_t>(out.vertices.size()));
+      if (fresh) out.vertices.push_back(mesh.vertices[t[k]]);
+      kept[k] = it->second;
+    }
+    out.triangles.push_back(kept);
   }
   return out;
 }

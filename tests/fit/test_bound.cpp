@@ -39,6 +39,34 @@ TEST(Bound, TheCertificateAcceptsWhatTheBoundProvesAtItsDeepestSplit) {
   EXPECT_EQ(e.uncovered_triangles, 0);
 }
 
+// The pieces a sphere grew for are kept only for the spheres asked (held_for), the same list as
+// when every sphere's is kept; the others' lists are empty, and the radii are the same.
+TEST(Bound, HeldPiecesAreKeptOnlyForTheSpheresAsked) {
+  const SolidIndex idx(test::makeBox(Vec3::Zero(), Vec3(100.0, 1.0, 1.0)));
+  const double m = 100.0 / 3.0, a = 0.5 * m, b = 0.5 * (100.0 - m);
+  const std::vector<Sphere> before = {{Vec3(a, 0.5, 0.5), std::sqrt(a * a + 0.5)},
+                                      {Vec3(m + b, 0.5, 0.5), std::sqrt(b * b + 0.5)}};
+  std::vector<Sphere> all_spheres = before;
+  std::vector<std::vector<Vec3>> all;
+  detail::SurfaceBoundOptions o;
+  o.held = &all;
+  detail::boundSurface(idx, &all_spheres, o);
+  ASSERT_EQ(all.size(), 2u);
+  const int grown = all[0].empty() ? 1 : 0;
+  ASSERT_FALSE(all[grown].empty());
+  std::vector<Sphere> some_spheres = before;
+  std::vector<std::vector<Vec3>> some(5, std::vector<Vec3>(3, Vec3::Ones()));  // refilled
+  const std::vector<bool> asked = {grown == 0, grown == 1};
+  o.held = &some;
+  o.held_for = &asked;
+  detail::boundSurface(idx, &some_spheres, o);
+  ASSERT_EQ(some.size(), 2u);
+  EXPECT_EQ(some[grown], all[grown]);
+  EXPECT_TRUE(some[1 - grown].empty());
+  for (size_t i = 0; i < before.size(); ++i)
+    EXPECT_EQ(some_spheres[i].radius, all_spheres[i].radius);
+}
+
 // boundSpheres (fit.hpp) grows a given set until the certificate confirms it: centres stay,
 // radii only grow, the original triangles given are covered too; bad sets are refused.
 TEST(Bound, BoundSpheresCoversFromAnySetWithoutMovingCentres) {
