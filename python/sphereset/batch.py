@@ -53,7 +53,8 @@ def batch_options(n: Optional[int] = None, *, quality: str = "default", seed: in
     tolerance (``max_protrusion``, a length or
     "P%" of the diagonal; ``max_er``; ``max_spheres``, the cap) makes each item's count the
     fewest that meet it, as ``sphereset fit --max-protrusion`` does (a manifest line may give
-    its own; n and a tolerance on one line are refused). An item no count up to its cap meets is
+    its own; n and a tolerance on one line are refused, and so are a cap or ``best_effort`` that
+    no limit goes with: checkToleranceRequest). An item no count up to its cap meets is
     an error item, or with ``best_effort`` its best count written (``tolerance_met`` false), as
     ``sphereset batch --best-effort``."""
     return {

@@ -111,12 +111,15 @@ def test_tolerance_crosses_to_the_workers(tmp_path):
         batch.list_items(str(src / "list.csv"), batch.batch_options(max_er=float("nan")))
     with pytest.raises(ss.InvalidArgumentError, match="max_er '0': expected a number above 0"):
         batch.list_items(str(src / "list.csv"), batch.batch_options(max_er=0))
-    # A cap with no limit would cap nothing: refused for a folder (the batch's options) and for
-    # each manifest line that gives no limit of its own; a line's own limit takes the cap.
+    # A batch's cap binds the lines with a limit (a.stl's) and reaches the workers; with a limit
+    # on no line, or for a folder with no limit, it would cap nothing: refused.
+    capped = batch.list_items(str(src / "list.csv"), batch.batch_options(max_spheres=8))
+    assert capped[0]["tolerance"]["max_spheres"] == "8"
     with pytest.raises(ss.InvalidArgumentError, match="max_spheres goes with a tolerance"):
         batch.list_items(str(src), batch.batch_options(max_spheres=8))
-    with pytest.raises(ss.InvalidDataError, match=r"list.csv:3: max_spheres goes with a tolerance"):
-        batch.list_items(str(src / "list.csv"), batch.batch_options(max_spheres=8))
+    (src / "fixed.csv").write_text("mesh,n\na.stl,4\n")
+    with pytest.raises(ss.InvalidArgumentError, match=r"fixed.csv: max_spheres goes .*no line"):
+        batch.list_items(str(src / "fixed.csv"), batch.batch_options(max_spheres=8))
     items = batch.list_items(str(src / "list.csv"), batch.batch_options(max_er=3.0))
     assert items[1]["tolerance"]["max_spheres"] is None  # not given: the library's cap
 

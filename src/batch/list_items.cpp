@@ -183,6 +183,7 @@ Expected<std::vector<ManifestItem>> readCsv(const std::string& path, const std::
     ManifestItem mi;
     mi.item.fit = defaults.fit;
     mi.item.tolerance = defaults.tolerance;
+    mi.item.tolerance.max_spheres_given = false;  // the batch's cap binds the lines with a limit
     mi.item.origin = path + ":" + std::to_string(ln + 1);
     for (size_t c = 0; c < header.size(); ++c) {
       if (fields[c].empty() && header[c] != "mesh") continue;  // the batch's value
@@ -209,6 +210,7 @@ Expected<std::vector<ManifestItem>> readJsonl(const std::string& path, const std
     ManifestItem mi;
     mi.item.fit = defaults.fit;
     mi.item.tolerance = defaults.tolerance;
+    mi.item.tolerance.max_spheres_given = false;  // the batch's cap binds the lines with a limit
     mi.item.origin = path + ":" + std::to_string(ln + 1);
     for (const auto& [key, value] : j.items()) {
       if (!knownColumn(key))
@@ -299,6 +301,17 @@ Expected<std::vector<BatchItem>> listFolder(const std::string& input, const Batc
   return out;
 }
 
+// What the batch's cap and best effort need: a limit (checkToleranceRequest's rule for the cap).
+Status checkTolerancePurpose(const BatchOptions& options) {
+  FitRequest none;  // n is checked apart (the batch's, then each line's)
+  if (Status st = checkToleranceRequest(none, options.tolerance); !st) return st;
+  if (options.best_effort && !options.tolerance.active())
+    return Error{ErrorCode::kInvalidArgument,
+                 "best_effort goes with a tolerance (max_protrusion, max_er): alone it writes "
+                 "nothing more"};
+  return {};
+}
+
 Expected<std::vector<BatchItem>> listManifest(const std::string& input, const std::string& ext,
                                               const BatchOptions& options) {
   auto text = detail::readFileText(input);
@@ -307,6 +320,13 @@ Expected<std::vector<BatchItem>> listManifest(const std::string& input, const st
   if (text->rfind("\xEF\xBB\xBF", 0) == 0) text->erase(0, 3);
   auto items = ext == ".csv" ? readCsv(input, *text, options) : readJsonl(input, *text, options);
   if (!items) return items.error();
+  // The batch's cap or best effort with a limit on no line would change nothing: refused.
+  const bool limited = std::any_of(items->begin(), items->end(), [](const ManifestItem& mi) {
+    return mi.item.tolerance.active();
+  });
+  if (!items->empty() && !limited)
+    if (Status st = checkTolerancePurpose(options); !st)
+      return Error{st.error().code, input + ": " + st.error().message + " (no line gives one)"};
   const fs::path dir = fs::path(input).parent_path();
   std::vector<std::string> rel;
   for (ManifestItem& mi : *items) {
@@ -341,9 +361,14 @@ Expected<std::vector<BatchItem>> listBatchItems(const std::string& input,
   const fs::file_status s = fs::status(input, ec);
   if (ec || !fs::exists(s))
     return Error{ErrorCode::kUnreadable, input + ": no such file or folder"};
+  // n with a limit, both the batch's, whatever the input (a manifest's lines are checked each).
+  ToleranceOptions limits_only = options.tolerance;
+  limits_only.max_spheres_given = false;
+  if (Status st = checkToleranceRequest(options.fit, limits_only); !st) return st.error();
   if (fs::is_directory(s)) {
-    // Every item takes the batch's request and tolerance (a manifest's lines are checked each).
-    if (Status st = checkToleranceRequest(options.fit, options.tolerance); !st) return st.error();
+    // Every item takes the batch's tolerance: its cap and best effort need its limit.
+    if (!options.tolerance.active())
+      if (Status st = checkTolerancePurpose(options); !st) return st.error();
     return listFolder(input, options);
   }
   const std::string ext = detail::extensionOf(input);

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -137,6 +138,7 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
   const int64_t nt = static_cast<int64_t>(mesh.triangles.size());
   const std::vector<double> sov_dr = radiusRates(index, sp, &st);
   const SphereGrid grid(sp);
+  assert(!o.held_for || o.held_for->size() == sp.size());
   std::vector<TriangleRequests> req(nt);
   tbb::parallel_for(int64_t{0}, nt, [&](int64_t t) {
     const auto& tri = mesh.triangles[t];

@@ -64,8 +64,8 @@ struct SurfaceBoundOptions {
   // their centroids, with held_centroids).
   std::vector<std::vector<Vec3>>* held = nullptr;
   bool held_centroids = false;
-  // With `held`: only the pieces of the spheres marked here are kept (null: every sphere's); a
-  // local bound that refits two spheres keeps no others' (their lists are left empty).
+  // With `held`: only the pieces of the spheres marked here are kept (null: every sphere's; else
+  // one flag per sphere); a local bound that refits two spheres keeps no others' (left empty).
   const std::vector<bool>* held_for = nullptr;
   // The triangles covered: those of `surface`, or of the index's mesh when it is null.
   const Mesh* surface = nullptr;

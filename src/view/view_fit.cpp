@@ -186,7 +186,8 @@ Status checkRequest(const ViewScene& scene, const ViewFitRequest& r) {
   if (r.budget != 0 || r.robot) {
     if (scene.kind != ViewKind::kRobot || !scene.robot)
       return bad(r.budget != 0 ? "fit: a budget is for robots" : "fit: the scene is no robot");
-    if (r.tolerance.max_er > 0.0 || r.tolerance.max_spheres_given)
+    if (r.tolerance.max_er > 0.0 || r.tolerance.max_spheres_given ||
+        r.tolerance.max_spheres != ToleranceOptions{}.max_spheres)
       return bad(
           "fit: a robot takes max_protrusion as every link's limit, not max_er or "
           "max_spheres (each link's cap is its own)");
@@ -218,6 +219,7 @@ Status checkRequest(const ViewScene& scene, const ViewFitRequest& r) {
     return checkToleranceRequest(fr, r.tolerance);
   }
   fr.num_spheres = r.spheres;
+  if (Status st = checkToleranceRequest(fr, r.tolerance); !st) return st;  // a cap with no limit
   if (Status st = checkFitRequest(fr); !st) return st;
   if (r.spheres < 1) return bad("fit: the sphere count must be at least 1");
   return {};

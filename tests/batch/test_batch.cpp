@@ -291,10 +291,33 @@ TEST_F(BatchTest, ToleranceColumnsChooseTheCount) {
   put("both.csv", "mesh,n,max_er\na.off,4,1\n");
   test::expectError(listBatchItems(path("both.csv"), quickOptions()), ErrorCode::kInvalidData,
                     "both.csv", ":2: n and a tolerance");
-  // A line's cap with no limit, from the line or the batch, would cap nothing: refused.
+  // A line's own cap with no limit (its own or the batch's) would cap nothing: refused.
   put("cap.csv", "mesh,n,max_spheres\na.off,4,8\n");
   test::expectError(listBatchItems(path("cap.csv"), quickOptions()), ErrorCode::kInvalidData,
                     "cap.csv", ":2: max_spheres goes with a tolerance");
+  // The batch's cap binds the lines with a limit; with a limit on no line, or for a folder with
+  // no limit, it and best effort are refused, as the batch's n with its limit is.
+  BatchOptions capped = quickOptions();
+  ASSERT_TRUE(setToleranceOption(&capped.tolerance, "max_spheres", "8").ok());
+  put("mixed.csv", "mesh,n,max_er\na.off,4,\nb.off,,1\n");
+  auto mixed = listBatchItems(path("mixed.csv"), capped);
+  ASSERT_TRUE(mixed.ok()) << mixed.error().message;
+  EXPECT_FALSE((*mixed)[0].tolerance.active());
+  EXPECT_EQ((*mixed)[1].tolerance.max_spheres, 8);
+  put("fixed.csv", "mesh,n\na.off,4\n");
+  test::expectError(listBatchItems(path("fixed.csv"), capped), ErrorCode::kInvalidArgument,
+                    "fixed.csv: max_spheres goes with a tolerance", "(no line gives one)");
+  test::expectError(listBatchItems(path("."), capped), ErrorCode::kInvalidArgument, "max_spheres",
+                    "goes with a tolerance");
+  BatchOptions effort = quickOptions();
+  effort.best_effort = true;
+  test::expectError(listBatchItems(path("."), effort), ErrorCode::kInvalidArgument, "best_effort",
+                    "goes with a tolerance");
+  BatchOptions both = quickOptions();
+  ASSERT_TRUE(setFitRequestOption(&both.fit, "n", "4").ok());
+  ASSERT_TRUE(setToleranceOption(&both.tolerance, "max_er", "1").ok());
+  test::expectError(listBatchItems(path("fixed.csv"), both), ErrorCode::kInvalidArgument,
+                    "n and a tolerance", "exclude each other");
   BatchItem never = (*items)[0];
   never.output = "never.json";
   never.tolerance = {};
