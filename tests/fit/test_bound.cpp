@@ -17,13 +17,19 @@ using test::coverageOnly;
 
 // A long box and two spheres that meet exactly at the cross-section x = m (m = 100/3, on no
 // dyadic grid line): pieces of the long faces that straddle it are held by neither sphere at
-// any depth, so the bound splits them to its deepest level, where one sphere grows by a
-// sliver to hold them.
-TEST(Bound, TheCertificateAcceptsWhatTheBoundProvesAtItsDeepestSplit) {
-  const SolidIndex idx(test::makeBox(Vec3::Zero(), Vec3(100.0, 1.0, 1.0)));
+// any depth.
+Mesh longBox() { return test::makeBox(Vec3::Zero(), Vec3(100.0, 1.0, 1.0)); }
+std::vector<Sphere> spheresMeetingOffGrid() {
   const double m = 100.0 / 3.0, a = 0.5 * m, b = 0.5 * (100.0 - m);
-  const std::vector<Sphere> before = {{Vec3(a, 0.5, 0.5), std::sqrt(a * a + 0.5)},
-                                      {Vec3(m + b, 0.5, 0.5), std::sqrt(b * b + 0.5)}};
+  return {{Vec3(a, 0.5, 0.5), std::sqrt(a * a + 0.5)},
+          {Vec3(m + b, 0.5, 0.5), std::sqrt(b * b + 0.5)}};
+}
+
+// The long box and its two spheres (longBox): the bound splits the straddling pieces to its
+// deepest level, where one sphere grows by a sliver to hold them.
+TEST(Bound, TheCertificateAcceptsWhatTheBoundProvesAtItsDeepestSplit) {
+  const SolidIndex idx(longBox());
+  const std::vector<Sphere> before = spheresMeetingOffGrid();
   std::vector<Sphere> spheres = before;
   EXPECT_FALSE(coverageOnly(idx, spheres).surface_covered);
   const detail::BoundStats st = detail::boundSurface(idx, &spheres, /*min_edge=*/0.0);
@@ -42,10 +48,8 @@ TEST(Bound, TheCertificateAcceptsWhatTheBoundProvesAtItsDeepestSplit) {
 // The pieces a sphere grew for are kept only for the spheres asked (held_for), the same list as
 // when every sphere's is kept; the others' lists are empty, and the radii are the same.
 TEST(Bound, HeldPiecesAreKeptOnlyForTheSpheresAsked) {
-  const SolidIndex idx(test::makeBox(Vec3::Zero(), Vec3(100.0, 1.0, 1.0)));
-  const double m = 100.0 / 3.0, a = 0.5 * m, b = 0.5 * (100.0 - m);
-  const std::vector<Sphere> before = {{Vec3(a, 0.5, 0.5), std::sqrt(a * a + 0.5)},
-                                      {Vec3(m + b, 0.5, 0.5), std::sqrt(b * b + 0.5)}};
+  const SolidIndex idx(longBox());
+  const std::vector<Sphere> before = spheresMeetingOffGrid();
   std::vector<Sphere> all_spheres = before;
   std::vector<std::vector<Vec3>> all;
   detail::SurfaceBoundOptions o;
