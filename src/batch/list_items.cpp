@@ -367,8 +367,7 @@ Expected<std::vector<BatchItem>> listBatchItems(const std::string& input,
   if (Status st = checkToleranceRequest(options.fit, limits_only); !st) return st.error();
   if (fs::is_directory(s)) {
     // Every item takes the batch's tolerance: its cap and best effort need its limit.
-    if (!options.tolerance.active())
-      if (Status st = checkTolerancePurpose(options); !st) return st.error();
+    if (Status st = checkTolerancePurpose(options); !st) return st.error();
     return listFolder(input, options);
   }
   const std::string ext = detail::extensionOf(input);
