@@ -152,11 +152,12 @@ int runFit(const FitCommandArgs& c) {
   ToleranceOptions tolerance;
   for (const auto& [name, text] : c.tolerance.given())
     if (Status st = setToleranceOption(&tolerance, name, text); !st) return fail(st.error());
-  if ((!c.curve.empty() || c.best_effort) && !tolerance.active())
-    return fail(
-        Error{ErrorCode::kInvalidArgument,
-              "--curve and --best-effort go with a tolerance (--max-protrusion, --max-er)"});
+  if (!c.curve.empty() && !tolerance.active())
+    return fail(Error{ErrorCode::kInvalidArgument,
+                      "--curve goes with a tolerance (--max-protrusion, --max-er): it writes the "
+                      "counts a tolerance search tries"});
   if (Status st = checkToleranceRequest(FitRequest{}, tolerance); !st) return fail(st.error());
+  if (Status st = checkBestEffort(c.best_effort, tolerance); !st) return fail(st.error());
   if (!c.curve.empty())
     if (Status st = checkOutputPath(c.curve, {a.mesh.path, a.out_path}); !st)
       return fail(st.error());

@@ -4,7 +4,8 @@
 # `sphereset fit MESH -n N` for N in COUNTS (8 16 32 64), for each seed of SEEDS (1): E_r of the
 # curve's set and of the independent fit at each N, and the wall seconds of the curve and of that
 # fit, into bench/results/curve_match.csv (OUT); then the geometric means over the meshes
-# and seeds of E_r curve / independent per count and of the time ratio, printed and written to
+# and seeds of E_r curve / independent per count, of the time ratio, and of the independent
+# fits below 64 over the fit at 64 (what fitting those counts costs), printed and written to
 # curve_match_summary.txt beside it.
 #   bash bench/curve_match.sh            SEEDS="1 2" bash bench/curve_match.sh
 set -euo pipefail
@@ -51,4 +52,12 @@ top = max(int(r["n"]) for r in rows)
 ts = [float(r["curve_s"]) / float(r["fit_s"]) for r in rows if int(r["n"]) == top]
 print(f"time: curve 1 ... 64 / fit at {top}, geometric mean {gm(ts):.3f} "
       f"({min(ts):.3f} to {max(ts):.3f})")
+# What the counts below the top cost when each is fitted on its own: the independent fits'
+# seconds summed over the top's (with the top itself, a floor for a curve that fits them).
+fit_s = {}
+for r in rows:
+    fit_s.setdefault((r["mesh"], r["seed"]), {})[int(r["n"])] = float(r["fit_s"])
+below = [sum(t for n, t in f.items() if n < top) / f[top] for f in fit_s.values()]
+print(f"time: independent fits below {top} / fit at {top}, geometric mean {gm(below):.3f} "
+      f"({min(below):.3f} to {max(below):.3f})")
 PY

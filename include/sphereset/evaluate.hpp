@@ -216,6 +216,10 @@ Status setToleranceOption(ToleranceOptions* options, const std::string& name,
 // Every door that takes both (fit, batch and its manifest lines, Python, the view) asks this
 // before its work; fitToTolerance asks it too.
 Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& tolerance);
+// A door's best effort (when no count up to the cap meets the limit, the best set is written
+// anyway: fit --best-effort, BatchOptions::best_effort) needs a limit (kInvalidArgument,
+// "best_effort goes with a tolerance (max_protrusion, max_er): alone it writes nothing more").
+Status checkBestEffort(bool best_effort, const ToleranceOptions& tolerance);
 // The options of a tolerance search (kInvalidArgument): no limit set, a limit set that its
 // option's row refuses (negative, NaN; the fraction as its percentage), max_spheres out of range.
 // fitToTolerance asks it; a door asks it before loading or repairing anything.
@@ -227,8 +231,8 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
 
 // The curve of E_r and certified protrusion against the count, from one run (curve_fit.cpp): the
 // fit at each of `counts` (increasing, each from 1 to limits::kMaxCurveCount; none: every count
-// from 1 to max_spheres), as the fits of one progressive run (ProgressiveFit) that samples the
-// points of the largest count, each count's clustering started from that of the largest count
+// from 1 to max_spheres), as the fits of one progressive run (ProgressiveFit), each on the points
+// fitSpheres samples at its count, each count's clustering started from that of the largest count
 // already clustered at most half its size (from seeds when there is none), except the counts up to
 // 8 (ProgressiveOptions::seeded_up_to) and the largest count, clustered from seeds
 // (ProgressiveOptions::top_from_seeds: its set is fitSpheres's at that count, as `sphereset fit -n`
@@ -242,7 +246,7 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
 // fitting"). Each set is checked as `sphereset fit` checks its result (the steps' by the
 // certificate of the set before, kept up to date: the same figures). CurvePoint::meets is false (no
 // tolerance). The same request and counts give the same curve for any thread count. A count's set
-// differs from the tolerance search's at that count, whose runs sample the points of other counts.
+// differs from the tolerance search's at that count, whose runs start it from other counts.
 struct CurveOptions {
   std::vector<int> counts;
   // The counts 1 ... max_spheres when `counts` is empty (from 1 to limits::kMaxCurveCount,

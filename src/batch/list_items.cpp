@@ -305,11 +305,7 @@ Expected<std::vector<BatchItem>> listFolder(const std::string& input, const Batc
 Status checkTolerancePurpose(const BatchOptions& options) {
   FitRequest none;  // n is checked apart (the batch's, then each line's)
   if (Status st = checkToleranceRequest(none, options.tolerance); !st) return st;
-  if (options.best_effort && !options.tolerance.active())
-    return Error{ErrorCode::kInvalidArgument,
-                 "best_effort goes with a tolerance (max_protrusion, max_er): alone it writes "
-                 "nothing more"};
-  return {};
+  return checkBestEffort(options.best_effort, options.tolerance);
 }
 
 Expected<std::vector<BatchItem>> listManifest(const std::string& input, const std::string& ext,

@@ -108,6 +108,14 @@ Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& 
   return {};
 }
 
+Status checkBestEffort(bool best_effort, const ToleranceOptions& tolerance) {
+  if (best_effort && !tolerance.active())
+    return Error{ErrorCode::kInvalidArgument,
+                 "best_effort goes with a tolerance (max_protrusion, max_er): alone it writes "
+                 "nothing more"};
+  return {};
+}
+
 Status checkToleranceOptions(const ToleranceOptions& t) {
   // The cap and each limit that is set (0: none), checked by its row as a door's text would be
   // (checkTableValue); the fraction as the percentage a user types ("5%").
@@ -152,9 +160,9 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
     if (a.point.covered != b.point.covered) return b.point.covered;
     return limit > 0.0 ? b.point.protrusion < a.point.protrusion : b.point.er_sum < a.point.er_sum;
   };
-  // Progressive runs when the request allows them: a run samples the points of its largest
-  // count, so the first is for up to kFirstWindow spheres and, when the doubling passes it, the
-  // next for up to kWindowGrowth times the count (its first count starts from seeds).
+  // Progressive runs when the request allows them (each count on the points fitSpheres samples
+  // at it): the first for up to kFirstWindow spheres and, when the doubling passes it, the next
+  // for up to kWindowGrowth times the count (its first count starts from seeds).
   FitOptions any = fitOptionsFor(request);
   const bool allowed = ProgressiveFit::allows(any);
   std::optional<ProgressiveFit> progressive;
@@ -166,7 +174,10 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
       if (request.points > 0)
         top = static_cast<int>(std::max<int64_t>(n, std::min<int64_t>(top, request.points)));
       const FitOptions top_options = detail::countOptions(request, top, t.original, t.fit_progress);
-      auto p = ProgressiveFit::start(index, top_options, progressive ? &*progressive : nullptr);
+      ProgressiveOptions by_count;
+      by_count.count_points = requestCountPoints(request);
+      auto p = ProgressiveFit::start(index, top_options, progressive ? &*progressive : nullptr,
+                                     by_count);
       if (!p) return p.error();
       progressive.emplace(std::move(p).value());
     }

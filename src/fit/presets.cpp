@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -235,6 +236,14 @@ FitOptions fitOptionsFor(const FitRequest& request) {
   fo.init = request.init;
   fo.method = request.method;
   return fo;
+}
+
+std::function<int64_t(int count)> requestCountPoints(const FitRequest& request) {
+  return [request](int count) {
+    FitRequest r = request;
+    r.num_spheres = count;
+    return fitOptionsFor(r).target_points;
+  };
 }
 
 }  // namespace sphereset

@@ -386,8 +386,11 @@ cli_test(curve_counts_empty 2 ARGS curve ${link} --counts 2,,4 -o ${work}/never_
 cli_test(curve_too_many 2 ARGS curve ${link} --max-spheres 5000 -o ${work}/never_curve6.csv -q
          STDERR "max_spheres 5000: expected an integer from 1 to 1024" FORBID ${work}/never_curve6.csv)
 cli_test(fit_curve_without_tolerance 2 ARGS fit ${link} -n 4 --curve ${work}/never_curve.csv
-         -o ${work}/never_tol4.json STDERR "--curve and --best-effort go with a tolerance"
+         -o ${work}/never_tol4.json STDERR "--curve goes with a tolerance"
          FORBID ${work}/never_tol4.json)
+cli_test(fit_best_effort_without_tolerance 2 ARGS fit ${link} -n 4 --best-effort
+         -o ${work}/never_tol8.json STDERR "best_effort goes with a tolerance .max_protrusion, max_er."
+         FORBID ${work}/never_tol8.json)
 cli_test(fit_cap_without_tolerance 2 ARGS fit ${link} -n 4 --max-spheres 8
          -o ${work}/never_tol7.json STDERR "max_spheres goes with a tolerance .max_protrusion, max_er."
          FORBID ${work}/never_tol7.json)

@@ -91,7 +91,9 @@ TEST(ToleranceFit, CountsAreOneProgressiveRunWhenTheRequestAllowsIt) {
   // The same counts in the same order through a ProgressiveFit give the same set.
   FitRequest top = fastRequest();
   top.num_spheres = 64;
-  auto run = ProgressiveFit::start(index, fitOptionsFor(top));
+  ProgressiveOptions by_count;
+  by_count.count_points = requestCountPoints(top);
+  auto run = ProgressiveFit::start(index, fitOptionsFor(top), nullptr, by_count);
   ASSERT_TRUE(run.ok());
   Expected<FitResult> last = Error{ErrorCode::kInvalidArgument, "none"};
   for (const CurvePoint& c : r->curve) {
@@ -219,6 +221,20 @@ TEST(ToleranceFit, ACapGoesWithALimit) {
   ASSERT_TRUE(setToleranceOption(&t, "max_er", "2").ok());
   EXPECT_TRUE(checkToleranceRequest(fastRequest(), t).ok());
   EXPECT_EQ(t.max_spheres, 8);
+}
+
+// Best effort (the best set written when no count meets the limit) needs a limit too.
+TEST(ToleranceFit, BestEffortGoesWithALimit) {
+  ToleranceOptions t;
+  EXPECT_TRUE(checkBestEffort(false, t).ok());
+  const Status alone = checkBestEffort(true, t);
+  ASSERT_FALSE(alone.ok());
+  EXPECT_EQ(alone.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_EQ(alone.error().message,
+            "best_effort goes with a tolerance (max_protrusion, max_er): alone it writes nothing "
+            "more");
+  ASSERT_TRUE(setToleranceOption(&t, "max_protrusion", "5%").ok());
+  EXPECT_TRUE(checkBestEffort(true, t).ok());
 }
 
 }  // namespace
