@@ -231,8 +231,8 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
 
 // The curve of E_r and certified protrusion against the count, from one run (curve_fit.cpp): the
 // fit at each of `counts` (increasing, each from 1 to limits::kMaxCurveCount; none: every count
-// from 1 to max_spheres), as the fits of one progressive run (ProgressiveFit), each on the points
-// fitSpheres samples at its count, each count's clustering started from that of the largest count
+// from 1 to max_spheres), as the fits of one progressive run (ProgressiveFit) that samples the
+// points of the largest count, each count's clustering started from that of the largest count
 // already clustered at most half its size (from seeds when there is none), except the counts up to
 // 8 (ProgressiveOptions::seeded_up_to) and the largest count, clustered from seeds
 // (ProgressiveOptions::top_from_seeds: its set is fitSpheres's at that count, as `sphereset fit -n`
@@ -246,7 +246,7 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
 // fitting"). Each set is checked as `sphereset fit` checks its result (the steps' by the
 // certificate of the set before, kept up to date: the same figures). CurvePoint::meets is false (no
 // tolerance). The same request and counts give the same curve for any thread count. A count's set
-// differs from the tolerance search's at that count, whose runs start it from other counts.
+// differs from the tolerance search's at that count, whose runs sample the points of other counts.
 struct CurveOptions {
   std::vector<int> counts;
   // The counts 1 ... max_spheres when `counts` is empty (from 1 to limits::kMaxCurveCount,

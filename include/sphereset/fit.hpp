@@ -204,9 +204,6 @@ Status checkFitRequest(const FitRequest& request);
 // the options `sphereset fit` runs with for the same command line (no progress callback, no
 // original triangles).
 FitOptions fitOptionsFor(const FitRequest& request);
-// For ProgressiveOptions::count_points: the points of a fit at each count for `request`
-// (fitOptionsFor's target_points with num_spheres that count).
-std::function<int64_t(int count)> requestCountPoints(const FitRequest& request);
 
 // Names of the enumerations as the command line spells them ("fps"/"random",
 // "powell"/"gradient", "variational"/"kmeans"/"octree"), and back (kInvalidArgument naming the
@@ -278,20 +275,13 @@ struct ProgressiveOptions {
   // further from independent fits than one from 8 spheres (a curve's E_r at 32 over independent
   // fits, 12 shared meshes, seeds 1 and 2: 1.038 against 1.005). fitCurve takes 8.
   int seeded_up_to = 0;
-  // The points a fitted count clusters (FitOptions::target_points), when they are not the run's
-  // (start()'s options): fitCurve and fitToTolerance give each count those of a fit at that
-  // count as its request makes it (fitOptionsFor), so that a count clustered from seeds is that
-  // fit, and one below 50 spheres clusters 5 000 points, not the run's 100 per sphere. None: the
-  // run's points for every count. The local steps measure with the run's points.
-  std::function<int64_t(int count)> count_points = nullptr;
 };
 
 class ProgressiveFit {
  public:
   // Whether start() takes these options: the variational method, one restart, no decimation.
   static bool allows(const FitOptions& options);
-  // A run for counts up to options.num_spheres; samples the points of a fit at that count
-  // (and, with ProgressiveOptions::count_points, each fitted count's own when it needs others).
+  // A run for counts up to options.num_spheres; samples the points of a fit at that count.
   // Errors (kInvalidArgument for a start_ratio below 1): those of fitSpheres for these options,
   // and kInvalidArgument for options it cannot honour: a method other than the variational
   // one, restarts > 1 or decimation > 0 (each count is one clustering, warm-started).
@@ -317,15 +307,16 @@ class ProgressiveFit {
   // fitted before returns its fit again (split_first and seconds those of its first call) and is
   // the run's last fit again for step(); with
   // no clustering to start from, the clustering starts from seeds as fitSpheres does (the same
-  // spheres when the count's points are a fit's at that count: up to 50 spheres by default, or
-  // any count with ProgressiveOptions::count_points). The same calls in the same order give the
-  // same spheres for any thread count. FitResult::seconds is this
-  // call's. Errors: kInvalidArgument for a count out of range or clusters that cannot all be
-  // placed. options.progress is called as fitSpheres calls it (FitProgress::spheres = count), and
-  // may throw to cancel. With `split_first` (one value per sphere of the fit startCount(count)
-  // names), the first splits go to the clusters of the largest values instead, e.g. each sphere's
-  // certified protrusion (evaluate.hpp) to lower the set's; kInvalidArgument when its size does not
-  // match or the fit would not start from a smaller count.
+  // spheres when the run's points are that count's: up to 50 spheres by default). Every count
+  // clusters the points of a fit at options.num_spheres, sampled by start(). The same calls in the
+  // same order give the same spheres for any thread count. FitResult::seconds is this call's.
+  // Errors: kInvalidArgument for a count out of range or clusters that cannot all be placed.
+  // options.progress is called as fitSpheres calls it (FitProgress::spheres = count), and may
+  // throw to cancel.
+  // With `split_first` (one value per sphere of the fit startCount(count) names), the first
+  // splits go to the clusters of the largest values instead, e.g. each sphere's certified
+  // protrusion (evaluate.hpp) to lower the set's; kInvalidArgument when its size does not match
+  // or the fit would not start from a smaller count.
   Expected<FitResult> fit(int count, std::span<const double> split_first = {});
   // The fit at `count` made from this run's last step or last fit at count - 1 or count + 1 by one
   // local change (src/fit/local_split.cpp). Up, the sphere whose split in two lowers the outside

@@ -287,7 +287,6 @@ Expected<CurveResult> fitCurve(const SolidIndex& index, const FitRequest& reques
     ProgressiveOptions progressive;
     progressive.top_from_seeds = true;  // the last count is fitSpheres's own fit
     progressive.seeded_up_to = kSeededCounts;
-    progressive.count_points = requestCountPoints(request);
     auto started = ProgressiveFit::start(index, top_options, nullptr, progressive);
     if (!started) return started.error();
     run.emplace(std::move(started).value());

@@ -160,9 +160,9 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
     if (a.point.covered != b.point.covered) return b.point.covered;
     return limit > 0.0 ? b.point.protrusion < a.point.protrusion : b.point.er_sum < a.point.er_sum;
   };
-  // Progressive runs when the request allows them (each count on the points fitSpheres samples
-  // at it): the first for up to kFirstWindow spheres and, when the doubling passes it, the next
-  // for up to kWindowGrowth times the count (its first count starts from seeds).
+  // Progressive runs when the request allows them: a run samples the points of its largest
+  // count, so the first is for up to kFirstWindow spheres and, when the doubling passes it, the
+  // next for up to kWindowGrowth times the count (its first count starts from seeds).
   FitOptions any = fitOptionsFor(request);
   const bool allowed = ProgressiveFit::allows(any);
   std::optional<ProgressiveFit> progressive;
@@ -174,10 +174,7 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
       if (request.points > 0)
         top = static_cast<int>(std::max<int64_t>(n, std::min<int64_t>(top, request.points)));
       const FitOptions top_options = detail::countOptions(request, top, t.original, t.fit_progress);
-      ProgressiveOptions by_count;
-      by_count.count_points = requestCountPoints(request);
-      auto p = ProgressiveFit::start(index, top_options, progressive ? &*progressive : nullptr,
-                                     by_count);
+      auto p = ProgressiveFit::start(index, top_options, progressive ? &*progressive : nullptr);
       if (!p) return p.error();
       progressive.emplace(std::move(p).value());
     }

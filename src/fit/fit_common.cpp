@@ -79,9 +79,12 @@ Status checkFitOptions(const SolidIndex& index, const FitOptions& o) {
   return {};
 }
 
+int64_t defaultPoints(int num_spheres) {
+  return std::max(kMinDefaultPoints, kDefaultPointsPerSphere * int64_t{num_spheres});
+}
+
 int64_t fitTargetPoints(const FitOptions& o) {
-  return o.target_points > 0 ? o.target_points
-                             : std::max<int64_t>(5000, 100 * int64_t{o.num_spheres});
+  return o.target_points > 0 ? o.target_points : defaultPoints(o.num_spheres);
 }
 
 }  // namespace sphereset::detail

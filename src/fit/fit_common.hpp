@@ -55,7 +55,13 @@ class ProgressScope {
 // The options of fitSpheres within their limits, and a solid of positive volume.
 Status checkFitOptions(const SolidIndex& index, const FitOptions& o);
 
-// Points the fit clusters: o.target_points, or max(5000, 100 n) when it is 0.
+// The default points of a fit at n spheres: max(kMinDefaultPoints, kDefaultPointsPerSphere n)
+// (the quality presets scale it).
+inline constexpr int64_t kMinDefaultPoints = 5000;
+inline constexpr int64_t kDefaultPointsPerSphere = 100;
+int64_t defaultPoints(int num_spheres);
+
+// Points the fit clusters: o.target_points, or defaultPoints(o.num_spheres) when it is 0.
 int64_t fitTargetPoints(const FitOptions& o);
 
 // Outside volume of each sphere (in parallel).

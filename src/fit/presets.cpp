@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
-#include <functional>
 #include <limits>
 #include <string>
 #include <string_view>
 
+#include "fit/fit_common.hpp"
 #include "sphereset/fit.hpp"
 #include "sphereset/limits.hpp"
 #include "sphereset/options.hpp"
@@ -27,9 +27,6 @@ struct Preset {
   bool select = false;
   bool radii = false;  // FitOptions::optimal_radii
 };
-
-constexpr int64_t kMinDefaultPoints = 5000;
-constexpr int64_t kDefaultPointsPerSphere = 100;
 
 Preset presetOf(FitQuality q) {
   switch (q) {
@@ -218,9 +215,8 @@ FitOptions fitPreset(int num_spheres, FitQuality quality) {
   fo.decimation = p.decimation;
   fo.select_among_restarts = p.select;
   fo.optimal_radii = p.radii;
-  fo.target_points = static_cast<int64_t>(
-      p.points_factor * static_cast<double>(std::max<int64_t>(
-                            kMinDefaultPoints, kDefaultPointsPerSphere * int64_t{num_spheres})));
+  fo.target_points = static_cast<int64_t>(p.points_factor *
+                                          static_cast<double>(detail::defaultPoints(num_spheres)));
   return fo;
 }
 
@@ -236,14 +232,6 @@ FitOptions fitOptionsFor(const FitRequest& request) {
   fo.init = request.init;
   fo.method = request.method;
   return fo;
-}
-
-std::function<int64_t(int count)> requestCountPoints(const FitRequest& request) {
-  return [request](int count) {
-    FitRequest r = request;
-    r.num_spheres = count;
-    return fitOptionsFor(r).target_points;
-  };
 }
 
 }  // namespace sphereset

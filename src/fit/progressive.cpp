@@ -4,14 +4,11 @@
 // a fit at n: the k splits that lower the outside volume most (each cluster split by 2-means
 // from its farthest pair, both halves refitted as in the sphere update, Eq. 5) give the extra
 // seeds, and the paper's rounds and teleports run again from there, the split state counting as
-// the best so far. The points are sampled for the largest count; with
-// ProgressiveOptions::count_points a fitted count clusters its own (the default points grow
-// with n above 50 spheres: a curve to 64 clusters 5 000 points up to 50 spheres, as fitSpheres
-// does, and 6 400 at 64), so that a count clustered from seeds is fitSpheres's fit at that
-// count, bit for bit; a warm start carries its clusters' spheres onto the points of its count,
-// as a start from another run does. The local steps measure with the largest count's points.
-// Each count ends as fitSpheres ends (finish.cpp), so every fit of the curve is bounded; its
-// clustering, before the bound, is what a larger count starts from.
+// the best so far. One point set, the one fitSpheres samples for the largest count, serves
+// every count: a fit at a lower count clusters more points than fitSpheres would give it (above
+// 50 spheres, where the default points grow with n). Each count ends as fitSpheres ends
+// (finish.cpp), so every fit of the curve is bounded; its clustering, before the bound, is what a
+// larger count starts from.
 //
 // Deviation from an independent fit at each count: a warm-started clustering gets fewer rounds
 // (kWarmRounds): its clusters start settled, and the splits are the moves a teleport would try.
@@ -144,30 +141,12 @@ struct ProgressiveFit::Impl {
   const SolidIndex& index;
   FitOptions options;
   ProgressiveOptions progressive;
-  detail::PointSet ps;  // sampled for options.num_spheres spheres: the steps' points
+  detail::PointSet ps;                            // sampled for options.num_spheres spheres
   std::map<int, detail::Clustering> clusterings;  // by count: each fit's, before its bound
   std::map<int, FitResult> fits;                  // by count
   std::optional<detail::SplitChain> chain;        // the last count fitted or stepped
   std::optional<detail::SplitChain> fitted;       // the last count fitted
-  // The points of the fitted counts whose ProgressiveOptions::count_points differ from the
-  // run's, by their number, sampled when a count first needs them (a std::map keeps each where
-  // it is).
-  std::map<int64_t, detail::PointSet> count_sets;
-  const detail::PointSet& pointsFor(int count);
 };
-
-const detail::PointSet& ProgressiveFit::Impl::pointsFor(int count) {
-  if (!progressive.count_points) return ps;
-  const int64_t target = progressive.count_points(count);
-  if (target == detail::fitTargetPoints(options)) return ps;
-  auto it = count_sets.find(target);
-  if (it == count_sets.end())
-    it = count_sets
-             .emplace(target,
-                      detail::samplePoints(index, target, options.interior_share, options.seed))
-             .first;
-  return it->second;
-}
 
 ProgressiveFit::ProgressiveFit(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 ProgressiveFit::ProgressiveFit(ProgressiveFit&&) noexcept = default;
@@ -201,7 +180,7 @@ Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const Fi
     return Error{ErrorCode::kInvalidArgument,
                  "progressive fitting takes the variational method with one restart and no "
                  "decimation"};
-  auto impl = std::unique_ptr<Impl>(new Impl{index, options, progressive, {}, {}, {}, {}, {}, {}});
+  auto impl = std::unique_ptr<Impl>(new Impl{index, options, progressive, {}, {}, {}, {}, {}});
   impl->ps = detail::samplePoints(index, detail::fitTargetPoints(options), options.interior_share,
                                   options.seed);
   const int64_t points = static_cast<int64_t>(impl->ps.points.size());
@@ -294,8 +273,7 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
   const auto t0 = detail::FitClock::now();
   FitOptions o = m.options;
   o.num_spheres = count;
-  const detail::PointSet& ps = m.pointsFor(count);
-  FitResult res = pointsOf(ps);
+  FitResult res = pointsOf(m.ps);
   detail::ProgressScope scope(o, t0);
   const int from = startCount(count);
   if (!split_first.empty() &&
@@ -303,7 +281,7 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
     return Error{ErrorCode::kInvalidArgument,
                  "split_first needs one value per sphere of the count the fit starts from (" +
                      std::to_string(from) + ")"};
-  detail::Clustering c = clusterCount(m.index, ps, m.clusterings, count, from,
+  detail::Clustering c = clusterCount(m.index, m.ps, m.clusterings, count, from,
                                       m.progressive.start_ratio, split_first, o, &res, &scope);
   res.converged = c.converged;
   if (c.spheres.empty())
@@ -313,7 +291,7 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
   m.clusterings[count] = c;
   scope.report("bounding", res.iterations, c.energy);
   const auto tb = detail::FitClock::now();
-  detail::finishFit(m.index, ps, o, &c, &res);
+  detail::finishFit(m.index, m.ps, o, &c, &res);
   res.seconds.bounding = detail::secondsSince(tb);
   res.seconds.total = detail::secondsSince(t0);
   scope.report("done", res.iterations, res.energy);

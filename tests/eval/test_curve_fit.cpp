@@ -55,9 +55,7 @@ TEST(FitCurve, EachPointIsTheCheckOfItsSetFromOneProgressiveRun) {
   // The run's fits, count by count: a ProgressiveFit for the largest count asked the same.
   FitRequest top = quick();
   top.num_spheres = 8;
-  ProgressiveOptions seeded = seededTop();
-  seeded.count_points = requestCountPoints(top);
-  auto run = ProgressiveFit::start(index, fitOptionsFor(top), nullptr, seeded);
+  auto run = ProgressiveFit::start(index, fitOptionsFor(top), nullptr, seededTop());
   ASSERT_TRUE(run.ok());
   // The last count is fitted from seeds: fitSpheres's own fit at 8, as `sphereset fit -n 8`.
   auto independent = fitSpheres(index, fitOptionsFor(top));
@@ -154,27 +152,6 @@ TEST(FitCurve, ASteppedCurveIsTheSameForAnyThreadCount) {
     expectSameSpheres(one->spheres[k], two->spheres[k]);
     EXPECT_EQ(one->points[k].er_sum, two->points[k].er_sum);
     EXPECT_EQ(one->points[k].protrusion, two->points[k].protrusion);
-  }
-}
-
-// Above 50 spheres a fit clusters more points (100 per sphere), but each fitted count of a
-// curve clusters those of a fit at its own count: the counts clustered from seeds (up to 8, and
-// the last) are fitSpheres's fits at those counts, though the run's largest count is 64.
-TEST(FitCurve, EachFittedCountClustersThePointsOfAFitAtItsCount) {
-  const SolidIndex index(test::robotLink());
-  CurveOptions o;
-  o.counts = {2, 8, 64};
-  auto c = fitCurve(index, quick(), o);
-  ASSERT_TRUE(c.ok()) << c.error().message;
-  ASSERT_TRUE(c->progressive);
-  ASSERT_EQ(c->spheres.size(), 3u);
-  FitRequest at = quick();
-  ASSERT_GT(requestCountPoints(at)(64), requestCountPoints(at)(8));
-  for (size_t k = 0; k < 3; ++k) {
-    at.num_spheres = o.counts[k];
-    auto fit = fitSpheres(index, fitOptionsFor(at));
-    ASSERT_TRUE(fit.ok());
-    expectSameSpheres(c->spheres[k], fit->spheres);
   }
 }
 

@@ -91,9 +91,7 @@ TEST(ToleranceFit, CountsAreOneProgressiveRunWhenTheRequestAllowsIt) {
   // The same counts in the same order through a ProgressiveFit give the same set.
   FitRequest top = fastRequest();
   top.num_spheres = 64;
-  ProgressiveOptions by_count;
-  by_count.count_points = requestCountPoints(top);
-  auto run = ProgressiveFit::start(index, fitOptionsFor(top), nullptr, by_count);
+  auto run = ProgressiveFit::start(index, fitOptionsFor(top));
   ASSERT_TRUE(run.ok());
   Expected<FitResult> last = Error{ErrorCode::kInvalidArgument, "none"};
   for (const CurvePoint& c : r->curve) {
