@@ -9,6 +9,18 @@
 
 namespace sphereset::detail {
 
+// The progressive runs of a search: the first for up to kFirstWindow spheres, each next one for
+// up to kWindowGrowth times the count that passed the last (the cap at most), started from the
+// last one's clusterings. A run samples the points of its largest count, so a small count does
+// not cluster the points of the cap.
+inline constexpr int kFirstWindow = 64;
+inline constexpr int kWindowGrowth = 4;
+
+// The largest count of the run that fits `count` when the last run ended below it.
+inline int searchWindow(int count, int cap) {
+  return std::min(cap, std::max(kFirstWindow, kWindowGrowth * count));
+}
+
 // Calls meets(n) (Expected<bool>: whether the count n meets the tolerance) in the search's order;
 // stops at the first error and returns it. Fits are not monotone in their count, so the caller
 // keeps the best count tried.

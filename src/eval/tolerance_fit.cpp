@@ -26,12 +26,6 @@
 namespace sphereset {
 namespace {
 
-// The progressive runs of a search: the first for up to this many spheres, each next one for up
-// to this many times the count that passed the last (the cap at most), started from the last
-// one's clusterings.
-constexpr int kFirstWindow = 64;
-constexpr int kWindowGrowth = 4;
-
 constexpr OptionSpec kToleranceOptions[] = {
     {"max_protrusion",
      "--max-protrusion",
@@ -170,7 +164,7 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
     if (!allowed) return fitSpheres(index, fo);
     if (!progressive || n > progressive->maxCount()) {
       // A run cannot hold more spheres than points: an explicit point count bounds the window.
-      int top = std::min(t.max_spheres, std::max(kFirstWindow, kWindowGrowth * n));
+      int top = detail::searchWindow(n, t.max_spheres);
       if (request.points > 0)
         top = static_cast<int>(std::max<int64_t>(n, std::min<int64_t>(top, request.points)));
       const FitOptions top_options = detail::countOptions(request, top, t.original, t.fit_progress);

@@ -46,18 +46,13 @@ double overLimit(const ProtrusionPick& p, double limit) {
 // splits first (ProgressiveFit::fit's split_first), so that the spheres furthest out are split.
 using ProtrusionsByCount = std::map<int, std::vector<double>>;
 
-// The progressive runs of a link: the first for up to kFirstWindow spheres, the next for up to
-// kWindowGrowth times the count that passed the last (at most the link's cap), started from
-// its clusterings; a run samples the points of its largest count, so a small count does not
-// cluster the points of the cap. Independent fits when the options forbid a run.
-constexpr int kFirstWindow = 64;
-constexpr int kWindowGrowth = 4;
+// The progressive runs of a link, in the windows of the tolerance search (searchWindow, at most
+// the link's cap). Independent fits when the options forbid a run.
 class LinkFits {
  public:
   explicit LinkFits(const ProtrusionLink& link) : link_(link) {}
   Expected<FitResult> fit(int count, const ProtrusionsByCount& seen) {
-    FitOptions o =
-        link_.options_for(std::min(link_.cap, std::max(kFirstWindow, kWindowGrowth * count)));
+    FitOptions o = link_.options_for(detail::searchWindow(count, link_.cap));
     if (!ProgressiveFit::allows(o)) {
       FitOptions one = link_.options_for(count);
       return fitSpheres(*link_.index, one);
