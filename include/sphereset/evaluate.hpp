@@ -5,6 +5,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sphereset/cover.hpp"
@@ -217,8 +218,11 @@ Status setToleranceOption(ToleranceOptions* options, const std::string& name,
 // before its work; fitToTolerance asks it too.
 Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& tolerance);
 // A door's best effort (when no count up to the cap meets the limit, the best set is written
-// anyway: fit --best-effort, BatchOptions::best_effort) needs a limit (kInvalidArgument,
-// "best_effort goes with a tolerance (max_protrusion, max_er): alone it writes nothing more").
+// anyway: fit --best-effort, BatchOptions::best_effort, robot --best-effort) needs a limit
+// (kInvalidArgument, "best_effort goes with a tolerance (LIMITS): alone it writes nothing
+// more"): `limited` whether one is given, `limits` the options that give one.
+Status checkBestEffort(bool best_effort, bool limited, std::string_view limits);
+// The same for a tolerance search: its limits max_protrusion and max_er.
 Status checkBestEffort(bool best_effort, const ToleranceOptions& tolerance);
 // The options of a tolerance search (kInvalidArgument): no limit set, a limit set that its
 // option's row refuses (negative, NaN; the fraction as its percentage), max_spheres out of range.

@@ -102,12 +102,16 @@ Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& 
   return {};
 }
 
-Status checkBestEffort(bool best_effort, const ToleranceOptions& tolerance) {
-  if (best_effort && !tolerance.active())
-    return Error{ErrorCode::kInvalidArgument,
-                 "best_effort goes with a tolerance (max_protrusion, max_er): alone it writes "
-                 "nothing more"};
+Status checkBestEffort(bool best_effort, bool limited, std::string_view limits) {
+  if (best_effort && !limited)
+    return Error{ErrorCode::kInvalidArgument, "best_effort goes with a tolerance (" +
+                                                  std::string(limits) +
+                                                  "): alone it writes nothing more"};
   return {};
+}
+
+Status checkBestEffort(bool best_effort, const ToleranceOptions& tolerance) {
+  return checkBestEffort(best_effort, tolerance.active(), "max_protrusion, max_er");
 }
 
 Status checkToleranceOptions(const ToleranceOptions& t) {

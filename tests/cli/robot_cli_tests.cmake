@@ -28,6 +28,10 @@ cli_test(robot_max_protrusion_not_met 10 ARGS robot ${robot}/three_link.urdf --p
 cli_test(robot_max_protrusion_best_effort 10 ARGS robot ${robot}/three_link.urdf --package-path
          ${robot} --max-protrusion 0.000000001 --budget 6 --quality fast --best-effort
          -o ${work}/three_best_effort.yml -q FILE ${work}/three_best_effort.yml)
+cli_test(robot_best_effort_without_limit 2 ARGS robot ${robot}/three_link.urdf --package-path
+         ${robot} --budget 6 --quality fast --best-effort -o ${work}/never_robot_best.yml -q
+         STDERR "best_effort goes with a tolerance .max_protrusion, link_max_protrusion.: alone it"
+         FORBID ${work}/never_robot_best.yml)
 cli_test(robot_link_max_protrusion_zero 2 ARGS robot ${robot}/three_link.urdf --package-path
          ${robot} --link-max-protrusion link2=0 -o ${work}/never_tol2.yml -q
          STDERR "link_max_protrusion 'link2=0': expected LINK=VALUE, VALUE a number above 0 and"
