@@ -230,10 +230,7 @@ int runRobot(const RobotArgs& a) {
   if (!repair) return fail(repair.error());
   fo.repair = std::move(repair).value();
   if (Status st = checkRobotFitOptions(fo); !st) return fail(st.error());
-  if (Status st = checkBestEffort(a.best_effort, fo.toleranceActive(),
-                                  "max_protrusion, link_max_protrusion");
-      !st)
-    return fail(st.error());
+  if (Status st = checkRobotBestEffort(a.best_effort, fo); !st) return fail(st.error());
   auto formats = checkOutputs(a);
   if (!formats) return fail(formats.error());
   if (std::find(formats->begin(), formats->end(), RobotOutput::kHtml) != formats->end())

@@ -193,6 +193,9 @@ struct ToleranceOptions {
   // count being fitted); may throw to end the search mid-fit, as progress may.
   std::function<void(const FitProgress&)> fit_progress;
   bool active() const;  // some limit is set
+  // A cap is set: given (max_spheres_given) or not the default. A door that has no cap of its
+  // own (a robot's request) or hands the options on (Python's item dicts) asks this.
+  bool capSet() const;
 };
 struct ToleranceFitResult {
   bool met = false;
@@ -218,7 +221,7 @@ Status setToleranceOption(ToleranceOptions* options, const std::string& name,
 // before its work; fitToTolerance asks it too.
 Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& tolerance);
 // A door's best effort (when no count up to the cap meets the limit, the best set is written
-// anyway: fit --best-effort, BatchOptions::best_effort, robot --best-effort) needs a limit
+// anyway: fit --best-effort, BatchOptions::best_effort, checkRobotBestEffort) needs a limit
 // (kInvalidArgument, "best_effort goes with a tolerance (LIMITS): alone it writes nothing
 // more"): `limited` whether one is given, `limits` the options that give one.
 Status checkBestEffort(bool best_effort, bool limited, std::string_view limits);

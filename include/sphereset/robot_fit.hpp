@@ -144,6 +144,10 @@ Status checkLinkSolids(const Robot& robot, const RepairOptions& repair, LinkSoli
                        const std::map<std::string, LinkSolid>& per_link, const std::string& name);
 Status setRobotFitOption(RobotFitOptions* o, const std::string& name, const std::string& text);
 Status checkRobotFitOptions(const RobotFitOptions& o);
+// A robot's best effort (the spheres written when a link misses its limit: robot --best-effort)
+// needs a protrusion limit (checkBestEffort's rule and message, naming max_protrusion and
+// link_max_protrusion).
+Status checkRobotBestEffort(bool best_effort, const RobotFitOptions& o);
 
 // One link with geometry.
 struct RobotLinkFit {

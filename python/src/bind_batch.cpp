@@ -39,10 +39,9 @@ py::dict toleranceDict(const ToleranceOptions& t) {
       : t.max_protrusion > 0.0 ? py::object(py::str(optionText(t.max_protrusion)))
                                : py::object(py::none());
   d["max_er"] = t.max_er > 0.0 ? py::object(py::str(optionText(t.max_er))) : py::object(py::none());
-  // The cap when given or not the default (a batch's cap that a line with a limit takes).
-  const bool cap = t.max_spheres_given || t.max_spheres != ToleranceOptions{}.max_spheres;
+  // The cap when set (a batch's cap that a line with a limit takes).
   d["max_spheres"] =
-      cap ? py::object(py::str(std::to_string(t.max_spheres))) : py::object(py::none());
+      t.capSet() ? py::object(py::str(std::to_string(t.max_spheres))) : py::object(py::none());
   return d;
 }
 ToleranceOptions toleranceFrom(const py::object& o) {

@@ -90,6 +90,10 @@ bool ToleranceOptions::active() const {
   return max_protrusion > 0.0 || max_protrusion_fraction > 0.0 || max_er > 0.0;
 }
 
+bool ToleranceOptions::capSet() const {
+  return max_spheres_given || max_spheres != ToleranceOptions{}.max_spheres;
+}
+
 Status checkToleranceRequest(const FitRequest& request, const ToleranceOptions& tolerance) {
   if (request.count_given && tolerance.active())
     return Error{ErrorCode::kInvalidArgument,

@@ -154,6 +154,10 @@ bool isEnvelope(const std::pair<const std::string, LinkSolid>& entry) {
 
 }  // namespace
 
+Status checkRobotBestEffort(bool best_effort, const RobotFitOptions& o) {
+  return checkBestEffort(best_effort, o.toleranceActive(), "max_protrusion, link_max_protrusion");
+}
+
 Status checkRobotFitOptions(const RobotFitOptions& o) {
   // Each number as its text, through the same parser as every front door's.
   const std::pair<const char*, double> values[] = {{"budget", o.budget},

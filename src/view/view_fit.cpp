@@ -186,8 +186,7 @@ Status checkRequest(const ViewScene& scene, const ViewFitRequest& r) {
   if (r.budget != 0 || r.robot) {
     if (scene.kind != ViewKind::kRobot || !scene.robot)
       return bad(r.budget != 0 ? "fit: a budget is for robots" : "fit: the scene is no robot");
-    if (r.tolerance.max_er > 0.0 || r.tolerance.max_spheres_given ||
-        r.tolerance.max_spheres != ToleranceOptions{}.max_spheres)
+    if (r.tolerance.max_er > 0.0 || r.tolerance.capSet())
       return bad(
           "fit: a robot takes max_protrusion as every link's limit, not max_er or "
           "max_spheres (each link's cap is its own)");
