@@ -243,17 +243,19 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
 // already clustered at most half its size (from seeds when there is none), except the counts up to
 // 8 (ProgressiveOptions::seeded_up_to) and the largest count, clustered from seeds
 // (ProgressiveOptions::top_from_seeds: its set is fitSpheres's at that count, as `sphereset fit -n`
-// gives it); independent fits when the request does not allow a run (restarts, decimation, a
-// baseline method). In a run, a count one above the count before it is a local step
-// (ProgressiveFit::step) unless it is a power of two or the last count: each stretch of such counts
-// is stepped up from the fit below and, when the fit above follows it directly, down from that fit
-// too, the counts up to the crossover of least total outside volume taking the upward sets. The
-// whole curve 1 ... 64 costs 2 to 4.2 fits at 64 (2.9 on average over the shared meshes), and its
-// stepped counts are usually looser than fits at those counts (docs/benchmarks.md, "Progressive
-// fitting"). Each set is checked as `sphereset fit` checks its result (the steps' by the
-// certificate of the set before, kept up to date: the same figures). CurvePoint::meets is false (no
-// tolerance). The same request and counts give the same curve for any thread count. A count's set
-// differs from the tolerance search's at that count, whose runs sample the points of other counts.
+// gives it; made beside the smaller counts when more than one thread is allowed,
+// ProgressiveOptions::top_alongside); independent fits when the request does not allow a run
+// (restarts, decimation, a baseline method). In a run, a count one above the count before it is a
+// local step (ProgressiveFit::step) unless it is a power of two or the last count: each stretch of
+// such counts is stepped up from the fit below and, when the fit above follows it directly, down
+// from that fit too, the counts up to the crossover of least total outside volume taking the upward
+// sets. The whole curve 1 ... 64 costs 2 to 4.2 fits at 64 (2.9 on average over the shared meshes),
+// and its stepped counts are usually looser than fits at those counts (docs/benchmarks.md,
+// "Progressive fitting"). Each set is checked as `sphereset fit` checks its result (the steps' by
+// the certificate of the set before, kept up to date: the same figures). CurvePoint::meets is false
+// (no tolerance). The same request and counts give the same curve for any thread count. A count's
+// set differs from the tolerance search's at that count, whose runs sample the points of other
+// counts.
 struct CurveOptions {
   std::vector<int> counts;
   // The counts 1 ... max_spheres when `counts` is empty (from 1 to limits::kMaxCurveCount,

@@ -270,6 +270,12 @@ struct ProgressiveOptions {
   // last count (fitCurve) is so fitted: warm-started, the largest counts end about 5 % above an
   // independent fit in outside volume (docs/benchmarks.md, "Progressive fitting").
   bool top_from_seeds = false;
+  // With top_from_seeds, and more than one thread allowed (tbb::global_control): the largest
+  // count's fit starts at once on a thread of its own, in a task arena of its own, beside the
+  // run's other fits, and fit() at that count waits for it. The same spheres; sooner where the
+  // other fits leave cores idle (a curve: fitCurve). That fit does not call options.progress;
+  // a run destroyed before it is taken stops it within about options.progress_interval.
+  bool top_alongside = false;
   // Counts up to this are clustered from seeds (on the run's points) whatever was clustered
   // below them, so that the warm starts begin there: a chain warm-started from one sphere ends
   // further from independent fits than one from 8 spheres (a curve's E_r at 32 over independent

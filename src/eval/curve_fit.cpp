@@ -286,6 +286,7 @@ Expected<CurveResult> fitCurve(const SolidIndex& index, const FitRequest& reques
   if (out.progressive) {
     ProgressiveOptions progressive;
     progressive.top_from_seeds = true;  // the last count is fitSpheres's own fit
+    progressive.top_alongside = true;   // made beside the counts below it
     progressive.seeded_up_to = kSeededCounts;
     auto started = ProgressiveFit::start(index, top_options, nullptr, progressive);
     if (!started) return started.error();

@@ -6,6 +6,7 @@
 #include <tbb/global_control.h>
 
 #include <stdexcept>
+#include <thread>
 
 #include "coverage_oracle.hpp"
 #include "sphereset/fit.hpp"
@@ -103,6 +104,65 @@ TEST(ProgressiveFit, TheLargestCountFromSeedsIsTheIndependentFit) {
   EXPECT_EQ(chain->startCount(4), 0);
   ASSERT_TRUE(chain->fit(4).ok());
   EXPECT_EQ(chain->startCount(8), 4);
+}
+
+TEST(ProgressiveFit, TheLargestCountMadeAlongsideIsTheSameFit) {
+  // top_alongside makes the largest count on a thread of its own while the smaller ones are
+  // fitted: every count the same spheres as without it, the largest fitSpheres's own, and the
+  // caller's progress callback is called only from the caller's thread.
+  tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+  const Mesh link = test::robotLink();
+  const SolidIndex idx(link);
+  FitOptions o = quickOptions(8);
+  const std::thread::id caller = std::this_thread::get_id();
+  int elsewhere = 0, calls = 0;
+  o.progress = [&](const FitProgress&) {
+    ++calls;
+    elsewhere += std::this_thread::get_id() != caller;
+  };
+  ProgressiveOptions seeded, alongside;
+  seeded.top_from_seeds = alongside.top_from_seeds = true;
+  alongside.top_alongside = true;
+  auto a = ProgressiveFit::start(idx, o, nullptr, alongside);
+  auto b = ProgressiveFit::start(idx, o, nullptr, seeded);
+  ASSERT_TRUE(a.ok() && b.ok());
+  for (int n : {2, 4, 8}) {
+    auto fa = a->fit(n);
+    auto fb = b->fit(n);
+    ASSERT_TRUE(fa.ok() && fb.ok());
+    ASSERT_EQ(fa->spheres.size(), fb->spheres.size());
+    for (size_t i = 0; i < fa->spheres.size(); ++i) {
+      EXPECT_EQ(fa->spheres[i].center, fb->spheres[i].center) << n << " " << i;
+      EXPECT_EQ(fa->spheres[i].radius, fb->spheres[i].radius) << n << " " << i;
+    }
+    EXPECT_EQ(fa->energy, fb->energy) << n;
+  }
+  EXPECT_GT(calls, 0);
+  EXPECT_EQ(elsewhere, 0);
+  EXPECT_EQ(a->startCount(8), 8);  // taken: asked again, the same fit
+}
+
+TEST(ProgressiveFit, ARunLeftWithItsLargestCountInFlightStopsIt) {
+  // Destroyed before the largest count is taken (an error or a cancel in a smaller count), the
+  // run stops that fit and returns; a cancel on the caller's thread still reaches the caller.
+  tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+  const Mesh link = test::robotLink();
+  const SolidIndex idx(link);
+  FitOptions o = fitPreset(64);
+  ProgressiveOptions alongside;
+  alongside.top_from_seeds = alongside.top_alongside = true;
+  {
+    auto run = ProgressiveFit::start(idx, o, nullptr, alongside);
+    ASSERT_TRUE(run.ok());
+    ASSERT_TRUE(run->fit(1).ok());
+  }
+  int calls = 0;
+  o.progress = [&](const FitProgress&) {
+    if (++calls == 3) throw std::runtime_error("stop");
+  };
+  auto run = ProgressiveFit::start(idx, o, nullptr, alongside);
+  ASSERT_TRUE(run.ok());
+  EXPECT_THROW((void)run->fit(4), std::runtime_error);
 }
 
 TEST(ProgressiveFit, WarmStartedCountsAreCloseToIndependentFits) {
