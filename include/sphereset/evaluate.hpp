@@ -174,7 +174,9 @@ struct CurvePoint {
   double protrusion = 0.0;  // certified bound
   bool covered = false;
   bool meets = false;
-  double seconds = 0.0;  // its fit and check (fitCurve: a step's, not the other direction's)
+  // Its fit and check (fitCurve: a step's, not the other direction's; the last count, made
+  // beside the others, ProgressiveOptions::top_alongside: the wait for it).
+  double seconds = 0.0;
 };
 struct ToleranceOptions {
   double max_protrusion = 0.0;

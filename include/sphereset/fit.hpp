@@ -270,11 +270,14 @@ struct ProgressiveOptions {
   // last count (fitCurve) is so fitted: warm-started, the largest counts end about 5 % above an
   // independent fit in outside volume (docs/benchmarks.md, "Progressive fitting").
   bool top_from_seeds = false;
-  // With top_from_seeds, and more than one thread allowed (tbb::global_control): the largest
-  // count's fit starts at once on a thread of its own, in a task arena of its own, beside the
-  // run's other fits, and fit() at that count waits for it. The same spheres; sooner where the
-  // other fits leave cores idle (a curve: fitCurve). That fit does not call options.progress;
-  // a run destroyed before it is taken stops it within about options.progress_interval.
+  // With top_from_seeds, and more than one thread allowed (the calling thread's arena and
+  // tbb::global_control): the largest count's fit starts at once on a thread of its own (one
+  // thread more than the limit; its task arena as wide as the caller's), beside the run's other
+  // fits, and fit() at that count waits for it. The same spheres; sooner where the other fits
+  // leave cores idle (a curve: fitCurve). options.progress is called only on the calling
+  // thread: for that fit, while fit() waits for it (with its latest progress, and may throw to
+  // cancel). Its FitResult::seconds are its own, made beside the others. A run destroyed before
+  // taking it stops it within about options.progress_interval.
   bool top_alongside = false;
   // Counts up to this are clustered from seeds (on the run's points) whatever was clustered
   // below them, so that the warm starts begin there: a chain warm-started from one sphere ends
@@ -295,7 +298,8 @@ class ProgressiveFit {
   // run's as if it had made them (their clusters are positions, so they carry over to this
   // run's points): a count it clustered is only ended (bound, refinement...) with this run's
   // options (ProgressiveOptions::adopt; else clustered again), and larger counts start from
-  // them; its fits are not taken.
+  // them; its fits are not taken. The run refers to `index` and options.original: they must
+  // outlive it.
   static Expected<ProgressiveFit> start(const SolidIndex& index, const FitOptions& options,
                                         const ProgressiveFit* warm_from = nullptr,
                                         const ProgressiveOptions& progressive = {});

@@ -19,18 +19,21 @@
 // the largest counts end about 5 % above independent fits in outside volume (E_r at 64 over the 12
 // shared closed meshes); ProgressiveOptions::top_from_seeds clusters the largest count from seeds
 // instead, as fitSpheres does (a curve's last count: fitCurve).
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cassert>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdlib>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <numeric>
 #include <optional>
 #include <span>
@@ -156,23 +159,34 @@ struct CountFit {
 // The largest count's fit from seeds on a thread of its own (ProgressiveOptions::top_alongside),
 // in a task arena of its own: the run's other fits on the calling thread never run its tasks
 // (nor it theirs), so the caller's progress callback and cancelling stay on the caller's thread.
-// Its own progress callback only stops it once the run is destroyed. Two fits at once instead
-// of one after the other: a curve 1 ... 64 (fitCurve) took 0.83 of the time on spot.obj on 2
-// cores, the same sets (docs/benchmarks.md, "Progressive fitting").
+// Its own progress callback keeps its latest progress, which take() passes on to the caller's
+// while it waits, and stops it once the run is destroyed. Two fits at once instead of one after
+// the other: a curve 1 ... 64 (fitCurve) took 0.83 of the time on spot.obj on 2 cores, the same
+// sets (docs/benchmarks.md, "Progressive fitting").
 class TopAlongside {
  public:
-  TopAlongside(const SolidIndex& index, const detail::PointSet& ps, const FitOptions& options)
-      : options_(options) {
-    options_.progress = [this](const FitProgress&) {
+  TopAlongside(const SolidIndex& index, const detail::PointSet& ps, const FitOptions& options,
+               int threads)
+      : options_(options), report_(options.progress) {
+    options_.progress = [this](const FitProgress& p) {
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        latest_ = p;
+      }
       if (abandoned_.load()) throw Abandoned{};
     };
-    thread_ = std::thread([this, &index, &ps] {
+    thread_ = std::thread([this, &index, &ps, threads] {
       try {
-        tbb::task_arena arena;
+        tbb::task_arena arena(threads);
         arena.execute([&] { made_.emplace(makeCount(index, ps, {}, 0, {}, options_)); });
       } catch (...) {
         error_ = std::current_exception();
       }
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        done_ = true;
+      }
+      done_cv_.notify_all();
     });
   }
   TopAlongside(const TopAlongside&) = delete;
@@ -182,8 +196,21 @@ class TopAlongside {
     if (thread_.joinable()) thread_.join();
   }
 
-  // Waits for the fit; rethrows what stopped it.
+  // Waits for the fit, calling the caller's progress callback with its latest progress about
+  // every progress_interval (so that the callback may cancel the wait by throwing); rethrows
+  // what stopped the fit.
   Expected<CountFit> take() {
+    const auto interval =
+        std::chrono::duration<double>(std::max(options_.progress_interval, kMinWaitSeconds));
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!done_cv_.wait_for(lock, interval, [&] { return done_; }))
+      if (report_ && latest_) {
+        const FitProgress p = *latest_;
+        lock.unlock();
+        report_(p);
+        lock.lock();
+      }
+    lock.unlock();
     if (thread_.joinable()) thread_.join();
     if (error_) std::rethrow_exception(error_);
     return std::move(*made_);
@@ -195,9 +222,17 @@ class TopAlongside {
                                       int ratio = 1);
 
  private:
+  // take() waits at least this long between calls of the caller's callback (seconds), whatever
+  // FitOptions::progress_interval (0 allowed) says.
+  static constexpr double kMinWaitSeconds = 0.01;
   struct Abandoned {};
   FitOptions options_;
+  std::function<void(const FitProgress&)> report_;  // the caller's callback
   std::atomic<bool> abandoned_{false};
+  std::mutex mutex_;  // guards latest_ and done_
+  std::condition_variable done_cv_;
+  std::optional<FitProgress> latest_;
+  bool done_ = false;
   std::optional<Expected<CountFit>> made_;
   std::exception_ptr error_;
   std::thread thread_;
@@ -264,10 +299,12 @@ Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const Fi
   }
   ProgressiveFit run(std::move(impl));
   Impl& m = run.impl();
-  if (progressive.top_alongside && run.startCount(options.num_spheres) == 0 &&
-      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1) {
+  // The caller's thread limit (its arena's, under tbb::global_control's) sizes the fit's arena.
+  const int threads = tbb::this_task_arena::max_concurrency();
+  if (progressive.top_alongside && progressive.top_from_seeds &&
+      run.startCount(options.num_spheres) == 0 && threads > 1) {
     try {
-      m.top = std::make_unique<TopAlongside>(m.index, m.ps, m.options);
+      m.top = std::make_unique<TopAlongside>(m.index, m.ps, m.options, threads);
     } catch (const std::system_error&) {
       // No thread to spare: the largest count is made when asked for, as without the option.
     }
@@ -384,8 +421,8 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
     return Error{ErrorCode::kInvalidArgument,
                  "split_first needs one value per sphere of the count the fit starts from (" +
                      std::to_string(from) + ")"};
-  const std::unique_ptr<TopAlongside> top =
-      count == m.options.num_spheres ? std::move(m.top) : nullptr;
+  std::unique_ptr<TopAlongside> top = count == m.options.num_spheres ? std::move(m.top) : nullptr;
+  if (from != 0) top.reset();  // not from seeds after all (adopted): stopped, not taken
   Expected<CountFit> made =
       top ? top->take()
           : TopAlongside::makeCount(m.index, m.ps, m.clusterings, from, split_first, o,

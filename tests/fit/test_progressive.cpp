@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <chrono>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -21,6 +23,9 @@ FitOptions seededOptions(int max_count, FitQuality quality) {
   return o;
 }
 FitOptions quickOptions(int max_count) { return seededOptions(max_count, FitQuality::kFast); }
+// A generous bound on how long a run takes to stop a fit it no longer needs (seconds; the fit
+// polls about every FitOptions::progress_interval, 0.25 s).
+constexpr double kStopSeconds = 5.0;
 
 TEST(ProgressiveFit, EveryCountBoundsTheSolidWithItsCount) {
   const Mesh torus = test::makeTorus(1.0, 0.3, 24, 12);
@@ -142,20 +147,56 @@ TEST(ProgressiveFit, TheLargestCountMadeAlongsideIsTheSameFit) {
   EXPECT_EQ(a->startCount(8), 8);  // taken: asked again, the same fit
 }
 
-TEST(ProgressiveFit, ARunLeftWithItsLargestCountInFlightStopsIt) {
-  // Destroyed before the largest count is taken (an error or a cancel in a smaller count), the
-  // run stops that fit and returns; a cancel on the caller's thread still reaches the caller.
+TEST(ProgressiveFit, WaitingForTheLargestCountReportsAndCancelsOnTheCallersThread) {
+  // fit() at the largest count, made alongside, waits for it calling the caller's callback with
+  // its progress (that count's), on the caller's thread; a callback that throws cancels the wait.
   tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
   const Mesh link = test::robotLink();
   const SolidIndex idx(link);
-  FitOptions o = fitPreset(64);
+  FitOptions o = quickOptions(8);
+  o.progress_interval = 0.0;
+  const std::thread::id caller = std::this_thread::get_id();
+  int calls = 0, elsewhere = 0, other_count = 0;
+  o.progress = [&](const FitProgress& p) {
+    ++calls;
+    elsewhere += std::this_thread::get_id() != caller;
+    other_count += p.spheres != 8;
+  };
+  ProgressiveOptions alongside;
+  alongside.top_from_seeds = alongside.top_alongside = true;
+  auto run = ProgressiveFit::start(idx, o, nullptr, alongside);
+  ASSERT_TRUE(run.ok());
+  ASSERT_TRUE(run->fit(8).ok());
+  EXPECT_GT(calls, 0);
+  EXPECT_EQ(elsewhere, 0);
+  EXPECT_EQ(other_count, 0);
+  o.progress = [&](const FitProgress&) { throw std::runtime_error("stop"); };
+  auto cancelled = ProgressiveFit::start(idx, o, nullptr, alongside);
+  ASSERT_TRUE(cancelled.ok());
+  EXPECT_THROW((void)cancelled->fit(8), std::runtime_error);
+}
+
+TEST(ProgressiveFit, ARunLeftWithItsLargestCountInFlightStopsIt) {
+  // Destroyed before the largest count is taken (an error or a cancel in a smaller count), the
+  // run stops that fit and returns; a cancel on the caller's thread still reaches the caller.
+  // The largest count here (a fit at 256 from seeds) takes far longer than the bound below.
+  tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+  const Mesh link = test::robotLink();
+  const SolidIndex idx(link);
+  FitOptions o = fitPreset(256);
   ProgressiveOptions alongside;
   alongside.top_from_seeds = alongside.top_alongside = true;
   {
-    auto run = ProgressiveFit::start(idx, o, nullptr, alongside);
-    ASSERT_TRUE(run.ok());
+    auto started = ProgressiveFit::start(idx, o, nullptr, alongside);
+    ASSERT_TRUE(started.ok());
+    std::optional<ProgressiveFit> run(std::move(started).value());
     ASSERT_TRUE(run->fit(1).ok());
+    const auto t0 = std::chrono::steady_clock::now();
+    run.reset();
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
+              kStopSeconds);
   }
+  o = fitPreset(64);
   int calls = 0;
   o.progress = [&](const FitProgress&) {
     if (++calls == 3) throw std::runtime_error("stop");
