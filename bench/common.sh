@@ -64,3 +64,9 @@ with open(sys.argv[1], "w") as out:
     subprocess.run(sys.argv[2:], stdout=out, stderr=subprocess.DEVNULL, check=True)
 print(round(time.monotonic() - t, 3))' "$@"
 }
+# kinova_robot: sets `root` and `urdf`, the Kinova Gen3 of $shared/robots (after
+# skip_without_shared), for the scripts that fit the robot.
+kinova_robot() {
+  root=$shared/robots/kinova_gen3
+  urdf=$root/kortex_description/arms/gen3/7dof/urdf/GEN3-7DOF-VISION_ARM_URDF_V12.urdf
+}

@@ -11,8 +11,7 @@ args=()
 source "$(dirname "$0")/common.sh"
 skip_without_shared robot_speed
 baseline=${BASELINE:?BASELINE=path of the baseline sphereset command}
-root=$shared/robots/kinova_gen3
-urdf=$root/kortex_description/arms/gen3/7dof/urdf/GEN3-7DOF-VISION_ARM_URDF_V12.urdf
+kinova_robot
 budget=${BUDGET:-60}
 out=${OUT:-bench/results/robot_speed.csv}
 tmp=$(mktemp -d)
