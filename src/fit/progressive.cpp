@@ -154,6 +154,12 @@ struct CountFit {
   FitResult fit;
 };
 
+// The fit at o.num_spheres from the clustering of `from` (0: seeds), ended as fitSpheres ends
+// one; its seconds from here. Defined below, with the clustering it calls.
+Expected<CountFit> fitCount(const SolidIndex& index, const detail::PointSet& ps,
+                            const std::map<int, detail::Clustering>& done, int from,
+                            std::span<const double> split_first, const FitOptions& o, int ratio);
+
 }  // namespace
 
 // The largest count's fit from seeds on a thread of its own (ProgressiveOptions::top_alongside),
@@ -178,7 +184,7 @@ class TopAlongside {
     thread_ = std::thread([this, &index, &ps, threads] {
       try {
         tbb::task_arena arena(threads);
-        arena.execute([&] { made_.emplace(makeCount(index, ps, {}, 0, {}, options_)); });
+        arena.execute([&] { made_.emplace(fitCount(index, ps, {}, 0, {}, options_, 1)); });
       } catch (...) {
         error_ = std::current_exception();
       }
@@ -215,11 +221,6 @@ class TopAlongside {
     if (error_) std::rethrow_exception(error_);
     return std::move(*made_);
   }
-
-  static Expected<CountFit> makeCount(const SolidIndex& index, const detail::PointSet& ps,
-                                      const std::map<int, detail::Clustering>& done, int from,
-                                      std::span<const double> split_first, const FitOptions& o,
-                                      int ratio = 1);
 
  private:
   // take() waits at least this long between calls of the caller's callback (seconds), whatever
@@ -377,12 +378,11 @@ int ProgressiveFit::startCount(int count) const {
   return startFrom(m.clusterings, count, m.progressive.start_ratio, m.progressive.adopt);
 }
 
-// The fit at o.num_spheres from the clustering of `from` (0: seeds), ended as fitSpheres ends
-// one; its seconds from here.
-Expected<CountFit> TopAlongside::makeCount(const SolidIndex& index, const detail::PointSet& ps,
-                                           const std::map<int, detail::Clustering>& done, int from,
-                                           std::span<const double> split_first, const FitOptions& o,
-                                           int ratio) {
+namespace {
+
+Expected<CountFit> fitCount(const SolidIndex& index, const detail::PointSet& ps,
+                            const std::map<int, detail::Clustering>& done, int from,
+                            std::span<const double> split_first, const FitOptions& o, int ratio) {
   const int count = o.num_spheres;
   const auto t0 = detail::FitClock::now();
   CountFit out;
@@ -406,6 +406,8 @@ Expected<CountFit> TopAlongside::makeCount(const SolidIndex& index, const detail
   return out;
 }
 
+}  // namespace
+
 Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split_first) {
   Impl& m = impl();
   if (Status st = countInRange(count, m.options.num_spheres); !st) return st.error();
@@ -425,8 +427,7 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
   if (from != 0) top.reset();  // not from seeds after all (adopted): stopped, not taken
   Expected<CountFit> made =
       top ? top->take()
-          : TopAlongside::makeCount(m.index, m.ps, m.clusterings, from, split_first, o,
-                                    m.progressive.start_ratio);
+          : fitCount(m.index, m.ps, m.clusterings, from, split_first, o, m.progressive.start_ratio);
   if (!made) return made.error();
   m.clusterings[count] = std::move(made->clustering);
   const FitResult& res = made->fit;
