@@ -20,7 +20,22 @@ struct CellGeometry {
   bool known = false;
   bool has_surface = false;
   Containment where = Containment::kOutside;
+  double distance = 0.0;  // from its centre to the surface
 };
+
+// Where a cube's centre lies, `distance` from the surface, given its parent cube's geometry (or
+// none). The centre is the cube's half diagonal from its parent's centre; when that is less than
+// the parent centre's distance to the surface, the ball of that radius around the parent's centre
+// misses the surface and holds both centres, so they lie on the same side: the parent's, unless
+// the centre is within the boundary tolerance, where classify() answers kBoundary. So the answer
+// is classify()'s either way, without its ray for most cubes (all but those near the surface).
+inline Containment cellSide(const SolidIndex& index, const Vec3& center, double half_diag,
+                            double distance, const CellGeometry* parent) {
+  if (parent && parent->known && parent->where != Containment::kBoundary &&
+      half_diag < parent->distance && distance > index.boundaryTolerance())
+    return parent->where;
+  return index.classify(center);
+}
 
 // The verdict on one cube of the interior walk, the one rule both walks below follow:
 // - kHeld: one sphere holds its eight corners (then the whole cube: convexity);
@@ -33,7 +48,7 @@ enum class CellVerdict : uint8_t { kHeld, kEmpty, kGap, kUndecided, kSplit };
 
 inline CellVerdict cellVerdict(const SolidIndex& index, const SphereGrid& spheres, const Vec3& mn,
                                double size, int depth, int max_depth, CellGeometry* geometry,
-                               double* gap) {
+                               double* gap, const CellGeometry* parent = nullptr) {
   Vec3 corners[8];
   for (int k = 0; k < 8; ++k)
     corners[k] = mn + size * Vec3((k & 1) ? 1 : 0, (k & 2) ? 1 : 0, (k & 4) ? 1 : 0);
@@ -41,8 +56,9 @@ inline CellVerdict cellVerdict(const SolidIndex& index, const SphereGrid& sphere
   const Vec3 center = mn + Vec3::Constant(0.5 * size);
   if (!geometry->known) {
     const double half_diag = 0.5 * std::sqrt(3.0) * size;
-    geometry->has_surface = index.distance(center) <= half_diag;
-    geometry->where = index.classify(center);
+    geometry->distance = index.distance(center);
+    geometry->has_surface = geometry->distance <= half_diag;
+    geometry->where = cellSide(index, center, half_diag, geometry->distance, parent);
     geometry->known = true;
   }
   if (!geometry->has_surface && geometry->where == Containment::kOutside)
@@ -66,12 +82,13 @@ inline Vec3 childCell(const Vec3& mn, double h, int k) {
 // unsettled at max_depth go to on_undecided(min, size).
 template <class OnGap, class OnUndecided>
 void walkSolidCells(const SolidIndex& index, const SphereGrid& spheres, const Vec3& mn, double size,
-                    int depth, int max_depth, OnGap&& on_gap, OnUndecided&& on_undecided) {
+                    int depth, int max_depth, OnGap&& on_gap, OnUndecided&& on_undecided,
+                    const CellGeometry* parent = nullptr) {
   pollCancel();
   CellGeometry geometry;
   double gap = 0.0;
   const CellVerdict verdict =
-      cellVerdict(index, spheres, mn, size, depth, max_depth, &geometry, &gap);
+      cellVerdict(index, spheres, mn, size, depth, max_depth, &geometry, &gap, parent);
   if (verdict == CellVerdict::kHeld || verdict == CellVerdict::kEmpty) return;
   if (verdict == CellVerdict::kGap && !on_gap(mn, size, depth, gap)) return;
   if (depth >= max_depth) {
@@ -81,7 +98,7 @@ void walkSolidCells(const SolidIndex& index, const SphereGrid& spheres, const Ve
   const double h = 0.5 * size;
   for (int k = 0; k < 8; ++k)
     walkSolidCells(index, spheres, childCell(mn, h, k), h, depth + 1, max_depth, on_gap,
-                   on_undecided);
+                   on_undecided, &geometry);
 }
 
 // The root cubes of the walk: an 8³ grid of cubes of side max extent / 8 from bounds.min.

@@ -50,7 +50,7 @@ CellForest::CellForest(const SolidIndex& index, int max_depth)
     : index_(&index), max_depth_(max_depth), trees_(kRootCells) {}
 
 void CellForest::walk(Tree* tree, int64_t node, const Vec3& mn, double size, int depth, bool force,
-                      Walk* w) const {
+                      Walk* w, const CellGeometry* parent) const {
   if (!force) {
     const Vec3 mx = mn + Vec3::Constant(size);
     const double reach = tree->nodes[node].gap;
@@ -64,7 +64,7 @@ void CellForest::walk(Tree* tree, int64_t node, const Vec3& mn, double size, int
   double gap = 0.0;
   const CellVerdict before = n.verdict;
   const CellVerdict verdict =
-      cellVerdict(*index_, *w->grown, mn, size, depth, max_depth_, &n.geometry, &gap);
+      cellVerdict(*index_, *w->grown, mn, size, depth, max_depth_, &n.geometry, &gap, parent);
   n.verdict = verdict;
   n.cells = 1;
   if (verdict != CellVerdict::kSplit) {
@@ -80,11 +80,12 @@ void CellForest::walk(Tree* tree, int64_t node, const Vec3& mn, double size, int
     tree->nodes.resize(tree->nodes.size() + 8);  // invalidates n
   }
   const int64_t first = tree->nodes[node].children;
+  const CellGeometry geometry = tree->nodes[node].geometry;  // the walk may move the nodes
   const double h = 0.5 * size;
   double g = 0.0;
   int64_t undecided = 0, cells = 1;
   for (int k = 0; k < 8; ++k) {
-    walk(tree, first + k, childCell(mn, h, k), h, depth + 1, force_children, w);
+    walk(tree, first + k, childCell(mn, h, k), h, depth + 1, force_children, w, &geometry);
     const Node& c = tree->nodes[first + k];
     g = std::max(g, c.gap);
     undecided += c.undecided;

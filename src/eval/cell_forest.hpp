@@ -46,8 +46,9 @@ class CellForest {
     std::vector<Node> nodes = std::vector<Node>(1);
   };
   struct Walk;
-  void walk(Tree* tree, int64_t node, const Vec3& mn, double size, int depth, bool force,
-            Walk* w) const;
+  // parent: the geometry of the cube this one splits (none at the roots), for cellVerdict.
+  void walk(Tree* tree, int64_t node, const Vec3& mn, double size, int depth, bool force, Walk* w,
+            const CellGeometry* parent = nullptr) const;
   static void compact(Tree* tree);
 
   const SolidIndex* index_;
