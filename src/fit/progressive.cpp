@@ -19,6 +19,7 @@
 // the largest counts end about 5 % above independent fits in outside volume (E_r at 64 over the 12
 // shared closed meshes); ProgressiveOptions::top_from_seeds clusters the largest count from seeds
 // instead, as fitSpheres does (a curve's last count: fitCurve).
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -300,8 +301,11 @@ Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const Fi
   }
   ProgressiveFit run(std::move(impl));
   Impl& m = run.impl();
-  // The caller's thread limit (its arena's, under tbb::global_control's) sizes the fit's arena.
-  const int threads = tbb::this_task_arena::max_concurrency();
+  // The caller's thread limit sizes the fit's arena: its arena's, under tbb::global_control's
+  // (which this_task_arena::max_concurrency does not report: `sphereset --threads 1`).
+  const int threads = std::min(tbb::this_task_arena::max_concurrency(),
+                               static_cast<int>(tbb::global_control::active_value(
+                                   tbb::global_control::max_allowed_parallelism)));
   if (progressive.top_alongside && progressive.top_from_seeds &&
       run.startCount(options.num_spheres) == 0 && threads > 1) {
     try {

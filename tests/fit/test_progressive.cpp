@@ -6,8 +6,10 @@
 #include <tbb/global_control.h>
 
 #include <chrono>
+#include <fstream>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "coverage_oracle.hpp"
@@ -174,6 +176,35 @@ TEST(ProgressiveFit, WaitingForTheLargestCountReportsAndCancelsOnTheCallersThrea
   auto cancelled = ProgressiveFit::start(idx, o, nullptr, alongside);
   ASSERT_TRUE(cancelled.ok());
   EXPECT_THROW((void)cancelled->fit(8), std::runtime_error);
+}
+
+// The process's threads (Linux: the Threads line of /proc/self/status; -1 where it is absent).
+int processThreads() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("Threads:", 0) == 0) return std::stoi(line.substr(8));
+  return -1;
+}
+
+TEST(ProgressiveFit, TheLargestCountIsMadeAlongsideOnlyWhenThreadsAllowIt) {
+  // Under a limit of one thread (tbb::global_control, as `sphereset --threads 1` sets it, which
+  // the calling arena's max_concurrency does not report) start() starts no thread of its own;
+  // under two it does, while the largest count is being made.
+  const Mesh link = test::robotLink();
+  const SolidIndex idx(link);
+  const FitOptions o = fitPreset(128);
+  ProgressiveOptions alongside;
+  alongside.top_from_seeds = alongside.top_alongside = true;
+  const auto startedThreads = [&](int limit) {
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, limit);
+    const int before = processThreads();
+    auto run = ProgressiveFit::start(idx, o, nullptr, alongside);
+    EXPECT_TRUE(run.ok());
+    return processThreads() - before;
+  };
+  if (processThreads() < 0) GTEST_SKIP() << "no /proc/self/status";
+  EXPECT_EQ(startedThreads(1), 0);
+  EXPECT_GE(startedThreads(2), 1);
 }
 
 TEST(ProgressiveFit, ARunLeftWithItsLargestCountInFlightStopsIt) {
