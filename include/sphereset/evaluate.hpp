@@ -251,9 +251,10 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
 // local step (ProgressiveFit::step) unless it is a power of two or the last count: each stretch of
 // such counts is stepped up from the fit below and, when the fit above follows it directly, down
 // from that fit too (until three sets in a row are looser than the upward ones), the counts up to
-// the crossover of least total outside volume taking the upward sets. The whole curve 1 ... 64 costs 1.6 to 3.9 fits at 64 (2.4 on average over the shared
-// meshes), and its stepped counts are usually looser than fits at those counts (docs/benchmarks.md,
-// "Progressive fitting"). Each set is checked as `sphereset fit` checks its result (the steps' by
+// the crossover of least total outside volume taking the upward sets. The whole curve 1 ... 64
+// costs 1.5 to 3.3 fits at 64 (2.2 to 2.3 on average over the shared meshes), and its stepped
+// counts are usually looser than fits at those counts (docs/benchmarks.md, "Progressive
+// fitting"). Each set is checked as `sphereset fit` checks its result (the steps' by
 // the certificate of the set before, kept up to date: the same figures). CurvePoint::meets is false
 // (no tolerance). The same request and counts give the same curve for any thread count. A count's
 // set differs from the tolerance search's at that count, whose runs sample the points of other
