@@ -51,14 +51,16 @@ struct Probe {
 };
 
 // The probe at q, near an earlier probe `near` (q within near.dist of its point) or none. The
-// open ball of radius near.dist around that point misses the surface, so q lies on the same side:
-// its side is taken from there (no ray cast) unless q is within the boundary tolerance of the
-// surface, where classify() answers kBoundary; so the answer is classify()'s either way.
+// open ball of radius near.dist around that point misses the surface, so on a closed surface q
+// lies on the same side: its side is taken from there (no ray cast) unless either point is within
+// the boundary tolerance of the surface, where classify() answers kBoundary (taken as inside);
+// so the answer is classify()'s either way.
 Probe probe(const SolidIndex& solid, const Vec3& q, double h, const Probe* near = nullptr,
             double near_gap = 0.0) {
   Probe p;
   p.dist = solid.distance(q);
-  p.outside = near && near_gap < near->dist && p.dist > solid.boundaryTolerance()
+  const double tolerance = solid.boundaryTolerance();
+  p.outside = near && near_gap < near->dist && near->dist > tolerance && p.dist > tolerance
                   ? near->outside
                   : solid.classify(q) == Containment::kOutside;
   if (p.outside) {

@@ -43,7 +43,7 @@ TEST(CoverCells, ACubeTakesItsParentsSideOnlyWhereClassifyAgrees) {
     int64_t cubes = 0, taken = 0;
     compareSides(index, 2, &cubes, &taken);
     EXPECT_EQ(cubes, kRootCells * (1 + 8 + 64));
-    // Most cubes take their parent's side: the shortcut is used, not only allowed.
+    // Most cubes qualify for their parent's side, so the comparison covers the shortcut.
     EXPECT_GT(taken, cubes / 2);
   }
 }
