@@ -23,18 +23,20 @@ struct CellGeometry {
   double distance = 0.0;  // from its centre to the surface
 };
 
-// Where a cube's centre lies, `distance` from the surface, given its parent cube's geometry (or
-// none). The centre is the cube's half diagonal from its parent's centre; when that is less than
-// the parent centre's distance to the surface, the ball of that radius around the parent's centre
-// misses the surface and holds both centres, so they lie on the same side: the parent's, unless
-// the centre is within the boundary tolerance, where classify() answers kBoundary. So the answer
-// is classify()'s either way, without its ray for most cubes (all but those near the surface).
-inline Containment cellSide(const SolidIndex& index, const Vec3& center, double half_diag,
-                            double distance, const CellGeometry* parent) {
-  if (parent && parent->known && parent->where != Containment::kBoundary &&
-      half_diag < parent->distance && distance > index.boundaryTolerance())
-    return parent->where;
-  return index.classify(center);
+// Where p lies, `distance` from the surface, given a point `gap` away from it on side
+// `near_side`, `near_distance` from the surface (none: a near_distance of 0). When gap is less
+// than near_distance, the ball of that radius around the near point misses the surface and holds
+// both points, so on a closed surface they lie on the same side: the near point's, unless either
+// is within the boundary tolerance, where classify() answers kBoundary. So the answer is
+// classify()'s either way, without its ray for most points (all but those near the surface). The
+// interior walk (a cube's centre is its half diagonal from its parent's) and the protrusion's
+// search (src/eval/protrusion.cpp) take it.
+inline Containment sideNear(const SolidIndex& index, const Vec3& p, double distance,
+                            Containment near_side, double near_distance, double gap) {
+  if (near_side != Containment::kBoundary && gap < near_distance &&
+      distance > index.boundaryTolerance())
+    return near_side;
+  return index.classify(p);
 }
 
 // The verdict on one cube of the interior walk, the one rule both walks below follow:
@@ -58,7 +60,9 @@ inline CellVerdict cellVerdict(const SolidIndex& index, const SphereGrid& sphere
     const double half_diag = 0.5 * std::sqrt(3.0) * size;
     geometry->distance = index.distance(center);
     geometry->has_surface = geometry->distance <= half_diag;
-    geometry->where = cellSide(index, center, half_diag, geometry->distance, parent);
+    geometry->where = parent && parent->known ? sideNear(index, center, geometry->distance,
+                                                         parent->where, parent->distance, half_diag)
+                                              : index.classify(center);
     geometry->known = true;
   }
   if (!geometry->has_surface && geometry->where == Containment::kOutside)

@@ -22,6 +22,7 @@
 #include <queue>
 #include <vector>
 
+#include "cover/cover_cells.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/solid_index.hpp"
 
@@ -34,36 +35,29 @@ constexpr double kHalfDiagonal = 1.7320508075688772;
 // witness, so that the search prunes from its start.
 constexpr int kSeedDirections = 26;
 
-struct Cell {
-  Vec3 centre;
-  double half = 0.0;     // half the edge
-  double bound = 0.0;    // upper bound of d over the cell
-  double dist = 0.0;     // distance from the centre to the surface
-  bool outside = false;  // whether the centre is outside the solid
-  bool operator<(const Cell& o) const { return bound < o.bound; }
-};
-
-// d at q, and the bound of d over the cube of half-diagonal h around q; dist and outside as in
-// Cell.
+// d at q, and the bound of d over the cube of half-diagonal h around q; q's distance to the
+// surface and its side.
 struct Probe {
   double d = 0.0, bound = 0.0, dist = 0.0;
-  bool outside = false;
+  Containment where = Containment::kBoundary;
 };
 
-// The probe at q, near an earlier probe `near` (q within near.dist of its point) or none. The
-// open ball of radius near.dist around that point misses the surface, so on a closed surface q
-// lies on the same side: its side is taken from there (no ray cast) unless either point is within
-// the boundary tolerance of the surface, where classify() answers kBoundary (taken as inside);
-// so the answer is classify()'s either way.
+struct Cell {
+  Vec3 centre;
+  double half = 0.0;  // half the edge
+  Probe probe;        // at the centre; probe.bound holds d over the cell
+  bool operator<(const Cell& o) const { return probe.bound < o.probe.bound; }
+};
+
+// The probe at q, `gap` away from an earlier probe `near` (its side taken when the ball around it
+// allows: detail::sideNear) or none.
 Probe probe(const SolidIndex& solid, const Vec3& q, double h, const Probe* near = nullptr,
-            double near_gap = 0.0) {
+            double gap = 0.0) {
   Probe p;
   p.dist = solid.distance(q);
-  const double tolerance = solid.boundaryTolerance();
-  p.outside = near && near_gap < near->dist && near->dist > tolerance && p.dist > tolerance
-                  ? near->outside
-                  : solid.classify(q) == Containment::kOutside;
-  if (p.outside) {
+  p.where =
+      near ? detail::sideNear(solid, q, p.dist, near->where, near->dist, gap) : solid.classify(q);
+  if (p.where == Containment::kOutside) {
     p.d = p.dist;
     p.bound = p.dist + h;
   } else {
@@ -99,30 +93,29 @@ SphereProtrusionBound oneSphere(const SolidIndex& solid, const Sphere& s, double
   static_assert(kSeedDirections == 26);
   std::priority_queue<Cell> open;
   double dropped = 0.0;  // the largest bound of a cell left unsplit because of the tolerance
-  open.push({s.center, s.radius, root.bound, root.dist, root.outside});
+  open.push({s.center, s.radius, root});
   out.cells = 1;
-  while (!open.empty() && open.top().bound > out.lower + tolerance) {
+  while (!open.empty() && open.top().probe.bound > out.lower + tolerance) {
     if (out.cells >= max_cells) break;
     const Cell c = open.top();
     open.pop();
-    const Probe parent{0.0, 0.0, c.dist, c.outside};
     const double half = 0.5 * c.half;
     for (int k = 0; k < 8; ++k) {
       const Vec3 q =
           c.centre + half * Vec3(k & 1 ? 1.0 : -1.0, k & 2 ? 1.0 : -1.0, k & 4 ? 1.0 : -1.0);
       if (cubeBallGap(q, half, s) > 0.0) continue;  // no point of the ball
-      const Probe p = probe(solid, q, half * kHalfDiagonal, &parent, half * kHalfDiagonal);
+      const Probe p = probe(solid, q, half * kHalfDiagonal, &c.probe, half * kHalfDiagonal);
       ++out.cells;
       if ((q - s.center).norm() <= s.radius) consider(q, p.d);
       if (p.bound > out.lower + tolerance)
-        open.push({q, half, p.bound, p.dist, p.outside});
+        open.push({q, half, p});
       else
         dropped = std::max(dropped, p.bound);
     }
   }
   // Every cell is split, open, or dropped with its bound: the largest of these bounds holds d
   // over the whole ball.
-  out.upper = std::max({out.lower, dropped, open.empty() ? 0.0 : open.top().bound});
+  out.upper = std::max({out.lower, dropped, open.empty() ? 0.0 : open.top().probe.bound});
   out.converged = out.upper <= out.lower + tolerance;
   return out;
 }

@@ -1,5 +1,5 @@
 // The interior walk's cube geometry (cover/cover_cells.hpp): a cube's side of the surface taken
-// from its parent's (cellSide) is the side classify() gives, on every cube of an octree over a
+// from its parent's (sideNear) is the side classify() gives, on every cube of an octree over a
 // robot link and a torus down to a depth where cubes meet the surface.
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 namespace sphereset::detail {
 namespace {
 
-// Every cube below the 8³ roots down to max_depth: cellSide from its parent against classify.
+// Every cube below the 8³ roots down to max_depth: sideNear from its parent against classify.
 void compareSides(const SolidIndex& index, int max_depth, int64_t* cubes, int64_t* taken) {
   const std::function<void(const Vec3&, double, int, const CellGeometry*)> visit =
       [&](const Vec3& mn, double size, int depth, const CellGeometry* parent) {
@@ -20,7 +20,9 @@ void compareSides(const SolidIndex& index, int max_depth, int64_t* cubes, int64_
         const double half_diag = 0.5 * std::sqrt(3.0) * size;
         CellGeometry g;
         g.distance = index.distance(center);
-        g.where = cellSide(index, center, half_diag, g.distance, parent);
+        g.where =
+            parent ? sideNear(index, center, g.distance, parent->where, parent->distance, half_diag)
+                   : index.classify(center);
         g.known = true;
         const Containment truth = index.classify(center);
         ASSERT_EQ(g.where, truth) << "cube at depth " << depth;
