@@ -136,12 +136,20 @@ struct ProtrusionOptions {
   // diagonal (ur5_upperarm, 64 spheres); a ball far larger than the solid needs many more to
   // tighten its bound, which stays valid, only looser (converged false), past the limit.
   int64_t max_cells = 50000;
+  // Only the union's figures are wanted (a curve's checks): a ball is refined only while its
+  // bound exceeds the settle value, the largest of `known` and the distances found on every
+  // ball's seed directions, since no point of it can then set the union's figure. Its `upper`
+  // is then a valid bound of at most that value, not within `tolerance` of its own `lower`; the
+  // union's `upper` keeps its guarantee (within `tolerance` of the union's `lower`, or of
+  // `known` when that is larger).
+  bool union_only = false;
+  double known = 0.0;  // length units, at least 0: a distance some point of the union reaches
 };
 struct SphereProtrusionBound {
   double lower = 0.0, upper = 0.0;
   Vec3 witness = Vec3::Zero();
   int64_t cells = 0;
-  bool converged = true;
+  bool converged = true;  // upper within tolerance of lower, or at most the settle value
 };
 struct ProtrusionResult {
   double upper = 0.0;
@@ -154,7 +162,8 @@ struct ProtrusionResult {
   double seconds = 0.0;
 };
 // Errors (kInvalidArgument): a tolerance that is not a finite length above 0, max_cells below
-// 1, a sphere with a NaN, infinite or negative value. The solid must be closed.
+// 1, `known` negative or not finite, a sphere with a NaN, infinite or negative value. The solid
+// must be closed.
 Expected<ProtrusionResult> sphereProtrusion(const SolidIndex& solid,
                                             const std::vector<Sphere>& spheres,
                                             const ProtrusionOptions& options);
@@ -242,8 +251,8 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
 // fit at each of `counts` (increasing, each from 1 to limits::kMaxCurveCount; none: every count
 // from 1 to max_spheres), as the fits of one progressive run (ProgressiveFit) that samples the
 // points of the largest count, each count's clustering started from that of the largest count
-// already clustered at most half its size (from seeds when there is none), except the counts up to
-// 8 (ProgressiveOptions::seeded_up_to) and the largest count, clustered from seeds
+// already clustered at most half its size (from seeds when there is none), except the counts 1,
+// 2 and 8 (ProgressiveOptions::seeded) and the largest count, clustered from seeds
 // (ProgressiveOptions::top_from_seeds: its set is fitSpheres's at that count, as `sphereset fit -n`
 // gives it; made beside the smaller counts when more than one thread is allowed,
 // ProgressiveOptions::top_alongside); independent fits when the request does not allow a run

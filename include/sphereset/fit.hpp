@@ -279,11 +279,12 @@ struct ProgressiveOptions {
   // cancel). Its FitResult::seconds are its own, made beside the others. A run destroyed before
   // taking it stops it within about options.progress_interval.
   bool top_alongside = false;
-  // Counts up to this are clustered from seeds (on the run's points) whatever was clustered
-  // below them, so that the warm starts begin there: a chain warm-started from one sphere ends
-  // further from independent fits than one from 8 spheres (a curve's E_r at 32 over independent
-  // fits, 12 shared meshes, seeds 1 and 2: 1.038 against 1.005). fitCurve takes 8.
-  int seeded_up_to = 0;
+  // Counts clustered from seeds (on the run's points) whatever was clustered below them, so
+  // that the warm starts begin there: a chain warm-started from one sphere ends further from
+  // independent fits than one from 8 spheres (a curve's E_r at 32 over independent fits, 12
+  // shared meshes, seeds 1 and 2: 1.038 against 1.005). fitCurve takes 1, 2 and 8 (its 4 starts
+  // from 2: docs/benchmarks.md, "Progressive fitting").
+  std::vector<int> seeded = {};
 };
 
 class ProgressiveFit {
@@ -344,8 +345,8 @@ class ProgressiveFit {
   Expected<FitResult> step(int count);
   // The count fit(count) starts from: `count` itself if clustered (by warm_from only when
   // ProgressiveOptions::adopt), else 0 (from seeds) for the largest count with
-  // ProgressiveOptions::top_from_seeds and for counts up to ProgressiveOptions::seeded_up_to,
-  // else the largest smaller count clustered within ProgressiveOptions::start_ratio, or 0.
+  // ProgressiveOptions::top_from_seeds and for the counts in ProgressiveOptions::seeded, else the
+  // largest smaller count clustered within ProgressiveOptions::start_ratio, or 0.
   int startCount(int count) const;
   int maxCount() const;
 

@@ -5,9 +5,12 @@
 // (ProgressiveFit::step: a split up from the count below, or a removal down from the count
 // above; runOrder), except the powers of two and the last count, which are fitted; the stepped
 // counts are checked by the certificate of the last set kept up to date (certificate.hpp) and the
-// certified protrusion of the spheres that changed, which give the figures a full evaluation gives
-// (docs/benchmarks.md, "Progressive fitting": the costs and the looseness of the steps).
+// certified protrusion of the spheres that changed (searched only as far as the union's figure
+// needs: ProtrusionOptions::union_only), which give the figures a full evaluation gives, the
+// protrusion within its tolerance (docs/benchmarks.md, "Progressive fitting": the costs and the
+// looseness of the steps).
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <limits>
 #include <optional>
@@ -24,10 +27,11 @@
 namespace sphereset {
 namespace {
 
-// The counts up to this are clustered from seeds, and the warm starts begin there
-// (ProgressiveOptions::seeded_up_to): started from one sphere, the run's fits at 32 ended 3.8 %
-// above independent fits in E_r, from 8 0.5 % (12 shared meshes, seeds 1 and 2).
-constexpr int kSeededCounts = 8;
+// The counts clustered from seeds, where the warm starts begin (ProgressiveOptions::seeded):
+// started from one sphere, the run's fits at 32 ended 3.8 % above independent fits in E_r, from
+// 8 0.5 % (12 shared meshes, seeds 1 and 2). The 4 warm-started from 2 ended 0.981 times the 4
+// clustered from seeds in E_r, for 0.95 of the curve's time (docs/benchmarks.md).
+constexpr std::array kSeededCounts = {1, 2, 8};
 
 // A stretch's downward steps stop after this many counts in a row whose downward set has more
 // outside volume than the upward one: a step down is good for a few counts below its fit and then
@@ -45,9 +49,10 @@ bool isStep(const std::vector<int>& counts, size_t k) {
 }
 
 // The points of a run whose sets change a few spheres at a time: the coverage certificate of the
-// last set, updated where spheres changed, and each sphere's certified protrusion (each ball's is
-// found on its own, evaluate.hpp), computed again for the changed ones. Equal to the figures of
-// fitCheckEvalOptions's evaluation: E_r summed, coverage and the largest protrusion bound.
+// last set, updated where spheres changed, and each sphere's certified protrusion bounds (each
+// ball's are found on its own, evaluate.hpp), computed again for the changed ones (protrude).
+// The figures of fitCheckEvalOptions's evaluation: E_r summed and coverage equal, the largest
+// protrusion bound within the tolerance of the union's witness as there.
 class StepChecker {
  public:
   // A set with more than this share of its spheres changed is certified in full rather than
@@ -57,6 +62,7 @@ class StepChecker {
   StepChecker(const SolidIndex& index, const Mesh* original) : index_(index) {
     options_.original = original;
     protrusion_.tolerance = EvalOptions{}.protrusion_tolerance * index.bounds().diagonal();
+    protrusion_.union_only = true;
   }
 
   Expected<CurvePoint> check(const std::vector<Sphere>& spheres, int n) {
@@ -66,20 +72,14 @@ class StepChecker {
           spheres[i].radius != last_[i].radius)
         changed.push_back(i);
     if (Status st = update(spheres, changed); !st) return st.error();
-    std::vector<Sphere> moved;
-    for (size_t i : changed) moved.push_back(spheres[i]);
-    auto p = sphereProtrusion(index_, moved, protrusion_);
-    if (!p) return p.error();
-    sphere_protrusion_.resize(spheres.size());
-    for (size_t k = 0; k < changed.size(); ++k)
-      sphere_protrusion_[changed[k]] = p->spheres[k].upper;
+    if (Status st = protrude(spheres, changed); !st) return st.error();
     last_ = spheres;
     const CertificateSummary& s = cert_->summary();
     CurvePoint point;
     point.n = n;
     point.er_sum = s.er_sum;
     point.covered = s.covered;
-    point.protrusion = *std::max_element(sphere_protrusion_.begin(), sphere_protrusion_.end());
+    point.protrusion = *std::max_element(upper_.begin(), upper_.end());
     return point;
   }
 
@@ -104,12 +104,49 @@ class StepChecker {
     return {};
   }
 
+  // Each ball's protrusion bounds brought to `spheres`: only the union's figure is reported, so
+  // the changed balls are searched with the largest distance the others reach as known
+  // (ProtrusionOptions::union_only), and an unchanged ball whose bound was left above the
+  // union's new lower bound plus the tolerance (its search stopped at the figure of a ball since
+  // changed) is searched again. The union's bound is then within the tolerance of its witness.
+  Status protrude(const std::vector<Sphere>& spheres, const std::vector<size_t>& changed) {
+    std::vector<bool> fresh(spheres.size(), false);
+    for (size_t i : changed) fresh[i] = true;
+    lower_.resize(spheres.size());
+    upper_.resize(spheres.size());
+    double known = 0.0;
+    for (size_t i = 0; i < spheres.size(); ++i)
+      if (!fresh[i]) known = std::max(known, lower_[i]);
+    if (Status st = search(spheres, changed, known); !st) return st;
+    known = *std::max_element(lower_.begin(), lower_.end());
+    std::vector<size_t> loose;
+    for (size_t i = 0; i < spheres.size(); ++i)
+      if (!fresh[i] && upper_[i] > known + protrusion_.tolerance) loose.push_back(i);
+    return search(spheres, loose, known);
+  }
+
+  Status search(const std::vector<Sphere>& spheres, const std::vector<size_t>& which,
+                double known) {
+    if (which.empty()) return {};
+    std::vector<Sphere> balls;
+    for (size_t i : which) balls.push_back(spheres[i]);
+    ProtrusionOptions o = protrusion_;
+    o.known = known;
+    auto p = sphereProtrusion(index_, balls, o);
+    if (!p) return p.error();
+    for (size_t k = 0; k < which.size(); ++k) {
+      lower_[which[k]] = p->spheres[k].lower;
+      upper_[which[k]] = p->spheres[k].upper;
+    }
+    return {};
+  }
+
   const SolidIndex& index_;
   CertificateOptions options_;
   ProtrusionOptions protrusion_;
   std::optional<CoverageCertificate> cert_;
   std::vector<Sphere> last_;
-  std::vector<double> sphere_protrusion_;
+  std::vector<double> lower_, upper_;  // each ball's protrusion bounds
 };
 
 }  // namespace
@@ -299,7 +336,7 @@ Expected<CurveResult> fitCurve(const SolidIndex& index, const FitRequest& reques
     ProgressiveOptions progressive;
     progressive.top_from_seeds = true;  // the last count is fitSpheres's own fit
     progressive.top_alongside = true;   // made beside the counts below it
-    progressive.seeded_up_to = kSeededCounts;
+    progressive.seeded.assign(kSeededCounts.begin(), kSeededCounts.end());
     auto started = ProgressiveFit::start(index, top_options, nullptr, progressive);
     if (!started) return started.error();
     run.emplace(std::move(started).value());

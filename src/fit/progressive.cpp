@@ -377,7 +377,7 @@ int ProgressiveFit::startCount(int count) const {
   if (m.fits.contains(count)) return count;  // clustered by this run
   const bool adopted = m.progressive.adopt && m.clusterings.contains(count);
   if (!adopted && ((m.progressive.top_from_seeds && count == m.options.num_spheres) ||
-                   count <= m.progressive.seeded_up_to))
+                   std::ranges::find(m.progressive.seeded, count) != m.progressive.seeded.end()))
     return 0;
   return startFrom(m.clusterings, count, m.progressive.start_ratio, m.progressive.adopt);
 }

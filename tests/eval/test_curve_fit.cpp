@@ -32,11 +32,11 @@ void expectSameSpheres(const std::vector<Sphere>& a, const std::vector<Sphere>& 
   }
 }
 
-// The run a curve makes: its last count and those up to 8 clustered from seeds.
+// The run a curve makes: its last count and 1, 2 and 8 clustered from seeds.
 ProgressiveOptions seededTop() {
   ProgressiveOptions p;
   p.top_from_seeds = true;
-  p.seeded_up_to = 8;
+  p.seeded = {1, 2, 8};
   return p;
 }
 

@@ -2,7 +2,8 @@
 // ball around it), a ball over a cavity whose farthest point is its centre and not its sphere,
 // and a brute-force oracle on a non-convex link: dense points in every ball, their distance to
 // the solid by every triangle and the winding number, never beyond the bound, with the witness
-// at the distance the bound was certified from. Thread counts give the same answer.
+// at the distance the bound was certified from. Thread counts give the same answer. Asked for
+// the union's figure only, the balls that cannot set it stay loose, their bounds still valid.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -148,6 +149,44 @@ TEST(Protrusion, NeverBeyondTheBoundOnDenseSamplesOfAFittedSet) {
   EXPECT_GE(r->lower, sampled - tol);  // the search found at least what the samples did, less tol
 }
 
+TEST(Protrusion, OnlyTheUnionsFigureLeavesTheBallsThatCannotSetItLoose) {
+  // union_only: every ball's bound still holds (at least what the full search found in it), the
+  // union's is within the tolerance of its witness and of the full search's, and the balls that
+  // cannot set it are searched less.
+  const Mesh link = robotLink();
+  const SolidIndex index(link);
+  auto fit = fitSpheres(index, fitPreset(8, FitQuality::kFast));
+  ASSERT_TRUE(fit.ok());
+  ProtrusionOptions po;
+  po.tolerance = 1e-3 * index.bounds().diagonal();
+  auto full = sphereProtrusion(index, fit->spheres, po);
+  ProtrusionOptions uo = po;
+  uo.union_only = true;
+  auto some = sphereProtrusion(index, fit->spheres, uo);
+  ASSERT_TRUE(full.ok() && some.ok());
+  ASSERT_TRUE(full->converged);
+  EXPECT_TRUE(some->converged);
+  EXPECT_LT(some->cells, full->cells);
+  EXPECT_GE(some->upper, full->lower);
+  EXPECT_LE(some->upper, some->lower + po.tolerance);
+  EXPECT_LE(some->lower, full->upper);
+  EXPECT_NEAR(bruteDistance(link, some->witness), some->lower, 1e-9);
+  for (size_t i = 0; i < fit->spheres.size(); ++i) {
+    EXPECT_GE(some->spheres[i].upper, full->spheres[i].lower) << "sphere " << i;
+    EXPECT_LE(some->spheres[i].upper,
+              std::max(some->spheres[i].lower + po.tolerance, some->lower) + 1e-12)
+        << "sphere " << i;
+  }
+  // A figure known from elsewhere (here the full search's witness) settles every ball below it.
+  uo.known = full->lower;
+  auto known = sphereProtrusion(index, fit->spheres, uo);
+  ASSERT_TRUE(known.ok());
+  for (const SphereProtrusionBound& b : known->spheres)
+    EXPECT_LE(b.upper, std::max(b.lower + po.tolerance, full->lower) + 1e-12);
+  EXPECT_GE(known->upper, full->lower);
+  EXPECT_LE(known->cells, some->cells);
+}
+
 TEST(Protrusion, SameAnswerOnAnyThreadCount) {
   const Mesh torus = makeTorus(1.0, 0.3, 32, 16);
   const std::vector<Sphere> spheres = {{Vec3(1, 0, 0), 0.5},
@@ -183,6 +222,11 @@ TEST(Protrusion, BadOptionsAndSpheresAreRefused) {
   o.tolerance = 1e-3;
   EXPECT_FALSE(sphereProtrusion(index, {{Vec3(NAN, 0, 0), 1.0}}, o).ok());
   EXPECT_FALSE(sphereProtrusion(index, {{Vec3::Zero(), -1.0}}, o).ok());
+  o.known = -1.0;
+  EXPECT_FALSE(sphereProtrusion(index, {{Vec3::Zero(), 1.0}}, o).ok());
+  o.known = NAN;
+  EXPECT_FALSE(sphereProtrusion(index, {{Vec3::Zero(), 1.0}}, o).ok());
+  o.known = 0.0;
   o.max_cells = 0;
   EXPECT_FALSE(sphereProtrusion(index, {{Vec3::Zero(), 1.0}}, o).ok());
 }

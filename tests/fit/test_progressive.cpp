@@ -103,12 +103,14 @@ TEST(ProgressiveFit, TheLargestCountFromSeedsIsTheIndependentFit) {
   ASSERT_TRUE(with_adopt.ok() && without.ok());
   EXPECT_EQ(with_adopt->startCount(8), 8);
   EXPECT_EQ(without->startCount(8), 0);
-  // Counts up to seeded_up_to start from seeds too, those above it from half their count.
+  // The seeded counts start from seeds too, the others from half their count.
   ProgressiveOptions low;
-  low.seeded_up_to = 4;
+  low.seeded = {4};
   auto chain = ProgressiveFit::start(idx, o, nullptr, low);
   ASSERT_TRUE(chain.ok());
-  for (int n : {1, 2}) ASSERT_TRUE(chain->fit(n).ok());
+  ASSERT_TRUE(chain->fit(1).ok());
+  EXPECT_EQ(chain->startCount(2), 1);
+  ASSERT_TRUE(chain->fit(2).ok());
   EXPECT_EQ(chain->startCount(4), 0);
   ASSERT_TRUE(chain->fit(4).ok());
   EXPECT_EQ(chain->startCount(8), 4);
