@@ -37,9 +37,10 @@ constexpr std::array kSeededCounts = {1, 2, 8};
 // outside volume than the upward one: a step down is good for a few counts below its fit and then
 // worse than the step up, so the crossover of least total lies above them. A heuristic: a
 // crossover below such a run would be missed; the curves 1 ... 64 of the 12 shared closed meshes
-// (seed 1) are the same sets as with every downward step made (on spot.obj those took 1.80 s of
-// the calling thread, 0.65 s of them for the sets kept).
-constexpr int kDownBehind = 3;
+// are the same sets as with every downward step made (seed 1; with 3 in a row, and with 2 on
+// seeds 1 and 3 against 3; on spot.obj all downward steps took 1.80 s of the calling thread,
+// 0.65 s of them for the sets kept).
+constexpr int kDownBehind = 2;
 
 // Whether counts[k] is a step from counts[k - 1] (ProgressiveFit::step): one more sphere, not a
 // power of two (those are fitted, each from at most half its count) and not the last count.
