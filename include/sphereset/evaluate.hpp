@@ -129,7 +129,8 @@ Expected<EvalResult> evaluateSpheres(const SolidIndex& index, const std::vector<
 // solid, certified by branch and bound over each ball (protrusion.cpp): `upper` bounds the
 // distance of every point of the union, `lower` is the distance of `witness`, a point of ball
 // `sphere`; upper - lower <= tolerance unless a ball ran out of cells (converged false, upper
-// still valid). Per ball the same, for the bounds per sphere and per link.
+// still valid). Per ball the same, for the bounds per sphere and per link, unless only the
+// union's figure is asked for (union_only below).
 struct ProtrusionOptions {
   double tolerance = 0.0;  // length units, above 0: the bound's slack over the witness
   // Octree cells per ball at most. A fitted ball needs up to about 27 000 at 0.001 of the
@@ -143,7 +144,9 @@ struct ProtrusionOptions {
   // union's `upper` keeps its guarantee (within `tolerance` of the union's `lower`, or of
   // `known` when that is larger).
   bool union_only = false;
-  double known = 0.0;  // length units, at least 0: a distance some point of the union reaches
+  // Length units, at least 0: a distance some point of the union reaches. A larger value keeps
+  // every bound valid and only loosens the union's (to within the tolerance of `known`).
+  double known = 0.0;
 };
 struct SphereProtrusionBound {
   double lower = 0.0, upper = 0.0;
@@ -264,7 +267,8 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
 // costs 1.4 to 3.3 fits at 64 (2.1 to 2.2 on average over the shared meshes), and its stepped
 // counts are usually looser than fits at those counts (docs/benchmarks.md, "Progressive
 // fitting"). Each set is checked as `sphereset fit` checks its result (the steps' by
-// the certificate of the set before, kept up to date: the same figures). CurvePoint::meets is false
+// the certificate of the set before, kept up to date: the same figures, the protrusion within its
+// tolerance). CurvePoint::meets is false
 // (no tolerance). The same request and counts give the same curve for any thread count. A count's
 // set differs from the tolerance search's at that count, whose runs sample the points of other
 // counts.

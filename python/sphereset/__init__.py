@@ -229,7 +229,7 @@ def fit_curve(mesh: MeshLike, *, counts: Optional[Sequence[int]] = None,
     library's default, 64) or at ``counts`` (increasing), from one run, as ``sphereset curve``
     gives them (the same library call, fitCurve): the fits of one progressive run for the
     largest count, the counts between powers of two made by local steps (usually looser than
-    fits at those counts), the counts up to 8 and the last count clustered from seeds (the last
+    fits at those counts), the counts 1, 2 and 8 and the last count clustered from seeds (the last
     is the set :func:`fit` gives at that count), or independent fits when the options do not
     allow a run; each checked as ``fit`` checks its result. The fit keywords are :func:`fit`'s
     (without ``n``); the counts and options are checked before the mesh is read. ``progress``

@@ -36,10 +36,10 @@ constexpr std::array kSeededCounts = {1, 2, 8};
 // A stretch's downward steps stop after this many counts in a row whose downward set has more
 // outside volume than the upward one: a step down is good for a few counts below its fit and then
 // worse than the step up, so the crossover of least total lies above them. A heuristic: a
-// crossover below such a run would be missed; the curves 1 ... 64 of the 12 shared closed meshes
-// are the same sets as with every downward step made (seed 1; with 3 in a row, and with 2 on
-// seeds 1 and 3 against 3; on spot.obj all downward steps took 1.80 s of the calling thread,
-// 0.65 s of them for the sets kept).
+// crossover below such a run would be missed. On the curves 1 ... 64 of the 12 shared closed
+// meshes, 3 gave the same sets as every downward step made (seed 1), and 2 the same as 3 (seeds 1
+// and 3); on spot.obj all downward steps took 1.80 s of the calling thread, 0.65 s of them for the
+// sets kept.
 constexpr int kDownBehind = 2;
 
 // Whether counts[k] is a step from counts[k - 1] (ProgressiveFit::step): one more sphere, not a
@@ -109,12 +109,14 @@ class StepChecker {
   // the changed balls are searched with the largest distance the others reach as known
   // (ProtrusionOptions::union_only), and an unchanged ball whose bound was left above the
   // union's new lower bound plus the tolerance (its search stopped at the figure of a ball since
-  // changed) is searched again. The union's bound is then within the tolerance of its witness.
+  // changed) is searched again, unless its search ran out of cells (it would end the same). The
+  // union's bound is then within the tolerance of its witness, or as loose as such a ball's.
   Status protrude(const std::vector<Sphere>& spheres, const std::vector<size_t>& changed) {
     std::vector<bool> fresh(spheres.size(), false);
     for (size_t i : changed) fresh[i] = true;
     lower_.resize(spheres.size());
     upper_.resize(spheres.size());
+    converged_.resize(spheres.size());
     double known = 0.0;
     for (size_t i = 0; i < spheres.size(); ++i)
       if (!fresh[i]) known = std::max(known, lower_[i]);
@@ -122,7 +124,8 @@ class StepChecker {
     known = *std::max_element(lower_.begin(), lower_.end());
     std::vector<size_t> loose;
     for (size_t i = 0; i < spheres.size(); ++i)
-      if (!fresh[i] && upper_[i] > known + protrusion_.tolerance) loose.push_back(i);
+      if (!fresh[i] && converged_[i] && upper_[i] > known + protrusion_.tolerance)
+        loose.push_back(i);
     return search(spheres, loose, known);
   }
 
@@ -138,6 +141,7 @@ class StepChecker {
     for (size_t k = 0; k < which.size(); ++k) {
       lower_[which[k]] = p->spheres[k].lower;
       upper_[which[k]] = p->spheres[k].upper;
+      converged_[which[k]] = p->spheres[k].converged;
     }
     return {};
   }
@@ -148,6 +152,7 @@ class StepChecker {
   std::optional<CoverageCertificate> cert_;
   std::vector<Sphere> last_;
   std::vector<double> lower_, upper_;  // each ball's protrusion bounds
+  std::vector<bool> converged_;        // each ball's search ended before its cells ran out
 };
 
 }  // namespace

@@ -15,7 +15,7 @@
 // same answers, for 0.62 of the time (spot.obj's curve, its 306 balls: 1.14 s against 1.83 s).
 // When only the union's figure is wanted (ProtrusionOptions::union_only), every ball's seed
 // directions are probed first and a ball is searched only while its bound exceeds the largest
-// distance found on them: a bound below it cannot set the union's figure.
+// distance found on them, or `known` when larger: a bound below it cannot set the union's figure.
 #include <tbb/parallel_for.h>
 
 #include <algorithm>

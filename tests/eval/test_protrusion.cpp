@@ -167,6 +167,10 @@ TEST(Protrusion, OnlyTheUnionsFigureLeavesTheBallsThatCannotSetItLoose) {
   ASSERT_TRUE(full->converged);
   EXPECT_TRUE(some->converged);
   EXPECT_LT(some->cells, full->cells);
+  bool loose = false;  // some ball was left with more than the tolerance between its bounds
+  for (const SphereProtrusionBound& b : some->spheres)
+    loose = loose || b.upper > b.lower + po.tolerance;
+  EXPECT_TRUE(loose);
   EXPECT_GE(some->upper, full->lower);
   EXPECT_LE(some->upper, some->lower + po.tolerance);
   EXPECT_LE(some->lower, full->upper);
@@ -181,6 +185,7 @@ TEST(Protrusion, OnlyTheUnionsFigureLeavesTheBallsThatCannotSetItLoose) {
   uo.known = full->lower;
   auto known = sphereProtrusion(index, fit->spheres, uo);
   ASSERT_TRUE(known.ok());
+  EXPECT_TRUE(known->converged);
   for (const SphereProtrusionBound& b : known->spheres)
     EXPECT_LE(b.upper, std::max(b.lower + po.tolerance, full->lower) + 1e-12);
   EXPECT_GE(known->upper, full->lower);
