@@ -86,7 +86,7 @@ Seeded seedBall(const SolidIndex& solid, const Sphere& s) {
   SphereProtrusionBound& out = r.out;
   out.witness = s.center;
   r.root = probe(solid, s.center, s.radius * kHalfDiagonal);
-  out.lower = std::max(0.0, r.root.d);
+  out.lower = r.root.d;  // 0 inside
   for (int i = 0; i < 27; ++i) {
     if (i == 13) continue;  // (0, 0, 0)
     const Vec3 u = Vec3(i % 3 - 1.0, (i / 3) % 3 - 1.0, i / 9 - 1.0).normalized();
@@ -144,14 +144,14 @@ Expected<ProtrusionResult> sphereProtrusion(const SolidIndex& solid,
                  "protrusion tolerance must be a finite length above 0"};
   if (options.max_cells < 1)
     return Error{ErrorCode::kInvalidArgument, "protrusion cells must be at least 1"};
+  if (!(options.known >= 0.0) || !std::isfinite(options.known))
+    return Error{ErrorCode::kInvalidArgument,
+                 "protrusion known: expected a finite length of at least 0"};
   for (size_t i = 0; i < spheres.size(); ++i)
     if (!spheres[i].center.allFinite() || !std::isfinite(spheres[i].radius) ||
         spheres[i].radius < 0.0)
       return Error{ErrorCode::kInvalidArgument,
                    "sphere " + std::to_string(i) + ": NaN, infinite or negative value"};
-  if (!(options.known >= 0.0) || !std::isfinite(options.known))
-    return Error{ErrorCode::kInvalidArgument,
-                 "protrusion known: expected a finite length of at least 0"};
   std::vector<Seeded> seeded(spheres.size());
   tbb::parallel_for(size_t{0}, spheres.size(),
                     [&](size_t i) { seeded[i] = seedBall(solid, spheres[i]); });
