@@ -285,6 +285,13 @@ struct ProgressiveOptions {
   // shared meshes, seeds 1 and 2: 1.038 against 1.005). fitCurve takes 1, 2 and 8 (its 4 starts
   // from 2: docs/benchmarks.md, "Progressive fitting").
   std::vector<int> seeded = {};
+  // At most this many rounds (or the options' fewer) for a count below half the largest that
+  // is clustered warm from a smaller one; 0: as the larger warm counts (30 rounds). fitCurve
+  // takes 20 (its 4 and 16): only its 32 feeds the counts up to 64, and 20 rounds at 16 moved E_r
+  // at 16 from 1.006 to 1.015 and 0.921 to 0.954 times independent fits (12 shared meshes,
+  // seeds 1 and 3), at 32 from 0.996 to 0.989 and 1.016 to 0.990; 20 at 32 too: 1.056 and
+  // 1.041 at 32 (docs/benchmarks.md, "Progressive fitting").
+  int warm_rounds_below_half = 0;
 };
 
 class ProgressiveFit {

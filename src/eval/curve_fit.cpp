@@ -32,6 +32,9 @@ namespace {
 // 8 0.5 % (12 shared meshes, seeds 1 and 2). The 4 warm-started from 2 ended 0.981 times the 4
 // clustered from seeds in E_r, for 0.95 of the curve's time (docs/benchmarks.md).
 constexpr std::array kSeededCounts = {1, 2, 8};
+// The rounds of a warm-started count below half the last (ProgressiveOptions::
+// warm_rounds_below_half: the 4 and the 16 of a curve to 64; the 32 keeps 30).
+constexpr int kWarmRoundsBelowHalf = 20;
 
 // A stretch's downward steps stop after this many counts in a row whose downward set has more
 // outside volume than the upward one: a step down is good for a few counts below its fit and then
@@ -343,6 +346,7 @@ Expected<CurveResult> fitCurve(const SolidIndex& index, const FitRequest& reques
     progressive.top_from_seeds = true;  // the last count is fitSpheres's own fit
     progressive.top_alongside = true;   // made beside the counts below it
     progressive.seeded.assign(kSeededCounts.begin(), kSeededCounts.end());
+    progressive.warm_rounds_below_half = kWarmRoundsBelowHalf;
     auto started = ProgressiveFit::start(index, top_options, nullptr, progressive);
     if (!started) return started.error();
     run.emplace(std::move(started).value());

@@ -55,7 +55,8 @@
 namespace sphereset {
 namespace {
 
-// A warm-started clustering: at most this many rounds (or the options' fewer).
+// A warm-started clustering: at most this many rounds (or the options' fewer; below half the
+// largest count, ProgressiveOptions::warm_rounds_below_half may ask for fewer).
 constexpr int kWarmRounds = 30;
 // Started from the count just below (start_ratio 1: a few splits of a settled clustering), at
 // most this many teleports in a row may fail (or the options' fewer): the robot's candidates
@@ -155,11 +156,19 @@ struct CountFit {
   FitResult fit;
 };
 
+// How a count is clustered warm from a smaller one: from the largest at most count / ratio
+// (ProgressiveOptions::start_ratio), in at most `rounds` rounds.
+struct WarmStart {
+  int ratio = 2;
+  int rounds = kWarmRounds;
+};
+
 // The fit at o.num_spheres from the clustering of `from` (0: seeds), ended as fitSpheres ends
 // one; its seconds from here. Defined below, with the clustering it calls.
 Expected<CountFit> fitCount(const SolidIndex& index, const detail::PointSet& ps,
                             const std::map<int, detail::Clustering>& done, int from,
-                            std::span<const double> split_first, const FitOptions& o, int ratio);
+                            std::span<const double> split_first, const FitOptions& o,
+                            const WarmStart& warm);
 
 }  // namespace
 
@@ -185,7 +194,7 @@ class TopAlongside {
     thread_ = std::thread([this, &index, &ps, threads] {
       try {
         tbb::task_arena arena(threads);
-        arena.execute([&] { made_.emplace(fitCount(index, ps, {}, 0, {}, options_, 1)); });
+        arena.execute([&] { made_.emplace(fitCount(index, ps, {}, 0, {}, options_, {})); });
       } catch (...) {
         error_ = std::current_exception();
       }
@@ -280,6 +289,8 @@ Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const Fi
   if (Status st = detail::checkFitOptions(index, options); !st) return st.error();
   if (progressive.start_ratio < 1)
     return Error{ErrorCode::kInvalidArgument, "start_ratio must be at least 1"};
+  if (progressive.warm_rounds_below_half < 0)
+    return Error{ErrorCode::kInvalidArgument, "warm_rounds_below_half must be at least 0"};
   if (!allows(options))
     return Error{ErrorCode::kInvalidArgument,
                  "progressive fitting takes the variational method with one restart and no "
@@ -332,8 +343,8 @@ int startFrom(const std::map<int, detail::Clustering>& done, int count, int rati
 // the largest smaller count's, split (splitClusters) and clustered again.
 detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet& ps,
                                 const std::map<int, detail::Clustering>& done, int count, int from,
-                                int ratio, std::span<const double> split_first, const FitOptions& o,
-                                FitResult* res, detail::ProgressScope* scope) {
+                                const WarmStart& warm_start, std::span<const double> split_first,
+                                const FitOptions& o, FitResult* res, detail::ProgressScope* scope) {
   const auto progress = [&](int it, double e) { scope->report("clustering", it, e); };
   if (from == count) return done.at(count);  // adopted
   if (from == 0) {
@@ -346,9 +357,10 @@ detail::Clustering clusterCount(const SolidIndex& index, const detail::PointSet&
   detail::Clustering split = splitClusters(index, below->second, count, split_first, o, res);
   if (static_cast<int>(split.spheres.size()) != count) return {};
   FitOptions warm = o;
-  warm.max_iterations = std::min(o.max_iterations, kWarmRounds);
-  const int teleports = ratio <= 1 ? std::min(o.max_failed_teleports, kSettledFailedTeleports)
-                                   : o.max_failed_teleports;
+  warm.max_iterations = std::min(o.max_iterations, warm_start.rounds);
+  const int teleports = warm_start.ratio <= 1
+                            ? std::min(o.max_failed_teleports, kSettledFailedTeleports)
+                            : o.max_failed_teleports;
   return detail::clusterFrom(index, ps, std::move(split), warm, teleports, res, progress);
 }
 
@@ -386,7 +398,8 @@ namespace {
 
 Expected<CountFit> fitCount(const SolidIndex& index, const detail::PointSet& ps,
                             const std::map<int, detail::Clustering>& done, int from,
-                            std::span<const double> split_first, const FitOptions& o, int ratio) {
+                            std::span<const double> split_first, const FitOptions& o,
+                            const WarmStart& warm) {
   const int count = o.num_spheres;
   const auto t0 = detail::FitClock::now();
   CountFit out;
@@ -394,7 +407,7 @@ Expected<CountFit> fitCount(const SolidIndex& index, const detail::PointSet& ps,
   res = pointsOf(ps);
   detail::ProgressScope scope(o, t0);
   detail::Clustering c =
-      clusterCount(index, ps, done, count, from, ratio, split_first, o, &res, &scope);
+      clusterCount(index, ps, done, count, from, warm, split_first, o, &res, &scope);
   res.converged = c.converged;
   if (c.spheres.empty())
     return Error{ErrorCode::kInvalidArgument,
@@ -408,6 +421,17 @@ Expected<CountFit> fitCount(const SolidIndex& index, const detail::PointSet& ps,
   res.seconds.total = detail::secondsSince(t0);
   scope.report("done", res.iterations, res.energy);
   return out;
+}
+
+}  // namespace
+
+namespace {
+
+// How `count` is clustered warm in a run up to `max_count`.
+WarmStart warmStart(const ProgressiveOptions& p, int count, int max_count) {
+  WarmStart w{.ratio = p.start_ratio};
+  if (p.warm_rounds_below_half > 0 && 2 * count < max_count) w.rounds = p.warm_rounds_below_half;
+  return w;
 }
 
 }  // namespace
@@ -429,9 +453,9 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
                      std::to_string(from) + ")"};
   std::unique_ptr<TopAlongside> top = count == m.options.num_spheres ? std::move(m.top) : nullptr;
   if (from != 0) top.reset();  // not from seeds after all (adopted): stopped, not taken
-  Expected<CountFit> made =
-      top ? top->take()
-          : fitCount(m.index, m.ps, m.clusterings, from, split_first, o, m.progressive.start_ratio);
+  Expected<CountFit> made = top ? top->take()
+                                : fitCount(m.index, m.ps, m.clusterings, from, split_first, o,
+                                           warmStart(m.progressive, count, m.options.num_spheres));
   if (!made) return made.error();
   m.clusterings[count] = std::move(made->clustering);
   const FitResult& res = made->fit;

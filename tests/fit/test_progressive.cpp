@@ -342,6 +342,31 @@ TEST(ProgressiveFit, ACountStartsFromAtMostHalfOrFromTheCountBelow) {
   EXPECT_FALSE(ProgressiveFit::start(idx, quickOptions(4), nullptr, {.start_ratio = 0}).ok());
 }
 
+TEST(ProgressiveFit, WarmCountsBelowHalfTheLargestTakeTheirOwnRounds) {
+  const Mesh link = test::robotLink();
+  const SolidIndex idx(link);
+  const FitOptions o = seededOptions(16, FitQuality::kDefault);
+  // 1, 2 and 4 from seeds in both runs, so that both start 7 and 8 from the same sets.
+  auto few =
+      ProgressiveFit::start(idx, o, nullptr, {.seeded = {1, 2, 4}, .warm_rounds_below_half = 2});
+  auto all = ProgressiveFit::start(idx, o, nullptr, {.seeded = {1, 2, 4}});
+  ASSERT_TRUE(few.ok() && all.ok());
+  for (int n : {1, 2, 4}) ASSERT_TRUE(few->fit(n).ok() && all->fit(n).ok());
+  EXPECT_EQ(few->startCount(7), 2);
+  EXPECT_EQ(few->startCount(8), 4);
+  auto few7 = few->fit(7), all7 = all->fit(7);  // 7 of 16: below half, from 2
+  auto few8 = few->fit(8), all8 = all->fit(8);  // 8: half, from 4 as well
+  ASSERT_TRUE(few7.ok() && all7.ok() && few8.ok() && all8.ok());
+  EXPECT_LE(few7->iterations, 2);
+  EXPECT_GT(all7->iterations, 2);
+  EXPECT_EQ(few8->iterations, all8->iterations);
+  EXPECT_EQ(few8->energy, all8->energy);
+  auto bad = ProgressiveFit::start(idx, o, nullptr, {.warm_rounds_below_half = -1});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_NE(bad.error().message.find("warm_rounds_below_half"), std::string::npos);
+}
+
 TEST(ProgressiveFit, WarmFromAdoptsAnotherRunsClusterings) {
   const Mesh link = test::robotLink();
   const SolidIndex idx(link);
