@@ -29,11 +29,8 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <unordered_map>
-#include <unordered_set>
 #include <utility>
 
 #include "cover/sphere_grid.hpp"
@@ -41,6 +38,7 @@
 #include "fit/fit_common.hpp"
 #include "fit/refine.hpp"
 #include "fit/teleport.hpp"
+#include "mesh/weld.hpp"
 #include "sphereset/cover.hpp"
 
 namespace sphereset::detail {
@@ -85,29 +83,19 @@ std::vector<Sphere> unpadded(const std::vector<Sphere>& spheres, double padding)
   return bare;
 }
 
-// A point's hash from the bits of its coordinates (equal points hash alike; 0.0 and -0.0 may not,
-// which only leaves both in a set).
-struct PointBitsHash {
-  size_t operator()(const Vec3& p) const {
-    uint64_t h = 0;
-    for (int k = 0; k < 3; ++k) h = (h ^ std::bit_cast<uint64_t>(p[k])) * 0x100000001b3ULL;
-    return static_cast<size_t>(h ^ (h >> 29));
-  }
-};
-
 // The outside volume sphere i's removal adds, to first order (as teleport.cpp's removalCosts):
 // each point only it covers joins the other sphere that grows least to hold it, about its fixed
 // centre; the grown spheres' outside volumes less sphere i's. `owned` lists each piece's vertices,
 // so a vertex comes once per piece that has it (about six times inside a split triangle); the
-// growths are maxima, so each point is taken once, in the order first met: the same cost, and the
-// removals' measures took 6 % of fr3_link1_collision.stl's curve (perf, one thread) instead of 12.
+// growths are maxima, so each point is taken once, in the order first met (weldVertices, exact):
+// the same cost, and the removals' measures took 6 % of fr3_link1_collision.stl's curve (perf, one
+// thread) instead of 12.
 double removalCost(const SolidIndex& index, const SplitChain& c, const SphereGrid& grid,
                    const std::vector<Vec3>& owned, int i, int64_t* queries) {
   std::vector<std::pair<int32_t, double>> grown;
-  std::unordered_set<Vec3, PointBitsHash> seen;
-  seen.reserve(owned.size());
-  for (const Vec3& p : owned) {
-    if (!seen.insert(p).second) continue;
+  std::vector<Vec3> points;
+  weldVertices(owned, 0.0, &points);
+  for (const Vec3& p : points) {
     std::pair<double, int32_t> least[2];
     const int m = leastGrowth(grid, &p, 1, 2, least);
     const int k = least[0].second == i ? 1 : 0;

@@ -159,7 +159,7 @@ struct CountFit {
 // How a count is clustered warm from a smaller one: from the largest at most count / ratio
 // (ProgressiveOptions::start_ratio), in at most `rounds` rounds.
 struct WarmStart {
-  int ratio = 2;
+  int ratio = ProgressiveOptions{}.start_ratio;
   int rounds = kWarmRounds;
 };
 
@@ -422,10 +422,6 @@ Expected<CountFit> fitCount(const SolidIndex& index, const detail::PointSet& ps,
   scope.report("done", res.iterations, res.energy);
   return out;
 }
-
-}  // namespace
-
-namespace {
 
 // How `count` is clustered warm in a run up to `max_count`.
 WarmStart warmStart(const ProgressiveOptions& p, int count, int max_count) {
