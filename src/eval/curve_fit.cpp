@@ -38,11 +38,11 @@ constexpr int kWarmRoundsBelowHalf = 20;
 
 // A stretch's downward steps stop at the first count whose downward set has more outside volume
 // than the upward one: a step down is good for a few counts below its fit and then worse than the
-// step up, so the crossover of least total lies above it. A heuristic: a crossover below such a
-// count would be missed. On the curves 1 ... 64 of the 12 shared closed meshes, stopping after 3
-// such counts in a row gave the same sets as every downward step made (seed 1), and after 2 or 1
-// the same as after 3 (seeds 1 and 3); on spot.obj all downward steps took 1.80 s of the calling
-// thread, 0.65 s of them for the sets kept (docs/benchmarks.md, "Progressive fitting").
+// step up, so the crossover of least total lies at or above it. A heuristic: a crossover below
+// such a count would be missed. On the curves 1 ... 64 of the 12 shared closed meshes, stopping
+// after 3 such counts in a row gave the same sets as every downward step made (seed 1), and after 2
+// or 1 the same as after 3 (seeds 1 and 3); on spot.obj all downward steps took 1.80 s of the
+// calling thread, 0.65 s of them for the sets kept (docs/benchmarks.md, "Progressive fitting").
 constexpr int kDownBehind = 1;
 
 // Whether counts[k] is a step from counts[k - 1] (ProgressiveFit::step): one more sphere, not a
