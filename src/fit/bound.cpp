@@ -181,12 +181,9 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
 }
 
 BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth,
-                         const Aabb* region) {
+                         const Aabb* region, GeometryForest* cells) {
+  assert(!cells || cells->size() == static_cast<size_t>(kRootCells));
   BoundStats st;
-  const auto outside = [&](const Vec3& lo, double s) {
-    return region && ((lo.array() > region->max.array()).any() ||
-                      ((lo.array() + s) < region->min.array()).any());
-  };
   std::vector<Sphere>& sp = *spheres;
   const double slack = kBoundSlackRel * index.bounds().diagonal();
   const std::vector<double> sov_dr = radiusRates(index, sp, &st);
@@ -199,12 +196,16 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
     pollCancel();
     double size = 0.0;
     const Vec3 mn = rootCell(index.bounds(), k, &size);
-    if (outside(mn, size)) return;
+    WalkScope scope{.region = region};
+    if (cells) {
+      GeometryTree& tree = (*cells)[k];
+      if (tree.nodes.size() > GeometryTree::kMaxNodes) tree.clear();
+      scope.tree = &tree;
+    }
     walkSolidCells(
         index, grid, mn, size, 0, max_depth,
         [&](const Vec3& lo, double s, int depth, double) {
           pollCancel();
-          if (outside(lo, s)) return false;
           int32_t i = -1;
           double r = 0.0;
           if (depth < max_depth) {
@@ -221,7 +222,7 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
           if (i >= 0) req[k].emplace_back(i, r);
           return false;
         },
-        [](const Vec3&, double) {});
+        [](const Vec3&, double) {}, nullptr, scope);
   });
   std::vector<double> radius(sp.size());
   for (size_t i = 0; i < sp.size(); ++i) radius[i] = sp[i].radius;

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "cover/cover_cells.hpp"
 #include "sphereset/cover.hpp"
 #include "sphereset/solid_index.hpp"
 #include "util/poll.hpp"
@@ -93,10 +94,11 @@ inline BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* sph
 // Interior coverage on the octree of cover_cells.hpp (the same test `evaluateSpheres` runs):
 // cubes down to `max_depth` whose centre lies inside the solid but in no sphere are handed
 // whole to the sphere whose outside volume grows least. One pass; radii only grow. With
-// `region`, only the cubes that meet it take a sphere (a local bound: nothing outside it lost its
-// cover); the walk still descends into the others.
+// `region`, only the cubes that meet it are walked (a local bound: nothing outside it lost its
+// cover). With `cells` (kept by a caller that bounds the same solid again), the cubes' geometry
+// is taken from it and kept there (cover_cells.hpp, GeometryTree): the same spheres either way.
 BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth,
-                         const Aabb* region = nullptr);
+                         const Aabb* region = nullptr, GeometryForest* cells = nullptr);
 
 // For each sphere, what it alone covers: the vertices of the surface pieces (triangles split
 // until one sphere holds each piece, as in boundSurface) that no other sphere holds, and the

@@ -55,11 +55,11 @@ BoundStats boundWithRefits(const SolidIndex& index, std::vector<Sphere>* sp,
 }
 
 void boundInteriorPasses(const SolidIndex& index, std::vector<Sphere>* sp, FitResult* res,
-                         const Aabb* region) {
+                         const Aabb* region, GeometryForest* cells) {
   // Between grid points the clusters' spheres can leave gaps (most of all for the baselines).
   // Radii only grow, so the surface stays covered.
   for (int pass = 0; pass < kInteriorPasses; ++pass) {
-    const BoundStats is = boundInterior(index, sp, kInteriorSplitDepth, region);
+    const BoundStats is = boundInterior(index, sp, kInteriorSplitDepth, region, cells);
     res->bounding_queries += is.queries;
     res->bounding_interior_cells += is.pieces;
     if (is.enlarged == 0) break;

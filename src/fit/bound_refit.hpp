@@ -22,8 +22,9 @@ BoundStats boundWithRefits(const SolidIndex& index, std::vector<Sphere>* sp,
 
 // Interior bound passes (until one enlarges nothing, at most kInteriorPasses): the cubes of
 // the evaluation's octree test whose centres lie inside the solid are covered too; with
-// `region`, only its cubes that meet the region (boundInterior).
+// `region`, only its cubes that meet the region; with `cells`, the cubes' geometry kept there
+// (boundInterior).
 void boundInteriorPasses(const SolidIndex& index, std::vector<Sphere>* sp, FitResult* res,
-                         const Aabb* region = nullptr);
+                         const Aabb* region = nullptr, GeometryForest* cells = nullptr);
 
 }  // namespace sphereset::detail

@@ -17,7 +17,7 @@
 namespace sphereset::detail {
 
 void finishFit(const SolidIndex& index, const PointSet& ps, const FitOptions& o, Clustering* best,
-               FitResult* res) {
+               FitResult* res, GeometryForest* cells) {
   const bool variational = o.method == FitMethod::kVariational;
   const double surface_spacing = surfaceSpacing(index, ps);
   const double min_edge = boundMinEdge(index, ps);
@@ -43,7 +43,7 @@ void finishFit(const SolidIndex& index, const PointSet& ps, const FitOptions& o,
     runOptimalRadii(index, interior, min_edge, &best->spheres, res);
   res->bounding_enlarged = bs.enlarged;
   t = FitClock::now();
-  boundInteriorPasses(index, &best->spheres, res);
+  boundInteriorPasses(index, &best->spheres, res, nullptr, cells);
   if (o.original) {
     // A repaired solid's input triangles: the wrap holds them strictly inside and a union or
     // capped solid holds them on or inside its boundary, so this pass rarely grows a sphere;

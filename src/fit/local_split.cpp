@@ -190,11 +190,11 @@ namespace {
 // the interior cubes that meet it, and the original's triangles.
 void boundRegion(const SolidIndex& index, const FitOptions& o, double min_edge, const Aabb& region,
                  std::vector<Sphere>* bare, std::vector<std::vector<Vec3>>* members,
-                 const std::vector<bool>& refittable, FitResult* res) {
+                 const std::vector<bool>& refittable, GeometryForest* cells, FitResult* res) {
   const Mesh surface = trianglesMeeting(index.mesh(), region);
   const bool refit = std::find(refittable.begin(), refittable.end(), true) != refittable.end();
   boundWithRefits(index, bare, members, min_edge, refit, o, res, &surface, &refittable);
-  boundInteriorPasses(index, bare, res, &region);
+  boundInteriorPasses(index, bare, res, &region, cells);
   if (o.original) {
     const Mesh original = trianglesMeeting(*o.original, region);
     const BoundStats ob = boundSurface(index, bare, min_edge, nullptr, &original);
@@ -238,7 +238,7 @@ void takeIntoChain(const SolidIndex& index, const FitOptions& o, const std::vect
 }  // namespace
 
 bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions& o,
-                  SplitChain* chain, FitResult* res) {
+                  SplitChain* chain, FitResult* res, GeometryForest* cells) {
   SplitChain& c = *chain;
   auto t = FitClock::now();
   const double min_edge = kRefineFineEdge * boundMinEdge(index, ps);
@@ -264,7 +264,7 @@ bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions&
   members[n] = std::move(split.b);
   std::vector<bool> refittable(n + 1, false);
   refittable[best] = refittable[n] = true;
-  boundRegion(index, o, min_edge, region, &bare, &members, refittable, res);
+  boundRegion(index, o, min_edge, region, &bare, &members, refittable, cells, res);
   c.spheres.emplace_back();
   c.sov.push_back(0.0);
   c.splits.emplace_back();
@@ -278,7 +278,7 @@ bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions&
 }
 
 bool removeLocally(const SolidIndex& index, const PointSet& ps, const FitOptions& o,
-                   SplitChain* chain, FitResult* res) {
+                   SplitChain* chain, FitResult* res, GeometryForest* cells) {
   SplitChain& c = *chain;
   const int n = static_cast<int>(c.spheres.size());
   if (n < 2) return false;
@@ -311,7 +311,7 @@ bool removeLocally(const SolidIndex& index, const PointSet& ps, const FitOptions
   const std::vector<Sphere> before = bare;
   std::vector<std::vector<Vec3>> members(bare.size());
   boundRegion(index, o, min_edge, region, &bare, &members, std::vector<bool>(bare.size(), false),
-              res);
+              cells, res);
   // The sphere moved into `worst` kept its padded radius and outside volume (drop), so only the
   // spheres the bound grew are taken again.
   takeIntoChain(index, o, bare, before, {}, region, &c, res);

@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "cover/cover_cells.hpp"
 #include "fit/samples.hpp"
 #include "fit/sphere_update.hpp"
 #include "sphereset/fit.hpp"
@@ -43,15 +44,17 @@ SplitChain startChain(std::vector<Sphere> spheres, std::vector<double> sov);
 // box is bounded again (bound.cpp, restricted: nothing outside that box lost its cover, since every
 // other sphere only grows). Fills res (spheres, outside volumes, energy, bound counters and
 // seconds: bound for the local bound, teleport for measuring). False when no sphere can be split:
-// the chain's measures are then up to date, its set unchanged.
+// the chain's measures are then up to date, its set unchanged. `cells`: the interior cubes'
+// geometry kept between the bounds of one solid (boundInterior), or none.
 bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions& o,
-                  SplitChain* chain, FitResult* res);
+                  SplitChain* chain, FitResult* res, GeometryForest* cells = nullptr);
 
 // One sphere fewer: the sphere whose removal adds least outside volume (what it alone covers
 // taken by the neighbours that grow least) is removed, the last sphere taking its index, and the
 // solid within its old box is bounded again by the others growing. False when no sphere can be
-// removed: the chain's measures are then up to date, its set unchanged.
+// removed: the chain's measures are then up to date, its set unchanged. `cells` as for
+// splitLocally.
 bool removeLocally(const SolidIndex& index, const PointSet& ps, const FitOptions& o,
-                   SplitChain* chain, FitResult* res);
+                   SplitChain* chain, FitResult* res, GeometryForest* cells = nullptr);
 
 }  // namespace sphereset::detail

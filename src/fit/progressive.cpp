@@ -164,11 +164,12 @@ struct WarmStart {
 };
 
 // The fit at o.num_spheres from the clustering of `from` (0: seeds), ended as fitSpheres ends
-// one; its seconds from here. Defined below, with the clustering it calls.
+// one (its interior bound with the geometry kept in `cells`, or none); its seconds from here.
+// Defined below, with the clustering it calls.
 Expected<CountFit> fitCount(const SolidIndex& index, const detail::PointSet& ps,
                             const std::map<int, detail::Clustering>& done, int from,
                             std::span<const double> split_first, const FitOptions& o,
-                            const WarmStart& warm);
+                            const WarmStart& warm, detail::GeometryForest* cells = nullptr);
 
 }  // namespace
 
@@ -259,6 +260,9 @@ struct ProgressiveFit::Impl {
   std::optional<detail::SplitChain> chain;        // the last count fitted or stepped
   std::optional<detail::SplitChain> fitted;       // the last count fitted
   std::unique_ptr<TopAlongside> top;              // the largest count, made beside the others
+  // The interior cubes' geometry, kept from bound to bound of the fits and steps made on the
+  // calling thread (boundInterior; the largest count beside them bounds without it).
+  detail::GeometryForest cells = detail::makeGeometryForest();
 };
 
 ProgressiveFit::ProgressiveFit(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -399,7 +403,7 @@ namespace {
 Expected<CountFit> fitCount(const SolidIndex& index, const detail::PointSet& ps,
                             const std::map<int, detail::Clustering>& done, int from,
                             std::span<const double> split_first, const FitOptions& o,
-                            const WarmStart& warm) {
+                            const WarmStart& warm, detail::GeometryForest* cells) {
   const int count = o.num_spheres;
   const auto t0 = detail::FitClock::now();
   CountFit out;
@@ -416,7 +420,7 @@ Expected<CountFit> fitCount(const SolidIndex& index, const detail::PointSet& ps,
   out.clustering = c;
   scope.report("bounding", res.iterations, c.energy);
   const auto tb = detail::FitClock::now();
-  detail::finishFit(index, ps, o, &c, &res);
+  detail::finishFit(index, ps, o, &c, &res, cells);
   res.seconds.bounding = detail::secondsSince(tb);
   res.seconds.total = detail::secondsSince(t0);
   scope.report("done", res.iterations, res.energy);
@@ -449,9 +453,10 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
                      std::to_string(from) + ")"};
   std::unique_ptr<TopAlongside> top = count == m.options.num_spheres ? std::move(m.top) : nullptr;
   if (from != 0) top.reset();  // not from seeds after all (adopted): stopped, not taken
-  Expected<CountFit> made = top ? top->take()
-                                : fitCount(m.index, m.ps, m.clusterings, from, split_first, o,
-                                           warmStart(m.progressive, count, m.options.num_spheres));
+  Expected<CountFit> made =
+      top ? top->take()
+          : fitCount(m.index, m.ps, m.clusterings, from, split_first, o,
+                     warmStart(m.progressive, count, m.options.num_spheres), &m.cells);
   if (!made) return made.error();
   m.clusterings[count] = std::move(made->clustering);
   const FitResult& res = made->fit;
@@ -479,8 +484,8 @@ Expected<FitResult> ProgressiveFit::step(int count) {
   const double energy_before = detail::totalOf(m.chain->sov);
   scope.report(up ? "splitting" : "removing", 0, energy_before);
   detail::SplitChain next = *m.chain;
-  if (up ? !detail::splitLocally(m.index, m.ps, o, &next, &res)
-         : !detail::removeLocally(m.index, m.ps, o, &next, &res))
+  if (up ? !detail::splitLocally(m.index, m.ps, o, &next, &res, &m.cells)
+         : !detail::removeLocally(m.index, m.ps, o, &next, &res, &m.cells))
     return Error{ErrorCode::kInvalidArgument, "no sphere of the fit at " +
                                                   std::to_string(m.chain->count) + " can be " +
                                                   (up ? "split" : "removed")};

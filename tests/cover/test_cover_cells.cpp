@@ -1,10 +1,14 @@
 // The interior walk's cube geometry (cover/cover_cells.hpp): a cube's side of the surface taken
 // from its parent's (sideNear) is the side classify() gives, on every cube of an octree over a
-// robot link and a torus down to a depth where cubes meet the surface.
+// robot link and a torus down to a depth where cubes meet the surface; a walk with its cubes'
+// geometry kept (GeometryTree) or within a region judges as the full walk does.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+#include <random>
+#include <tuple>
+#include <vector>
 
 #include "cover/cover_cells.hpp"
 #include "test_meshes.hpp"
@@ -48,6 +52,72 @@ TEST(CoverCells, ACubeTakesItsParentsSideOnlyWhereClassifyAgrees) {
     // Most cubes qualify for their parent's side, so the comparison covers the shortcut.
     EXPECT_GT(taken, cubes / 2);
   }
+}
+
+// What a walk reported: each gap (cube corner, side, depth, gap) and undecided cube, in order.
+using Call = std::tuple<double, double, double, double, int, double>;
+
+std::vector<Call> walkAll(const SolidIndex& index, const SphereGrid& grid, int max_depth,
+                          const Aabb* region, GeometryForest* cells) {
+  std::vector<Call> calls;
+  for (int k = 0; k < kRootCells; ++k) {
+    double size = 0.0;
+    const Vec3 mn = rootCell(index.bounds(), k, &size);
+    WalkScope scope{.region = region, .tree = cells ? &(*cells)[k] : nullptr};
+    walkSolidCells(
+        index, grid, mn, size, 0, max_depth,
+        [&](const Vec3& lo, double s, int depth, double gap) {
+          calls.emplace_back(lo.x(), lo.y(), lo.z(), s, depth, gap);
+          return true;  // as the fit's bound: look deeper
+        },
+        [&](const Vec3& lo, double s) { calls.emplace_back(lo.x(), lo.y(), lo.z(), s, -1, 0.0); },
+        nullptr, scope);
+  }
+  return calls;
+}
+
+// Sets of a few spheres inside the solid's box that leave gaps, one after another through the
+// same kept geometry (as a progressive run's bounds): every walk reports what the walk without
+// it reports, and the one within a region what the full walk reports on the cubes that meet it.
+TEST(CoverCells, AWalkWithKeptGeometryOrWithinARegionJudgesAsTheFullWalk) {
+  const SolidIndex index(test::robotLink());
+  const Aabb& b = index.bounds();
+  const double diag = b.diagonal();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  GeometryForest cells = makeGeometryForest();
+  size_t kept_before = 0;
+  for (int set = 0; set < 3; ++set) {
+    std::vector<Sphere> spheres;
+    for (int i = 0; i < 6 + 4 * set; ++i) {
+      const Vec3 t(u(rng), u(rng), u(rng));
+      spheres.push_back({b.min + t.cwiseProduct(b.max - b.min), (0.1 + 0.1 * u(rng)) * diag});
+    }
+    const SphereGrid grid(spheres);
+    const std::vector<Call> full = walkAll(index, grid, 3, nullptr, nullptr);
+    ASSERT_FALSE(full.empty());
+    EXPECT_EQ(walkAll(index, grid, 3, nullptr, &cells), full) << "set " << set;
+    size_t kept = 0;
+    for (const GeometryTree& tree : cells) kept += tree.nodes.size();
+    EXPECT_GE(kept, kept_before);  // the trees keep what earlier walks met
+    EXPECT_GT(kept, static_cast<size_t>(kRootCells));
+    kept_before = kept;
+    // A region around one sphere, walked with the kept geometry.
+    const Sphere& s = spheres[set];
+    const Aabb region{s.center - Vec3::Constant(s.radius), s.center + Vec3::Constant(s.radius)};
+    std::vector<Call> within;
+    for (const Call& c : full) {
+      const Vec3 lo(std::get<0>(c), std::get<1>(c), std::get<2>(c));
+      if (!cubeMisses(&region, lo, std::get<3>(c))) within.push_back(c);
+    }
+    EXPECT_FALSE(within.empty());
+    EXPECT_LT(within.size(), full.size());
+    EXPECT_EQ(walkAll(index, grid, 3, &region, &cells), within) << "set " << set;
+  }
+  // Cleared, a tree holds its root alone again.
+  cells[0].clear();
+  EXPECT_EQ(cells[0].nodes.size(), 1u);
+  EXPECT_FALSE(cells[0].nodes[0].geometry.known);
 }
 
 }  // namespace

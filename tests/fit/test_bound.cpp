@@ -106,6 +106,33 @@ TEST(Bound, BoundSpheresCoversFromAnySetWithoutMovingCentres) {
   EXPECT_FALSE(boundSpheres(idx, before, o).ok());
 }
 
+// The interior bound with the cubes' geometry kept from bound to bound (as a progressive run's
+// fits and steps keep it) grows the same spheres as without, whole and within a region, and
+// covers the interior as the certificate judges it.
+TEST(Bound, TheInteriorBoundGrowsTheSameSpheresWithKeptGeometry) {
+  const SolidIndex idx(test::robotLink());
+  const Aabb& b = idx.bounds();
+  constexpr int kDepth = 3;  // shallower than the fit's, for the test's time
+  detail::GeometryForest cells = detail::makeGeometryForest();
+  for (int set = 0; set < 3; ++set) {
+    std::vector<Sphere> start;
+    for (int i = 0; i < 4 + 3 * set; ++i) {
+      const double t = (i + 0.5) / (4 + 3 * set);
+      start.push_back({b.min + t * (b.max - b.min), 0.12 * b.diagonal()});
+    }
+    const Aabb region{b.min, 0.5 * (b.min + b.max)};
+    for (const Aabb* r : {static_cast<const Aabb*>(nullptr), &region}) {
+      std::vector<Sphere> plain = start, kept = start;
+      const detail::BoundStats a = detail::boundInterior(idx, &plain, kDepth, r);
+      const detail::BoundStats c = detail::boundInterior(idx, &kept, kDepth, r, &cells);
+      EXPECT_GT(a.enlarged, 0) << "set " << set;
+      EXPECT_EQ(a.enlarged, c.enlarged);
+      EXPECT_EQ(a.pieces, c.pieces);
+      for (size_t i = 0; i < start.size(); ++i) EXPECT_EQ(plain[i].radius, kept[i].radius);
+    }
+  }
+}
+
 // What one sphere alone covers (soleCover) is the same asked for that sphere only, which skips
 // the pieces that miss it, as asked for every sphere: the same points in the same order.
 TEST(Bound, SoleCoverOfOneSphereIsItsListAmongAll) {
