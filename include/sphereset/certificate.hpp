@@ -77,6 +77,12 @@ class CoverageCertificate {
   Status addSphere(const Sphere& sphere);
   Status removeSphere(int index);
   Status setSpheres(std::vector<Sphere> spheres);  // a new set: certified in full
+  // A new set certified once against the current one: the spheres that differ at the same
+  // index, those added at the end and those the new set no longer has at the end count as
+  // changed, as if each were edited in turn; in full (setSpheres) when more than
+  // kFullUpdateShare of the larger set's spheres changed, or nothing is certified yet.
+  Status updateSpheres(std::vector<Sphere> spheres);
+  static constexpr double kFullUpdateShare = 0.5;
 
   const std::vector<Sphere>& spheres() const;
   const CertificateSummary& summary() const;

@@ -59,10 +59,6 @@ bool isStep(const std::vector<int>& counts, size_t k) {
 // protrusion bound within the tolerance of the union's witness as there.
 class StepChecker {
  public:
-  // A set with more than this share of its spheres changed is certified in full rather than
-  // sphere by sphere (a fit after steps, or the first set).
-  static constexpr double kEditShare = 0.5;
-
   StepChecker(const SolidIndex& index, const Mesh* original) : index_(index) {
     options_.original = original;
     protrusion_.tolerance = EvalOptions{}.protrusion_tolerance * index.bounds().diagonal();
@@ -75,7 +71,7 @@ class StepChecker {
       if (i >= last_.size() || spheres[i].center != last_[i].center ||
           spheres[i].radius != last_[i].radius)
         changed.push_back(i);
-    if (Status st = update(spheres, changed); !st) return st.error();
+    if (Status st = update(spheres); !st) return st.error();
     if (Status st = protrude(spheres, changed); !st) return st.error();
     last_ = spheres;
     const CertificateSummary& s = cert_->summary();
@@ -88,23 +84,13 @@ class StepChecker {
   }
 
  private:
-  // The certificate brought to `spheres`: sphere by sphere when few changed (the last ones
-  // removed when there are fewer), else in full.
-  Status update(const std::vector<Sphere>& spheres, const std::vector<size_t>& changed) {
-    if (!cert_ || changed.size() > kEditShare * spheres.size()) {
-      if (cert_) return cert_->setSpheres(spheres);
-      auto made = makeCoverageCertificate(index_, spheres, options_);
-      if (!made) return made.error();
-      cert_.emplace(std::move(made).value());
-      return {};
-    }
-    for (size_t i = last_.size(); i > spheres.size(); --i)
-      if (Status st = cert_->removeSphere(static_cast<int>(i - 1)); !st) return st;
-    for (size_t i : changed) {
-      Status st = i < last_.size() ? cert_->setSphere(static_cast<int>(i), spheres[i])
-                                   : cert_->addSphere(spheres[i]);
-      if (!st) return st;
-    }
+  // The certificate brought to `spheres`: near the spheres that changed when few did, else in
+  // full (CoverageCertificate::updateSpheres).
+  Status update(const std::vector<Sphere>& spheres) {
+    if (cert_) return cert_->updateSpheres(spheres);
+    auto made = makeCoverageCertificate(index_, spheres, options_);
+    if (!made) return made.error();
+    cert_.emplace(std::move(made).value());
     return {};
   }
 

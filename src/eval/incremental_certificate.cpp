@@ -1,5 +1,6 @@
 // The incremental coverage certificate (certificate.hpp): E_r summed and the surface, original
-// and interior certificates of evaluateSpheres, kept up to date as one sphere at a time changes.
+// and interior certificates of evaluateSpheres, kept up to date as one sphere at a time changes
+// (or several at once: updateSpheres, where the argument below holds for each changed ball).
 //
 // Why it equals the full certificate: both judge every triangle with certifyTriangle and every
 // interior cube with cellVerdict (eval/coverage_pieces.hpp, cover/cover_cells.hpp) and sum with
@@ -284,6 +285,49 @@ Status CoverageCertificate::setSpheres(std::vector<Sphere> spheres) {
   });
   s.needs_full = true;
   s.certify({}, std::nullopt);
+  guard.done();
+  return {};
+}
+
+Status CoverageCertificate::updateSpheres(std::vector<Sphere> spheres) {
+  State& s = *state_;
+  if (Status st = detail::checkSpheres(spheres); !st) return st;
+  const size_t n_old = s.spheres.size(), n = spheres.size();
+  std::vector<size_t> differ;  // new or changed at the same index
+  for (size_t i = 0; i < n; ++i)
+    if (i >= n_old || spheres[i].center != s.spheres[i].center ||
+        spheres[i].radius != s.spheres[i].radius)
+      differ.push_back(i);
+  const size_t dropped = n_old > n ? n_old - n : 0;
+  if (s.needs_full ||
+      static_cast<double>(differ.size() + dropped) > kFullUpdateShare * std::max(n, n_old))
+    return setSpheres(std::move(spheres));
+  std::vector<Sphere> grown = detail::grownSpheres(spheres, s.diagonal());
+  // Each changed sphere's old and new ball (grown), as for setSphere, addSphere and removeSphere.
+  std::vector<Sphere> changed;
+  for (size_t i : differ) {
+    if (i < n_old) changed.push_back(s.grown[i]);
+    changed.push_back(grown[i]);
+  }
+  for (size_t i = n; i < n_old; ++i) changed.push_back(s.grown[i]);
+  std::vector<double> outside = s.outside;
+  outside.resize(n, 0.0);
+  s.spheres.swap(spheres);
+  s.grown.swap(grown);
+  s.outside.swap(outside);
+  EditGuard guard(&s, [&] {
+    s.spheres.swap(spheres);
+    s.grown.swap(grown);
+    s.outside.swap(outside);
+  });
+  {
+    const detail::PollScope scope(s.poll, s.poll_interval);
+    tbb::parallel_for(size_t{0}, differ.size(), [&](size_t k) {
+      detail::pollCancel();
+      s.outside[differ[k]] = s.solid->outsideVolume(s.spheres[differ[k]]).volume;
+    });
+  }
+  s.certify(changed, std::nullopt);
   guard.done();
   return {};
 }

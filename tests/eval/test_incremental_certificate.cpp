@@ -271,6 +271,71 @@ TEST(IncrementalCertificate, SmallEditRechecksLittle) {
   expectSameAsFull(idx, *cert, CertificateOptions{}, "small move");
 }
 
+// Several spheres changed at once (updateSpheres: moved, grown, shrunk, added at the end, dropped
+// from the end), each batch certified once: the summary equals the full evaluation's after every
+// batch, a small batch judges only part of the triangles, and a batch changing more than
+// kFullUpdateShare of the set is certified in full.
+TEST(IncrementalCertificate, BatchedEditsEqualFullEvaluation) {
+  const SolidIndex idx(test::makeTorus(1.0, 0.35, 24, 12));
+  const std::vector<Sphere> start = coveringGrid(idx.bounds(), 4);
+  const CertificateOptions co = shallow();
+  auto made = makeCoverageCertificate(idx, start, co);
+  ASSERT_TRUE(made.ok());
+  CoverageCertificate cert = std::move(*made);
+  std::vector<Sphere> model = start;
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const Aabb& b = idx.bounds();
+  int partial = 0, covered = 0;
+  for (int e = 0; e < 30; ++e) {
+    if (e % 10 == 9) model = start;  // back to the covering set: most spheres change
+    const int edits = 1 + static_cast<int>(u(rng) * 4);
+    for (int k = 0; k < edits; ++k) {
+      const size_t i = static_cast<size_t>(u(rng) * model.size()) % model.size();
+      const double kind = u(rng);
+      if (kind < 0.3) {
+        model[i].center += 0.3 * model[i].radius * Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5);
+      } else if (kind < 0.4) {
+        model[i].radius *= 1.0 + 0.5 * u(rng);
+      } else if (kind < 0.6) {  // shrink: opens gaps
+        model[i].radius *= 0.05 + 0.5 * u(rng);
+      } else if (kind < 0.7) {  // back to the start's sphere: closes gaps
+        model[i] = start[i % start.size()];
+      } else if (kind < 0.85 || model.size() < 3) {
+        model.push_back({b.min + (b.max - b.min).cwiseProduct(Vec3(u(rng), u(rng), u(rng))),
+                         0.2 * b.diagonal() * u(rng)});
+      } else {
+        model.pop_back();
+      }
+    }
+    ASSERT_TRUE(cert.updateSpheres(model).ok());
+    ASSERT_EQ(cert.spheres().size(), model.size());
+    for (size_t k = 0; k < model.size(); ++k) {
+      EXPECT_EQ(cert.spheres()[k].center, model[k].center);
+      EXPECT_EQ(cert.spheres()[k].radius, model[k].radius);
+    }
+    expectSameAsFull(idx, cert, co, "batch " + std::to_string(e));
+    const CertificateSummary& sm = cert.summary();
+    partial += sm.triangles_rechecked < sm.triangles;
+    covered += sm.covered;
+  }
+  EXPECT_GT(partial, 10);  // most batches are certified near their changes only
+  EXPECT_GT(covered, 0);
+  EXPECT_LT(covered, 30);
+  // Every sphere moved: certified in full. The same set again: nothing judged.
+  for (Sphere& sp : model) sp.center += Vec3(1e-3, 0.0, 0.0);
+  ASSERT_TRUE(cert.updateSpheres(model).ok());
+  EXPECT_EQ(cert.summary().triangles_rechecked, cert.summary().triangles);
+  expectSameAsFull(idx, cert, co, "all moved");
+  ASSERT_TRUE(cert.updateSpheres(model).ok());
+  EXPECT_EQ(cert.summary().triangles_rechecked, 0);
+  EXPECT_EQ(cert.summary().cells_rechecked, 0);
+  // Refused as setSpheres refuses, the set left as it was.
+  EXPECT_FALSE(cert.updateSpheres({}).ok());
+  EXPECT_FALSE(cert.updateSpheres({{Vec3(NAN, 0.0, 0.0), 1.0}}).ok());
+  EXPECT_EQ(cert.spheres().size(), model.size());
+}
+
 // The surface certificate's rule written plainly, every test over every sphere (the spheres
 // already grown): a triangle held by one sphere is certified, else its vertices' and centroid's
 // distance to the union gives a gap, and it is split in four (to half the depth once refuted).
