@@ -55,6 +55,18 @@ bool boxesMeet(const Aabb& a, const Aabb& b) {
   return (a.min.array() <= b.max.array()).all() && (a.max.array() >= b.min.array()).all();
 }
 
+// The rounding allowance of ballsMeet, relative to the magnitudes of the centres and radii
+// (a length per unit length): far above the rounding of the containment tests.
+constexpr double kMeetRel = 1e-9;
+
+// Whether two balls may share a point, allowing for rounding: false only when no point lies in
+// both as Sphere::contains decides.
+bool ballsMeet(const Sphere& a, const Sphere& b) {
+  const double reach = a.radius + b.radius;
+  const double scale = reach + a.center.cwiseAbs().maxCoeff() + b.center.cwiseAbs().maxCoeff();
+  return (a.center - b.center).norm() <= reach + kMeetRel * scale;
+}
+
 // The triangles of `mesh` whose bounding box meets `box`, in their order, with only the vertices
 // they use (a step near one sphere of a large mesh copied all of its vertices).
 Mesh trianglesMeeting(const Mesh& mesh, const Aabb& box) {
@@ -205,10 +217,10 @@ void boundRegion(const SolidIndex& index, const FitOptions& o, double min_edge, 
 
 // Takes the bounded set into the chain: the spheres `moved` and those whose radius the bound
 // changed from `before` get their padding and outside volume, and the spheres near them or
-// `region` a new measure; fills res.
+// `gone` (the padded sphere split or removed) a new measure; fills res.
 void takeIntoChain(const SolidIndex& index, const FitOptions& o, const std::vector<Sphere>& bare,
                    const std::vector<Sphere>& before, const std::vector<int>& moved,
-                   const Aabb& region, SplitChain* chain, FitResult* res) {
+                   const Sphere& gone, SplitChain* chain, FitResult* res) {
   SplitChain& c = *chain;
   std::vector<int> changed;
   for (int i = 0; i < static_cast<int>(bare.size()); ++i)
@@ -218,13 +230,20 @@ void takeIntoChain(const SolidIndex& index, const FitOptions& o, const std::vect
       c.spheres[i] = bare[i];
       c.spheres[i].radius += o.padding;
     }
-  // What a sphere alone covers changes where the old sphere was or a changed one now is: such
-  // spheres are measured again when next needed.
-  std::vector<Aabb> touched{region};
-  for (int i : changed) touched.push_back(ballBox(c.spheres[i]));
+  // What a sphere alone covers changes only where its ball meets the gone sphere's or a changed
+  // one's (a grown sphere's old ball lies in its new one, a moved one's is `gone`): a piece or
+  // point it alone holds lies in its ball, and so does every piece a change could make held or
+  // unheld above it. Its split is measured from that alone (measureChain), so a sphere whose
+  // ball meets none of them keeps its split. Its removal's cost also depends on which neighbour
+  // grows least to take its points, which a change beyond its ball can alter: it is measured
+  // again when its box meets one of theirs, a heuristic.
+  std::vector<Sphere> touched{gone};
+  for (int i : changed) touched.push_back(c.spheres[i]);
   for (size_t i = 0; i < c.spheres.size(); ++i)
-    for (const Aabb& b : touched)
-      if (boxesMeet(ballBox(c.spheres[i]), b)) c.split_measured[i] = c.removal_measured[i] = false;
+    for (const Sphere& b : touched) {
+      if (ballsMeet(c.spheres[i], b)) c.split_measured[i] = false;
+      if (boxesMeet(ballBox(c.spheres[i]), ballBox(b))) c.removal_measured[i] = false;
+    }
   tbb::parallel_for(size_t{0}, changed.size(), [&](size_t k) {
     c.sov[changed[k]] = index.outsideVolume(c.spheres[changed[k]]).volume;
   });
@@ -252,7 +271,8 @@ bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions&
   if (best < 0) return false;
   t = FitClock::now();
   const int n = static_cast<int>(c.spheres.size());
-  const Aabb region = ballBox(c.spheres[best]);
+  const Sphere gone = c.spheres[best];
+  const Aabb region = ballBox(gone);
   PointSplit split = std::move(c.splits[best]);
   // The bound works on the radii before padding; a sphere it does not grow keeps its padded one.
   std::vector<Sphere> bare = unpadded(c.spheres, o.padding);
@@ -272,7 +292,7 @@ bool splitLocally(const SolidIndex& index, const PointSet& ps, const FitOptions&
   c.removal.push_back(0.0);
   c.split_measured.push_back(false);
   c.removal_measured.push_back(false);
-  takeIntoChain(index, o, bare, before, {best, n}, region, &c, res);
+  takeIntoChain(index, o, bare, before, {best, n}, gone, &c, res);
   res->seconds.bound += secondsSince(t);
   return true;
 }
@@ -292,7 +312,8 @@ bool removeLocally(const SolidIndex& index, const PointSet& ps, const FitOptions
   res->seconds.teleport += secondsSince(t);
   if (worst < 0) return false;
   t = FitClock::now();
-  const Aabb region = ballBox(c.spheres[worst]);
+  const Sphere gone = c.spheres[worst];
+  const Aabb region = ballBox(gone);
   // The last sphere takes the removed one's place, so that the others keep their indices.
   const auto drop = [&](auto& v) {
     v[worst] = std::move(v.back());
@@ -314,7 +335,7 @@ bool removeLocally(const SolidIndex& index, const PointSet& ps, const FitOptions
               cells, res);
   // The sphere moved into `worst` kept its padded radius and outside volume (drop), so only the
   // spheres the bound grew are taken again.
-  takeIntoChain(index, o, bare, before, {}, region, &c, res);
+  takeIntoChain(index, o, bare, before, {}, gone, &c, res);
   res->seconds.bound += secondsSince(t);
   return true;
 }

@@ -2,13 +2,17 @@
 // keeps the set bounded (the evaluation's certificate and a brute-force surface check), its
 // figures are those of its spheres, a chain of steps lowers the outside volume, the same calls
 // give the same spheres for any thread count, and steps that have no count before them are
-// refused.
+// refused; a chain keeps only the split measures a step cannot have changed.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <string>
 #include <vector>
 
 #include "coverage_oracle.hpp"
+#include "fit/fit_common.hpp"
+#include "fit/local_split.hpp"
+#include "fit/samples.hpp"
 #include "sphereset/evaluate.hpp"
 #include "sphereset/fit.hpp"
 #include "test_meshes.hpp"
@@ -72,6 +76,40 @@ TEST(LocalSplit, EachStepAddsOneSphereAndKeepsTheBound) {
   auto ev = evaluateSpheres(idx, down->spheres, fitCheckEvalOptions(1));
   ASSERT_TRUE(ev.ok());
   EXPECT_TRUE(ev->surface_covered && ev->interior_covered);
+}
+
+// A chain keeps a sphere's split measure across a step only where the step cannot have changed
+// it (takeIntoChain: its ball meets no changed one): every measure it kept equals the one a chain
+// started afresh from the same set measures, so each step makes the same set, with fewer
+// measures.
+TEST(LocalSplit, AKeptSplitMeasureIsTheOneMeasuredAfresh) {
+  const SolidIndex idx(test::makeTorus(1.0, 0.3, 24, 12));
+  FitOptions o = stepOptions(4);
+  auto fit = fitSpheres(idx, o);
+  ASSERT_TRUE(fit.ok()) << fit.error().message;
+  const detail::PointSet ps =
+      detail::samplePoints(idx, detail::fitTargetPoints(o), o.interior_share, o.seed);
+  detail::SplitChain kept = detail::startChain(fit->spheres, fit->outside_volume);
+  int64_t kept_queries = 0, fresh_queries = 0, compared = 0;
+  for (int step = 0; step < 8; ++step) {
+    SCOPED_TRACE("step " + std::to_string(step));
+    detail::SplitChain fresh = detail::startChain(kept.spheres, kept.sov);
+    FitResult rk, rf;
+    ASSERT_TRUE(detail::splitLocally(idx, ps, o, &kept, &rk));
+    ASSERT_TRUE(detail::splitLocally(idx, ps, o, &fresh, &rf));
+    ASSERT_EQ(kept.spheres.size(), fresh.spheres.size());
+    for (size_t i = 0; i < kept.spheres.size(); ++i) {
+      EXPECT_EQ(kept.spheres[i].center, fresh.spheres[i].center);
+      EXPECT_EQ(kept.spheres[i].radius, fresh.spheres[i].radius);
+      ASSERT_EQ(kept.split_measured[i], fresh.split_measured[i]);
+      if (!kept.split_measured[i]) continue;
+      EXPECT_EQ(kept.gain[i], fresh.gain[i]) << "sphere " << i;  // measured before the step
+      ++compared;
+    }
+    if (step > 0) kept_queries += rk.optimizer_queries, fresh_queries += rf.optimizer_queries;
+  }
+  EXPECT_GT(compared, 0);
+  EXPECT_LT(kept_queries, fresh_queries);  // measures were kept
 }
 
 TEST(LocalSplit, PaddingStaysOnEverySphere) {
