@@ -264,7 +264,7 @@ Expected<ToleranceFitResult> fitToTolerance(const SolidIndex& index, const FitRe
 // such counts is stepped up from the fit below and, when the fit above follows it directly, down
 // from that fit too (until a set is looser than the upward one), the counts up to the
 // crossover of least total outside volume taking the upward sets. The whole curve 1 ... 64
-// costs 1.4 to 2.9 fits at 64 (1.99 on average over the shared meshes), and its stepped
+// costs 1.3 to 2.9 fits at 64 (1.81 on average over the shared meshes), and its stepped
 // counts are usually looser than fits at those counts (docs/benchmarks.md, "Progressive
 // fitting"). Each set is checked as `sphereset fit` checks its result (the steps' by
 // the certificate of the set before, kept up to date: the same figures, the protrusion within its
