@@ -79,8 +79,10 @@ class CoverageCertificate {
   Status setSpheres(std::vector<Sphere> spheres);  // a new set: certified in full
   // A new set certified once against the current one: the spheres that differ at the same
   // index, those added at the end and those the new set no longer has at the end count as
-  // changed, as if each were edited in turn; in full (setSpheres) when more than
-  // kFullUpdateShare of the larger set's spheres changed, or nothing is certified yet.
+  // changed, as if each were edited in turn (the summary's coverage figures and E_r are the
+  // same; its rechecked counts and seconds are the batch's); in full (setSpheres) when more than
+  // kFullUpdateShare of the larger set's spheres changed, or nothing is certified yet (also after
+  // a cancelled call).
   Status updateSpheres(std::vector<Sphere> spheres);
   static constexpr double kFullUpdateShare = 0.5;
 

@@ -356,6 +356,10 @@ class ProgressiveFit {
   // largest smaller count clustered within ProgressiveOptions::start_ratio, or 0.
   int startCount(int count) const;
   int maxCount() const;
+  // Frees what the run keeps only to go faster (the interior cubes' geometry its bounds met,
+  // several MB on a fine mesh); later fits and steps give the same sets and keep it anew. For a
+  // caller that holds many runs and is done with one for now (a robot's links).
+  void forgetAnswers();
 
  private:
   struct Impl;

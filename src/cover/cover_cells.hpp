@@ -89,12 +89,8 @@ constexpr int kRootCells = 512;
 // The geometry of one root cube's cubes kept between walks of the same solid, for a caller
 // whose walks meet the same cubes again (the local bounds of a progressive run, which walk the
 // same region for set after set): each cube's CellGeometry, its eight children in a row once it
-// has split. A memo: a walk with it judges every cube as one without it does. Its owner drops it
-// whole (clear) before a walk once it holds more than kMaxNodes cubes, so that its memory stays
-// bounded whatever the depth (at the fit's depth, 5, a root cube has 37 449 cubes in all; the
-// trees raised the peak memory of the curves 1 ... 64 of spot.obj and armadillo by 11 and 6 MB).
+// has split. A memo: a walk with it judges every cube as one without it does.
 struct GeometryTree {
-  static constexpr size_t kMaxNodes = 1 << 15;  // 0.75 MB per root cube at 24 bytes a node
   struct Node {
     CellGeometry geometry;
     int64_t children = -1;  // the first of its eight children; -1 before it splits
@@ -103,37 +99,61 @@ struct GeometryTree {
   void clear() { nodes.assign(1, Node{}); }
 };
 // One GeometryTree per root cube (rootCell), of one solid and one bounds grid. A walk touches
-// only its own root cube's tree, so the root cubes may be walked in parallel.
-using GeometryForest = std::vector<GeometryTree>;
-inline GeometryForest makeGeometryForest() { return GeometryForest(kRootCells); }
+// only its own root cube's tree, so the root cubes may be walked in parallel. trim(), before a
+// walk, drops every tree once together they hold more than kMaxNodes cubes, so the forest holds
+// at most that plus one walk's cubes (the trees raised the peak memory of the curves 1 ... 64
+// of spot.obj and armadillo by 11 and 6 MB).
+struct GeometryForest {
+  static constexpr int64_t kMaxNodes = int64_t{1} << 22;  // 96 MB at 24 bytes a cube
+  std::vector<GeometryTree> trees = std::vector<GeometryTree>(kRootCells);
+  void trim() {
+    int64_t held = 0;
+    for (const GeometryTree& t : trees) held += static_cast<int64_t>(t.nodes.size());
+    if (held > kMaxNodes)
+      for (GeometryTree& t : trees) t.clear();
+  }
+};
 
-// Where a walk may look (both optional): `region`, a box outside which nothing is decided (a
-// cube that misses it is neither judged nor split: its verdicts would be left unused), and
-// `tree`, the walk's root cube's kept geometry (`node`: this cube's place in it).
+// Where a walk may look (both optional): `region`, a box the caller decides nothing outside of
+// (a cube that misses it widened by kRegionSlackRel is neither judged nor split; the caller's
+// own test decides at the region's edge), and `tree`, the walk's root cube's kept geometry
+// (`node`: this cube's place in it).
 struct WalkScope {
   const Aabb* region = nullptr;
   GeometryTree* tree = nullptr;
   int64_t node = 0;
 };
 
-// Whether the cube with lowest corner `lo` and side `s` misses `region` (none: never).
-inline bool cubeMisses(const Aabb* region, const Vec3& lo, double s) {
-  return region && ((lo.array() > region->max.array()).any() ||
-                    ((lo.array() + s) < region->min.array()).any());
+// Whether the cube with lowest corner `lo` and side `s` misses `region` widened by `slack` (a
+// length; none: never).
+inline bool cubeMisses(const Aabb* region, const Vec3& lo, double s, double slack = 0.0) {
+  return region && ((lo.array() > region->max.array() + slack).any() ||
+                    ((lo.array() + s) < region->min.array() - slack).any());
+}
+
+// The widening of a walk's region before it skips a cube, relative to the largest coordinate
+// of the region (a length per unit length): a child's corners are computed from its parent's and
+// may round a few units of the last place beyond them, so a cube that just misses the region
+// may have a child that meets it.
+constexpr double kRegionSlackRel = 1e-9;
+inline double regionSlack(const Aabb* region) {
+  return region ? kRegionSlackRel *
+                      std::max(region->min.cwiseAbs().maxCoeff(), region->max.cwiseAbs().maxCoeff())
+                : 0.0;
 }
 
 // The interior coverage walk: cubes of an octree below an 8³ grid over `bounds`, judged by
 // cellVerdict. Held and empty cubes are settled. On a gap, on_gap(min, size, depth, gap) is
 // called and the walk goes on as for an undecided cube only if it returns true (the fit's bound
 // grows a sphere and looks deeper; the certificate stops: the cube is refuted). Cubes still
-// unsettled at max_depth go to on_undecided(min, size). Cubes that miss scope.region are
-// skipped.
+// unsettled at max_depth go to on_undecided(min, size). Cubes that miss scope.region (widened:
+// WalkScope) are skipped.
 template <class OnGap, class OnUndecided>
 void walkSolidCells(const SolidIndex& index, const SphereGrid& spheres, const Vec3& mn, double size,
                     int depth, int max_depth, OnGap&& on_gap, OnUndecided&& on_undecided,
                     const CellGeometry* parent = nullptr, WalkScope scope = {}) {
   pollCancel();
-  if (cubeMisses(scope.region, mn, size)) return;
+  if (cubeMisses(scope.region, mn, size, regionSlack(scope.region))) return;
   CellGeometry geometry = scope.tree ? scope.tree->nodes[scope.node].geometry : CellGeometry{};
   double gap = 0.0;
   const CellVerdict verdict =
@@ -147,8 +167,9 @@ void walkSolidCells(const SolidIndex& index, const SphereGrid& spheres, const Ve
   }
   WalkScope child = scope;
   if (scope.tree && scope.tree->nodes[scope.node].children < 0) {
-    scope.tree->nodes[scope.node].children = static_cast<int64_t>(scope.tree->nodes.size());
-    scope.tree->nodes.resize(scope.tree->nodes.size() + 8);  // invalidates references into it
+    const size_t first = scope.tree->nodes.size();
+    scope.tree->nodes.resize(first + 8);  // invalidates references into it
+    scope.tree->nodes[scope.node].children = static_cast<int64_t>(first);
   }
   const double h = 0.5 * size;
   for (int k = 0; k < 8; ++k) {

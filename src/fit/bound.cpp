@@ -182,7 +182,7 @@ BoundStats boundSurface(const SolidIndex& index, std::vector<Sphere>* spheres,
 
 BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, int max_depth,
                          const Aabb* region, GeometryForest* cells) {
-  assert(!cells || cells->size() == static_cast<size_t>(kRootCells));
+  if (cells) cells->trim();
   BoundStats st;
   std::vector<Sphere>& sp = *spheres;
   const double slack = kBoundSlackRel * index.bounds().diagonal();
@@ -196,16 +196,12 @@ BoundStats boundInterior(const SolidIndex& index, std::vector<Sphere>* spheres, 
     pollCancel();
     double size = 0.0;
     const Vec3 mn = rootCell(index.bounds(), k, &size);
-    WalkScope scope{.region = region};
-    if (cells) {
-      GeometryTree& tree = (*cells)[k];
-      if (tree.nodes.size() > GeometryTree::kMaxNodes) tree.clear();
-      scope.tree = &tree;
-    }
+    const WalkScope scope{.region = region, .tree = cells ? &cells->trees[k] : nullptr};
     walkSolidCells(
         index, grid, mn, size, 0, max_depth,
         [&](const Vec3& lo, double s, int depth, double) {
           pollCancel();
+          if (cubeMisses(region, lo, s)) return false;  // the walk's region is widened
           int32_t i = -1;
           double r = 0.0;
           if (depth < max_depth) {

@@ -262,7 +262,7 @@ struct ProgressiveFit::Impl {
   std::unique_ptr<TopAlongside> top;              // the largest count, made beside the others
   // The interior cubes' geometry, kept from bound to bound of the fits and steps made on the
   // calling thread (boundInterior; the largest count beside them bounds without it).
-  detail::GeometryForest cells = detail::makeGeometryForest();
+  detail::GeometryForest cells;
 };
 
 ProgressiveFit::ProgressiveFit(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -299,7 +299,8 @@ Expected<ProgressiveFit> ProgressiveFit::start(const SolidIndex& index, const Fi
     return Error{ErrorCode::kInvalidArgument,
                  "progressive fitting takes the variational method with one restart and no "
                  "decimation"};
-  auto impl = std::unique_ptr<Impl>(new Impl{index, options, progressive, {}, {}, {}, {}, {}, {}});
+  auto impl =
+      std::unique_ptr<Impl>(new Impl{index, options, progressive, {}, {}, {}, {}, {}, {}, {}});
   impl->ps = detail::samplePoints(index, detail::fitTargetPoints(options), options.interior_share,
                                   options.seed);
   const int64_t points = static_cast<int64_t>(impl->ps.points.size());
@@ -463,6 +464,8 @@ Expected<FitResult> ProgressiveFit::fit(int count, std::span<const double> split
   m.chain = m.fitted = detail::startChain(res.spheres, res.outside_volume);
   return m.fits[count] = res;
 }
+
+void ProgressiveFit::forgetAnswers() { impl().cells = detail::GeometryForest{}; }
 
 Expected<FitResult> ProgressiveFit::step(int count) {
   Impl& m = impl();

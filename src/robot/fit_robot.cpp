@@ -83,7 +83,10 @@ void measureCurve(const RobotFitOptions& o, Job* j, double reach) {
     j->curve.counts.push_back(k);
     j->curve.outside_volume.push_back(f->energy);
   }
-  if (run) j->curve_run = std::make_unique<ProgressiveFit>(std::move(run).value());
+  if (run) {
+    run->forgetAnswers();
+    j->curve_run = std::make_unique<ProgressiveFit>(std::move(run).value());
+  }
   j->index->forgetAnswers();  // memory per link in flight, not per link (a 1000-link chain)
 }
 // Loads, repairs and indexes every link with geometry, the links in parallel (the wrap is

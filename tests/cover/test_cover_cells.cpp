@@ -4,6 +4,7 @@
 // geometry kept (GeometryTree) or within a region judges as the full walk does.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -63,7 +64,7 @@ std::vector<Call> walkAll(const SolidIndex& index, const SphereGrid& grid, int m
   for (int k = 0; k < kRootCells; ++k) {
     double size = 0.0;
     const Vec3 mn = rootCell(index.bounds(), k, &size);
-    WalkScope scope{.region = region, .tree = cells ? &(*cells)[k] : nullptr};
+    const WalkScope scope{.region = region, .tree = cells ? &cells->trees[k] : nullptr};
     walkSolidCells(
         index, grid, mn, size, 0, max_depth,
         [&](const Vec3& lo, double s, int depth, double gap) {
@@ -85,8 +86,7 @@ TEST(CoverCells, AWalkWithKeptGeometryOrWithinARegionJudgesAsTheFullWalk) {
   const double diag = b.diagonal();
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  GeometryForest cells = makeGeometryForest();
-  size_t kept_before = 0;
+  GeometryForest cells;
   for (int set = 0; set < 3; ++set) {
     std::vector<Sphere> spheres;
     for (int i = 0; i < 6 + 4 * set; ++i) {
@@ -97,27 +97,39 @@ TEST(CoverCells, AWalkWithKeptGeometryOrWithinARegionJudgesAsTheFullWalk) {
     const std::vector<Call> full = walkAll(index, grid, 3, nullptr, nullptr);
     ASSERT_FALSE(full.empty());
     EXPECT_EQ(walkAll(index, grid, 3, nullptr, &cells), full) << "set " << set;
-    size_t kept = 0;
-    for (const GeometryTree& tree : cells) kept += tree.nodes.size();
-    EXPECT_GE(kept, kept_before);  // the trees keep what earlier walks met
+    const auto held = [&] {
+      size_t n = 0;
+      for (const GeometryTree& tree : cells.trees) n += tree.nodes.size();
+      return n;
+    };
+    const size_t kept = held();
     EXPECT_GT(kept, static_cast<size_t>(kRootCells));
-    kept_before = kept;
+    // The same set again meets only cubes it kept: the same report, nothing added.
+    EXPECT_EQ(walkAll(index, grid, 3, nullptr, &cells), full) << "set " << set;
+    EXPECT_EQ(held(), kept);
     // A region around one sphere, walked with the kept geometry.
     const Sphere& s = spheres[set];
     const Aabb region{s.center - Vec3::Constant(s.radius), s.center + Vec3::Constant(s.radius)};
     std::vector<Call> within;
     for (const Call& c : full) {
       const Vec3 lo(std::get<0>(c), std::get<1>(c), std::get<2>(c));
-      if (!cubeMisses(&region, lo, std::get<3>(c))) within.push_back(c);
+      if (!cubeMisses(&region, lo, std::get<3>(c), regionSlack(&region))) within.push_back(c);
     }
     EXPECT_FALSE(within.empty());
     EXPECT_LT(within.size(), full.size());
     EXPECT_EQ(walkAll(index, grid, 3, &region, &cells), within) << "set " << set;
   }
-  // Cleared, a tree holds its root alone again.
-  cells[0].clear();
-  EXPECT_EQ(cells[0].nodes.size(), 1u);
-  EXPECT_FALSE(cells[0].nodes[0].geometry.known);
+  // Trimmed below its cap the forest keeps its trees; cleared, a tree holds its root alone.
+  GeometryTree& largest = *std::max_element(
+      cells.trees.begin(), cells.trees.end(),
+      [](const GeometryTree& x, const GeometryTree& y) { return x.nodes.size() < y.nodes.size(); });
+  const size_t before = largest.nodes.size();
+  ASSERT_GT(before, 1u);
+  cells.trim();
+  EXPECT_EQ(largest.nodes.size(), before);
+  largest.clear();
+  EXPECT_EQ(largest.nodes.size(), 1u);
+  EXPECT_FALSE(largest.nodes[0].geometry.known);
 }
 
 }  // namespace

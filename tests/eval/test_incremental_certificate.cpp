@@ -484,8 +484,29 @@ TEST(IncrementalCertificate, CancelledEditLeavesTheSetAsBefore) {
   // The next edit certifies the set in full and agrees with the evaluation.
   ASSERT_TRUE(cert->setSphere(mid, {set[mid].center, 0.1}).ok());
   EXPECT_EQ(cert->summary().triangles_rechecked, cert->summary().triangles);
+  // A batch of a few changes (certified near them, not in full), cancelled: the set and its
+  // outside volumes as before, and the next batch certified in full.
+  const std::vector<Sphere> kept = cert->spheres();
+  const std::vector<double> kept_outside = cert->summary().outside_volume;
+  std::vector<Sphere> batch = kept;
+  batch[0].radius *= 0.5;
+  batch.pop_back();
+  batch.push_back({set[2].center, 0.05});
+  cancel = true;
+  EXPECT_THROW((void)cert->updateSpheres(batch), std::runtime_error);
+  cancel = false;
+  ASSERT_EQ(cert->spheres().size(), kept.size());
+  for (size_t i = 0; i < kept.size(); ++i) EXPECT_EQ(cert->spheres()[i].radius, kept[i].radius);
+  EXPECT_EQ(cert->summary().outside_volume, kept_outside);
+  ASSERT_TRUE(cert->updateSpheres(batch).ok());
+  EXPECT_EQ(cert->summary().triangles_rechecked, cert->summary().triangles);
   co.poll = nullptr;
-  expectSameAsFull(idx, *cert, co, "after a cancelled edit");
+  expectSameAsFull(idx, *cert, co, "after a cancelled batch");
+  // Uncancelled, the same kind of batch is certified near its changes only.
+  batch[1].radius *= 0.5;
+  ASSERT_TRUE(cert->updateSpheres(batch).ok());
+  EXPECT_LT(cert->summary().triangles_rechecked, cert->summary().triangles);
+  expectSameAsFull(idx, *cert, co, "a batch");
 }
 
 }  // namespace

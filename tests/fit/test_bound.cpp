@@ -107,13 +107,12 @@ TEST(Bound, BoundSpheresCoversFromAnySetWithoutMovingCentres) {
 }
 
 // The interior bound with the cubes' geometry kept from bound to bound (as a progressive run's
-// fits and steps keep it) grows the same spheres as without, whole and within a region, and
-// covers the interior as the certificate judges it.
+// fits and steps keep it) grows the same spheres as without, whole and within a region.
 TEST(Bound, TheInteriorBoundGrowsTheSameSpheresWithKeptGeometry) {
   const SolidIndex idx(test::robotLink());
   const Aabb& b = idx.bounds();
   constexpr int kDepth = 3;  // shallower than the fit's, for the test's time
-  detail::GeometryForest cells = detail::makeGeometryForest();
+  detail::GeometryForest cells;
   for (int set = 0; set < 3; ++set) {
     std::vector<Sphere> start;
     for (int i = 0; i < 4 + 3 * set; ++i) {
